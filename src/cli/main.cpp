@@ -1,0 +1,56 @@
+// frictionlab: the command line of the virtual friction-oscillator lab.
+// Exit status: 0 success, 1 internal error, 2 bad input, 3 physics failure.
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "core/analytic_model.hpp"
+#include "core/units.hpp"
+#include "io/input_error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"frictionlab: a virtual lab of the friction (Timoshenko) oscillator"};
+  app.set_version_flag("--version", std::string("frictionlab ") + FRICTIONLAB_VERSION);
+  app.require_subcommand(1);
+  // Global options may stand after the subcommand too: "frictionlab table --assets DIR".
+  app.fallthrough();
+  fl::cli::GlobalOptions global;
+  app.add_option("--assets", global.asset_dir,
+                 "Folder of the lab's data (default: $FRICTIONLAB_ASSETS or the build's assets/)");
+
+  const std::vector<fl::cli::Command> commands{
+      fl::cli::add_analytic_command(app, global),
+      fl::cli::add_table_command(app, global),
+  };
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int status = app.exit(e);
+    // CLI11 returns 0 for --help/--version and its own codes otherwise: bad usage is bad input.
+    return status == 0 ? 0 : 2;
+  }
+  try {
+    for (const fl::cli::Command& command : commands) {
+      if (command.parser->parsed()) return command.run();
+    }
+  } catch (const fl::InputError& e) {
+    fmt::print(stderr, "{}\n", e.what());
+    return 2;
+  } catch (const fl::UnitError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  } catch (const fl::DomainError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "internal error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,191 @@
+#include "io/yaml_node.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "io/suggest.hpp"
+
+namespace fl {
+namespace {
+
+SourceLocation location_of(const YAML::Mark& mark, const std::string& file) {
+  SourceLocation where{file, 0, 0};
+  if (mark.line >= 0) where.line = mark.line + 1;
+  if (mark.column >= 0) where.column = mark.column + 1;
+  return where;
+}
+
+std::string join_path(const std::string& parent, std::string_view key) {
+  if (parent.empty()) return std::string(key);
+  return parent + "." + std::string(key);
+}
+
+std::string found_text(const YAML::Node& node) {
+  if (node.IsScalar()) return "\"" + node.Scalar() + "\"";
+  if (node.IsMap()) return "a map";
+  if (node.IsSequence()) return "a list";
+  return "nothing";
+}
+
+}  // namespace
+
+YamlNode::YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+SourceLocation YamlNode::location() const {
+  return location_of(node_.Mark(), *file_);
+}
+
+void YamlNode::fail(std::string_view what) const {
+  std::string message = path_.empty() ? std::string() : path_ + ": ";
+  message += what;
+  throw InputError(location(), message);
+}
+
+void YamlNode::expect_map() const {
+  if (!node_.IsMap()) fail("expected a map of keys, found " + found_text(node_));
+}
+
+void YamlNode::allow_keys(std::initializer_list<std::string_view> keys) const {
+  expect_map();
+  std::vector<std::string> seen;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.as<std::string>();
+    const SourceLocation where = location_of(entry.first.Mark(), *file_);
+    for (const std::string& earlier : seen) {
+      if (earlier == key)
+        throw InputError(where, join_path(path_, key) + ": the key is given twice; keep one");
+    }
+    seen.push_back(key);
+    bool known = false;
+    for (const std::string_view allowed : keys) known = known || allowed == key;
+    if (known) continue;
+    std::string message = join_path(path_, key) + ": unknown key";
+    const std::string suggestion = closest_match(key, {keys.begin(), keys.size()});
+    if (!suggestion.empty()) {
+      message += "; did you mean '" + suggestion + "'?";
+    } else {
+      message += "; the keys here are:";
+      for (const std::string_view allowed : keys) message += " " + std::string(allowed);
+    }
+    throw InputError(where, message);
+  }
+}
+
+bool YamlNode::has(std::string_view key) const {
+  return node_.IsMap() && node_[std::string(key)].IsDefined();
+}
+
+YamlNode YamlNode::at(std::string_view key) const {
+  expect_map();
+  const YAML::Node child = node_[std::string(key)];
+  if (!child.IsDefined()) fail("the key '" + std::string(key) + "' is required but missing");
+  return YamlNode(child, file_, join_path(path_, key));
+}
+
+std::optional<YamlNode> YamlNode::find(std::string_view key) const {
+  expect_map();
+  const YAML::Node child = node_[std::string(key)];
+  if (!child.IsDefined() || child.IsNull()) return std::nullopt;
+  return YamlNode(child, file_, join_path(path_, key));
+}
+
+void YamlNode::expect_sequence() const {
+  if (!node_.IsSequence()) fail("expected a list, found " + found_text(node_));
+}
+
+std::size_t YamlNode::size() const {
+  expect_sequence();
+  return node_.size();
+}
+
+YamlNode YamlNode::operator[](std::size_t index) const {
+  expect_sequence();
+  return YamlNode(node_[index], file_, path_ + "[" + std::to_string(index) + "]");
+}
+
+std::string YamlNode::text() const {
+  if (!node_.IsScalar()) fail("expected a text, found " + found_text(node_));
+  return node_.Scalar();
+}
+
+double YamlNode::quantity(Dimension dimension) const {
+  if (!node_.IsScalar())
+    fail("expected a " + std::string(dimension_name(dimension)) + ", found " + found_text(node_));
+  try {
+    return parse_quantity(node_.Scalar(), dimension, "");
+  } catch (const UnitError& e) {
+    // parse_quantity's message starts with the (empty) quantity name and ": ".
+    fail(std::string(e.what()).substr(2));
+  }
+}
+
+Measured YamlNode::measured(Dimension dimension) const {
+  if (!node_.IsScalar())
+    fail("expected a " + std::string(dimension_name(dimension)) + " with its uncertainty, found " +
+         found_text(node_));
+  try {
+    return parse_measured(node_.Scalar(), dimension, "");
+  } catch (const UnitError& e) {
+    fail(std::string(e.what()).substr(2));
+  }
+}
+
+double YamlNode::number() const {
+  return quantity(Dimension::kDimensionless);
+}
+
+std::int64_t YamlNode::integer() const {
+  const double value = number();
+  if (std::floor(value) != value || std::fabs(value) > 9.0e15)
+    fail("expected a whole number, found " + found_text(node_));
+  return static_cast<std::int64_t>(value);
+}
+
+bool YamlNode::boolean() const {
+  const std::string t = text();
+  if (t == "true" || t == "yes" || t == "on") return true;
+  if (t == "false" || t == "no" || t == "off") return false;
+  fail("expected true or false, found " + found_text(node_));
+}
+
+YamlNode load_yaml_text(std::string_view text, const std::string& name) {
+  auto file = std::make_shared<const std::string>(name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(std::string(text));
+  } catch (const YAML::ParserException& e) {
+    throw InputError(location_of(e.mark, name), "this is not valid YAML: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(location_of(e.mark, name), "this is not valid YAML: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull())
+    throw InputError(SourceLocation{name, 1, 1}, "the file is empty; expected a YAML map");
+  return YamlNode(root, file, "");
+}
+
+YamlNode load_yaml_file(const std::string& file, std::size_t max_bytes) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec || !std::filesystem::exists(status))
+    throw InputError(SourceLocation{file, 0, 0}, "no such file; check the path");
+  if (!std::filesystem::is_regular_file(status))
+    throw InputError(SourceLocation{file, 0, 0}, "not a regular file");
+  const auto bytes = std::filesystem::file_size(file, ec);
+  if (ec) throw InputError(SourceLocation{file, 0, 0}, "cannot read the file's size");
+  if (bytes > max_bytes)
+    throw InputError(SourceLocation{file, 0, 0},
+                     "the file is " + std::to_string(bytes) + " bytes, more than the " +
+                         std::to_string(max_bytes) + " bytes a YAML input may have");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw InputError(SourceLocation{file, 0, 0}, "cannot open the file for reading");
+  std::ostringstream content;
+  content << in.rdbuf();
+  return load_yaml_text(content.str(), file);
+}
+
+}  // namespace fl

@@ -1,0 +1,69 @@
+// Strict, located reading of YAML: every value knows the file, line, column and key path it came
+// from, so each error reads "file:line:col: error: path: expected ..., found ...". Unknown keys
+// are errors with a suggestion. yaml-cpp's marks are 0-based; we print them 1-based.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <initializer_list>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/units.hpp"
+#include "io/input_error.hpp"
+
+namespace fl {
+
+class YamlNode {
+ public:
+  YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path);
+
+  const std::string& path() const { return path_; }
+  SourceLocation location() const;
+  [[noreturn]] void fail(std::string_view what) const;
+
+  bool is_map() const { return node_.IsMap(); }
+  bool is_sequence() const { return node_.IsSequence(); }
+  bool is_scalar() const { return node_.IsScalar(); }
+  bool is_null() const { return node_.IsNull(); }
+
+  // Maps. `allow_keys` fails on the first key not in the list, suggesting the closest one.
+  void expect_map() const;
+  void allow_keys(std::initializer_list<std::string_view> keys) const;
+  bool has(std::string_view key) const;
+  YamlNode at(std::string_view key) const;  // required key
+  std::optional<YamlNode> find(std::string_view key) const;
+
+  // Sequences.
+  void expect_sequence() const;
+  std::size_t size() const;
+  YamlNode operator[](std::size_t index) const;
+
+  // Scalars.
+  std::string text() const;
+  double quantity(Dimension dimension) const;
+  Measured measured(Dimension dimension) const;
+  double number() const;  // a plain number, no unit
+  std::int64_t integer() const;
+  bool boolean() const;
+
+  const YAML::Node& raw() const { return node_; }
+
+ private:
+  YAML::Node node_;
+  std::shared_ptr<const std::string> file_;
+  std::string path_;
+};
+
+// A loaded YAML file. Refuses files that do not exist, are larger than `max_bytes`, are empty or
+// are not YAML, with a located InputError.
+YamlNode load_yaml_file(const std::string& file, std::size_t max_bytes = 4u << 20);
+
+// The same from text (tests, inline scenes); `name` stands in for the file name in errors.
+YamlNode load_yaml_text(std::string_view text, const std::string& name);
+
+}  // namespace fl

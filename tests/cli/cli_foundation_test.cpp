@@ -1,0 +1,91 @@
+// The frictionlab executable: subcommands, --json, --version, and exit status 2 with a clear
+// message for bad input.
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.hpp"
+
+namespace fl {
+namespace {
+
+const std::string kExe = FRICTIONLAB_EXE;
+
+test::CommandResult lab(const std::string& args) {
+  return test::run_command(kExe + " " + args);
+}
+
+TEST(Cli, VersionAndHelp) {
+  const auto v = lab("--version");
+  EXPECT_EQ(v.status, 0);
+  EXPECT_NE(v.out.find("frictionlab "), std::string::npos) << v.out;
+  for (const char* sub : {"analytic", "table"}) {
+    const auto h = lab(std::string(sub) + " --help");
+    EXPECT_EQ(h.status, 0) << sub;
+    EXPECT_NE(h.out.find("--json"), std::string::npos) << sub;
+  }
+}
+
+TEST(Cli, AnalyticJsonForAGivenMuK) {
+  const auto r = lab("analytic --spacing 89mm --mu-k 0.29 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["period_thin_s"].get<double>(), 0.7858259589972741, 1e-12);
+  EXPECT_DOUBLE_EQ(j["spacing_m"].get<double>(), 0.089);
+  EXPECT_TRUE(j["restoring_force"].get<bool>());
+}
+
+TEST(Cli, AnalyticForAPaperMaterialRecomputesMuK) {
+  const auto r = lab("analytic --material lego --temperature 77K --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["period_measured_s"].get<double>(), 0.94);
+  EXPECT_NEAR(j["mu_k_thin"].get<double>(), 0.20267259729725648, 1e-12);
+  EXPECT_DOUBLE_EQ(j["mu_k_paper"].get<double>(), 0.20);
+}
+
+TEST(Cli, AnalyticReportsNoRestoringForceInsteadOfAPeriod) {
+  const auto r = lab("analytic --mu-k 10 --h-c 5mm --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["restoring_force"].get<bool>());
+  EXPECT_TRUE(j["period_thick_s"].is_null());
+}
+
+TEST(Cli, TableJsonHasEveryRow) {
+  const auto r = lab("table --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["rows"].size(), 15u);
+  EXPECT_EQ(j["rows_disagreeing"].get<int>(), 4);
+}
+
+TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
+  struct Case {
+    const char* args;
+    const char* message;
+  };
+  for (const Case& c : {
+           Case{"analytic --mu-k 0.3 --spacing 89kg", "--spacing: expected a length"},
+           Case{"analytic --mu-k 0.3 --spacing 89", ""},  // SI: 89 m is valid, not an error
+           Case{"analytic --mu-k -1", "mu_k must be a finite positive number"},
+           Case{"analytic --period 0s", "the period T must be a finite positive number"},
+           Case{"analytic --mu-k 0.3 --period 1s", "give exactly one of"},
+           Case{"analytic --material unobtainium", "unknown material"},
+           Case{"analytic --material iron --temperature 77K", "at 300 K only"},
+           Case{"nosuchcommand", ""},
+           Case{"table --assets /nonexistent", "no such file"},
+       }) {
+    const auto r = lab(c.args);
+    if (std::string(c.args) == "analytic --mu-k 0.3 --spacing 89") {
+      EXPECT_EQ(r.status, 0) << c.args;
+      continue;
+    }
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace fl

@@ -33,11 +33,22 @@ std::string found_text(const YAML::Node& node) {
 
 }  // namespace
 
-YamlNode::YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path)
-    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+YamlNode::YamlNode(YAML::Node node, std::shared_ptr<YamlSource> source, std::string path)
+    : node_(std::move(node)), source_(std::move(source)), path_(std::move(path)) {}
+
+SourceLocation YamlNode::location_of_key(const std::string& key_path,
+                                         const YAML::Mark& mark) const {
+  // A value the command line replaced is located there; so is everything below it.
+  for (const auto& [overridden, label] : source_->overrides) {
+    if (key_path == overridden || key_path.starts_with(overridden + ".") ||
+        key_path.starts_with(overridden + "["))
+      return SourceLocation{label, 0, 0};
+  }
+  return location_of(mark, source_->file);
+}
 
 SourceLocation YamlNode::location() const {
-  return location_of(node_.Mark(), *file_);
+  return location_of_key(path_, node_.Mark());
 }
 
 void YamlNode::fail(std::string_view what) const {
@@ -55,7 +66,7 @@ void YamlNode::allow_keys(std::initializer_list<std::string_view> keys) const {
   std::vector<std::string> seen;
   for (const auto& entry : node_) {
     const std::string key = entry.first.as<std::string>();
-    const SourceLocation where = location_of(entry.first.Mark(), *file_);
+    const SourceLocation where = location_of_key(join_path(path_, key), entry.first.Mark());
     for (const std::string& earlier : seen) {
       if (earlier == key)
         throw InputError(where, join_path(path_, key) + ": the key is given twice; keep one");
@@ -84,14 +95,14 @@ YamlNode YamlNode::at(std::string_view key) const {
   expect_map();
   const YAML::Node child = node_[std::string(key)];
   if (!child.IsDefined()) fail("the key '" + std::string(key) + "' is required but missing");
-  return YamlNode(child, file_, join_path(path_, key));
+  return YamlNode(child, source_, join_path(path_, key));
 }
 
 std::optional<YamlNode> YamlNode::find(std::string_view key) const {
   expect_map();
   const YAML::Node child = node_[std::string(key)];
   if (!child.IsDefined() || child.IsNull()) return std::nullopt;
-  return YamlNode(child, file_, join_path(path_, key));
+  return YamlNode(child, source_, join_path(path_, key));
 }
 
 void YamlNode::expect_sequence() const {
@@ -105,7 +116,7 @@ std::size_t YamlNode::size() const {
 
 YamlNode YamlNode::operator[](std::size_t index) const {
   expect_sequence();
-  return YamlNode(node_[index], file_, path_ + "[" + std::to_string(index) + "]");
+  return YamlNode(node_[index], source_, path_ + "[" + std::to_string(index) + "]");
 }
 
 std::string YamlNode::text() const {
@@ -153,8 +164,46 @@ bool YamlNode::boolean() const {
   fail("expected true or false, found " + found_text(node_));
 }
 
+void YamlNode::set_path(std::string_view dotted_path, std::string_view value,
+                        std::string_view label) {
+  const SourceLocation where{std::string(label), 0, 0};
+  if (dotted_path.empty()) throw InputError(where, "expected key.path=value, found no key");
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(std::string(value));
+  } catch (const YAML::Exception& e) {
+    throw InputError(where, "the value is not valid YAML: " + e.msg);
+  }
+  if (!node_.IsMap()) fail("expected a map of keys, found " + found_text(node_));
+  YAML::Node current;
+  current.reset(node_);
+  std::string walked = path_;
+  std::string_view rest = dotted_path;
+  while (true) {
+    const std::size_t dot = rest.find('.');
+    const std::string key(rest.substr(0, dot));
+    if (key.empty()) throw InputError(where, "the key path has an empty part");
+    walked = join_path(walked, key);
+    if (dot == std::string_view::npos) {
+      current[key] = parsed;
+      break;
+    }
+    YAML::Node next = current[key];
+    if (!next.IsDefined() || next.IsNull()) {
+      current[key] = YAML::Node(YAML::NodeType::Map);
+      next.reset(current[key]);
+    }
+    if (!next.IsMap())
+      throw InputError(where, walked + " holds " + found_text(next) + ", not a map of keys");
+    current.reset(next);
+    rest.remove_prefix(dot + 1);
+  }
+  source_->overrides[join_path(path_, dotted_path)] = std::string(label);
+}
+
 YamlNode load_yaml_text(std::string_view text, const std::string& name) {
-  auto file = std::make_shared<const std::string>(name);
+  auto source = std::make_shared<YamlSource>();
+  source->file = name;
   YAML::Node root;
   try {
     root = YAML::Load(std::string(text));
@@ -165,7 +214,7 @@ YamlNode load_yaml_text(std::string_view text, const std::string& name) {
   }
   if (!root.IsDefined() || root.IsNull())
     throw InputError(SourceLocation{name, 1, 1}, "the file is empty; expected a YAML map");
-  return YamlNode(root, file, "");
+  return YamlNode(root, source, "");
 }
 
 YamlNode load_yaml_file(const std::string& file, std::size_t max_bytes) {

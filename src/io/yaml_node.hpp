@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -18,9 +19,16 @@
 
 namespace fl {
 
+// Where a document came from: its file name, and the key paths that a command line replaced
+// ("plate.thickness" -> "--set plate.thickness=5 kg"), so errors point at the right place.
+struct YamlSource {
+  std::string file;
+  std::map<std::string, std::string, std::less<>> overrides;
+};
+
 class YamlNode {
  public:
-  YamlNode(YAML::Node node, std::shared_ptr<const std::string> file, std::string path);
+  YamlNode(YAML::Node node, std::shared_ptr<YamlSource> source, std::string path);
 
   const std::string& path() const { return path_; }
   SourceLocation location() const;
@@ -53,9 +61,15 @@ class YamlNode {
 
   const YAML::Node& raw() const { return node_; }
 
+  // Replaces (or adds) the value at a dotted key path below this map, e.g. "plate.thickness",
+  // with `value` read as YAML; errors about that key then name `label` instead of a file line.
+  void set_path(std::string_view dotted_path, std::string_view value, std::string_view label);
+
  private:
+  SourceLocation location_of_key(const std::string& key_path, const YAML::Mark& mark) const;
+
   YAML::Node node_;
-  std::shared_ptr<const std::string> file_;
+  std::shared_ptr<YamlSource> source_;
   std::string path_;
 };
 

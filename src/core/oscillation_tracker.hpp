@@ -1,0 +1,53 @@
+// Period and amplitude of an oscillation x(t) read from its own trajectory, sample by sample:
+// the times x crosses its centre (placed between samples by cubic Hermite interpolation with the
+// velocities) and the turning points' amplitudes. This is the trajectory's own measure of the
+// period, independent of the Hall sensor and the estimator.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <vector>
+
+namespace fl {
+
+struct LinearFit {
+  double slope = 0.0;
+  double intercept = 0.0;
+  double slope_std_error = 0.0;
+  std::size_t n = 0;
+};
+
+// Least-squares line through (x_i, y_i); slope_std_error from the residuals (0 for n <= 2).
+LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
+
+class OscillationTracker {
+ public:
+  explicit OscillationTracker(double centre = 0.0) : centre_(centre) {}
+
+  // One sample of the trajectory: time [s], position [m], velocity [m/s]. Times must increase.
+  void add(double t, double x, double v);
+
+  // Crossings of the centre, alternating in direction, in time order [s].
+  const std::vector<double>& crossings() const { return crossings_; }
+  // |x - centre| at each turning point [m], and when it happened [s].
+  const std::vector<double>& turning_amplitudes() const { return amplitudes_; }
+  const std::vector<double>& turning_times() const { return turning_times_; }
+
+  // Period from a straight-line fit of crossing time against half-period index (needs at least
+  // three crossings), with its standard error. nullopt before that.
+  std::optional<LinearFit> period() const;
+
+  // Relative change of the amplitude per period: slope of amplitude(t) times T over the first
+  // amplitude (needs at least two turning points and a period).
+  std::optional<double> amplitude_drift_per_period() const;
+
+ private:
+  double centre_;
+  bool have_previous_ = false;
+  double t0_ = 0.0, x0_ = 0.0, v0_ = 0.0;
+  std::vector<double> crossings_;
+  std::vector<double> amplitudes_;
+  std::vector<double> turning_times_;
+};
+
+}  // namespace fl

@@ -1,0 +1,60 @@
+// The Bullet world of a scene: a plate on two counter-rotating rollers, built from exactly the
+// parts the scene names. Bullet types stay behind this interface (and in double precision).
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "scene/scene.hpp"
+
+namespace fl {
+
+// The plate's centre of mass in the x-z plane, and its pitch about y. SI.
+struct PlateState {
+  double x = 0.0;           // m
+  double z = 0.0;           // m, of the centre of mass
+  double pitch = 0.0;       // rad, about +y
+  double vx = 0.0;          // m/s
+  double vz = 0.0;          // m/s
+  double pitch_rate = 0.0;  // rad/s
+};
+
+// What one roller does to the plate over the last step (impulses divided by the step).
+struct RollerContact {
+  bool touching = false;
+  double normal_force = 0.0;    // N, pushing the plate up
+  double friction_force = 0.0;  // N, along +x on the plate
+  double penetration = 0.0;     // m, deepest, >= 0
+};
+
+class RigWorld {
+ public:
+  explicit RigWorld(const Scene& scene);
+  ~RigWorld();
+  RigWorld(const RigWorld&) = delete;
+  RigWorld& operator=(const RigWorld&) = delete;
+
+  // Advances one fixed step of scene.world.time_step.
+  void step();
+
+  double time() const;  // s since the start
+  long long steps() const;
+  PlateState plate() const;
+  // Index 0 is the roller at x = -l/2, 1 at x = +l/2.
+  std::array<RollerContact, 2> contacts() const;
+  // Angular velocity about +y of each roller [rad/s] (roller 0 positive when turning inward).
+  std::array<double, 2> roller_speeds() const;
+
+  // Surface speed of each roller's top along +x [m/s].
+  std::array<double, 2> roller_surface_speeds() const;
+
+  double plate_mass() const;     // kg, slab + payload + magnets
+  double plate_h_c() const;      // m, centre of mass above the contact line
+  double plate_inertia() const;  // kg m^2, pitch
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fl

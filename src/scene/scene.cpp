@@ -1,0 +1,54 @@
+#include "scene/scene.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/analytic_model.hpp"
+
+namespace fl {
+
+PlateMass plate_mass(const Scene& scene) {
+  const PlateDesc& p = scene.plate;
+  const double slab = p.mass ? *p.mass : p.density * p.length * p.width * p.thickness;
+  // Parts: mass, centre (x, z) with z above the plate's bottom face, own pitch inertia.
+  struct Part {
+    double m, x, z, own;
+  };
+  std::vector<Part> parts;
+  parts.push_back({slab, 0.0, 0.5 * p.thickness,
+                   slab * (p.length * p.length + p.thickness * p.thickness) / 12.0});
+  // The payload is spread evenly along the plate (the paper's LEGO blocks keep the mass uniform).
+  if (p.payload.mass > 0.0)
+    parts.push_back({p.payload.mass, 0.0, p.thickness + p.payload.height,
+                     p.payload.mass * p.length * p.length / 12.0});
+  for (const MagnetDesc& magnet : scene.magnets) {
+    const double r = 0.5 * magnet.diameter;
+    const double m = magnet.density * std::numbers::pi * r * r * magnet.thickness;
+    parts.push_back({m, magnet.x, p.thickness + 0.5 * magnet.thickness,
+                     m * (3.0 * r * r + magnet.thickness * magnet.thickness) / 12.0});
+  }
+  PlateMass out;
+  double mx = 0.0, mz = 0.0;
+  for (const Part& part : parts) {
+    out.mass += part.m;
+    mx += part.m * part.x;
+    mz += part.m * part.z;
+  }
+  const double cx = mx / out.mass;
+  out.x_c = cx;
+  out.h_c = mz / out.mass;
+  for (const Part& part : parts) {
+    const double dx = part.x - cx;
+    const double dz = part.z - out.h_c;
+    out.inertia_pitch += part.own + part.m * (dx * dx + dz * dz);
+  }
+  return out;
+}
+
+double initial_amplitude(const Scene& scene, double mu_k) {
+  const PlateMass pm = plate_mass(scene);
+  const double omega = angular_frequency(scene.rollers.spacing, mu_k, pm.h_c, scene.world.gravity);
+  return std::hypot(scene.plate.offset, scene.plate.velocity / omega);
+}
+
+}  // namespace fl

@@ -1,0 +1,116 @@
+// A scene: the plain description of one experiment, in SI units, with no Bullet, GL or file types.
+// The YAML loader (scene_yaml.hpp) fills it; tests and sweeps may build or change it directly;
+// the physics builder makes a world of exactly the parts it names. Defaults live here, once.
+//
+// Coordinates: x along the plate's motion, z up, the rollers' axes along y at x = -l/2 and
+// x = +l/2. The contact line (the rollers' tops) is at z = 0.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fl {
+
+using Vec3 = std::array<double, 3>;
+
+struct WorldDesc {
+  double gravity = 9.81;          // m/s^2, pulls along -z
+  double time_step = 1.0 / 1000;  // s, fixed
+  int solver_iterations = 10;     // sequential-impulse iterations per step
+  double duration = 10.0;         // s of simulated time
+  std::uint64_t seed = 1;         // sensor noise and jitter
+};
+
+enum class RollerSense { kInward, kOutward };  // which way the rollers' tops turn
+
+struct RollersDesc {
+  double spacing = 0.089;             // l, m, between the two axes
+  double radius = 0.010;              // a, m
+  double length = 0.100;              // m, along y
+  double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller, magnitude
+  RollerSense sense = RollerSense::kInward;
+  std::string material = "pvc";
+};
+
+// Mass carried on the plate's top (LEGO blocks, modelling clay) that raises the centre of mass.
+struct PayloadDesc {
+  double mass = 0.0;    // kg
+  double height = 0.0;  // m, of the payload's centre of mass above the plate's top face
+};
+
+struct PlateDesc {
+  double length = 0.200;       // m, along x
+  double width = 0.060;        // m, along y
+  double thickness = 0.005;    // m, along z
+  std::optional<double> mass;  // kg of the slab; if absent, density x volume
+  double density = 1050.0;     // kg/m^3 (ABS), used when mass is absent
+  std::string material = "lego";
+  PayloadDesc payload;
+  double offset = 0.020;  // m, initial x of the plate's centre
+  double velocity = 0.0;  // m/s, initial x velocity
+};
+
+// A cylindrical magnet fixed on the plate's top face, magnetised along its axis (z).
+struct MagnetDesc {
+  double x = 0.0;            // m, of its centre, along the plate from the plate's centre
+  double diameter = 0.006;   // m
+  double thickness = 0.003;  // m
+  double remanence = 1.2;    // T (N35 neodymium); negative flips the pole that faces up
+  double density = 7500.0;   // kg/m^3 (NdFeB)
+};
+
+// A linear Hall sensor read by an ADC at its own clock.
+struct SensorDesc {
+  Vec3 position{0.07, 0.0, 0.012};  // m, world frame
+  Vec3 axis{0.0, 0.0, 1.0};         // unit vector, the field component measured
+  double sensitivity = 25.0;        // V/T (2.5 mV/G)
+  double supply = 5.0;              // V, also the ADC's reference
+  std::optional<double> offset;     // V at zero field; default supply / 2
+  int adc_bits = 10;
+  double sample_rate = 1000.0;  // Hz
+  double noise = 0.002;         // V rms, white, added before the ADC
+  double jitter = 10e-6;        // s rms, of each sample's time
+};
+
+struct FrictionDesc {
+  // mu_k between plate and rollers. Empty `mu_k` with `from_paper` takes the paper's Table I
+  // value for the plate's material at `temperature`.
+  double mu_k = 0.29;
+  bool from_paper = false;
+  std::string paper_material;  // the Table I key used, when from_paper
+  double temperature = 300.0;  // K
+};
+
+struct OutputDesc {
+  bool trajectory = true;  // trajectory.csv with --out
+  bool hall = true;        // hall.csv with --out (when the scene has a sensor)
+  bool summary = true;     // summary.json with --out
+};
+
+struct Scene {
+  std::string name;  // file stem or "inline"
+  WorldDesc world;
+  RollersDesc rollers;
+  PlateDesc plate;
+  std::vector<MagnetDesc> magnets;
+  std::optional<SensorDesc> sensor;
+  FrictionDesc friction;
+  OutputDesc output;
+};
+
+// Mass properties of the plate as built (slab + payload + magnets), from the description.
+struct PlateMass {
+  double mass = 0.0;           // kg
+  double x_c = 0.0;            // m, centre of mass along x from the plate's geometric centre
+  double h_c = 0.0;            // m, centre of mass above the plate's bottom face (the contact line)
+  double inertia_pitch = 0.0;  // kg m^2, about the y axis through the centre of mass
+};
+PlateMass plate_mass(const Scene& scene);
+
+// The largest |x| the plate's centre reaches for a harmonic oscillation from (offset, velocity).
+double initial_amplitude(const Scene& scene, double mu_k);
+
+}  // namespace fl

@@ -1,0 +1,123 @@
+#include "scene/scene_checks.hpp"
+
+#include <cmath>
+
+#include "core/analytic_model.hpp"
+#include "core/describe.hpp"
+
+namespace fl {
+namespace {
+
+bool finite_positive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+
+}  // namespace
+
+std::vector<SceneProblem> check_scene(const Scene& s) {
+  std::vector<SceneProblem> problems;
+  const auto need = [&](bool ok, const char* key, std::string message) {
+    if (!ok) problems.push_back({key, std::move(message)});
+  };
+  const auto positive = [&](double v, const char* key) {
+    need(finite_positive(v), key, describe("must be positive, found ", v));
+  };
+  positive(s.world.gravity, "world.gravity");
+  positive(s.world.time_step, "world.time_step");
+  positive(s.world.duration, "world.duration");
+  need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
+       "world.solver_iterations",
+       describe("must be between 1 and 10000, found ", s.world.solver_iterations));
+  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
+    need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
+         describe("needs ", s.world.duration / s.world.time_step,
+                  " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
+  positive(s.rollers.spacing, "rollers.spacing");
+  positive(s.rollers.radius, "rollers.radius");
+  positive(s.rollers.length, "rollers.length");
+  need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
+       describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
+  if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius))
+    need(s.rollers.spacing > 2.0 * s.rollers.radius, "rollers.spacing",
+         describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
+                  " mm is not more than their diameter ", 2e3 * s.rollers.radius, " mm"));
+  positive(s.plate.length, "plate.length");
+  positive(s.plate.width, "plate.width");
+  positive(s.plate.thickness, "plate.thickness");
+  if (s.plate.mass)
+    positive(*s.plate.mass, "plate.mass");
+  else
+    positive(s.plate.density, "plate.density");
+  need(std::isfinite(s.plate.payload.mass) && s.plate.payload.mass >= 0.0, "plate.payload.mass",
+       "must be >= 0");
+  need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
+       "plate.payload.height", "must be >= 0");
+  need(std::isfinite(s.plate.offset), "plate.offset", "must be finite");
+  need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
+  need(std::isfinite(s.friction.mu_k) && s.friction.mu_k > 0.0, "friction.mu_k",
+       describe("mu_k must be positive, found ", s.friction.mu_k));
+  for (std::size_t i = 0; i < s.magnets.size(); ++i) {
+    const MagnetDesc& m = s.magnets[i];
+    need(finite_positive(m.diameter) && finite_positive(m.thickness) && finite_positive(m.density),
+         "magnets", describe("magnet ", i, ": diameter, thickness and density must be positive"));
+    need(std::isfinite(m.remanence) && m.remanence != 0.0, "magnets",
+         describe("magnet ", i, ": remanence must be non-zero"));
+    need(std::fabs(m.x) + 0.5 * m.diameter <= 0.5 * s.plate.length + 1e-12, "magnets",
+         describe("magnet ", i, " at x = ", m.x * 1e3,
+                  " mm does not sit on the plate (half length ", 0.5e3 * s.plate.length, " mm)"));
+  }
+  if (!problems.empty()) return problems;
+
+  // The physics of the set-up as a whole.
+  const PlateMass pm = plate_mass(s);
+  const double l = s.rollers.spacing;
+  const double mu = s.friction.mu_k;
+  if (!has_restoring_force(l, mu, pm.h_c)) {
+    problems.push_back(
+        {"rollers.spacing",
+         describe("no oscillation exists: l = ", l * 1e3, " mm <= 2 mu_k h_c = ", 2e3 * mu * pm.h_c,
+                  " mm (mu_k = ", mu, ", h_c = ", pm.h_c * 1e3,
+                  " mm); widen the rollers, lower the plate's centre of mass or lower mu_k")});
+    return problems;
+  }
+  const double amplitude = initial_amplitude(s, mu);
+  need(0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
+       describe("the plate (", s.plate.length * 1e3,
+                " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
+                " mm: it would leave a roller; use a longer plate or a smaller offset"));
+  if (s.sensor) {
+    const SensorDesc& sensor = *s.sensor;
+    const double norm = std::hypot(sensor.axis[0], sensor.axis[1], sensor.axis[2]);
+    need(std::isfinite(norm) && norm > 0.0, "sensor.axis", "must be a non-zero vector");
+    positive(sensor.sensitivity, "sensor.sensitivity");
+    positive(sensor.supply, "sensor.supply");
+    positive(sensor.sample_rate, "sensor.sample_rate");
+    need(sensor.adc_bits >= 1 && sensor.adc_bits <= 16, "sensor.adc_bits",
+         describe("must be between 1 and 16, found ", sensor.adc_bits));
+    need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise", "must be >= 0");
+    need(std::isfinite(sensor.jitter) && sensor.jitter >= 0.0 &&
+             sensor.jitter < 0.25 / sensor.sample_rate,
+         "sensor.jitter", "must be >= 0 and below a quarter of the sample interval");
+    if (sensor.offset)
+      need(*sensor.offset >= 0.0 && *sensor.offset <= sensor.supply, "sensor.offset",
+           "must lie between 0 V and the supply");
+    need(sensor.position[2] > 0.0, "sensor.position",
+         "the sensor must sit above the rollers' tops (z > 0)");
+    // The sensor must not be inside the volume any magnet sweeps.
+    const double top = s.plate.thickness;
+    for (std::size_t i = 0; i < s.magnets.size(); ++i) {
+      const MagnetDesc& m = s.magnets[i];
+      const double r = 0.5 * m.diameter;
+      const bool inside_x = std::fabs(sensor.position[0] - m.x) <= amplitude + r;
+      const bool inside_y = std::fabs(sensor.position[1]) <= r;
+      const bool inside_z = sensor.position[2] >= top && sensor.position[2] <= top + m.thickness;
+      need(!(inside_x && inside_y && inside_z), "sensor.position",
+           describe("the sensor lies inside the volume magnet ", i,
+                    " sweeps as the plate moves; raise it above the magnet's top at ",
+                    (top + m.thickness) * 1e3, " mm"));
+    }
+  }
+  return problems;
+}
+
+}  // namespace fl

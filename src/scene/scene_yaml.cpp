@@ -1,0 +1,219 @@
+#include "scene/scene_yaml.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "io/input_error.hpp"
+#include "io/yaml_node.hpp"
+#include "scene/scene_checks.hpp"
+
+namespace fl {
+namespace {
+
+Vec3 read_vec3(const YamlNode& node, Dimension dimension) {
+  if (node.size() != 3) node.fail("expected a list of 3 values [x, y, z]");
+  return {node[0].quantity(dimension), node[1].quantity(dimension), node[2].quantity(dimension)};
+}
+
+void read_world(const YamlNode& n, WorldDesc& w) {
+  n.allow_keys({"gravity", "time_step", "solver_iterations", "duration", "seed"});
+  if (auto v = n.find("gravity")) w.gravity = v->quantity(Dimension::kAcceleration);
+  if (auto v = n.find("time_step")) w.time_step = v->quantity(Dimension::kTime);
+  if (auto v = n.find("solver_iterations")) w.solver_iterations = static_cast<int>(v->integer());
+  if (auto v = n.find("duration")) w.duration = v->quantity(Dimension::kTime);
+  if (auto v = n.find("seed")) {
+    const std::int64_t seed = v->integer();
+    if (seed < 0) v->fail("expected a whole number >= 0");
+    w.seed = static_cast<std::uint64_t>(seed);
+  }
+}
+
+void read_rollers(const YamlNode& n, RollersDesc& r) {
+  n.allow_keys({"spacing", "radius", "diameter", "length", "speed", "sense", "material"});
+  if (auto v = n.find("spacing")) r.spacing = v->quantity(Dimension::kLength);
+  if (n.has("radius") && n.has("diameter"))
+    n.at("diameter").fail("give radius or diameter, not both");
+  if (auto v = n.find("radius")) r.radius = v->quantity(Dimension::kLength);
+  if (auto v = n.find("diameter")) r.radius = 0.5 * v->quantity(Dimension::kLength);
+  if (auto v = n.find("length")) r.length = v->quantity(Dimension::kLength);
+  if (auto v = n.find("speed")) r.speed = v->quantity(Dimension::kAngularSpeed);
+  if (auto v = n.find("sense")) {
+    const std::string sense = v->text();
+    if (sense == "inward")
+      r.sense = RollerSense::kInward;
+    else if (sense == "outward")
+      r.sense = RollerSense::kOutward;
+    else
+      v->fail("expected inward (the tops turn toward the centre) or outward, found \"" + sense +
+              "\"");
+  }
+  if (auto v = n.find("material")) r.material = v->text();
+}
+
+void read_plate(const YamlNode& n, PlateDesc& p) {
+  n.allow_keys({"length", "width", "thickness", "mass", "density", "material", "payload", "offset",
+                "velocity"});
+  if (auto v = n.find("length")) p.length = v->quantity(Dimension::kLength);
+  if (auto v = n.find("width")) p.width = v->quantity(Dimension::kLength);
+  if (auto v = n.find("thickness")) p.thickness = v->quantity(Dimension::kLength);
+  if (n.has("mass") && n.has("density")) n.at("density").fail("give mass or density, not both");
+  if (auto v = n.find("mass")) p.mass = v->quantity(Dimension::kMass);
+  if (auto v = n.find("density")) p.density = v->quantity(Dimension::kDensity);
+  if (auto v = n.find("material")) p.material = v->text();
+  if (auto payload = n.find("payload")) {
+    payload->allow_keys({"mass", "height"});
+    if (auto v = payload->find("mass")) p.payload.mass = v->quantity(Dimension::kMass);
+    if (auto v = payload->find("height")) p.payload.height = v->quantity(Dimension::kLength);
+  }
+  if (auto v = n.find("offset")) p.offset = v->quantity(Dimension::kLength);
+  if (auto v = n.find("velocity")) p.velocity = v->quantity(Dimension::kSpeed);
+}
+
+MagnetDesc read_magnet(const YamlNode& n) {
+  n.allow_keys({"x", "diameter", "thickness", "remanence", "density"});
+  MagnetDesc m;
+  m.x = n.at("x").quantity(Dimension::kLength);
+  if (auto v = n.find("diameter")) m.diameter = v->quantity(Dimension::kLength);
+  if (auto v = n.find("thickness")) m.thickness = v->quantity(Dimension::kLength);
+  if (auto v = n.find("remanence")) m.remanence = v->quantity(Dimension::kMagneticField);
+  if (auto v = n.find("density")) m.density = v->quantity(Dimension::kDensity);
+  return m;
+}
+
+SensorDesc read_sensor(const YamlNode& n) {
+  n.allow_keys({"position", "axis", "sensitivity", "supply", "offset", "adc_bits", "sample_rate",
+                "noise", "jitter"});
+  SensorDesc s;
+  if (auto v = n.find("position")) s.position = read_vec3(*v, Dimension::kLength);
+  if (auto v = n.find("axis")) s.axis = read_vec3(*v, Dimension::kDimensionless);
+  if (auto v = n.find("sensitivity")) s.sensitivity = v->quantity(Dimension::kSensitivity);
+  if (auto v = n.find("supply")) s.supply = v->quantity(Dimension::kVoltage);
+  if (auto v = n.find("offset")) s.offset = v->quantity(Dimension::kVoltage);
+  if (auto v = n.find("adc_bits")) s.adc_bits = static_cast<int>(v->integer());
+  if (auto v = n.find("sample_rate")) s.sample_rate = v->quantity(Dimension::kFrequency);
+  if (auto v = n.find("noise")) s.noise = v->quantity(Dimension::kVoltage);
+  if (auto v = n.find("jitter")) s.jitter = v->quantity(Dimension::kTime);
+  return s;
+}
+
+void read_friction(const YamlNode& n, const std::string& plate_material, FrictionDesc& f,
+                   const PaperTableSource& paper) {
+  n.allow_keys({"mu_k", "temperature"});
+  if (auto v = n.find("temperature")) f.temperature = v->quantity(Dimension::kTemperature);
+  const auto mu = n.find("mu_k");
+  if (!mu)
+    n.fail("the key 'mu_k' is required: a number, \"paper\" or one of the paper's materials");
+  const std::string text = mu->text();
+  double number = 0.0;
+  bool is_number = true;
+  try {
+    number = parse_quantity(text, Dimension::kDimensionless, "friction.mu_k");
+  } catch (const UnitError&) {
+    is_number = false;
+  }
+  if (is_number) {
+    f.mu_k = number;
+    f.from_paper = false;
+    return;
+  }
+  // "paper" takes the plate's material; any other text names a material of Table I.
+  const std::string material = text == "paper" ? plate_material : text;
+  const PaperTable& table = paper();
+  const PaperMaterial* row = table.find(material);
+  if (row == nullptr) {
+    std::string known;
+    for (const PaperMaterial& m : table.materials) known += " " + m.key;
+    mu->fail("expected a number, \"paper\" or one of the paper's materials (" + known.substr(1) +
+             "), found \"" + text + "\"" +
+             (text == "paper" ? " (plate.material is \"" + plate_material + "\")" : ""));
+  }
+  const PaperMeasurement* at = PaperTable::at(*row, f.temperature);
+  if (at == nullptr) {
+    const YamlNode where = n.find("temperature") ? n.at("temperature") : *mu;
+    where.fail("the paper measured " + row->name + " at 300 K" +
+               (row->cold ? " and 77 K" : std::string(" only")) + ", not at " +
+               std::to_string(static_cast<int>(std::lround(f.temperature))) + " K");
+  }
+  f.mu_k = at->mu_k.value;
+  f.from_paper = true;
+  f.paper_material = row->key;
+}
+
+void read_output(const YamlNode& n, OutputDesc& o) {
+  n.allow_keys({"trajectory", "hall", "summary"});
+  if (auto v = n.find("trajectory")) o.trajectory = v->boolean();
+  if (auto v = n.find("hall")) o.hall = v->boolean();
+  if (auto v = n.find("summary")) o.summary = v->boolean();
+}
+
+// The node of a dotted key (or its nearest existing parent), to locate a problem.
+YamlNode node_for(const YamlNode& root, const std::string& key) {
+  YamlNode node = root;
+  std::string_view rest = key;
+  while (!rest.empty()) {
+    const std::size_t dot = rest.find('.');
+    const std::string part(rest.substr(0, dot));
+    auto child = node.is_map() ? node.find(part) : std::nullopt;
+    if (!child) break;
+    node = *child;
+    if (dot == std::string_view::npos) break;
+    rest.remove_prefix(dot + 1);
+  }
+  return node;
+}
+
+Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOverride> overrides,
+                 const PaperTableSource& paper) {
+  root.expect_map();
+  for (const SceneOverride& o : overrides)
+    root.set_path(o.path, o.value, "--set " + o.path + "=" + o.value);
+  root.allow_keys(
+      {"format", "name", "world", "rollers", "plate", "magnets", "sensor", "friction", "output"});
+  const YamlNode format = root.at("format");
+  if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
+  Scene scene;
+  scene.name = name;
+  if (auto v = root.find("name")) scene.name = v->text();
+  if (auto v = root.find("world")) read_world(*v, scene.world);
+  if (auto v = root.find("rollers")) read_rollers(*v, scene.rollers);
+  if (auto v = root.find("plate")) read_plate(*v, scene.plate);
+  if (auto v = root.find("magnets")) {
+    for (std::size_t i = 0; i < v->size(); ++i) scene.magnets.push_back(read_magnet((*v)[i]));
+  }
+  if (auto v = root.find("sensor")) scene.sensor = read_sensor(*v);
+  read_friction(root.at("friction"), scene.plate.material, scene.friction, paper);
+  if (auto v = root.find("output")) read_output(*v, scene.output);
+
+  const std::vector<SceneProblem> problems = check_scene(scene);
+  if (!problems.empty()) {
+    const SceneProblem& first = problems.front();
+    const YamlNode where = node_for(root, first.key);
+    throw InputError(where.location(), first.key + ": " + first.message);
+  }
+  return scene;
+}
+
+}  // namespace
+
+SceneOverride parse_override(std::string_view text) {
+  const std::size_t eq = text.find('=');
+  const SourceLocation where{"--set " + std::string(text), 0, 0};
+  if (eq == std::string_view::npos)
+    throw InputError(where, "expected key.path=value (e.g. plate.thickness=5mm), found no '='");
+  SceneOverride o{std::string(text.substr(0, eq)), std::string(text.substr(eq + 1))};
+  if (o.path.empty()) throw InputError(where, "expected key.path=value, found no key before '='");
+  return o;
+}
+
+Scene load_scene_text(std::string_view text, const std::string& name,
+                      std::span<const SceneOverride> overrides, const PaperTableSource& paper) {
+  return read_scene(load_yaml_text(text, name), name, overrides, paper);
+}
+
+Scene load_scene_file(const std::string& file, std::span<const SceneOverride> overrides,
+                      const PaperTableSource& paper) {
+  return read_scene(load_yaml_file(file), std::filesystem::path(file).stem().string(), overrides,
+                    paper);
+}
+
+}  // namespace fl

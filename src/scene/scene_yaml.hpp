@@ -1,0 +1,35 @@
+// Scene files (scenes/*.yaml, format 1; docs/scene-format.md) read into a Scene, strictly:
+// unknown keys are errors with a suggestion, every value needs its unit (plain numbers mean SI),
+// and physically impossible set-ups are refused with the reason, located at the key responsible.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "core/paper_table.hpp"
+#include "scene/scene.hpp"
+
+namespace fl {
+
+// One command-line override, "--set plate.thickness=5 mm".
+struct SceneOverride {
+  std::string path;   // "plate.thickness"
+  std::string value;  // "5 mm" (read as YAML)
+};
+
+// Splits "key.path=value"; throws InputError if there is no '=' or no key.
+SceneOverride parse_override(std::string_view text);
+
+// The paper's table, loaded only if a scene names one of its materials.
+using PaperTableSource = std::function<const PaperTable&()>;
+
+Scene load_scene_file(const std::string& file, std::span<const SceneOverride> overrides,
+                      const PaperTableSource& paper);
+
+// The same from text (tests, inline scenes); `name` stands for the file in messages.
+Scene load_scene_text(std::string_view text, const std::string& name,
+                      std::span<const SceneOverride> overrides, const PaperTableSource& paper);
+
+}  // namespace fl

@@ -1,0 +1,65 @@
+// The simulated Hall sensor: the magnets on the plate are point dipoles carried by the plate;
+// the sensor measures the field along its axis, adds its offset, noise and clipping, and an ADC
+// samples it at its own clock (not the physics step: the plate's state is interpolated between
+// steps), with jitter. Each sample is (t_us, adc) as the rig's Arduino records it.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace fl {
+
+struct HallSample {
+  std::uint32_t t_us = 0;  // the ADC clock's time stamp, microseconds
+  std::uint16_t adc = 0;   // 0 .. 2^bits - 1
+};
+
+// The plate's pose at one instant, enough to place the magnets.
+struct PlatePose {
+  double t = 0.0;      // s
+  double x = 0.0;      // m, centre of mass
+  double z = 0.0;      // m, centre of mass
+  double pitch = 0.0;  // rad about +y
+  double vx = 0.0, vz = 0.0, pitch_rate = 0.0;
+};
+
+class HallSignal {
+ public:
+  // Needs scene.sensor. The noise and the jitter come from scene.world.seed.
+  explicit HallSignal(const Scene& scene);
+
+  // Field component along the sensor's axis [T] for the plate at `pose`.
+  double field_along_axis(const PlatePose& pose) const;
+  // Sensor output [V] for a field [T], before noise and clipping.
+  double voltage(double field) const;
+  // ADC code for a voltage (clipped to the rails).
+  std::uint16_t adc_code(double volts) const;
+
+  // Emits, in time order, every sample whose clock time falls in (a.t, b.t], evaluating the
+  // plate's pose by cubic Hermite interpolation between the two physics states.
+  void sample_between(const PlatePose& a, const PlatePose& b,
+                      const std::function<void(const HallSample&)>& emit);
+
+  double sample_interval() const { return interval_; }
+
+ private:
+  struct MagnetOnPlate {
+    Vec3 offset;    // m, from the plate's centre of mass in the plate's frame
+    double moment;  // A m^2 along the plate's +z
+  };
+  std::vector<MagnetOnPlate> magnets_;
+  SensorDesc sensor_;
+  Vec3 axis_{};
+  double offset_volts_ = 0.0;
+  double interval_ = 0.0;
+  long long next_index_ = 1;  // sample 0 is at t = 0, taken by the first call
+  bool first_ = true;
+  std::mt19937_64 rng_;
+  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+};
+
+}  // namespace fl

@@ -1,0 +1,67 @@
+// The trajectory's own period and amplitude, against sampled cosines with a known answer.
+#include "core/oscillation_tracker.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+namespace fl {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+TEST(OscillationTracker, PeriodAndAmplitudeOfASampledCosine) {
+  for (double period : {0.09, 0.79, 2.0}) {
+    const double w = 2.0 * kPi / period;
+    const double amplitude = 0.02;
+    const double dt = period / 37.3;  // coarse, and not commensurate with the period
+    OscillationTracker tracker;
+    for (int i = 0; i <= 1000; ++i) {
+      const double t = i * dt;
+      tracker.add(t, amplitude * std::cos(w * t + 0.3), -amplitude * w * std::sin(w * t + 0.3));
+    }
+    const auto p = tracker.period();
+    ASSERT_TRUE(p.has_value());
+    // Cubic Hermite interpolation between samples 1/37 of a period apart: error ~ (w dt)^4.
+    EXPECT_NEAR(p->slope / period - 1.0, 0.0, 1e-6) << period;
+    for (double a : tracker.turning_amplitudes()) EXPECT_NEAR(a / amplitude - 1.0, 0.0, 1e-4);
+    EXPECT_NEAR(*tracker.amplitude_drift_per_period(), 0.0, 1e-6);
+    // Crossings alternate: half a period apart.
+    const auto& c = tracker.crossings();
+    for (std::size_t i = 1; i < c.size(); ++i)
+      EXPECT_NEAR(c[i] - c[i - 1], 0.5 * period, 1e-5 * period);
+  }
+}
+
+TEST(OscillationTracker, DecayingAmplitudeIsMeasuredAsDrift) {
+  const double period = 0.5, w = 2.0 * kPi / period, rate = 0.01;  // 1 % per second
+  OscillationTracker tracker;
+  for (int i = 0; i <= 20000; ++i) {
+    const double t = i * 1e-3;
+    const double a = 0.02 * (1.0 - rate * t);
+    tracker.add(t, a * std::cos(w * t), -a * w * std::sin(w * t) - 0.02 * rate * std::cos(w * t));
+  }
+  // d(amplitude)/dt x T / A0 = -0.01 x 0.5.
+  EXPECT_NEAR(*tracker.amplitude_drift_per_period(), -0.005, 2e-4);
+}
+
+TEST(OscillationTracker, NoPeriodBeforeThreeCrossings) {
+  OscillationTracker tracker;
+  for (int i = 0; i < 10; ++i) tracker.add(i * 0.01, 0.01 + i * 1e-3, 0.1);
+  EXPECT_FALSE(tracker.period().has_value());
+  EXPECT_FALSE(tracker.amplitude_drift_per_period().has_value());
+}
+
+TEST(FitLine, ExactLineAndItsError) {
+  const LinearFit f = fit_line({0, 1, 2, 3}, {1, 3, 5, 7});
+  EXPECT_DOUBLE_EQ(f.slope, 2.0);
+  EXPECT_DOUBLE_EQ(f.intercept, 1.0);
+  EXPECT_NEAR(f.slope_std_error, 0.0, 1e-15);
+  // Residuals +-e alternate: slope standard error from them.
+  const LinearFit g = fit_line({0, 1, 2, 3}, {0.1, 0.9, 2.1, 2.9});
+  EXPECT_GT(g.slope_std_error, 0.0);
+}
+
+}  // namespace
+}  // namespace fl

@@ -1,0 +1,203 @@
+// Scene files: values with units into SI, strict keys with located errors and suggestions,
+// --set overrides, the paper's materials by name, and refusal of impossible set-ups.
+#include "scene/scene_yaml.hpp"
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "scene/scene_checks.hpp"
+
+namespace fl {
+namespace {
+
+const PaperTable& paper_table() {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return table;
+}
+
+const PaperTableSource kPaper = []() -> const PaperTable& { return paper_table(); };
+
+// A small valid scene; tests change one thing at a time.
+const std::string kBase = R"(format: 1
+rollers:
+  spacing: 89 mm
+  radius: 10 mm
+plate:
+  length: 200 mm
+  thickness: 5 mm
+  offset: 20 mm
+friction:
+  mu_k: 0.3
+)";
+
+Scene load(const std::string& text, std::vector<SceneOverride> overrides = {}) {
+  return load_scene_text(text, "t.yaml", overrides, kPaper);
+}
+
+std::string error_of(const std::string& text, std::vector<SceneOverride> overrides = {}) {
+  try {
+    load(text, std::move(overrides));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneYaml, MinimalSceneLoadsInSi) {
+  const std::string file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+  const Scene s = load_scene_file(file, {}, kPaper);
+  EXPECT_EQ(s.name, "minimal");
+  EXPECT_DOUBLE_EQ(s.rollers.spacing, 0.089);
+  EXPECT_DOUBLE_EQ(s.rollers.radius, 0.010);
+  EXPECT_NEAR(s.rollers.speed, 1600.0 * 2.0 * std::numbers::pi / 60.0, 1e-12);
+  EXPECT_DOUBLE_EQ(s.world.time_step, 0.001);
+  EXPECT_EQ(s.magnets.size(), 2u);
+  ASSERT_TRUE(s.sensor.has_value());
+  EXPECT_DOUBLE_EQ(s.sensor->sensitivity, 25.0);
+  EXPECT_DOUBLE_EQ(s.sensor->sample_rate, 1000.0);
+  EXPECT_TRUE(s.friction.from_paper);
+  EXPECT_EQ(s.friction.paper_material, "lego");
+  EXPECT_DOUBLE_EQ(s.friction.mu_k, 0.29);
+}
+
+// Every scene the repository ships loads (a gallery test).
+TEST(SceneYaml, EverySceneInTheRepositoryLoads) {
+  int count = 0;
+  const std::filesystem::path root = std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes";
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".yaml") continue;
+    // Sweep files describe sweeps, not scenes.
+    if (entry.path().parent_path().filename() == "sweeps") continue;
+    EXPECT_NO_THROW(load_scene_file(entry.path().string(), {}, kPaper)) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 1);
+}
+
+TEST(SceneYaml, UnknownKeySuggestsAndIsLocated) {
+  EXPECT_EQ(error_of(kBase + "world:\n  time_stp: 1 ms\n"),
+            "t.yaml:12:3: error: world.time_stp: unknown key; did you mean 'time_step'?");
+  EXPECT_EQ(error_of("format: 1\nroller:\n  spacing: 89 mm\nfriction: {mu_k: 0.3}\n"),
+            "t.yaml:2:1: error: roller: unknown key; did you mean 'rollers'?");
+}
+
+TEST(SceneYaml, WrongOrMissingUnitsAreLocated) {
+  const std::string message = error_of(kBase + "world:\n  time_step: 1 mm\n");
+  EXPECT_NE(message.find("t.yaml:12:14: error: world.time_step: expected a time"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("found \"1 mm\""), std::string::npos) << message;
+  EXPECT_NE(message.find("s, ms, us"), std::string::npos) << message;
+}
+
+TEST(SceneYaml, FormatIsRequiredAndChecked) {
+  EXPECT_NE(error_of("friction: {mu_k: 0.3}\n").find("the key 'format' is required"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 2\nfriction: {mu_k: 0.3}\n").find("reads scene format 1"),
+            std::string::npos);
+}
+
+TEST(SceneYaml, SetOverridesAnyKeyAndErrorsNameTheOverride) {
+  const Scene s = load(kBase, {{"plate.thickness", "8 mm"}, {"world.seed", "7"}});
+  EXPECT_DOUBLE_EQ(s.plate.thickness, 0.008);
+  EXPECT_EQ(s.world.seed, 7u);
+  // A key the file does not have is created.
+  EXPECT_DOUBLE_EQ(load(kBase, {{"world.duration", "2 s"}}).world.duration, 2.0);
+  EXPECT_EQ(error_of(kBase, {{"plate.thickness", "8 kg"}})
+                .rfind("--set plate.thickness=8 kg: error: plate.thickness: expected a length", 0),
+            0u);
+  EXPECT_EQ(error_of(kBase, {{"plate.thicknes", "8 mm"}}),
+            "--set plate.thicknes=8 mm: error: plate.thicknes: unknown key; did you mean "
+            "'thickness'?");
+  EXPECT_THROW(parse_override("plate.thickness"), InputError);
+  EXPECT_THROW(parse_override("=5"), InputError);
+  EXPECT_EQ(parse_override("a.b=c=d").value, "c=d");
+}
+
+TEST(SceneYaml, PaperMaterialsByNameAndTemperature) {
+  const std::string scene = "format: 1\nplate: {material: plexiglas}\nfriction:\n  mu_k: paper\n";
+  EXPECT_DOUBLE_EQ(load(scene).friction.mu_k, 0.28);
+  EXPECT_DOUBLE_EQ(load(scene + "  temperature: 77 K\n").friction.mu_k, 0.111);
+  EXPECT_DOUBLE_EQ(load("format: 1\nfriction: {mu_k: cardboard}\n").friction.mu_k, 0.20);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: iron, temperature: 77 K}\n")
+                .find("the paper measured Iron at 300 K only, not at 77 K"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: teflon}\n").find("one of the paper's materials"),
+            std::string::npos);
+}
+
+TEST(SceneYaml, ImpossibleSetUpsAreRefusedWithTheReason) {
+  struct Case {
+    std::vector<SceneOverride> overrides;
+    const char* message;
+  };
+  for (const Case& c : {
+           Case{{{"plate.length", "120 mm"}}, "plate.length: the plate (120 mm) is shorter than"},
+           Case{{{"friction.mu_k", "0"}}, "friction.mu_k: mu_k must be positive"},
+           Case{{{"friction.mu_k", "-0.2"}}, "friction.mu_k: mu_k must be positive"},
+           Case{{{"friction.mu_k", "10"}, {"plate.thickness", "10 mm"}},
+                "rollers.spacing: no oscillation exists"},
+           Case{{{"rollers.spacing", "15 mm"}}, "the rollers overlap"},
+           Case{{{"world.time_step", "0 s"}}, "world.time_step: must be positive"},
+           Case{{{"magnets", "[{x: 95 mm}]"}, {"sensor.position", "[110 mm, 0, 6 mm]"}},
+                "sensor.position: the sensor lies inside the volume magnet 0 sweeps"},
+           Case{{{"magnets", "[{x: 150 mm}]"}}, "does not sit on the plate"},
+       }) {
+    const std::string message = error_of(kBase, c.overrides);
+    EXPECT_NE(message.find(c.message), std::string::npos) << c.message << "\n got: " << message;
+  }
+}
+
+TEST(SceneYaml, BadFilesAreRefused) {
+  EXPECT_EQ(error_of(""), "t.yaml:1:1: error: the file is empty; expected a YAML map");
+  EXPECT_NE(error_of("format: 1\nplate: [1, 2\n").find("not valid YAML"), std::string::npos);
+  EXPECT_NE(error_of("- just\n- a list\n").find("expected a map of keys"), std::string::npos);
+  EXPECT_NE(error_of("just text").find("expected a map of keys"), std::string::npos);
+  // A 100 MB file is refused by its size, before it is read.
+  const std::string big = std::string(FRICTIONLAB_TEST_BINARY_DIR) + "/huge-scene.yaml";
+  { std::ofstream(big).put('a'); }
+  ASSERT_EQ(::truncate(big.c_str(), 100 << 20), 0);
+  try {
+    load_scene_file(big, {}, kPaper);
+    ADD_FAILURE() << "a 100 MB file was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than the"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(big);
+}
+
+TEST(PlateMass, SlabPayloadAndMagnetsByHand) {
+  Scene s;
+  s.plate.length = 0.2;
+  s.plate.width = 0.06;
+  s.plate.thickness = 0.005;
+  s.plate.mass = 0.060;
+  EXPECT_DOUBLE_EQ(plate_mass(s).h_c, 0.0025);
+  EXPECT_DOUBLE_EQ(plate_mass(s).mass, 0.060);
+  s.plate.payload = {0.040, 0.010};  // 40 g centred 10 mm above the top face
+  // h_c = (60 g * 2.5 mm + 40 g * 15 mm) / 100 g = 7.5 mm
+  EXPECT_NEAR(plate_mass(s).h_c, 0.0075, 1e-15);
+  MagnetDesc m;
+  m.x = 0.095;
+  m.diameter = 0.006;
+  m.thickness = 0.003;
+  m.density = 7500.0;
+  s.magnets = {m};
+  const double mm = 7500.0 * std::numbers::pi * 0.003 * 0.003 * 0.003;  // 0.636 g
+  const PlateMass pm = plate_mass(s);
+  EXPECT_NEAR(pm.mass, 0.1 + mm, 1e-15);
+  EXPECT_NEAR(pm.x_c, mm * 0.095 / (0.1 + mm), 1e-15);
+  EXPECT_NEAR(pm.h_c, (0.060 * 0.0025 + 0.040 * 0.015 + mm * 0.0065) / (0.1 + mm), 1e-15);
+}
+
+}  // namespace
+}  // namespace fl

@@ -1,0 +1,41 @@
+// Physics steps per second of the minimal scene on one core (issue target: >= 200 000), and the
+// cost of one simulated second at the default step.
+#include <benchmark/benchmark.h>
+
+#include "physics/rig_world.hpp"
+
+namespace {
+
+fl::Scene minimal_scene() {
+  fl::Scene s;  // the defaults are the minimal scene's plate, rollers and release
+  s.friction.mu_k = 0.29;
+  return s;
+}
+
+void BM_MinimalSceneStep(benchmark::State& state) {
+  const fl::Scene scene = minimal_scene();
+  fl::RigWorld world(scene);
+  for (auto _ : state) {
+    world.step();
+    benchmark::DoNotOptimize(world.plate().x);
+  }
+  state.counters["steps_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MinimalSceneStep);
+
+// Ten simulated seconds at 1 kHz, world construction included (issue target: under 0.05 s).
+void BM_MinimalSceneTenSecondsAt1kHz(benchmark::State& state) {
+  fl::Scene scene = minimal_scene();
+  scene.world.time_step = 1e-3;
+  for (auto _ : state) {
+    fl::RigWorld world(scene);
+    for (int i = 0; i < 10000; ++i) world.step();
+    benchmark::DoNotOptimize(world.plate().x);
+  }
+}
+BENCHMARK(BM_MinimalSceneTenSecondsAt1kHz)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -65,7 +65,11 @@ void YamlNode::allow_keys(std::initializer_list<std::string_view> keys) const {
   expect_map();
   std::vector<std::string> seen;
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
+    if (!entry.first.IsScalar())
+      throw InputError(location_of_key(path_, entry.first.Mark()),
+                       (path_.empty() ? std::string() : path_ + ": ") +
+                           "a key must be a plain word, found " + found_text(entry.first));
+    const std::string key = entry.first.Scalar();
     const SourceLocation where = location_of_key(join_path(path_, key), entry.first.Mark());
     for (const std::string& earlier : seen) {
       if (earlier == key)

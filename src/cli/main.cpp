@@ -26,6 +26,8 @@ int main(int argc, char** argv) {
   const std::vector<fl::cli::Command> commands{
       fl::cli::add_analytic_command(app, global),
       fl::cli::add_table_command(app, global),
+      fl::cli::add_run_command(app, global),
+      fl::cli::add_accuracy_command(app, global),
   };
 
   try {

@@ -1,0 +1,25 @@
+// The options every command that reads a scene shares: the file, --set overrides, --duration.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+#include "scene/scene.hpp"
+
+namespace fl::cli {
+
+struct SceneOptions {
+  std::string file;
+  std::vector<std::string> overrides;  // --set key.path=value
+  std::string duration;                // --duration, overrides world.duration
+};
+
+void add_scene_options(CLI::App& command, SceneOptions& options);
+
+// Loads the scene with its overrides; the paper's table is read only if the scene names it.
+Scene load_scene_with_options(const SceneOptions& options, const GlobalOptions& global);
+
+}  // namespace fl::cli

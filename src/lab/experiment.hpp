@@ -1,0 +1,89 @@
+// One run of a scene: builds the world from exactly what the scene names, steps it, streams the
+// simulated Hall samples into the rig's period estimator, follows the trajectory's own period,
+// and summarises the run against the analytic model.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "physics/rig_world.hpp"
+#include "scene/scene.hpp"
+#include "sensor/hall_signal.hpp"
+
+namespace fl {
+
+struct TrajectoryRow {
+  double t = 0.0;  // s
+  PlateState plate;
+  std::array<RollerContact, 2> rollers;
+};
+
+// The period the rig's estimator measured from the simulated Hall signal.
+struct EstimatorReport {
+  int periods_used = 0;
+  int periods_discarded = 0;
+  int pulses = 0;
+  double period = 0.0;            // s, mean
+  double period_std = 0.0;        // s, standard deviation of the periods
+  double period_std_error = 0.0;  // s, of the mean
+  double mu_k = 0.0;              // from the mean period, thin formula (the paper's)
+  double mu_k_err_worst = 0.0;
+  double mu_k_err_quadrature = 0.0;
+};
+
+struct RunSummary {
+  std::string scene;
+  std::uint64_t seed = 0;
+  double spacing = 0.0;  // m
+  double mu_k_set = 0.0;
+  double h_c = 0.0;         // m
+  double plate_mass = 0.0;  // kg
+  double time_step = 0.0;   // s
+  int solver_iterations = 0;
+  double duration = 0.0;  // s simulated
+  long long steps = 0;
+
+  // The analytic model for the scene's true mu_k and h_c.
+  double period_thin = 0.0;                         // s
+  std::optional<double> period_thick;               // s; none without a restoring force
+  std::optional<double> predicted_integrator_bias;  // relative, -(omega dt)^2 / 24
+
+  // The trajectory's own period (crossings of x = 0), and the estimator's from the Hall signal.
+  std::optional<double> period_trajectory;      // s
+  std::optional<double> period_trajectory_err;  // s, standard error of the fit
+  std::optional<EstimatorReport> estimator;
+  std::optional<double> mu_k_recovered;        // from the estimator's period, thin formula
+  std::optional<double> mu_k_recovered_thick;  // the same through the thick formula with h_c
+
+  double amplitude_start = 0.0;                      // m, first turning point
+  double amplitude_end = 0.0;                        // m, last turning point
+  std::optional<double> amplitude_drift_per_period;  // relative
+  double roller_speed = 0.0;                         // rad/s
+  double plate_speed_max = 0.0;                      // m/s
+  double slip_margin = 0.0;                          // roller surface speed / plate's largest speed
+  double min_normal_force = 0.0;                     // N, over the run
+  double max_penetration = 0.0;                      // m
+  std::string regime;  // "oscillates", "sticks", "tips", "no restoring force", "lost"
+  std::string regime_reason;
+
+  double wall_s = 0.0;
+  double real_time_factor = 0.0;
+  double steps_per_second = 0.0;
+};
+
+struct RunRecording {
+  std::vector<TrajectoryRow> trajectory;  // every step, when asked for
+  std::vector<HallSample> hall;           // every sample, when asked for
+};
+
+struct RunOptions {
+  bool record_trajectory = false;
+  bool record_hall = false;
+};
+
+RunSummary run_experiment(const Scene& scene, const RunOptions& options,
+                          RunRecording* recording = nullptr);
+
+}  // namespace fl

@@ -1,0 +1,179 @@
+#include "lab/run_outputs.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+
+namespace fl {
+namespace {
+
+nlohmann::json optional(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+std::optional<double> relative_error(const std::optional<double>& value,
+                                     const std::optional<double>& reference) {
+  if (!value || !reference) return std::nullopt;
+  return *value / *reference - 1.0;
+}
+
+// The period the summary leads with: the estimator's, from the Hall signal, when it has one.
+std::optional<double> headline_period(const RunSummary& s) {
+  if (s.estimator && s.estimator->periods_used > 0) return s.estimator->period;
+  return std::nullopt;
+}
+
+}  // namespace
+
+nlohmann::json summary_json(const RunSummary& s) {
+  nlohmann::json j;
+  const auto period = headline_period(s);
+  j["scene"] = s.scene;
+  j["seed"] = s.seed;
+  j["regime"] = s.regime;
+  j["regime_reason"] = s.regime_reason;
+  j["period_s"] = optional(period);
+  j["period_std_s"] =
+      s.estimator ? nlohmann::json(s.estimator->period_std) : nlohmann::json(nullptr);
+  j["period_std_error_s"] =
+      s.estimator ? nlohmann::json(s.estimator->period_std_error) : nlohmann::json(nullptr);
+  j["periods_used"] = s.estimator ? s.estimator->periods_used : 0;
+  j["periods_discarded"] = s.estimator ? s.estimator->periods_discarded : 0;
+  j["period_trajectory_s"] = optional(s.period_trajectory);
+  j["period_trajectory_err_s"] = optional(s.period_trajectory_err);
+  j["mu_k_set"] = s.mu_k_set;
+  j["mu_k_recovered"] = optional(s.mu_k_recovered);
+  j["mu_k_recovered_thick"] = optional(s.mu_k_recovered_thick);
+  if (s.estimator) {
+    j["mu_k_estimator"] = s.estimator->mu_k;
+    j["mu_k_err_worst"] = s.estimator->mu_k_err_worst;
+    j["mu_k_err_quadrature"] = s.estimator->mu_k_err_quadrature;
+  }
+  j["period_thin_s"] = s.period_thin;
+  j["period_thick_s"] = optional(s.period_thick);
+  j["error_vs_thin"] = optional(relative_error(period, s.period_thin));
+  j["error_vs_thick"] = optional(relative_error(period, s.period_thick));
+  j["trajectory_error_vs_thick"] = optional(relative_error(s.period_trajectory, s.period_thick));
+  j["predicted_integrator_bias"] = optional(s.predicted_integrator_bias);
+  j["h_c_m"] = s.h_c;
+  j["plate_mass_kg"] = s.plate_mass;
+  j["spacing_m"] = s.spacing;
+  j["amplitude_start_m"] = s.amplitude_start;
+  j["amplitude_end_m"] = s.amplitude_end;
+  j["amplitude_drift_per_period"] = optional(s.amplitude_drift_per_period);
+  j["roller_speed_rad_s"] = s.roller_speed;
+  j["plate_speed_max_m_s"] = s.plate_speed_max;
+  j["slip_margin"] =
+      std::isfinite(s.slip_margin) ? nlohmann::json(s.slip_margin) : nlohmann::json(nullptr);
+  j["min_normal_force_n"] = s.min_normal_force;
+  j["max_penetration_m"] = s.max_penetration;
+  j["time_step_s"] = s.time_step;
+  j["solver_iterations"] = s.solver_iterations;
+  j["duration_s"] = s.duration;
+  j["steps"] = s.steps;
+  return j;
+}
+
+nlohmann::json timing_json(const RunSummary& s) {
+  return nlohmann::json{{"wall_s", s.wall_s},
+                        {"real_time_factor", s.real_time_factor},
+                        {"steps_per_second", s.steps_per_second}};
+}
+
+std::string summary_text(const RunSummary& s) {
+  std::string out;
+  const auto line = [&out](const std::string& text) { out += text + "\n"; };
+  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+  line(fmt::format("frictionlab run: {} (seed {})", s.scene, s.seed));
+  line(fmt::format("  regime                 {} ({})", s.regime, s.regime_reason));
+  line(fmt::format(
+      "  roller spacing l       {:.2f} mm, h_c {:.2f} mm, plate {:.1f} g, mu_k set {:.4g}",
+      s.spacing * 1e3, s.h_c * 1e3, s.plate_mass * 1e3, s.mu_k_set));
+  const auto period = headline_period(s);
+  if (s.estimator) {
+    const EstimatorReport& e = *s.estimator;
+    if (e.periods_used > 0) {
+      line(fmt::format("  period (Hall estimator) T = {:.5f} +- {:.5f} s (N = {}, {} discarded)",
+                       e.period, e.period_std, e.periods_used, e.periods_discarded));
+      line(
+          fmt::format("  mu_k recovered         {:.4f} +- {:.4f} (worst) +- {:.4f} (quadrature), "
+                      "paper's formula",
+                      e.mu_k, e.mu_k_err_worst, e.mu_k_err_quadrature));
+    } else {
+      line(
+          fmt::format("  period (Hall estimator) none: {} pulse(s), no accepted period", e.pulses));
+    }
+  }
+  if (s.mu_k_recovered_thick)
+    line(fmt::format("  mu_k through the thick formula (h_c = {:.2f} mm): {:.4f}", s.h_c * 1e3,
+                     *s.mu_k_recovered_thick));
+  if (s.period_trajectory)
+    line(fmt::format("  period (trajectory)    {:.6f} s", *s.period_trajectory));
+  line(fmt::format(
+      "  analytic, thin plate   {:.6f} s{}", s.period_thin,
+      period ? fmt::format("  (estimator {:+.4f} %)", 100.0 * (*period / s.period_thin - 1.0))
+             : std::string()));
+  if (s.period_thick) {
+    std::string errors;
+    if (period)
+      errors += fmt::format("  (estimator {:+.4f} %", 100.0 * (*period / *s.period_thick - 1.0));
+    if (s.period_trajectory)
+      errors += fmt::format("{}trajectory {:+.4f} %)", period ? ", " : "  (",
+                            100.0 * (*s.period_trajectory / *s.period_thick - 1.0));
+    else if (period)
+      errors += ")";
+    line(fmt::format("  analytic, thick plate  {:.6f} s{}", *s.period_thick, errors));
+  }
+  if (s.predicted_integrator_bias)
+    line(fmt::format(
+        "  integrator bias        {:+.2e} predicted at dt = {:.3g} ms, -(omega dt)^2/24",
+        *s.predicted_integrator_bias, s.time_step * 1e3));
+  line(fmt::format("  amplitude              {:.3f} mm at start, {:.3f} mm at end{}",
+                   s.amplitude_start * 1e3, s.amplitude_end * 1e3,
+                   s.amplitude_drift_per_period
+                       ? fmt::format(" ({:+.2e} per period)", *s.amplitude_drift_per_period)
+                       : std::string()));
+  line(fmt::format("  rollers                {:.0f} rpm, slip margin {:.2f}", s.roller_speed * kRpm,
+                   s.slip_margin));
+  line(
+      fmt::format("  run                    {:.2f} s simulated in {:.3f} s: {:.0f} x real time, "
+                  "{:.0f} steps/s",
+                  s.duration, s.wall_s, s.real_time_factor, s.steps_per_second));
+  return out;
+}
+
+std::string trajectory_csv(const RunRecording& r) {
+  std::string out =
+      "t_s,x_m,z_m,pitch_rad,vx_m_s,vz_m_s,pitch_rate_rad_s,normal0_n,friction0_n,normal1_n,"
+      "friction1_n\n";
+  for (const TrajectoryRow& row : r.trajectory) {
+    fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{},{}\n", row.t,
+                   row.plate.x, row.plate.z, row.plate.pitch, row.plate.vx, row.plate.vz,
+                   row.plate.pitch_rate, row.rollers[0].normal_force, row.rollers[0].friction_force,
+                   row.rollers[1].normal_force, row.rollers[1].friction_force);
+  }
+  return out;
+}
+
+std::string hall_csv(const RunRecording& r) {
+  std::string out = "t_us,adc\n";
+  for (const HallSample& s : r.hall)
+    fmt::format_to(std::back_inserter(out), "{},{}\n", s.t_us, s.adc);
+  return out;
+}
+
+void write_run_outputs(const std::string& folder, const Scene& scene, const RunSummary& summary,
+                       const RunRecording& recording) {
+  if (scene.output.trajectory)
+    write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
+  if (scene.output.hall && scene.sensor)
+    write_file_atomic(folder + "/hall.csv", hall_csv(recording));
+  if (scene.output.summary) {
+    write_file_atomic(folder + "/summary.json", summary_json(summary).dump(2) + "\n");
+    write_file_atomic(folder + "/timing.json", timing_json(summary).dump(2) + "\n");
+  }
+}
+
+}  // namespace fl

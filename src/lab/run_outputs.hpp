@@ -1,0 +1,26 @@
+// A run's outputs as text: the summary as JSON, the trajectory and the Hall samples as CSV
+// (hall.csv in the format `frictionlab estimate` reads), and the human summary.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/experiment.hpp"
+
+namespace fl {
+
+// Everything a run found, deterministic: the same scene and seed give the same bytes.
+nlohmann::json summary_json(const RunSummary& summary);
+// What the run cost on this machine (wall time, real-time factor, steps per second).
+nlohmann::json timing_json(const RunSummary& summary);
+std::string summary_text(const RunSummary& summary);
+std::string trajectory_csv(const RunRecording& recording);
+std::string hall_csv(const RunRecording& recording);
+
+// Writes summary.json, timing.json, trajectory.csv and hall.csv (as the scene's output part
+// asks) into `folder`, each file atomically. All but timing.json are bit-identical between runs.
+void write_run_outputs(const std::string& folder, const Scene& scene, const RunSummary& summary,
+                       const RunRecording& recording);
+
+}  // namespace fl

@@ -1,0 +1,111 @@
+// frictionlab run and accuracy: the JSON summary's keys, the output files and their
+// determinism, --set, --accuracy, and exit status 2 for bad scenes.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.hpp"
+
+namespace fl {
+namespace {
+
+const std::string kExe = FRICTIONLAB_EXE;
+const std::string kMinimal = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+const std::filesystem::path kTmp = std::filesystem::path(FRICTIONLAB_TEST_BINARY_DIR) / "cli-run";
+
+test::CommandResult lab(const std::string& args) {
+  return test::run_command(kExe + " " + args);
+}
+
+TEST(CliRun, JsonHasEveryDocumentedKey) {
+  const auto r = lab("run " + kMinimal + " --duration 5s --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const char* key :
+       {"period_s", "period_std_s", "periods_used", "mu_k_set", "mu_k_recovered", "period_thin_s",
+        "period_thick_s", "h_c_m", "spacing_m", "amplitude_start_m", "amplitude_end_m",
+        "slip_margin", "regime", "wall_s", "real_time_factor", "steps_per_second"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["regime"], "oscillates");
+  EXPECT_NEAR(j["period_s"].get<double>() / j["period_thick_s"].get<double>(), 1.0, 5e-4);
+  EXPECT_DOUBLE_EQ(j["mu_k_set"].get<double>(), 0.29);
+}
+
+TEST(CliRun, OutputsAreWrittenAndBitIdenticalAcrossRuns) {
+  std::filesystem::remove_all(kTmp);
+  for (const char* name : {"a", "b"}) {
+    const auto r = lab("run " + kMinimal + " --duration 3s --out " + (kTmp / name).string());
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  for (const char* file : {"summary.json", "hall.csv", "trajectory.csv"}) {
+    const std::string a = test::read_text(kTmp / "a" / file);
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_EQ(a, test::read_text(kTmp / "b" / file)) << file;
+  }
+  EXPECT_TRUE(std::filesystem::exists(kTmp / "a" / "timing.json"));
+  // The Hall log is what `frictionlab estimate` reads.
+  EXPECT_EQ(test::read_text(kTmp / "a" / "hall.csv").substr(0, 9), "t_us,adc\n");
+  std::filesystem::remove_all(kTmp);
+}
+
+TEST(CliRun, SetOverridesAndAccuracyChoosesTheStep) {
+  const auto r =
+      lab("run " + kMinimal + " --duration 4s --set friction.mu_k=1.0 --accuracy 0.001% --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["mu_k_set"].get<double>(), 1.0);
+  // The largest 1/N s step with |bias| <= 1e-5: mu_k = 1 needs about 1.01 ms, not the scene's 1 ms.
+  EXPECT_LE(std::fabs(j["predicted_integrator_bias"].get<double>()), 1e-5);
+  EXPECT_GT(std::fabs(j["predicted_integrator_bias"].get<double>()), 0.9e-5);
+  EXPECT_NE(j["time_step_s"].get<double>(), 1e-3);
+}
+
+TEST(CliRun, BadScenesExitWithStatusTwo) {
+  std::filesystem::create_directories(kTmp);
+  const auto write = [](const std::string& name, const std::string& text) {
+    std::ofstream(kTmp / name) << text;
+    return (kTmp / name).string();
+  };
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  for (const Case& c : {
+           Case{"run /nonexistent.yaml", "no such file"},
+           Case{"run " + write("empty.yaml", ""), "the file is empty"},
+           Case{"run " + write("notyaml.yaml", "a: [1, 2\n"), "not valid YAML"},
+           Case{"run " + write("typo.yaml", "format: 1\nfriction: {mu_k: 0.3}\nplat: {}\n"),
+                "did you mean 'plate'?"},
+           Case{"run " + kMinimal + " --set plate.thickness=5kg",
+                "--set plate.thickness=5kg: error:"},
+           Case{"run " + kMinimal + " --set plate.thickness", "expected key.path=value"},
+           Case{"run " + kMinimal + " --duration 5m", "--duration: expected a time"},
+           Case{"run " + kMinimal + " --set friction.mu_k=10 --set plate.thickness=10mm",
+                "no oscillation exists"},
+           Case{"accuracy /nonexistent.yaml", "no such file"},
+       }) {
+    const auto r = lab(c.args);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+  }
+  std::filesystem::remove_all(kTmp);
+}
+
+TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
+  const auto out = kTmp / "accuracy";
+  const auto r = lab("accuracy " + kMinimal + " --periods 4 --json --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // The semi-implicit Euler step's phase error: -(omega dt)^2 / 24 (docs/physics.md).
+  EXPECT_NEAR(j["law"]["exponent"].get<double>(), 2.0, 0.05);
+  EXPECT_NEAR(j["law"]["coefficient"].get<double>() * 24.0, 1.0, 0.05);
+  EXPECT_TRUE(std::filesystem::exists(out / "accuracy.csv"));
+  std::filesystem::remove_all(kTmp);
+}
+
+}  // namespace
+}  // namespace fl

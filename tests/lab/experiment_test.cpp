@@ -1,0 +1,138 @@
+// A whole run: the period the rig's estimator measures from the simulated Hall signal against
+// the thick-plate formula (issue claim: within 0.05 %), the parts built only when named,
+// determinism of every output, and the choice of a step from an accuracy target.
+#include "lab/experiment.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/analytic_model.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/accuracy_study.hpp"
+#include "lab/run_outputs.hpp"
+#include "lab/step_choice.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+constexpr double kEstimatorTolerance = 5e-4;  // 0.05 %
+
+Scene minimal_scene(std::vector<SceneOverride> overrides = {}) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
+                         overrides, []() -> const PaperTable& { return table; });
+}
+
+struct MaterialCase {
+  const char* material;
+  const char* temperature;
+};
+
+class EstimatorPeriod : public ::testing::TestWithParam<MaterialCase> {};
+
+TEST_P(EstimatorPeriod, WithinFiveHundredthsOfAPercentOfTheThickFormula) {
+  Scene s = minimal_scene(
+      {{"friction.mu_k", GetParam().material}, {"friction.temperature", GetParam().temperature}});
+  // At least 12 periods, so the estimator sees the geometry and averages enough.
+  s.world.duration = std::max(10.0, 12.0 * period_thin(s.rollers.spacing, s.friction.mu_k));
+  const RunSummary r = run_experiment(s, {});
+  ASSERT_TRUE(r.estimator.has_value());
+  ASSERT_GE(r.estimator->periods_used, 8);
+  EXPECT_EQ(r.estimator->periods_discarded, 0);
+  ASSERT_TRUE(r.period_thick.has_value());
+  EXPECT_NEAR(r.estimator->period / *r.period_thick - 1.0, 0.0, kEstimatorTolerance)
+      << GetParam().material << " " << GetParam().temperature;
+  EXPECT_EQ(r.regime, "oscillates");
+}
+
+INSTANTIATE_TEST_SUITE_P(TableI, EstimatorPeriod,
+                         ::testing::Values(MaterialCase{"lego", "300 K"},
+                                           MaterialCase{"iron", "300 K"},
+                                           MaterialCase{"cardboard", "300 K"},
+                                           MaterialCase{"plexiglas", "77 K"},
+                                           MaterialCase{"construction-wood", "77 K"}),
+                         [](const auto& param_info) {
+                           std::string name = std::string(param_info.param.material) + "_" +
+                                              param_info.param.temperature;
+                           for (char& c : name)
+                             if (c == '-' || c == ' ') c = '_';
+                           return name;
+                         });
+
+TEST(Experiment, AScenewithoutSensorBuildsNoEstimator) {
+  Scene s = minimal_scene();
+  s.sensor.reset();
+  s.world.duration = 3.0;
+  const RunSummary r = run_experiment(s, {});
+  EXPECT_FALSE(r.estimator.has_value());
+  ASSERT_TRUE(r.period_trajectory.has_value());
+  EXPECT_NEAR(*r.period_trajectory / *r.period_thick - 1.0, 0.0, 1e-4);
+}
+
+TEST(Experiment, SameSceneAndSeedGiveBitIdenticalOutputs) {
+  Scene s = minimal_scene();
+  s.world.duration = 3.0;
+  RunOptions options{true, true};
+  RunRecording a, b;
+  const RunSummary ra = run_experiment(s, options, &a);
+  const RunSummary rb = run_experiment(s, options, &b);
+  EXPECT_EQ(trajectory_csv(a), trajectory_csv(b));
+  EXPECT_EQ(hall_csv(a), hall_csv(b));
+  EXPECT_EQ(summary_json(ra).dump(), summary_json(rb).dump());
+  // Another seed changes the sensor's noise, not the physics.
+  s.world.seed = 2;
+  RunRecording c;
+  run_experiment(s, options, &c);
+  EXPECT_EQ(trajectory_csv(a), trajectory_csv(c));
+  EXPECT_NE(hall_csv(a), hall_csv(c));
+}
+
+TEST(Experiment, HallCsvHasOneSamplePerClockTick) {
+  Scene s = minimal_scene();
+  s.world.duration = 2.0;
+  RunRecording rec;
+  run_experiment(s, {false, true}, &rec);
+  ASSERT_EQ(rec.hall.size(), 2001u);
+  EXPECT_EQ(rec.hall.back().t_us, 2000000u);
+  EXPECT_EQ(hall_csv(rec).substr(0, 9), "t_us,adc\n");
+}
+
+TEST(StepChoice, TheChosenStepMeetsTheTargetAndTheNextLargerDoesNot) {
+  const Scene s = minimal_scene();
+  for (double target : {1e-3, 1e-4, 1e-5}) {
+    Scene at = s;
+    at.world.time_step = step_for_accuracy(s, target);
+    EXPECT_LE(std::fabs(predicted_integrator_bias(at)), target);
+    Scene coarser = at;
+    coarser.world.time_step = 1.0 / (1.0 / at.world.time_step - 1.0);
+    EXPECT_GT(std::fabs(predicted_integrator_bias(coarser)), target);
+    // And the simulation at that step meets the target.
+    at.world.duration = 8.0;
+    at.sensor.reset();
+    const RunSummary r = run_experiment(at, {});
+    EXPECT_LE(std::fabs(*r.period_trajectory / *r.period_thick - 1.0), target) << target;
+  }
+}
+
+TEST(ErrorLaw, FitRecoversAKnownLaw) {
+  std::vector<AccuracyPoint> points;
+  const double omega = 8.0;
+  for (double dt : {1e-2, 5e-3, 2e-3, 1e-3}) {
+    AccuracyPoint p;
+    p.valid = true;
+    p.time_step = dt;
+    p.solver_iterations = 10;
+    p.period_error = -0.05 * std::pow(omega * dt, 2.2);
+    points.push_back(p);
+  }
+  const auto law = fit_error_law(points, omega);
+  ASSERT_TRUE(law.has_value());
+  EXPECT_NEAR(law->exponent, 2.2, 1e-12);
+  EXPECT_NEAR(law->coefficient, 0.05, 1e-12);
+}
+
+}  // namespace
+}  // namespace fl

@@ -1,0 +1,106 @@
+// The simulated Hall sensor against the dipole formula, the ADC's transfer, and its clock.
+#include "sensor/hall_signal.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sensor/dipole_field.hpp"
+
+namespace fl {
+namespace {
+
+TEST(DipoleField, OnAxisAndOnTheEquator) {
+  const Vec3 m{0.0, 0.0, 0.08};  // A m^2 along z
+  const double r = 0.01;
+  // On the axis: B = mu0/(4 pi) 2 m / r^3 along m; on the equator: -mu0/(4 pi) m / r^3.
+  const Vec3 axis = dipole_field(m, {0, 0, 0}, {0, 0, r});
+  EXPECT_NEAR(axis[2], 1e-7 * 2 * 0.08 / (r * r * r), 1e-9);
+  EXPECT_NEAR(axis[0], 0.0, 1e-15);
+  const Vec3 equator = dipole_field(m, {0, 0, 0}, {r, 0, 0});
+  EXPECT_NEAR(equator[2], -1e-7 * 0.08 / (r * r * r), 1e-9);
+  // Falls off as 1/r^3.
+  const Vec3 far = dipole_field(m, {0, 0, 0}, {0, 0, 2 * r});
+  EXPECT_NEAR(axis[2] / far[2], 8.0, 1e-12);
+}
+
+TEST(DipoleField, MomentOfACylinderMagnet) {
+  MagnetDesc magnet;
+  magnet.diameter = 0.006;
+  magnet.thickness = 0.003;
+  magnet.remanence = 1.2;
+  // Br V / mu0 = 1.2 * pi * 9e-6 * 3e-3 / (4 pi 1e-7) = 0.0810 A m^2
+  EXPECT_NEAR(magnet_moment(magnet), 1.2 * std::numbers::pi * 9e-6 * 3e-3 / kMu0, 1e-12);
+}
+
+Scene sensed_scene() {
+  Scene s;
+  s.magnets = {MagnetDesc{}};
+  s.magnets[0].x = 0.095;
+  SensorDesc sensor;
+  sensor.position = {0.095, 0.0, 0.015};
+  sensor.noise = 0.0;
+  sensor.jitter = 0.0;
+  s.sensor = sensor;
+  return s;
+}
+
+TEST(HallSignal, FieldUnderTheMagnetAndTheAdcTransfer) {
+  const Scene s = sensed_scene();
+  HallSignal hall(s);
+  const PlateMass pm = plate_mass(s);
+  // Plate centred: the magnet's centre is straight below the sensor.
+  PlatePose pose;
+  pose.x = pm.x_c;
+  pose.z = pm.h_c;
+  const double magnet_z = s.plate.thickness + 0.5 * s.magnets[0].thickness;
+  const double r = 0.015 - magnet_z;
+  const double expected = 1e-7 * 2.0 * magnet_moment(s.magnets[0]) / (r * r * r);
+  EXPECT_NEAR(hall.field_along_axis(pose), expected, 1e-6 * expected);
+  // A TinkerKit-style module: 2.5 V at zero field, 25 V/T, 10 bits over 5 V.
+  EXPECT_DOUBLE_EQ(hall.voltage(0.0), 2.5);
+  EXPECT_EQ(hall.adc_code(2.5), 512);
+  EXPECT_EQ(hall.adc_code(-1.0), 0);  // clipped at the rails
+  EXPECT_EQ(hall.adc_code(6.0), 1023);
+  EXPECT_EQ(hall.adc_code(4.99999), 1023);
+}
+
+TEST(HallSignal, SamplesFollowTheAdcClockNotThePhysicsStep) {
+  Scene s = sensed_scene();
+  s.sensor->sample_rate = 1000.0;
+  HallSignal hall(s);
+  std::vector<HallSample> samples;
+  // Physics steps of 3.7 ms: the samples still come every 1 ms, stamped on the clock.
+  PlatePose a, b;
+  a.z = b.z = plate_mass(s).h_c;
+  for (int i = 0; i < 100; ++i) {
+    a.t = i * 0.0037;
+    b.t = (i + 1) * 0.0037;
+    hall.sample_between(a, b, [&](const HallSample& x) { samples.push_back(x); });
+  }
+  ASSERT_EQ(samples.size(), 371u);  // t = 0, 1, ..., 370 ms
+  for (std::size_t i = 0; i < samples.size(); ++i) EXPECT_EQ(samples[i].t_us, i * 1000u);
+}
+
+TEST(HallSignal, SameSeedSameNoiseOtherSeedOtherNoise) {
+  const auto run = [](std::uint64_t seed) {
+    Scene s = sensed_scene();
+    s.sensor->noise = 0.01;
+    s.sensor->jitter = 20e-6;
+    s.world.seed = seed;
+    HallSignal hall(s);
+    std::vector<int> codes;
+    PlatePose a, b;
+    a.z = b.z = plate_mass(s).h_c;
+    b.t = 0.2;
+    hall.sample_between(a, b, [&](const HallSample& x) { codes.push_back(x.adc); });
+    return codes;
+  };
+  EXPECT_EQ(run(1), run(1));
+  EXPECT_NE(run(1), run(2));
+}
+
+}  // namespace
+}  // namespace fl

@@ -29,6 +29,11 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   out.time_step = scene.world.time_step;
   out.solver_iterations = scene.world.solver_iterations;
   out.roller_speed = scene.rollers.speed;
+  if (scene.friction.from_paper) {
+    out.paper_material = scene.friction.paper_material;
+    out.paper_period = scene.friction.paper_period;
+    out.paper_mu_k = scene.friction.paper_mu_k;
+  }
 
   RigWorld world(scene);
   out.h_c = world.plate_h_c();

@@ -44,6 +44,9 @@ struct RunSummary {
   int solver_iterations = 0;
   double duration = 0.0;  // s simulated
   long long steps = 0;
+  std::string paper_material;            // Table I key, when the scene took mu_k from the paper
+  std::optional<Measured> paper_period;  // what the paper measured for it [s]
+  std::optional<Measured> paper_mu_k;
 
   // The analytic model for the scene's true mu_k and h_c.
   double period_thin = 0.0;                         // s

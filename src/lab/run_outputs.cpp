@@ -51,6 +51,13 @@ nlohmann::json summary_json(const RunSummary& s) {
     j["mu_k_err_worst"] = s.estimator->mu_k_err_worst;
     j["mu_k_err_quadrature"] = s.estimator->mu_k_err_quadrature;
   }
+  if (s.paper_period) {
+    j["paper"] = {{"material", s.paper_material},
+                  {"period_s", s.paper_period->value},
+                  {"period_err_s", s.paper_period->uncertainty},
+                  {"mu_k", s.paper_mu_k->value},
+                  {"mu_k_err", s.paper_mu_k->uncertainty}};
+  }
   j["period_thin_s"] = s.period_thin;
   j["period_thick_s"] = optional(s.period_thick);
   j["error_vs_thin"] = optional(relative_error(period, s.period_thin));
@@ -125,6 +132,17 @@ std::string summary_text(const RunSummary& s) {
     else if (period)
       errors += ")";
     line(fmt::format("  analytic, thick plate  {:.6f} s{}", *s.period_thick, errors));
+  }
+  if (s.paper_period) {
+    line(fmt::format(
+        "  the paper measured     T = {:.{}f} +- {:.{}f} s, mu_k = {:.{}f} +- {:.{}f} ({})",
+        s.paper_period->value, s.paper_period->decimals, s.paper_period->uncertainty,
+        s.paper_period->uncertainty_decimals, s.paper_mu_k->value, s.paper_mu_k->decimals,
+        s.paper_mu_k->uncertainty, s.paper_mu_k->uncertainty_decimals, s.paper_material));
+    if (period)
+      line(fmt::format("  simulated - measured   {:+.4f} s = {:+.2f} dT",
+                       *period - s.paper_period->value,
+                       (*period - s.paper_period->value) / s.paper_period->uncertainty));
   }
   if (s.predicted_integrator_bias)
     line(fmt::format(

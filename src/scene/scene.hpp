@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/units.hpp"
+
 namespace fl {
 
 using Vec3 = std::array<double, 3>;
@@ -82,6 +84,9 @@ struct FrictionDesc {
   bool from_paper = false;
   std::string paper_material;  // the Table I key used, when from_paper
   double temperature = 300.0;  // K
+  // What the paper measured for that material and temperature, when from_paper.
+  std::optional<Measured> paper_period;  // T +- dT [s]
+  std::optional<Measured> paper_mu_k;
 };
 
 struct OutputDesc {

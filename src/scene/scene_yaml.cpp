@@ -137,6 +137,8 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   f.mu_k = at->mu_k.value;
   f.from_paper = true;
   f.paper_material = row->key;
+  f.paper_period = at->period;
+  f.paper_mu_k = at->mu_k;
 }
 
 void read_output(const YamlNode& n, OutputDesc& o) {

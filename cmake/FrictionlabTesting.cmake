@@ -14,8 +14,16 @@ function(fl_add_gtest)
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 300)
   endif()
-  gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
-                       DISCOVERY_TIMEOUT 60)
+  gtest_discover_tests(${ARG_NAME} DISCOVERY_TIMEOUT 60)
+  # gtest_discover_tests passes PROPERTIES through a list that splits "fast;physics" into separate
+  # words (only the first label would survive, and the timeout would be lost): set the labels and
+  # the timeout on the discovered tests from an include file ctest reads after discovery.
+  set(properties ${CMAKE_CURRENT_BINARY_DIR}/${ARG_NAME}_properties.cmake)
+  file(WRITE ${properties}
+       "if(DEFINED ${ARG_NAME}_TESTS)\n"
+       "  set_tests_properties(\${${ARG_NAME}_TESTS} PROPERTIES LABELS \"${ARG_LABELS}\" TIMEOUT ${ARG_TIMEOUT})\n"
+       "endif()\n")
+  set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES ${properties})
 endfunction()
 
 # fl_add_script_test(NAME name COMMAND ... LABELS ...): a test that runs a command.

@@ -46,7 +46,8 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     fmt::print("{}", summary_text(summary));
     if (!o.out.empty()) fmt::print("  outputs                {}/\n", o.out);
   }
-  return 0;
+  // A guard stopped the run: the outputs up to that point are written, and the status says so.
+  return summary.failure ? 3 : 0;
 }
 
 }  // namespace

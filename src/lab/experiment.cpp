@@ -6,15 +6,33 @@
 #include <limits>
 #include <numbers>
 
+#include <fmt/format.h>
+
 #include "core/analytic_model.hpp"
 #include "core/oscillation_tracker.hpp"
 #include "lab/hall_estimator.hpp"
+#include "lab/regime_monitor.hpp"
 
 namespace fl {
 namespace {
 
 PlatePose pose_of(double t, const PlateState& s) {
   return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate};
+}
+
+// The estimator's mean period against the trajectory's: they measure the same motion, so they
+// must agree within the estimator's standard error (three of them) plus 0.05 % for the
+// estimator's single-precision arithmetic and its pulse timing.
+std::optional<std::string> cross_check(const EstimatorReport& e, double trajectory_period) {
+  if (e.periods_used == 0) return std::nullopt;
+  const double bound = 3.0 * e.period_std_error + 5e-4 * trajectory_period;
+  const double difference = e.period - trajectory_period;
+  if (std::fabs(difference) <= bound) return std::nullopt;
+  return fmt::format(
+      "the estimator's period {:.6f} s differs from the trajectory's {:.6f} s by "
+      "{:+.4f} %, more than its uncertainty allows ({:.4f} %)",
+      e.period, trajectory_period, 100.0 * difference / trajectory_period,
+      100.0 * bound / trajectory_period);
 }
 
 }  // namespace
@@ -44,6 +62,10 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     out.period_thick = period_thick(out.spacing, out.mu_k_set, out.h_c, g);
     const double omega_dt = 2.0 * std::numbers::pi / *out.period_thick * out.time_step;
     out.predicted_integrator_bias = -omega_dt * omega_dt / 24.0;
+    const MuKUncertainty c =
+        mu_k_with_uncertainty(*out.period_thick, 0.0, out.spacing, 0.0, out.h_c, g);
+    out.condition_period = c.condition_period;
+    out.condition_spacing = c.condition_spacing;
   }
 
   // Only what the scene names: no sensor, no Hall signal and no estimator.
@@ -58,6 +80,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     if (options.record_hall && recording != nullptr) recording->hall.push_back(sample);
   };
 
+  RegimeMonitor monitor(scene, world.plate_mass(), world.plate_inertia(), world.plate_h_c());
   OscillationTracker tracker;
   PlateState state = world.plate();
   tracker.add(0.0, state.x, state.vx);
@@ -68,16 +91,15 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   out.min_normal_force = std::numeric_limits<double>::infinity();
   double t_previous = 0.0;
   PlateState previous = state;
-  const double half_length = 0.5 * scene.plate.length;
-  bool tipped = false;
-  double tipped_at = 0.0;
-  bool lost = false;
-  double lost_at = 0.0;
-  for (long long i = 0; i < steps; ++i) {
+  std::optional<RunFailure> failure;
+  for (long long i = 0; i < steps && !failure; ++i) {
     world.step();
     const double t = world.time();
     state = world.plate();
     const auto contacts = world.contacts();
+    failure = monitor.observe(t, state, contacts);
+    // What a guard stopped is not recorded: the outputs hold every trustworthy step.
+    if (failure) break;
     tracker.add(t, state.x, state.vx);
     if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
     if (options.record_trajectory && recording != nullptr)
@@ -86,21 +108,13 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     for (const RollerContact& c : contacts) {
       out.min_normal_force = std::min(out.min_normal_force, c.normal_force);
       out.max_penetration = std::max(out.max_penetration, c.penetration);
-      if (!tipped && c.normal_force <= 0.0) {
-        tipped = true;
-        tipped_at = t;
-      }
-    }
-    if (!lost && (std::fabs(state.x) > half_length || state.z < -scene.rollers.radius)) {
-      lost = true;
-      lost_at = t;
-      break;
     }
     previous = state;
     t_previous = t;
   }
   out.steps = world.steps();
   out.duration = world.time();
+  if (failure) out.failure = failure->message;
 
   if (const auto p = tracker.period()) {
     out.period_trajectory = p->slope;
@@ -116,31 +130,26 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
                                               : std::numeric_limits<double>::infinity();
 
-  // The regime, from the run itself (issue 8 refines this diagnosis).
-  if (!has_restoring_force(out.spacing, out.mu_k_set, out.h_c) ||
-      scene.rollers.sense == RollerSense::kOutward) {
-    out.regime = "no restoring force";
-    out.regime_reason = "l <= 2 mu_k h_c or rollers turning outward";
-  } else if (lost) {
-    out.regime = "lost";
-    out.regime_reason = "the plate left the rollers at t = " + std::to_string(lost_at) + " s";
-  } else if (tipped) {
-    out.regime = "tips";
-    out.regime_reason = "a normal force reached zero at t = " + std::to_string(tipped_at) + " s";
-  } else if (out.slip_margin <= 1.0) {
-    out.regime = "sticks";
-    out.regime_reason = "the plate reached a roller's surface speed (slip margin <= 1)";
-  } else {
-    out.regime = "oscillates";
-    out.regime_reason = "both rollers slip throughout";
+  const RegimeFinding finding = monitor.finding(failure);
+  out.regime = regime_name(finding.regime);
+  out.regime_since = finding.since;
+  out.regime_evidence = finding.evidence;
+
+  if (finding.regime != Regime::kOscillates) {
+    out.period_withheld = "no period: the regime is '" + out.regime +
+                          "', not a harmonic oscillation, so the paper's model does not hold";
+  } else if (!(estimator ? out.estimator->periods_used > 0 : out.period_trajectory.has_value())) {
+    out.period_withheld = "no period: fewer than two turning points were measured; simulate longer";
   }
+  if (out.estimator && out.period_trajectory)
+    out.estimator_disagreement = cross_check(*out.estimator, *out.period_trajectory);
 
   // mu_k as the rig would report it: from the estimator's period (the trajectory's when the
   // scene has no sensor), only for a harmonic oscillation.
   const double period_for_mu = out.estimator && out.estimator->periods_used > 0
                                    ? out.estimator->period
                                    : out.period_trajectory.value_or(0.0);
-  if (out.regime == "oscillates" && period_for_mu > 0.0) {
+  if (finding.regime == Regime::kOscillates && period_for_mu > 0.0) {
     out.mu_k_recovered = mu_k_from_period_thin(period_for_mu, out.spacing, g);
     out.mu_k_recovered_thick = mu_k_from_period_thick(period_for_mu, out.spacing, out.h_c, g);
   }

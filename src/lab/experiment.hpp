@@ -68,8 +68,20 @@ struct RunSummary {
   double slip_margin = 0.0;                          // roller surface speed / plate's largest speed
   double min_normal_force = 0.0;                     // N, over the run
   double max_penetration = 0.0;                      // m
-  std::string regime;  // "oscillates", "sticks", "tips", "no restoring force", "lost"
-  std::string regime_reason;
+  // The regime diagnosed from the run (src/lab/regime_monitor.hpp), when it began and why; a
+  // period is reported only for "oscillates", otherwise period_withheld says why not.
+  std::string regime;
+  double regime_since = 0.0;  // s
+  std::string regime_evidence;
+  std::string period_withheld;
+  // A guard stopped the run (numerical failure, or the plate left the rig): exit status 3.
+  std::optional<std::string> failure;
+  // The estimator's period against the trajectory's own: a disagreement beyond both
+  // uncertainties is reported here.
+  std::optional<std::string> estimator_disagreement;
+  // How errors in T and l carry into mu_k through the thick formula for this h_c.
+  double condition_period = 0.0;
+  double condition_spacing = 0.0;
 
   double wall_s = 0.0;
   double real_time_factor = 0.0;

@@ -176,6 +176,16 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   Scene scene;
   scene.name = name;
   if (auto v = root.find("name")) scene.name = v->text();
+  if (auto expect = root.find("expect")) {
+    expect->allow_keys({"regime"});
+    const YamlNode regime = expect->at("regime");
+    const std::string text = regime.text();
+    if (text != "oscillates" && text != "sticks" && text != "tips" &&
+        text != "no restoring force" && text != "lost")
+      regime.fail("expected one of: oscillates, sticks, tips, no restoring force, lost; found \"" +
+                  text + "\"");
+    scene.expected_regime = text;
+  }
   if (auto v = root.find("world")) read_world(*v, scene.world);
   if (auto v = root.find("rollers")) read_rollers(*v, scene.rollers);
   if (auto v = root.find("plate")) read_plate(*v, scene.plate);

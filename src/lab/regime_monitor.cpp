@@ -1,0 +1,219 @@
+#include "lab/regime_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace fl {
+namespace {
+
+// The plate moves with a roller's surface when their speeds differ by less than this fraction.
+constexpr double kStickRatio = 5e-3;
+// A normal force below this fraction of the plate's weight means the plate has lifted off.
+constexpr double kLiftOffFraction = 1e-3;
+// The first steps settle the resting contact.
+constexpr int kSettleSteps = 3;
+
+bool finite(const PlateState& s) {
+  return std::isfinite(s.x) && std::isfinite(s.z) && std::isfinite(s.pitch) &&
+         std::isfinite(s.vx) && std::isfinite(s.vz) && std::isfinite(s.pitch_rate);
+}
+
+}  // namespace
+
+const char* regime_name(Regime regime) {
+  switch (regime) {
+    case Regime::kOscillates:
+      return "oscillates";
+    case Regime::kSticks:
+      return "sticks";
+    case Regime::kTips:
+      return "tips";
+    case Regime::kNoRestoringForce:
+      return "no restoring force";
+    case Regime::kLost:
+      return "lost";
+    case Regime::kNumericallyFailed:
+      return "numerically failed";
+  }
+  return "unknown";
+}
+
+RegimeMonitor::RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia,
+                             double h_c)
+    : scene_(scene), mass_(plate_mass), inertia_(plate_inertia), h_c_(h_c) {
+  surface_speed_ = scene.rollers.speed * scene.rollers.radius;
+  // Friction cannot drive the plate faster than the rollers' surface, and gravity gives at most
+  // m g times the plate's length: ten times more energy than both is a numerical blow-up.
+  const double v = std::max(surface_speed_, std::fabs(scene.plate.velocity));
+  energy_bound_ =
+      10.0 * (0.5 * plate_mass * v * v +
+              plate_mass * scene.world.gravity * (scene.plate.length + scene.rollers.radius));
+  penetration_bound_ = std::min(0.5e-3, 0.1 * scene.rollers.radius);
+  speed_bound_ = 2.0 * v + 0.5;
+  start_abs_x_ = std::fabs(scene.plate.offset);
+  previous_x_ = scene.plate.offset;
+  z0_ = h_c;
+}
+
+std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
+                                                 const std::array<RollerContact, 2>& contacts) {
+  // Guards first: numbers the lab cannot trust stop the run.
+  if (!finite(s)) {
+    return RunFailure{Regime::kNumericallyFailed, t, "plate", "state",
+                      fmt::format("t = {:.6f} s: the plate's state is not finite (x = {}, z = {}, "
+                                  "vx = {}); the time step is too large for this scene",
+                                  t, s.x, s.z, s.vx)};
+  }
+  const double energy = 0.5 * mass_ * (s.vx * s.vx + s.vz * s.vz) +
+                        0.5 * inertia_ * s.pitch_rate * s.pitch_rate +
+                        mass_ * scene_.world.gravity * (s.z - z0_);
+  if (energy > energy_bound_) {
+    return RunFailure{Regime::kNumericallyFailed, t, "plate", "energy",
+                      fmt::format("t = {:.6f} s: the plate's energy {:.3g} J exceeds {:.3g} J, ten "
+                                  "times what the rollers and gravity can give it: a numerical "
+                                  "blow-up (try a smaller time step)",
+                                  t, energy, energy_bound_)};
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (contacts[i].penetration > penetration_bound_) {
+      return RunFailure{
+          Regime::kNumericallyFailed, t, fmt::format("roller {}", i), "penetration",
+          fmt::format("t = {:.6f} s: the plate sinks {:.3g} mm into roller {}, beyond "
+                      "the {:.3g} mm the contact model tolerates (try a smaller time "
+                      "step or more solver iterations)",
+                      t, contacts[i].penetration * 1e3, i, penetration_bound_ * 1e3)};
+    }
+  }
+  // Friction drives the plate toward the rollers' surface speed, never beyond it; a plate faster
+  // than that (with room for a fall) has been thrown by the numerics.
+  if (std::fabs(s.vx) > speed_bound_) {
+    return RunFailure{
+        Regime::kNumericallyFailed, t, "plate", "speed",
+        fmt::format("t = {:.6f} s: the plate moves at {:.3g} m/s, more than twice what "
+                    "the rollers (surface speed {:.3g} m/s) can drive: a numerical "
+                    "blow-up (try a smaller time step)",
+                    t, s.vx, surface_speed_)};
+  }
+  // A step that carries the plate a quarter of the roller spacing resolves nothing of the motion.
+  if (std::fabs(s.x - previous_x_) > 0.25 * scene_.rollers.spacing) {
+    return RunFailure{
+        Regime::kNumericallyFailed, t, "plate", "x",
+        fmt::format("t = {:.6f} s: the plate jumped {:.1f} mm in one step of {:.3g} ms, "
+                    "more than a quarter of the roller spacing: the time step is too "
+                    "large for this scene",
+                    t, (s.x - previous_x_) * 1e3, scene_.world.time_step * 1e3)};
+  }
+  // The plate leaves the rig when a roller is no longer under it, or it falls.
+  const double half_l = 0.5 * scene_.rollers.spacing;
+  const double half_length = 0.5 * scene_.plate.length;
+  if (std::fabs(s.x) + half_l > half_length || s.z < -scene_.rollers.radius) {
+    return RunFailure{Regime::kLost, t, "plate", "x",
+                      fmt::format("t = {:.6f} s: the plate left the rollers (centre of mass at x = "
+                                  "{:.1f} mm, z = {:.1f} mm; a roller is no longer under it)",
+                                  t, s.x * 1e3, s.z * 1e3)};
+  }
+
+  // Diagnosis.
+  if (!first_ && ((previous_x_ < 0.0 && s.x >= 0.0) || (previous_x_ > 0.0 && s.x <= 0.0)))
+    ++crossings_;
+  if (std::fabs(s.x) > max_abs_x_) {
+    max_abs_x_ = std::fabs(s.x);
+    x_at_max_ = t;
+  }
+  previous_x_ = s.x;
+  first_ = false;
+  static_assert(kSettleSteps > 0);
+  const long long step = std::llround(t / scene_.world.time_step);
+  if (step < kSettleSteps) return std::nullopt;
+
+  const double sense = scene_.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
+  const std::array<double, 2> surface{sense * surface_speed_, -sense * surface_speed_};
+  for (int i = 0; i < 2; ++i) {
+    const double ratio = surface_speed_ > 0.0 ? std::fabs(surface[i] - s.vx) / surface_speed_ : 0.0;
+    slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
+    if (ratio < kStickRatio && !stick_since_ && contacts[i].touching) {
+      stick_since_ = t;
+      stick_roller_ = i;
+      stick_speed_ = s.vx;
+      stick_surface_ = surface[i];
+    }
+    const double weight = mass_ * scene_.world.gravity;
+    if (contacts[i].normal_force < kLiftOffFraction * weight && !tip_since_) {
+      tip_since_ = t;
+      tip_roller_ = i;
+      tip_force_ = contacts[i].normal_force;
+    }
+  }
+  return std::nullopt;
+}
+
+RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) const {
+  RegimeFinding f;
+  if (failure && failure->regime == Regime::kNumericallyFailed) {
+    f.regime = Regime::kNumericallyFailed;
+    f.since = failure->time;
+    f.evidence = failure->message;
+    return f;
+  }
+  // Drifting off: the plate never came back through the centre and got farther out.
+  if (crossings_ == 0 && max_abs_x_ > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = 0.0;
+    f.evidence = fmt::format(
+        "the plate moved away from the centre, from |x| = {:.1f} mm to {:.1f} mm "
+        "at t = {:.3f} s, and never came back{}",
+        start_abs_x_ * 1e3, max_abs_x_ * 1e3, x_at_max_,
+        failure ? "; " + failure->message : std::string());
+    return f;
+  }
+  // Lifting off a roller is the cause when it came first; the plate may have left the rig after.
+  if (tip_since_ && (!failure || *tip_since_ <= failure->time)) {
+    f.regime = Regime::kTips;
+    f.since = *tip_since_;
+    f.evidence = fmt::format(
+        "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
+        "t = {:.4f} s: the plate lifted off it{}",
+        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_,
+        failure ? "; then " + failure->message : std::string());
+    return f;
+  }
+  if (failure) {
+    f.regime = failure->regime;
+    f.since = failure->time;
+    f.evidence = failure->message;
+    return f;
+  }
+  if (tip_since_) {
+    f.regime = Regime::kTips;
+    f.since = *tip_since_;
+    f.evidence = fmt::format(
+        "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
+        "t = {:.4f} s: the plate lifted off it",
+        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_);
+    return f;
+  }
+  if (surface_speed_ == 0.0) {
+    f.regime = Regime::kSticks;
+    f.evidence = "the rollers do not turn: friction holds the plate";
+    return f;
+  }
+  if (stick_since_) {
+    f.regime = Regime::kSticks;
+    f.since = *stick_since_;
+    f.evidence = fmt::format(
+        "the plate's speed {:.4f} m/s reached roller {}'s surface speed {:.4f} "
+        "m/s at t = {:.4f} s: the plate stuck to it",
+        stick_speed_, stick_roller_, stick_surface_, *stick_since_);
+    return f;
+  }
+  f.regime = Regime::kOscillates;
+  f.evidence = fmt::format(
+      "both rollers slipped throughout (the plate's speed stayed at least "
+      "{:.1f} % of the surface speed away from each roller's)",
+      100.0 * slip_ratio_min_);
+  return f;
+}
+
+}  // namespace fl

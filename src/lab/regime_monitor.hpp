@@ -1,0 +1,83 @@
+// Which physical regime a run is in, diagnosed from the simulation itself (not from the
+// formula), with when it began and the evidence; and the guards that stop a run whose numerics
+// or whose plate have left what the lab can trust.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "physics/rig_world.hpp"
+#include "scene/scene.hpp"
+
+namespace fl {
+
+enum class Regime {
+  kOscillates,         // harmonic oscillation: both rollers slip all the time
+  kSticks,             // stick-slip: the plate reached a roller's surface speed
+  kTips,               // tipping or lift-off: a normal force reached zero
+  kNoRestoringForce,   // the plate drifts off (l <= 2 mu_k h_c, or rollers turning outward)
+  kLost,               // the plate fell off or left the rig's bounds
+  kNumericallyFailed,  // NaN, infinity, energy blow-up or penetration beyond a bound
+};
+
+// "oscillates", "sticks", "tips", "no restoring force", "lost", "numerically failed".
+const char* regime_name(Regime regime);
+
+struct RegimeFinding {
+  Regime regime = Regime::kOscillates;
+  double since = 0.0;    // s, when the evidence first appeared (0 for a clean oscillation)
+  std::string evidence;  // which force, which speed, which quantity
+};
+
+// A guard that fired: the run stops here.
+struct RunFailure {
+  Regime regime = Regime::kNumericallyFailed;  // or kLost
+  double time = 0.0;                           // s
+  std::string body;                            // "plate", "roller 0", ...
+  std::string quantity;                        // "x", "energy", "penetration", ...
+  std::string message;                         // the whole sentence
+};
+
+class RegimeMonitor {
+ public:
+  RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia, double h_c);
+
+  // One step's state. Returns a failure when a guard fires; the run must stop then.
+  std::optional<RunFailure> observe(double t, const PlateState& plate,
+                                    const std::array<RollerContact, 2>& contacts);
+
+  // The diagnosis so far (call after the last step, or after a failure).
+  RegimeFinding finding(const std::optional<RunFailure>& failure) const;
+
+  // The smallest slip speed seen at each roller relative to its surface speed (1 = the plate at
+  // rest against the roller's surface, 0 = the plate moving with it).
+  double slip_margin_observed() const { return slip_ratio_min_; }
+
+ private:
+  Scene scene_;
+  double mass_, inertia_, h_c_;
+  double surface_speed_;  // m/s
+  double energy_bound_;   // J
+  double penetration_bound_;
+  double speed_bound_;  // m/s
+  double start_abs_x_ = 0.0;
+  double z0_ = 0.0;
+
+  int crossings_ = 0;
+  double previous_x_ = 0.0;
+  bool first_ = true;
+  double max_abs_x_ = 0.0;
+  double x_at_max_ = 0.0;
+
+  double slip_ratio_min_ = 1e300;
+  std::optional<double> stick_since_;
+  int stick_roller_ = -1;
+  double stick_speed_ = 0.0;
+  double stick_surface_ = 0.0;
+  std::optional<double> tip_since_;
+  int tip_roller_ = -1;
+  double tip_force_ = 0.0;
+};
+
+}  // namespace fl

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
       fl::cli::add_table_command(app, global),
       fl::cli::add_run_command(app, global),
       fl::cli::add_accuracy_command(app, global),
+      fl::cli::add_stability_command(app, global),
   };
 
   try {

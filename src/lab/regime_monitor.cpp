@@ -122,9 +122,30 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     max_abs_x_ = std::fabs(s.x);
     x_at_max_ = t;
   }
+  if (!first_ && ((previous_vx_ > 0.0 && s.vx <= 0.0) || (previous_vx_ < 0.0 && s.vx >= 0.0)) &&
+      excursions_.size() < 16)
+    excursions_.push_back(std::fabs(s.x));
+  previous_vx_ = s.vx;
   previous_x_ = s.x;
   first_ = false;
   static_assert(kSettleSteps > 0);
+  // Which way friction pushes while the plate rests on both rollers: toward the centre is the
+  // restoring force of the oscillator; away from it, there is none.
+  const double weight = mass_ * scene_.world.gravity;
+  if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
+      std::fabs(s.x) > 1e-6) {
+    const double friction = contacts[0].friction_force + contacts[1].friction_force;
+    if (friction * s.x > 0.0) {
+      if (friction_away_ == 0) {
+        away_first_t_ = t;
+        away_first_x_ = s.x;
+        away_first_force_ = friction;
+      }
+      ++friction_away_;
+    } else if (friction * s.x < 0.0) {
+      ++friction_toward_;
+    }
+  }
   const long long step = std::llround(t / scene_.world.time_step);
   if (step < kSettleSteps) return std::nullopt;
 
@@ -139,7 +160,6 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
       stick_speed_ = s.vx;
       stick_surface_ = surface[i];
     }
-    const double weight = mass_ * scene_.world.gravity;
     if (contacts[i].normal_force < kLiftOffFraction * weight && !tip_since_) {
       tip_since_ = t;
       tip_roller_ = i;
@@ -156,6 +176,44 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.since = failure->time;
     f.evidence = failure->message;
     return f;
+  }
+  // Friction that pushes the plate away from the centre while it rests on both rollers: no
+  // restoring force (whatever follows: a lift-off, a drift, the plate leaving the rig).
+  if (friction_away_ > friction_toward_) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = away_first_t_;
+    f.evidence = fmt::format(
+        "while the plate rested on both rollers, the net friction force pushed it "
+        "away from the centre in {} of {} steps (first at t = {:.4f} s: {:+.3g} N "
+        "at x = {:+.2f} mm){}",
+        friction_away_, friction_away_ + friction_toward_, away_first_t_, away_first_force_,
+        away_first_x_ * 1e3, failure ? "; " + failure->message : std::string());
+    return f;
+  }
+  // Thrown farther out at each turn until it left the rig: friction drives the plate away.
+  if (failure && failure->regime == Regime::kLost && !excursions_.empty() &&
+      std::fabs(previous_x_) > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    // The start, each turning point, and where the plate was when it left: the last three grow.
+    std::vector<double> path{start_abs_x_};
+    path.insert(path.end(), excursions_.begin(), excursions_.end());
+    path.push_back(std::fabs(previous_x_));
+    const std::size_t n = path.size();
+    const bool growing = path[n - 1] > path[n - 2] && (n < 3 || path[n - 2] > path[n - 3]);
+    std::string list;
+    for (const double e : path) list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", e * 1e3);
+    if (growing) {
+      f.regime = Regime::kNoRestoringForce;
+      f.since = 0.0;
+      f.evidence = fmt::format(
+          "each excursion went farther from the centre ({} mm) until the plate left "
+          "the rig: friction drives it away{}; {}",
+          list,
+          tip_since_
+              ? fmt::format(" (it lifted off roller {} at t = {:.4f} s)", tip_roller_, *tip_since_)
+              : std::string(),
+          failure->message);
+      return f;
+    }
   }
   // Drifting off: the plate never came back through the centre and got farther out.
   if (crossings_ == 0 && max_abs_x_ > 1.5 * std::max(start_abs_x_, 1e-3)) {

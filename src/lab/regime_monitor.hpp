@@ -6,6 +6,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "physics/rig_world.hpp"
 #include "scene/scene.hpp"
@@ -68,6 +69,8 @@ class RegimeMonitor {
   double previous_x_ = 0.0;
   bool first_ = true;
   double max_abs_x_ = 0.0;
+  double previous_vx_ = 0.0;
+  std::vector<double> excursions_;  // |x| at the first turning points, m
   double x_at_max_ = 0.0;
 
   double slip_ratio_min_ = 1e300;
@@ -75,6 +78,10 @@ class RegimeMonitor {
   int stick_roller_ = -1;
   double stick_speed_ = 0.0;
   double stick_surface_ = 0.0;
+  // Steps on both rollers whose net friction pushed the plate away from / toward the centre.
+  long long friction_away_ = 0;
+  long long friction_toward_ = 0;
+  double away_first_t_ = 0.0, away_first_x_ = 0.0, away_first_force_ = 0.0;
   std::optional<double> tip_since_;
   int tip_roller_ = -1;
   double tip_force_ = 0.0;

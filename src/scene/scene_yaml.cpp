@@ -169,8 +169,8 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   root.expect_map();
   for (const SceneOverride& o : overrides)
     root.set_path(o.path, o.value, "--set " + o.path + "=" + o.value);
-  root.allow_keys(
-      {"format", "name", "world", "rollers", "plate", "magnets", "sensor", "friction", "output"});
+  root.allow_keys({"format", "name", "expect", "world", "rollers", "plate", "magnets", "sensor",
+                   "friction", "output"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
   Scene scene;

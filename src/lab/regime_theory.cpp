@@ -1,0 +1,34 @@
+#include "lab/regime_theory.hpp"
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+
+namespace fl {
+
+TheoryRegime regime_from_theory(const Scene& s) {
+  const double l = s.rollers.spacing;
+  const double mu = s.friction.mu_k;
+  const double h_c = plate_mass(s).h_c;
+  if (s.rollers.sense == RollerSense::kOutward)
+    return {"no restoring force", "the rollers turn outward: friction pushes the plate away"};
+  if (!has_restoring_force(l, mu, h_c))
+    return {"no restoring force",
+            fmt::format("l - 2 mu_k h_c = {:.2f} mm <= 0", (l - 2.0 * mu * h_c) * 1e3)};
+  const double amplitude = initial_amplitude(s, mu);
+  if (amplitude <= 0.0) return {"oscillates", "the plate rests at the centre (zero amplitude)"};
+  const double tipping = tipping_amplitude(l, mu, h_c);
+  if (amplitude > tipping)
+    return {"tips", fmt::format("amplitude {:.2f} mm > l/2 - mu_k h_c = {:.2f} mm", amplitude * 1e3,
+                                tipping * 1e3)};
+  const double margin =
+      slip_margin(s.rollers.speed, s.rollers.radius, amplitude, l, mu, h_c, s.world.gravity);
+  if (margin < 1.0)
+    return {"sticks",
+            fmt::format("slip margin {:.3f} < 1 (roller surface speed below A omega)", margin)};
+  return {"oscillates",
+          fmt::format("restoring, below tipping ({:.1f} of {:.1f} mm), slip margin {:.2f}",
+                      amplitude * 1e3, tipping * 1e3, margin)};
+}
+
+}  // namespace fl

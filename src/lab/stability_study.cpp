@@ -1,0 +1,102 @@
+#include "lab/stability_study.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+#include "lab/experiment.hpp"
+#include "lab/regime_theory.hpp"
+
+namespace fl {
+namespace {
+
+constexpr double kSmallestStep = 1e-5;
+constexpr double kLargestStep = 1.0 / 60.0;
+constexpr int kBisections = 7;
+
+struct Trial {
+  bool trustworthy = false;
+  RunSummary summary;
+};
+
+Trial try_step(const Scene& base, double dt, const std::string& expected) {
+  Scene scene = base;
+  scene.world.time_step = dt;
+  // The diagnosis and the trajectory's period need no sensor.
+  scene.sensor.reset();
+  Trial trial;
+  trial.summary = run_experiment(scene, {});
+  const RunSummary& r = trial.summary;
+  trial.trustworthy = r.regime == expected && r.regime != "numerically failed";
+  if (trial.trustworthy && expected == "oscillates") {
+    trial.trustworthy =
+        r.period_trajectory && r.period_thick &&
+        std::fabs(*r.period_trajectory / *r.period_thick - 1.0) <= kTrustworthyPeriodError;
+  }
+  return trial;
+}
+
+std::string describe_case(const Scene& s, double h_c) {
+  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+  return fmt::format(
+      "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
+      "dt {:.3g} ms",
+      s.friction.mu_k, s.rollers.spacing * 1e3, h_c * 1e3, s.rollers.speed * kRpm,
+      s.rollers.sense == RollerSense::kOutward ? " outward" : "", std::fabs(s.plate.offset) * 1e3,
+      plate_mass(s).mass * 1e3, s.world.time_step * 1e3);
+}
+
+}  // namespace
+
+StabilityRow run_stability_case(const Scene& scene) {
+  const auto start = std::chrono::steady_clock::now();
+  StabilityRow row;
+  row.name = scene.name;
+  const double h_c = plate_mass(scene).h_c;
+  row.parameters = describe_case(scene, h_c);
+  const TheoryRegime theory = regime_from_theory(scene);
+  row.expected = theory.regime;
+  row.expected_reason = theory.reason;
+  row.declared = scene.expected_regime.value_or("");
+
+  // At the scene's own step, as `frictionlab run` would.
+  const Trial own = try_step(scene, scene.world.time_step, row.expected);
+  row.found = own.summary.regime;
+  row.evidence = own.summary.regime_evidence;
+  row.as_expected =
+      row.found == row.expected && (row.declared.empty() || row.declared == row.expected);
+  if (row.found == "oscillates" && own.summary.period_trajectory && own.summary.period_thick)
+    row.period_error = *own.summary.period_trajectory / *own.summary.period_thick - 1.0;
+  if (has_restoring_force(scene.rollers.spacing, scene.friction.mu_k, h_c)) {
+    const MuKUncertainty c = mu_k_with_uncertainty(
+        period_thick(scene.rollers.spacing, scene.friction.mu_k, h_c, scene.world.gravity), 0.0,
+        scene.rollers.spacing, 0.0, h_c, scene.world.gravity);
+    row.condition_period = c.condition_period;
+    row.condition_spacing = c.condition_spacing;
+  }
+
+  // Bisection on log(dt) between the smallest and the largest step.
+  if (try_step(scene, kLargestStep, row.expected).trustworthy) {
+    row.largest_step = kLargestStep;
+    row.step_note = "trustworthy at every step tried, up to 1/60 s";
+  } else if (!try_step(scene, kSmallestStep, row.expected).trustworthy) {
+    row.step_note = "not trustworthy at any step down to 1e-5 s: the lab cannot simulate this case";
+  } else {
+    double good = kSmallestStep, bad = kLargestStep;
+    for (int i = 0; i < kBisections; ++i) {
+      const double mid = std::sqrt(good * bad);
+      if (try_step(scene, mid, row.expected).trustworthy)
+        good = mid;
+      else
+        bad = mid;
+    }
+    row.largest_step = good;
+    row.step_note = fmt::format("fails at {:.3g} ms", bad * 1e3);
+  }
+  row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return row;
+}
+
+}  // namespace fl

@@ -1,0 +1,37 @@
+// The stability catalogue: stiff and extreme scenes (scenes/extreme/), each run at its own step
+// and diagnosed, against the regime theory expects; the largest trustworthy time step found by
+// bisection; the period error at the scene's step; and how errors in T and l carry into mu_k.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace fl {
+
+struct StabilityRow {
+  std::string name;
+  std::string parameters;  // the case in a few words (mu_k, l, h_c, speed, amplitude, dt)
+  std::string expected;    // from theory (regime_from_theory)
+  std::string expected_reason;
+  std::string declared;  // the scene's expect.regime (empty if none)
+  std::string found;     // diagnosed by the run at the scene's step
+  std::string evidence;
+  bool as_expected = false;  // found == expected (and == declared, if any)
+  // Largest step in [1e-5 s, 1/60 s] at which the run is trustworthy: no numerical failure, the
+  // expected regime, and (for an oscillation) the period within 0.1 % of the thick formula.
+  std::optional<double> largest_step;  // s
+  std::string step_note;               // when there is none, or every step tried was fine
+  std::optional<double> period_error;  // relative to the thick formula, at the scene's step
+  double condition_period = 0.0;       // d ln mu_k / d ln T through the thick formula
+  double condition_spacing = 0.0;
+  double wall_s = 0.0;  // for this case, bisection included
+};
+
+// A step is trustworthy when the period is within this of the thick formula.
+inline constexpr double kTrustworthyPeriodError = 1e-3;
+
+StabilityRow run_stability_case(const Scene& scene);
+
+}  // namespace fl

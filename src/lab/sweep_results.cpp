@@ -1,0 +1,259 @@
+#include "lab/sweep_results.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+#include "lab/experiment.hpp"
+#include "lab/run_outputs.hpp"
+
+namespace fl {
+namespace {
+
+// The row's columns after the index and the axes, in CSV order. Every row has every key (null
+// when the point has no such value).
+const std::vector<std::string>& fixed_columns() {
+  static const std::vector<std::string> columns{"seed",
+                                                "status",
+                                                "regime",
+                                                "period_s",
+                                                "period_std_s",
+                                                "period_std_error_s",
+                                                "periods_used",
+                                                "period_trajectory_s",
+                                                "period_thin_s",
+                                                "period_thick_s",
+                                                "error_vs_thin",
+                                                "error_vs_thick",
+                                                "mu_k_set",
+                                                "mu_k_recovered",
+                                                "mu_k_recovered_thick",
+                                                "mu_k_err_worst",
+                                                "mu_k_err_quadrature",
+                                                "spacing_m",
+                                                "h_c_m",
+                                                "temperature_k",
+                                                "gravity_m_s2",
+                                                "roller_speed_rad_s",
+                                                "slip_margin",
+                                                "slip_threshold_rad_s",
+                                                "amplitude_start_m",
+                                                "amplitude_end_m",
+                                                "paper_material",
+                                                "paper_period_s",
+                                                "paper_period_err_s",
+                                                "paper_mu_k",
+                                                "paper_mu_k_err",
+                                                "time_step_s",
+                                                "duration_s",
+                                                "steps",
+                                                "regime_detail",
+                                                "error"};
+  return columns;
+}
+
+// The keys copied from the run's summary JSON as they are (run_outputs.hpp names them).
+constexpr const char* kFromSummary[] = {"seed",
+                                        "regime",
+                                        "period_s",
+                                        "period_std_s",
+                                        "period_std_error_s",
+                                        "periods_used",
+                                        "period_trajectory_s",
+                                        "period_thin_s",
+                                        "period_thick_s",
+                                        "error_vs_thin",
+                                        "error_vs_thick",
+                                        "mu_k_set",
+                                        "mu_k_recovered",
+                                        "mu_k_recovered_thick",
+                                        "mu_k_err_worst",
+                                        "mu_k_err_quadrature",
+                                        "spacing_m",
+                                        "h_c_m",
+                                        "roller_speed_rad_s",
+                                        "slip_margin",
+                                        "amplitude_start_m",
+                                        "amplitude_end_m",
+                                        "time_step_s",
+                                        "duration_s",
+                                        "steps"};
+
+nlohmann::json empty_row(const SweepSpec& spec, const SweepPoint& point) {
+  nlohmann::json row;
+  for (const std::string& c : fixed_columns()) row[c] = nullptr;
+  row["index"] = point.index;
+  nlohmann::json params = nlohmann::json::object();
+  const auto axes = spec.axes();
+  for (std::size_t i = 0; i < axes.size(); ++i) params[axes[i]->name] = point.labels[i];
+  row["params"] = params;
+  nlohmann::json set = nlohmann::json::array();
+  for (const SceneOverride& o : point.overrides) set.push_back(o.path + "=" + o.value);
+  row["set"] = set;
+  return row;
+}
+
+nlohmann::json finite_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+void fill_from_run(nlohmann::json& row, const Scene& scene, const RunSummary& summary) {
+  const nlohmann::json s = summary_json(summary);
+  for (const char* key : kFromSummary) {
+    const auto it = s.find(key);
+    if (it == s.end()) continue;
+    // A non-finite number is no result.
+    row[key] = it->is_number_float() ? finite_or_null(it->get<double>()) : *it;
+  }
+  // The regime's evidence (its key has changed name as the diagnosis grew).
+  for (const char* key : {"regime_evidence", "regime_reason"}) {
+    if (s.contains(key) && s[key].is_string()) {
+      row["regime_detail"] = s[key];
+      break;
+    }
+  }
+  if (s.contains("paper") && s["paper"].is_object()) {
+    const nlohmann::json& p = s["paper"];
+    row["paper_material"] = p.value("material", "");
+    row["paper_period_s"] = p.value("period_s", 0.0);
+    row["paper_period_err_s"] = p.value("period_err_s", 0.0);
+    row["paper_mu_k"] = p.value("mu_k", 0.0);
+    row["paper_mu_k_err"] = p.value("mu_k_err", 0.0);
+  }
+  row["temperature_k"] = scene.friction.temperature;
+  row["gravity_m_s2"] = scene.world.gravity;
+  // Where the analytic slip condition puts the threshold: the rollers' surface just keeps up
+  // with the plate's largest speed for the scene's initial amplitude.
+  const double mu = scene.friction.mu_k;
+  if (has_restoring_force(summary.spacing, mu, summary.h_c)) {
+    const double amplitude = initial_amplitude(scene, mu);
+    row["slip_threshold_rad_s"] = roller_speed_for_full_slip(
+        amplitude, scene.rollers.radius, summary.spacing, mu, summary.h_c, scene.world.gravity);
+  }
+  // A guard that stopped the run is a failed point.
+  if (s.contains("failure") && s["failure"].is_string()) {
+    row["status"] = "failed";
+    row["error"] = s["failure"];
+  } else {
+    row["status"] = "ok";
+  }
+}
+
+std::string csv_cell(const nlohmann::json& v) {
+  if (v.is_null()) return "";
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_number_unsigned()) return std::to_string(v.get<std::uint64_t>());
+  if (v.is_number_integer()) return std::to_string(v.get<std::int64_t>());
+  if (v.is_number_float()) return fmt::format("{}", v.get<double>());
+  const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
+                            const PaperTableSource& paper) {
+  const auto start = std::chrono::steady_clock::now();
+  PointResult out;
+  out.index = point.index;
+  out.row = empty_row(spec, point);
+  std::optional<Scene> scene;
+  try {
+    scene = load_scene_text(spec.scene_text, spec.scene_file, point.overrides, paper);
+  } catch (const std::exception& e) {
+    out.row["status"] = "invalid";
+    out.row["error"] = e.what();
+  }
+  if (scene) {
+    out.row["seed"] = scene->world.seed;
+    try {
+      const RunSummary summary = run_experiment(*scene, RunOptions{});
+      fill_from_run(out.row, *scene, summary);
+    } catch (const std::exception& e) {
+      out.row["status"] = "failed";
+      out.row["error"] = std::string("the run stopped: ") + e.what();
+    }
+  }
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+std::vector<std::string> sweep_result_columns(const nlohmann::json& plan) {
+  std::vector<std::string> columns{"index"};
+  for (const nlohmann::json& a : plan.at("axes"))
+    columns.push_back(a.at("name").get<std::string>());
+  columns.insert(columns.end(), fixed_columns().begin(), fixed_columns().end());
+  return columns;
+}
+
+std::string sweep_results_csv(const nlohmann::json& plan, const std::vector<nlohmann::json>& rows) {
+  const std::vector<std::string> columns = sweep_result_columns(plan);
+  const std::size_t axes = plan.at("axes").size();
+  std::string csv;
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    csv += (i ? "," : "") + csv_cell(nlohmann::json(columns[i]));
+  csv += '\n';
+  for (const nlohmann::json& row : rows) {
+    csv += csv_cell(row.at("index"));
+    for (std::size_t a = 0; a < axes; ++a)
+      csv += "," + csv_cell(row.at("params").at(columns[1 + a]));
+    for (const std::string& c : fixed_columns())
+      csv += "," + csv_cell(row.value(c, nlohmann::json()));
+    csv += '\n';
+  }
+  return csv;
+}
+
+nlohmann::json sweep_results_json(const nlohmann::json& plan,
+                                  const std::vector<nlohmann::json>& rows) {
+  std::map<std::string, int> status{{"ok", 0}, {"invalid", 0}, {"failed", 0}};
+  std::map<std::string, int> regimes;
+  for (const nlohmann::json& row : rows) {
+    ++status[row.value("status", "failed")];
+    if (row.contains("regime") && row["regime"].is_string())
+      ++regimes[row["regime"].get<std::string>()];
+  }
+  return nlohmann::json{{"format", 1},
+                        {"sweep", plan["sweep"]},
+                        {"scene", plan["scene"]},
+                        {"points", rows.size()},
+                        {"columns", sweep_result_columns(plan)},
+                        {"axes", plan["axes"]},
+                        {"status", status},
+                        {"regimes", regimes},
+                        {"rows", rows}};
+}
+
+std::string point_file_text(const PointResult& result, const std::string& plan_digest) {
+  const nlohmann::json j{{"plan", plan_digest},
+                         {"index", result.index},
+                         {"row", result.row},
+                         {"wall_s", result.wall_s}};
+  return j.dump() + "\n";
+}
+
+std::optional<PointResult> parse_point_file(const std::string& text,
+                                            const std::string& plan_digest) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || j.value("plan", "") != plan_digest ||
+      !j.contains("index") || !j["index"].is_number_unsigned() || !j.contains("row") ||
+      !j["row"].is_object())
+    return std::nullopt;
+  PointResult r;
+  r.index = j["index"].get<std::size_t>();
+  r.row = j["row"];
+  r.wall_s = j.value("wall_s", 0.0);
+  return r;
+}
+
+}  // namespace fl

@@ -1,0 +1,81 @@
+// The stability catalogue (scenes/extreme/): every case ends in the regime theory expects, none
+// in NaN, a hang or a crash; the stiff cases stay accurate, not merely finite.
+#include "lab/stability_study.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/paper_table_yaml.hpp"
+#include "lab/experiment.hpp"
+#include "lab/regime_theory.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+const std::filesystem::path kCatalogue =
+    std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes" / "extreme";
+
+Scene load_case(const std::string& name) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return load_scene_file((kCatalogue / (name + ".yaml")).string(), {},
+                         []() -> const PaperTable& { return table; });
+}
+
+std::vector<std::string> case_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(kCatalogue))
+    if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class Catalogue : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Catalogue, EndsInTheRegimeTheoryExpects) {
+  const Scene scene = load_case(GetParam());
+  ASSERT_TRUE(scene.expected_regime.has_value()) << "every case declares expect.regime";
+  // The declared regime is theory's (DESIGN.md's conditions), not a record of a past run.
+  EXPECT_EQ(*scene.expected_regime, regime_from_theory(scene).regime);
+  const StabilityRow row = run_stability_case(scene);
+  EXPECT_EQ(row.found, row.expected) << row.evidence;
+  EXPECT_NE(row.found, "numerically failed");
+  EXPECT_TRUE(row.largest_step.has_value()) << row.step_note;
+}
+
+INSTANTIATE_TEST_SUITE_P(Extreme, Catalogue, ::testing::ValuesIn(case_names()),
+                         [](const auto& param_info) {
+                           std::string name = param_info.param;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+// mu_k = 10 with h_c = 2.5 mm at l = 89 mm (T near 0.09 s) within 0.1 % of the thick formula at
+// the step the stability run finds and reports.
+TEST(StiffCases, MuTenWithinOneTenthPercentAtTheReportedStep) {
+  Scene scene = load_case("mu-10");
+  const StabilityRow row = run_stability_case(scene);
+  ASSERT_TRUE(row.largest_step.has_value());
+  scene.world.time_step = *row.largest_step;
+  const RunSummary r = run_experiment(scene, {});
+  ASSERT_EQ(r.regime, "oscillates");
+  ASSERT_TRUE(r.period_thick.has_value());
+  EXPECT_NEAR(*r.period_thick, 0.0886, 0.001);
+  EXPECT_LE(std::fabs(*r.period_trajectory / *r.period_thick - 1.0), 1e-3);
+}
+
+// A 1 g and a 10 kg plate on the same rollers: the same period within 0.05 %.
+TEST(StiffCases, OneGramAndTenKilogramPlatesHaveTheSamePeriod) {
+  const RunSummary light = run_experiment(load_case("plate-1g"), {});
+  const RunSummary heavy = run_experiment(load_case("plate-10kg"), {});
+  ASSERT_TRUE(light.period_trajectory && heavy.period_trajectory);
+  EXPECT_NEAR(*light.period_trajectory / *heavy.period_trajectory - 1.0, 0.0, 5e-4);
+}
+
+}  // namespace
+}  // namespace fl

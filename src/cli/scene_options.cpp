@@ -23,13 +23,24 @@ Scene load_scene_with_options(const SceneOptions& options, const GlobalOptions& 
     option_quantity(options.duration, Dimension::kTime, "--duration");  // checks the unit
     overrides.push_back({"world.duration", options.duration});
   }
-  auto table = std::make_shared<std::optional<PaperTable>>();
+  const SceneSources sources = scene_sources(global);
+  return load_scene_file(options.file, overrides, sources.paper, sources.parts);
+}
+
+SceneSources scene_sources(const GlobalOptions& global) {
   const std::string asset_dir = resolve_asset_dir(global.asset_dir);
-  const PaperTableSource paper = [table, asset_dir]() -> const PaperTable& {
+  auto table = std::make_shared<std::optional<PaperTable>>();
+  auto catalog = std::make_shared<std::optional<assets::PartCatalog>>();
+  SceneSources sources;
+  sources.paper = [table, asset_dir]() -> const PaperTable& {
     if (!*table) *table = load_paper_table(paper_table_path(asset_dir));
     return **table;
   };
-  return load_scene_file(options.file, overrides, paper);
+  sources.parts = [catalog, asset_dir]() -> const assets::PartCatalog& {
+    if (!*catalog) *catalog = assets::load_part_catalog(assets::part_catalog_path(asset_dir));
+    return **catalog;
+  };
+  return sources;
 }
 
 }  // namespace fl::cli

@@ -8,6 +8,7 @@
 
 #include "cli/commands.hpp"
 #include "scene/scene.hpp"
+#include "scene/scene_yaml.hpp"
 
 namespace fl::cli {
 
@@ -18,6 +19,14 @@ struct SceneOptions {
 };
 
 void add_scene_options(CLI::App& command, SceneOptions& options);
+
+// The paper's table and the LEGO part index under the asset folder, each read the first time a
+// scene names it (and then shared by every scene loaded through the same sources).
+struct SceneSources {
+  PaperTableSource paper;
+  PartCatalogSource parts;
+};
+SceneSources scene_sources(const GlobalOptions& global);
 
 // Loads the scene with its overrides; the paper's table is read only if the scene names it.
 Scene load_scene_with_options(const SceneOptions& options, const GlobalOptions& global);

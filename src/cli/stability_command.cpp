@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
@@ -59,10 +60,10 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) throw InputError({o.dir, 0, 0}, "no scene matches");
-  const PaperTable table = load_paper_table(paper_table_path(resolve_asset_dir(global.asset_dir)));
+  const SceneSources sources = scene_sources(global);
   std::vector<Scene> scenes;
   for (const std::string& file : files)
-    scenes.push_back(load_scene_file(file, {}, [&]() -> const PaperTable& { return table; }));
+    scenes.push_back(load_scene_file(file, {}, sources.paper, sources.parts));
 
   // Cases are independent: share them among workers.
   std::vector<StabilityRow> rows(scenes.size());

@@ -46,6 +46,8 @@ constexpr std::array kDensity{Unit{"kg/m^3", 1.0, 0.0}, Unit{"kg/m3", 1.0, 0.0},
 constexpr std::array kMagneticField{Unit{"T", 1.0, 0.0}, Unit{"mT", 1e-3, 0.0},
                                     Unit{"uT", 1e-6, 0.0}, Unit{"µT", 1e-6, 0.0},
                                     Unit{"G", 1e-4, 0.0}};
+constexpr std::array kInertia{Unit{"kg m^2", 1.0, 0.0}, Unit{"kg*m^2", 1.0, 0.0},
+                              Unit{"g cm^2", 1e-7, 0.0}, Unit{"g*cm^2", 1e-7, 0.0}};
 constexpr std::array kSensitivity{Unit{"V/T", 1.0, 0.0}, Unit{"mV/mT", 1.0, 0.0},
                                   Unit{"mV/G", 10.0, 0.0}};
 
@@ -85,6 +87,8 @@ std::span<const Unit> units_of(Dimension dimension) {
       return kMagneticField;
     case Dimension::kSensitivity:
       return kSensitivity;
+    case Dimension::kInertia:
+      return kInertia;
   }
   return kDimensionless;
 }
@@ -183,6 +187,8 @@ std::string_view dimension_name(Dimension dimension) {
       return "magnetic field";
     case Dimension::kSensitivity:
       return "sensitivity";
+    case Dimension::kInertia:
+      return "moment of inertia";
   }
   return "quantity";
 }

@@ -28,6 +28,7 @@ enum class Dimension {
   kDensity,        // kg/m^3
   kMagneticField,  // T
   kSensitivity,    // V/T (a Hall sensor's output per field)
+  kInertia,        // kg m^2 (moment of inertia)
 };
 
 // A quantity's text could not be read as the dimension asked for.

@@ -35,6 +35,55 @@ std::optional<std::string> cross_check(const EstimatorReport& e, double trajecto
       100.0 * bound / trajectory_period);
 }
 
+// Running means and extremes of the drive's state.
+class DriveStats {
+ public:
+  explicit DriveStats(const Scene& scene) {
+    if (scene.drive) design_ratio_ = gearbox_ratio(*scene.drive);
+  }
+
+  void add(const DriveState& d, const std::array<RollerContact, 2>& contacts, double radius) {
+    ++n_;
+    motor_speed_ += std::fabs(d.motor_speed);
+    motor_torque_ += d.motor_torque;
+    roller_[0] += d.roller_speeds[0];
+    roller_[1] += d.roller_speeds[1];
+    if (d.motor_speed != 0.0) {
+      const double ratio = std::fabs(d.roller_speeds[0] / d.motor_speed);
+      ratio_ += ratio;
+      ratio_error_ = std::max(ratio_error_, std::fabs(ratio / design_ratio_ - 1.0));
+    }
+    opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
+    // The plate's friction F_i (on the plate, along x) acts back on roller i's top: torque
+    // -a F_i about y; counted positive when it opposes the roller's turning.
+    for (int i = 0; i < 2; ++i) {
+      const double sense = d.roller_speeds[static_cast<std::size_t>(i)] >= 0.0 ? 1.0 : -1.0;
+      load_ += sense * radius * contacts[static_cast<std::size_t>(i)].friction_force;
+    }
+  }
+
+  DriveReport report() const {
+    DriveReport r;
+    const double n = std::max<double>(1.0, static_cast<double>(n_));
+    r.motor_speed = motor_speed_ / n;
+    r.motor_torque = motor_torque_ / n;
+    r.roller_speeds = {roller_[0] / n, roller_[1] / n};
+    r.gearbox_ratio = design_ratio_;
+    r.speed_ratio = ratio_ / n;
+    r.speed_ratio_error = ratio_error_;
+    r.senses_opposite = opposite_;
+    r.load_torque = load_ / n;
+    return r;
+  }
+
+ private:
+  double design_ratio_ = 1.0;
+  long long n_ = 0;
+  double motor_speed_ = 0.0, motor_torque_ = 0.0, ratio_ = 0.0, ratio_error_ = 0.0, load_ = 0.0;
+  std::array<double, 2> roller_{};
+  bool opposite_ = true;
+};
+
 }  // namespace
 
 RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunRecording* recording) {
@@ -92,12 +141,13 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   double t_previous = 0.0;
   PlateState previous = state;
   std::optional<RunFailure> failure;
+  DriveStats drive_stats(scene);
   for (long long i = 0; i < steps && !failure; ++i) {
     world.step();
     const double t = world.time();
     state = world.plate();
     const auto contacts = world.contacts();
-    failure = monitor.observe(t, state, contacts);
+    failure = monitor.observe(t, state, contacts, world.roller_surface_speeds());
     // What a guard stopped is not recorded: the outputs hold every trustworthy step.
     if (failure) break;
     tracker.add(t, state.x, state.vx);
@@ -105,6 +155,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     if (options.record_trajectory && recording != nullptr)
       recording->trajectory.push_back({t, state, contacts});
     out.plate_speed_max = std::max(out.plate_speed_max, std::fabs(state.vx));
+    if (const auto d = world.drive()) drive_stats.add(*d, contacts, scene.rollers.radius);
     for (const RollerContact& c : contacts) {
       out.min_normal_force = std::min(out.min_normal_force, c.normal_force);
       out.max_penetration = std::max(out.max_penetration, c.penetration);
@@ -115,6 +166,10 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   out.steps = world.steps();
   out.duration = world.time();
   if (failure) out.failure = failure->message;
+  if (scene.drive) {
+    out.drive = drive_stats.report();
+    out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
+  }
 
   if (const auto p = tracker.period()) {
     out.period_trajectory = p->slope;
@@ -126,7 +181,8 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   }
   out.amplitude_drift_per_period = tracker.amplitude_drift_per_period();
   if (estimator) out.estimator = estimator->report();
-  const double surface_speed = scene.rollers.speed * scene.rollers.radius;
+  // The rollers' surface speed: the set one, or the drive's mean under load.
+  const double surface_speed = out.roller_speed * scene.rollers.radius;
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
                                               : std::numeric_limits<double>::infinity();
 

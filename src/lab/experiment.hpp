@@ -33,6 +33,18 @@ struct EstimatorReport {
   double mu_k_err_quadrature = 0.0;
 };
 
+// The motor and gears over the run (scenes with a drive).
+struct DriveReport {
+  double motor_speed = 0.0;               // rad/s, mean, in the motor's driving sense
+  double motor_torque = 0.0;              // N m, mean
+  std::array<double, 2> roller_speeds{};  // rad/s about +y, mean
+  double gearbox_ratio = 0.0;             // the design's speed-up, from the tooth counts
+  double speed_ratio = 0.0;               // |roller 0| / |motor|, mean
+  double speed_ratio_error = 0.0;         // largest |ratio / design - 1| over the steps
+  bool senses_opposite = true;            // the rollers turned opposite ways at every step
+  double load_torque = 0.0;  // N m, mean torque the plate's friction takes from the rollers
+};
+
 struct RunSummary {
   std::string scene;
   std::uint64_t seed = 0;
@@ -63,11 +75,12 @@ struct RunSummary {
   double amplitude_start = 0.0;                      // m, first turning point
   double amplitude_end = 0.0;                        // m, last turning point
   std::optional<double> amplitude_drift_per_period;  // relative
-  double roller_speed = 0.0;                         // rad/s
-  double plate_speed_max = 0.0;                      // m/s
-  double slip_margin = 0.0;                          // roller surface speed / plate's largest speed
-  double min_normal_force = 0.0;                     // N, over the run
-  double max_penetration = 0.0;                      // m
+  double roller_speed = 0.0;                         // rad/s (mean |roller 0| when driven)
+  std::optional<DriveReport> drive;
+  double plate_speed_max = 0.0;   // m/s
+  double slip_margin = 0.0;       // roller surface speed / plate's largest speed
+  double min_normal_force = 0.0;  // N, over the run
+  double max_penetration = 0.0;   // m
   // The regime diagnosed from the run (src/lab/regime_monitor.hpp), when it began and why; a
   // period is reported only for "oscillates", otherwise period_withheld says why not.
   std::string regime;

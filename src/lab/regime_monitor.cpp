@@ -43,7 +43,7 @@ const char* regime_name(Regime regime) {
 RegimeMonitor::RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia,
                              double h_c)
     : scene_(scene), mass_(plate_mass), inertia_(plate_inertia), h_c_(h_c) {
-  surface_speed_ = scene.rollers.speed * scene.rollers.radius;
+  surface_speed_ = nominal_roller_speed(scene) * scene.rollers.radius;
   // Friction cannot drive the plate faster than the rollers' surface, and gravity gives at most
   // m g times the plate's length: ten times more energy than both is a numerical blow-up.
   const double v = std::max(surface_speed_, std::fabs(scene.plate.velocity));
@@ -58,7 +58,8 @@ RegimeMonitor::RegimeMonitor(const Scene& scene, double plate_mass, double plate
 }
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
-                                                 const std::array<RollerContact, 2>& contacts) {
+                                                 const std::array<RollerContact, 2>& contacts,
+                                                 const std::array<double, 2>& surface) {
   // Guards first: numbers the lab cannot trust stop the run.
   if (!finite(s)) {
     return RunFailure{Regime::kNumericallyFailed, t, "plate", "state",
@@ -149,10 +150,9 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   const long long step = std::llround(t / scene_.world.time_step);
   if (step < kSettleSteps) return std::nullopt;
 
-  const double sense = scene_.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
-  const std::array<double, 2> surface{sense * surface_speed_, -sense * surface_speed_};
   for (int i = 0; i < 2; ++i) {
-    const double ratio = surface_speed_ > 0.0 ? std::fabs(surface[i] - s.vx) / surface_speed_ : 0.0;
+    const double speed = std::fabs(surface[i]);
+    const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
     slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
     if (ratio < kStickRatio && !stick_since_ && contacts[i].touching) {
       stick_since_ = t;

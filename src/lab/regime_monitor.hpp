@@ -45,8 +45,10 @@ class RegimeMonitor {
   RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia, double h_c);
 
   // One step's state. Returns a failure when a guard fires; the run must stop then.
+  // `surface` is each roller's top's velocity along +x [m/s] this step.
   std::optional<RunFailure> observe(double t, const PlateState& plate,
-                                    const std::array<RollerContact, 2>& contacts);
+                                    const std::array<RollerContact, 2>& contacts,
+                                    const std::array<double, 2>& surface);
 
   // The diagnosis so far (call after the last step, or after a failure).
   RegimeFinding finding(const std::optional<RunFailure>& failure) const;
@@ -58,7 +60,7 @@ class RegimeMonitor {
  private:
   Scene scene_;
   double mass_, inertia_, h_c_;
-  double surface_speed_;  // m/s
+  double surface_speed_;  // m/s, the rollers' top without load (for the bounds)
   double energy_bound_;   // J
   double penetration_bound_;
   double speed_bound_;  // m/s

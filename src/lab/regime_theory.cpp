@@ -21,8 +21,23 @@ TheoryRegime regime_from_theory(const Scene& s) {
   if (amplitude > tipping)
     return {"tips", fmt::format("amplitude {:.2f} mm > l/2 - mu_k h_c = {:.2f} mm", amplitude * 1e3,
                                 tipping * 1e3)};
+  // The rollers' speed: set (ideal drive), or the motor's under the plate's friction load: both
+  // rollers slip against the plate, taking mu_k m g a between them, G times that at the motor.
+  double roller_speed = s.rollers.speed;
+  if (s.drive) {
+    const MotorDesc& motor = s.drive->motor;
+    const double ratio = gearbox_ratio(*s.drive);
+    const double load = mu * plate_mass(s).mass * s.world.gravity * s.rollers.radius;
+    const double share = motor.duty - load * ratio / motor.stall_torque;
+    if (share <= 0.0)
+      return {"sticks",
+              fmt::format("the motor stalls: the plate's friction needs {:.3g} N m at the motor, "
+                          "more than its {:.3g} N m at {:.0f} % duty",
+                          load * ratio, motor.duty * motor.stall_torque, 100.0 * motor.duty)};
+    roller_speed = ratio * motor.no_load_speed * share;
+  }
   const double margin =
-      slip_margin(s.rollers.speed, s.rollers.radius, amplitude, l, mu, h_c, s.world.gravity);
+      slip_margin(roller_speed, s.rollers.radius, amplitude, l, mu, h_c, s.world.gravity);
   if (margin < 1.0)
     return {"sticks",
             fmt::format("slip margin {:.3f} < 1 (roller surface speed below A omega)", margin)};

@@ -88,6 +88,19 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["amplitude_end_m"] = s.amplitude_end;
   j["amplitude_drift_per_period"] = optional(s.amplitude_drift_per_period);
   j["roller_speed_rad_s"] = s.roller_speed;
+  if (s.drive) {
+    const DriveReport& d = *s.drive;
+    j["drive"] = {{"motor_speed_rad_s", d.motor_speed},
+                  {"motor_torque_n_m", d.motor_torque},
+                  {"roller_speeds_rad_s", {d.roller_speeds[0], d.roller_speeds[1]}},
+                  {"gearbox_ratio", d.gearbox_ratio},
+                  {"speed_ratio", d.speed_ratio},
+                  {"speed_ratio_error", d.speed_ratio_error},
+                  {"senses_opposite", d.senses_opposite},
+                  {"load_torque_n_m", d.load_torque}};
+  } else {
+    j["drive"] = nullptr;
+  }
   j["plate_speed_max_m_s"] = s.plate_speed_max;
   j["slip_margin"] =
       std::isfinite(s.slip_margin) ? nlohmann::json(s.slip_margin) : nlohmann::json(nullptr);
@@ -182,6 +195,18 @@ std::string summary_text(const RunSummary& s) {
                    s.amplitude_drift_per_period
                        ? fmt::format(" ({:+.2e} per period)", *s.amplitude_drift_per_period)
                        : std::string()));
+  if (s.drive) {
+    const DriveReport& d = *s.drive;
+    line(fmt::format(
+        "  motor                  {:.1f} rpm, {:.1f} mN m (the plate's friction takes {:.2f} mN m "
+        "at the rollers)",
+        d.motor_speed * kRpm, d.motor_torque * 1e3, d.load_torque * 1e3));
+    line(fmt::format(
+        "  gearbox                rollers at {:+.0f} and {:+.0f} rpm: {:.4f} x the motor "
+        "(design {:.3f}, worst step {:.2e} off), senses {}",
+        d.roller_speeds[0] * kRpm, d.roller_speeds[1] * kRpm, d.speed_ratio, d.gearbox_ratio,
+        d.speed_ratio_error, d.senses_opposite ? "opposite" : "NOT opposite"));
+  }
   line(fmt::format("  rollers                {:.0f} rpm, slip margin {:.2f}", s.roller_speed * kRpm,
                    s.slip_margin));
   line(

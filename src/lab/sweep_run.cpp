@@ -103,12 +103,11 @@ SweepStore SweepStore::create(const std::string& dir, const nlohmann::json& plan
   if (fs::exists(plan_file, ec)) {
     const nlohmann::json old = nlohmann::json::parse(read_text(plan_file), nullptr, false);
     if (old.is_discarded() || text_digest(old.dump()) != store.digest_)
-      throw InputError(
-          SourceLocation{plan_file.string(), 0, 0},
-          "this folder holds the results of another sweep (" +
-              (old.is_discarded() ? std::string("its plan.json is damaged")
-                                  : plan_difference(old, plan)) +
-              "); choose another --out, or add --fresh to discard them");
+      throw InputError(SourceLocation{plan_file.string(), 0, 0},
+                       "this folder holds the results of another sweep (" +
+                           (old.is_discarded() ? std::string("its plan.json is damaged")
+                                               : plan_difference(old, plan)) +
+                           "); choose another --out, or add --fresh to discard them");
   } else {
     write_file_atomic(plan_file.string(), plan.dump(1) + "\n");
   }
@@ -121,8 +120,9 @@ SweepStore SweepStore::open(const std::string& dir) {
   const fs::path plan_file = fs::path(dir) / "plan.json";
   std::error_code ec;
   if (!fs::is_regular_file(plan_file, ec))
-    throw InputError(SourceLocation{dir, 0, 0},
-                     "not a sweep folder: it has no plan.json (frictionlab sweep --out writes one)");
+    throw InputError(
+        SourceLocation{dir, 0, 0},
+        "not a sweep folder: it has no plan.json (frictionlab sweep --out writes one)");
   nlohmann::json plan = nlohmann::json::parse(read_text(plan_file), nullptr, false);
   if (plan.is_discarded() || !plan.is_object() || !plan.contains("points") ||
       !plan.contains("axes"))
@@ -190,6 +190,7 @@ void finish_sweep(const SweepStore& store, SweepOutcome& outcome, double point_w
       {"interrupted", outcome.interrupted},
       {"workers", outcome.workers},
       {"ranks", outcome.ranks},
+      {"ran_by_rank", outcome.ran_by_rank},
       {"wall_s", outcome.wall_s},
       {"point_wall_s_sum", point_wall_sum},
       {"points_per_second", outcome.wall_s > 0.0 ? outcome.ran / outcome.wall_s : 0.0}};
@@ -211,11 +212,12 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
   const int launched = mpi_launch_size();
   if (launched > 0 && sweep_has_mpi()) return run_sweep_mpi(spec, options);
   if (launched > 1)
-    throw InputError(SourceLocation{},
-                     fmt::format("this frictionlab was built without MPI (FRICTIONLAB_WITH_MPI=OFF), "
-                                 "so the {} processes mpirun started would each run the whole "
-                                 "sweep; run it without mpirun, or use --shard K/N",
-                                 launched));
+    throw InputError(
+        SourceLocation{},
+        fmt::format("this frictionlab was built without MPI (FRICTIONLAB_WITH_MPI=OFF), "
+                    "so the {} processes mpirun started would each run the whole "
+                    "sweep; run it without mpirun, or use --shard K/N",
+                    launched));
 
   const auto start = std::chrono::steady_clock::now();
   const SweepStore store = SweepStore::create(options.out_dir, sweep_plan(spec), options.fresh);
@@ -236,8 +238,8 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
   progress.done = outcome.resumed;
   double wall_sum = 0.0;
   {
-    const int threads =
-        std::max(1, std::min(outcome.workers, static_cast<int>(std::max<std::size_t>(1, pending.size()))));
+    const int threads = std::max(
+        1, std::min(outcome.workers, static_cast<int>(std::max<std::size_t>(1, pending.size()))));
     WorkPool<PointResult> pool(threads, [&](std::size_t index) {
       PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.paper);
       store.save_point(r);
@@ -262,6 +264,7 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
     }
   }
   outcome.interrupted = outcome.ran < pending.size();
+  outcome.ran_by_rank = {outcome.ran};
   outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   finish_sweep(store, outcome, wall_sum);
   return outcome;
@@ -274,10 +277,11 @@ MergeOutcome merge_sweeps(const std::vector<std::string>& dirs, const std::strin
   const SweepStore& first = stores.front();
   for (const SweepStore& s : stores) {
     if (s.digest() != first.digest())
-      throw InputError(SourceLocation{s.dir(), 0, 0},
-                       "holds another sweep than " + first.dir() + " (" +
-                           plan_difference(s.plan(), first.plan()) + "); merge joins the shards "
-                                                                      "of one sweep");
+      throw InputError(SourceLocation{s.dir(), 0, 0}, "holds another sweep than " + first.dir() +
+                                                          " (" +
+                                                          plan_difference(s.plan(), first.plan()) +
+                                                          "); merge joins the shards "
+                                                          "of one sweep");
   }
   std::map<std::size_t, PointResult> points;
   std::map<std::size_t, std::string> from;
@@ -303,11 +307,11 @@ MergeOutcome merge_sweeps(const std::vector<std::string>& dirs, const std::strin
       if (!points.contains(i)) {
         missing += (listed++ ? ", " : "") + std::to_string(i);
       }
-    throw InputError(SourceLocation{},
-                     fmt::format("the folders hold {} of the sweep's {} points; missing: {}{} "
-                                 "(has every shard finished?)",
-                                 points.size(), count, missing,
-                                 count - points.size() > 10 ? ", ..." : ""));
+    throw InputError(
+        SourceLocation{},
+        fmt::format("the folders hold {} of the sweep's {} points; missing: {}{} "
+                    "(has every shard finished?)",
+                    points.size(), count, missing, count - points.size() > 10 ? ", ..." : ""));
   }
   const SweepStore out = SweepStore::create(out_dir, first.plan(), false);
   const auto present = out.load_points();

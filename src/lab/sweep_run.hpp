@@ -89,6 +89,7 @@ struct SweepOutcome {
   std::map<std::string, int> regimes;  // (final rows, when complete)
   int workers = 0;                     // threads per process
   int ranks = 1;
+  std::vector<std::size_t> ran_by_rank;  // points each MPI rank ran (rank 0 first)
   double wall_s = 0.0;
   std::vector<std::string> files;  // final files written
 };

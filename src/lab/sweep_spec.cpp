@@ -71,6 +71,7 @@ SweepAxis read_key_axis(const YamlNode& n) {
     n.at("key").fail("expected a scene key path such as rollers.spacing, found \"" + axis.key +
                      "\"");
   axis.name = axis.key;
+  n.allow_keys({"key", "name", "values", "from", "to", "steps", "scale"});
   const bool has_values = n.has("values");
   const bool has_range = n.has("from") || n.has("to") || n.has("steps");
   if (has_values && has_range)

@@ -6,6 +6,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/drivetrain.hpp"
+
 namespace fl {
 namespace {
 
@@ -37,6 +39,9 @@ struct RigWorld::Impl {
 
   std::unique_ptr<btSphereShape> roller_shape;
   std::array<std::unique_ptr<btRigidBody>, 2> rollers;
+  std::unique_ptr<Drivetrain> drivetrain;  // the motor and gears (absent: the ideal drive)
+  std::vector<std::unique_ptr<btBoxShape>> guide_shapes;
+  std::vector<std::unique_ptr<btCollisionObject>> guides;
   std::unique_ptr<btBoxShape> plate_shape;
   std::unique_ptr<btRigidBody> plate;
 
@@ -45,8 +50,9 @@ struct RigWorld::Impl {
 
   // Before each internal step: kinematic rollers keep a fixed transform and a forced angular
   // velocity (Bullet would otherwise derive their velocity from a changing transform, which
-  // aliases at large steps and leaves stale contact points; ../shared/bullet-facts.md).
-  static void force_roller_speeds(btDynamicsWorld* world, btScalar /*time_step*/) {
+  // aliases at large steps and leaves stale contact points; ../shared/bullet-facts.md). With a
+  // drive, the speed is the gear train's (advanced in RigWorld::step).
+  static void before_step(btDynamicsWorld* world, btScalar /*time_step*/) {
     auto* impl = static_cast<Impl*>(world->getWorldUserInfo());
     for (int i = 0; i < 2; ++i) {
       impl->rollers[i]->setAngularVelocity(btVector3(0, impl->roller_omega[i], 0));
@@ -61,15 +67,20 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
 
-  // Rollers: kinematic, fixed in place, turning at the set speed. For collision each is one
-  // sphere of the roller's radius (a cylinder against a box gives one contact point that jumps
-  // between the plate's edges; ../shared/bullet-facts.md); the renderer draws the cylinder.
+  // Rollers. For collision each is one sphere of the roller's radius (a cylinder against a box
+  // gives one contact point that jumps between the plate's edges; ../shared/bullet-facts.md);
+  // the renderer draws the cylinder.
   const double l = s.rollers.spacing;
   const double a = s.rollers.radius;
-  const double sense = s.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
-  // Roller 0 at -l/2 turns about +y so its top moves toward +x (the centre) when inward.
-  roller_omega = {sense * s.rollers.speed, -sense * s.rollers.speed};
   roller_shape = std::make_unique<btSphereShape>(a);
+  const double sense = s.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
+  // The ideal drive: the set speed. Roller 0 at -l/2 turns about +y so its top moves toward +x
+  // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
+  roller_omega = {sense * s.rollers.speed, -sense * s.rollers.speed};
+  if (s.drive) {
+    drivetrain = std::make_unique<Drivetrain>(s);
+    roller_omega = drivetrain->roller_speeds();
+  }
   for (int i = 0; i < 2; ++i) {
     const double x = (i == 0 ? -0.5 : 0.5) * l;
     btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, roller_shape.get());
@@ -83,6 +94,30 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
                                   btCollisionObject::CF_KINEMATIC_OBJECT);
     rollers[i]->setActivationState(DISABLE_DEACTIVATION);
     world.addRigidBody(rollers[i].get());
+  }
+
+  // Guide towers: only the frame's parts marked as guides collide, each through its boxes
+  // (from the part index, never the render mesh). Guide-plate friction 0.3 (ABS on the slab).
+  constexpr double kGuideFriction = 0.3;
+  if (s.frame) {
+    for (const FramePart& part : s.frame->parts) {
+      if (!part.guide) continue;
+      for (const CollisionBoxDesc& box : part.boxes) {
+        guide_shapes.push_back(std::make_unique<btBoxShape>(
+            btVector3(0.5 * box.size[0], 0.5 * box.size[1], 0.5 * box.size[2])));
+        auto object = std::make_unique<btCollisionObject>();
+        object->setCollisionShape(guide_shapes.back().get());
+        object->setWorldTransform(btTransform(
+            btQuaternion::getIdentity(),
+            btVector3(part.position[0] + box.center[0], part.position[1] + box.center[1],
+                      part.position[2] + box.center[2])));
+        // Combined as a product with the plate's mu_k: this gives kGuideFriction.
+        object->setFriction(kGuideFriction / s.friction.mu_k);
+        object->setRestitution(0.0);
+        world.addCollisionObject(object.get());
+        guides.push_back(std::move(object));
+      }
+    }
   }
 
   // The plate: its centre of mass is the body's origin. For collision it is a box whose bottom
@@ -104,17 +139,25 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
   ci.m_angularDamping = 0.0;
   plate = std::make_unique<btRigidBody>(ci);
   plate->setActivationState(DISABLE_DEACTIVATION);
-  // The minimal scene has no guides: the plate moves in the x-z plane and pitches about y.
-  plate->setLinearFactor(btVector3(1, 0, 1));
-  plate->setAngularFactor(btVector3(0, 1, 0));
+  if (guides.empty()) {
+    // No guides (the minimal scene): the plate moves in the x-z plane and pitches about y.
+    plate->setLinearFactor(btVector3(1, 0, 1));
+    plate->setAngularFactor(btVector3(0, 1, 0));
+  } else {
+    // The guides hold it sideways: free along y and in yaw. It does not roll about x: the
+    // rollers' line contact prevents that, which one point contact per roller cannot.
+    plate->setLinearFactor(btVector3(1, 1, 1));
+    plate->setAngularFactor(btVector3(0, 1, 1));
+  }
   plate->setLinearVelocity(btVector3(p.velocity, 0, 0));
   world.addRigidBody(plate.get());
 
-  world.setInternalTickCallback(&force_roller_speeds, this, /*isPreTick=*/true);
+  world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
 }
 
 RigWorld::Impl::~Impl() {
   world.removeRigidBody(plate.get());
+  for (auto& g : guides) world.removeCollisionObject(g.get());
   for (auto& r : rollers) world.removeRigidBody(r.get());
 }
 
@@ -122,6 +165,15 @@ RigWorld::RigWorld(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {}
 RigWorld::~RigWorld() = default;
 
 void RigWorld::step() {
+  if (impl_->drivetrain) {
+    // The train advances under the torques the plate's friction put on the rollers in the last
+    // step: -a F_i about y for a friction force F_i (along x) on the plate at roller i's top.
+    const std::array<RollerContact, 2> last = contacts();
+    const double a = impl_->scene.rollers.radius;
+    impl_->drivetrain->advance(impl_->dt,
+                               {-a * last[0].friction_force, -a * last[1].friction_force});
+    impl_->roller_omega = impl_->drivetrain->roller_speeds();
+  }
   impl_->world.stepSimulation(impl_->dt, 0);
   ++impl_->steps;
 }
@@ -185,7 +237,27 @@ std::array<double, 2> RigWorld::roller_speeds() const {
 
 std::array<double, 2> RigWorld::roller_surface_speeds() const {
   const double a = impl_->scene.rollers.radius;
-  return {impl_->roller_omega[0] * a, impl_->roller_omega[1] * a};
+  const std::array<double, 2> omega = roller_speeds();
+  return {omega[0] * a, omega[1] * a};
+}
+
+std::optional<DriveState> RigWorld::drive() const {
+  if (!impl_->drivetrain) return std::nullopt;
+  const Drivetrain& d = *impl_->drivetrain;
+  DriveState state;
+  state.motor_speed = d.motor_speed();
+  state.motor_torque = d.motor_torque();
+  state.roller_speeds = d.roller_speeds();
+  return state;
+}
+
+std::vector<ShaftState> RigWorld::shafts() const {
+  std::vector<ShaftState> out;
+  if (!impl_->drivetrain) return out;
+  const Drivetrain& d = *impl_->drivetrain;
+  for (std::size_t i = 0; i < d.layout().shafts.size(); ++i)
+    out.push_back({d.angle(static_cast<int>(i)), d.speed(static_cast<int>(i))});
+  return out;
 }
 
 double RigWorld::plate_mass() const {

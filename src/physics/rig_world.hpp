@@ -4,6 +4,8 @@
 
 #include <array>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -27,6 +29,19 @@ struct RollerContact {
   double penetration = 0.0;     // m, deepest, >= 0
 };
 
+// The motor drive's state (scenes with a `drive`).
+struct DriveState {
+  double motor_speed = 0.0;               // rad/s about +y, the motor's output shaft
+  double motor_torque = 0.0;              // N m, in the motor's driving sense
+  std::array<double, 2> roller_speeds{};  // rad/s about +y
+};
+
+// One shaft of the drive layout (scene/drive_layout.hpp), to pose its gears.
+struct ShaftState {
+  double angle = 0.0;  // rad about +y since the start, unwrapped
+  double speed = 0.0;  // rad/s about +y
+};
+
 class RigWorld {
  public:
   explicit RigWorld(const Scene& scene);
@@ -47,6 +62,11 @@ class RigWorld {
 
   // Surface speed of each roller's top along +x [m/s].
   std::array<double, 2> roller_surface_speeds() const;
+
+  // The motor and gears, when the scene has a drive (nullopt for the ideal drive).
+  std::optional<DriveState> drive() const;
+  // Every shaft of the drive layout, in its order (empty for the ideal drive).
+  std::vector<ShaftState> shafts() const;
 
   double plate_mass() const;     // kg, slab + payload + magnets
   double plate_h_c() const;      // m, centre of mass above the contact line

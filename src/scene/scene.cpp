@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "core/analytic_model.hpp"
 
@@ -21,10 +23,14 @@ PlateMass plate_mass(const Scene& scene) {
   if (p.payload.mass > 0.0)
     parts.push_back({p.payload.mass, 0.0, p.thickness + p.payload.height,
                      p.payload.mass * p.length * p.length / 12.0});
+  for (const PlateBlock& block : p.blocks) {
+    // A block's own pitch inertia is small against the plate's; it counts as a point mass.
+    parts.push_back({block.mass, block.x, p.thickness + block.com_z, 0.0});
+  }
   for (const MagnetDesc& magnet : scene.magnets) {
     const double r = 0.5 * magnet.diameter;
     const double m = magnet.density * std::numbers::pi * r * r * magnet.thickness;
-    parts.push_back({m, magnet.x, p.thickness + 0.5 * magnet.thickness,
+    parts.push_back({m, magnet.x, p.thickness + magnet.height + 0.5 * magnet.thickness,
                      m * (3.0 * r * r + magnet.thickness * magnet.thickness) / 12.0});
   }
   PlateMass out;
@@ -43,6 +49,23 @@ PlateMass plate_mass(const Scene& scene) {
     out.inertia_pitch += part.own + part.m * (dx * dx + dz * dz);
   }
   return out;
+}
+
+const GearSpec& DriveDesc::gear(int teeth) const {
+  for (const GearSpec& g : gears)
+    if (g.teeth == teeth) return g;
+  throw std::out_of_range("no " + std::to_string(teeth) + "-tooth gear in the drive's gear list");
+}
+
+double gearbox_ratio(const DriveDesc& drive) {
+  double ratio = 1.0;
+  for (const GearStage& st : drive.stages) ratio *= static_cast<double>(st.driver) / st.driven;
+  return ratio;
+}
+
+double nominal_roller_speed(const Scene& scene) {
+  if (!scene.drive) return scene.rollers.speed;
+  return scene.drive->motor.duty * scene.drive->motor.no_load_speed * gearbox_ratio(*scene.drive);
 }
 
 double initial_amplitude(const Scene& scene, double mu_k) {

@@ -32,7 +32,9 @@ struct RollersDesc {
   double spacing = 0.089;             // l, m, between the two axes
   double radius = 0.010;              // a, m
   double length = 0.100;              // m, along y
-  double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller, magnitude
+  double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller (ideal drive only)
+  double wall = 0.0015;               // m, the PVC tube's wall (its mass and inertia, when driven)
+  double density = 1400.0;            // kg/m^3 (PVC)
   RollerSense sense = RollerSense::kInward;
   std::string material = "pvc";
 };
@@ -43,6 +45,18 @@ struct PayloadDesc {
   double height = 0.0;  // m, of the payload's centre of mass above the plate's top face
 };
 
+// A LEGO block on the plate's top (the paper's blocks hold the magnets), its mass and centre of
+// mass from the part index (assets/lego/parts.yaml), resolved when the scene is loaded.
+struct PlateBlock {
+  std::string part;     // "brick-2x4"
+  double x = 0.0;       // m, of its centre along the plate from the plate's centre
+  double y = 0.0;       // m, across the plate
+  int turn = 0;         // degrees about z: 0, 90, 180, 270
+  double mass = 0.0;    // kg
+  double com_z = 0.0;   // m, its centre of mass above the plate's top face
+  double height = 0.0;  // m, its body's height (studs not included): a magnet on top sits here
+};
+
 struct PlateDesc {
   double length = 0.200;       // m, along x
   double width = 0.060;        // m, along y
@@ -51,6 +65,7 @@ struct PlateDesc {
   double density = 1050.0;     // kg/m^3 (ABS), used when mass is absent
   std::string material = "lego";
   PayloadDesc payload;
+  std::vector<PlateBlock> blocks;
   double offset = 0.020;  // m, initial x of the plate's centre
   double velocity = 0.0;  // m/s, initial x velocity
 };
@@ -58,6 +73,7 @@ struct PlateDesc {
 // A cylindrical magnet fixed on the plate's top face, magnetised along its axis (z).
 struct MagnetDesc {
   double x = 0.0;            // m, of its centre, along the plate from the plate's centre
+  double height = 0.0;       // m, of its bottom face above the plate's top face (on a block)
   double diameter = 0.006;   // m
   double thickness = 0.003;  // m
   double remanence = 1.2;    // T (N35 neodymium); negative flips the pole that faces up
@@ -89,6 +105,61 @@ struct FrictionDesc {
   std::optional<Measured> paper_mu_k;
 };
 
+// A 12 V DC motor with a linear torque-speed curve, its voltage set by PWM (the paper's Arduino).
+struct MotorDesc {
+  double rated_voltage = 12.0;                // V
+  double no_load_speed = 20.943951023931955;  // rad/s at the rated voltage (200 rpm)
+  double stall_torque = 0.8;                  // N m at the rated voltage
+  double duty = 1.0;                          // PWM duty, 0 to 1
+  double inertia = 5e-4;  // kg m^2, rotor (~5e-7) through a ~30:1 gearhead, seen at the output
+};
+
+// One mesh of the gearbox: a driver gear turning a driven gear (tooth counts).
+struct GearStage {
+  int driver = 16;
+  int driven = 8;
+};
+
+// LEGO spur gear data the physics needs, resolved from the part index when loaded.
+struct GearSpec {
+  int teeth = 0;
+  double mass = 0.0;          // kg
+  double inertia = 0.0;       // kg m^2 about its axis
+  double pitch_radius = 0.0;  // m
+};
+
+// The rig's drive: the motor turns roller 0 through the gearbox's stages (speed-up 2:1 each in
+// the paper's rig: 16 to 8 teeth); roller 0 turns roller 1 the other way through two idlers.
+struct DriveDesc {
+  MotorDesc motor;
+  std::vector<GearStage> stages;  // motor -> roller 0; empty: the motor turns roller 0 directly
+  int roller_gear = 24;           // on each roller's axle, at the rollers' far end
+  int idler_gear = 40;            // two idlers between the roller gears
+  std::vector<GearSpec> gears;    // every tooth count used, from the part index
+  const GearSpec& gear(int teeth) const;
+};
+
+// A LEGO part of the frame, placed on the stud grid (resolved from the part index).
+struct CollisionBoxDesc {
+  Vec3 center{};  // m, in the part's frame
+  Vec3 size{};    // m, full edges
+};
+
+struct FramePart {
+  std::string part;                              // "technic-brick-1x16"
+  std::array<int, 3> at{0, 0, 0};                // studs along x, studs along y, plates up
+  int turn = 0;                                  // degrees about z: 0, 90, 180, 270
+  std::array<float, 3> color{0.7f, 0.1f, 0.1f};  // sRGB
+  bool guide = false;                            // collides with the plate (a guide tower's part)
+  Vec3 position{};                               // m, the part's origin in the world
+  std::vector<CollisionBoxDesc> boxes;           // its collision boxes (used when guide)
+};
+
+struct FrameDesc {
+  Vec3 origin{0.0, 0.0, -0.03};  // m, where the stud grid's (0, 0, 0) sits in the world
+  std::vector<FramePart> parts;
+};
+
 struct OutputDesc {
   bool trajectory = true;  // trajectory.csv with --out
   bool hall = true;        // hall.csv with --out (when the scene has a sensor)
@@ -107,10 +178,12 @@ struct Scene {
   std::vector<MagnetDesc> magnets;
   std::optional<SensorDesc> sensor;
   FrictionDesc friction;
+  std::optional<DriveDesc> drive;  // absent: the ideal drive (rollers.speed)
+  std::optional<FrameDesc> frame;  // absent: no frame, no guides, no mesh
   OutputDesc output;
 };
 
-// Mass properties of the plate as built (slab + payload + magnets), from the description.
+// Mass properties of the plate as built (slab + payload + blocks + magnets).
 struct PlateMass {
   double mass = 0.0;           // kg
   double x_c = 0.0;            // m, centre of mass along x from the plate's geometric centre
@@ -118,6 +191,13 @@ struct PlateMass {
   double inertia_pitch = 0.0;  // kg m^2, about the y axis through the centre of mass
 };
 PlateMass plate_mass(const Scene& scene);
+
+// The rollers' speed [rad/s] without load: rollers.speed for the ideal drive; for the motor
+// drive, the duty's share of the motor's no-load speed times the gearbox's speed-up.
+double nominal_roller_speed(const Scene& scene);
+
+// The gearbox's speed-up from the motor to the rollers (product of driver / driven teeth).
+double gearbox_ratio(const DriveDesc& drive);
 
 // The largest |x| the plate's centre reaches for a harmonic oscillation from (offset, velocity).
 double initial_amplitude(const Scene& scene, double mu_k);

@@ -4,6 +4,7 @@
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
+#include "scene/drive_layout.hpp"
 
 namespace fl {
 namespace {
@@ -88,6 +89,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
        describe("the plate (", s.plate.length * 1e3,
                 " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
                 " mm: it would leave a roller; use a longer plate or a smaller offset"));
+  if (s.drive) {
+    try {
+      drive_layout(s);
+    } catch (const std::invalid_argument& e) {
+      problems.push_back({"drive.coupling", e.what()});
+    }
+  }
   if (s.sensor) {
     const SensorDesc& sensor = *s.sensor;
     const double norm = std::hypot(sensor.axis[0], sensor.axis[1], sensor.axis[2]);
@@ -113,11 +121,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
       const double r = 0.5 * m.diameter;
       const bool inside_x = std::fabs(sensor.position[0] - m.x) <= amplitude + r;
       const bool inside_y = std::fabs(sensor.position[1]) <= r;
-      const bool inside_z = sensor.position[2] >= top && sensor.position[2] <= top + m.thickness;
+      const double bottom = top + m.height;
+      const bool inside_z =
+          sensor.position[2] >= bottom && sensor.position[2] <= bottom + m.thickness;
       need(!(inside_x && inside_y && inside_z), "sensor.position",
            describe("the sensor lies inside the volume magnet ", i,
                     " sweeps as the plate moves; raise it above the magnet's top at ",
-                    (top + m.thickness) * 1e3, " mm"));
+                    (top + m.height + m.thickness) * 1e3, " mm"));
     }
   }
   return problems;

@@ -5,6 +5,7 @@
 
 #include "io/input_error.hpp"
 #include "io/yaml_node.hpp"
+#include "scene/rig_parts_yaml.hpp"
 #include "scene/scene_checks.hpp"
 
 namespace fl {
@@ -29,13 +30,16 @@ void read_world(const YamlNode& n, WorldDesc& w) {
 }
 
 void read_rollers(const YamlNode& n, RollersDesc& r) {
-  n.allow_keys({"spacing", "radius", "diameter", "length", "speed", "sense", "material"});
+  n.allow_keys(
+      {"spacing", "radius", "diameter", "length", "wall", "density", "speed", "sense", "material"});
   if (auto v = n.find("spacing")) r.spacing = v->quantity(Dimension::kLength);
   if (n.has("radius") && n.has("diameter"))
     n.at("diameter").fail("give radius or diameter, not both");
   if (auto v = n.find("radius")) r.radius = v->quantity(Dimension::kLength);
   if (auto v = n.find("diameter")) r.radius = 0.5 * v->quantity(Dimension::kLength);
   if (auto v = n.find("length")) r.length = v->quantity(Dimension::kLength);
+  if (auto v = n.find("wall")) r.wall = v->quantity(Dimension::kLength);
+  if (auto v = n.find("density")) r.density = v->quantity(Dimension::kDensity);
   if (auto v = n.find("speed")) r.speed = v->quantity(Dimension::kAngularSpeed);
   if (auto v = n.find("sense")) {
     const std::string sense = v->text();
@@ -51,8 +55,8 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
 }
 
 void read_plate(const YamlNode& n, PlateDesc& p) {
-  n.allow_keys({"length", "width", "thickness", "mass", "density", "material", "payload", "offset",
-                "velocity"});
+  n.allow_keys({"length", "width", "thickness", "mass", "density", "material", "payload", "blocks",
+                "offset", "velocity"});
   if (auto v = n.find("length")) p.length = v->quantity(Dimension::kLength);
   if (auto v = n.find("width")) p.width = v->quantity(Dimension::kLength);
   if (auto v = n.find("thickness")) p.thickness = v->quantity(Dimension::kLength);
@@ -70,9 +74,10 @@ void read_plate(const YamlNode& n, PlateDesc& p) {
 }
 
 MagnetDesc read_magnet(const YamlNode& n) {
-  n.allow_keys({"x", "diameter", "thickness", "remanence", "density"});
+  n.allow_keys({"x", "height", "diameter", "thickness", "remanence", "density"});
   MagnetDesc m;
   m.x = n.at("x").quantity(Dimension::kLength);
+  if (auto v = n.find("height")) m.height = v->quantity(Dimension::kLength);
   if (auto v = n.find("diameter")) m.diameter = v->quantity(Dimension::kLength);
   if (auto v = n.find("thickness")) m.thickness = v->quantity(Dimension::kLength);
   if (auto v = n.find("remanence")) m.remanence = v->quantity(Dimension::kMagneticField);
@@ -165,12 +170,20 @@ YamlNode node_for(const YamlNode& root, const std::string& key) {
 }
 
 Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOverride> overrides,
-                 const PaperTableSource& paper) {
+                 const PaperTableSource& paper, const PartCatalogSource& parts) {
+  // The part index, the first time a key needs it.
+  const CatalogGetter catalog = [&parts](const YamlNode& where) -> const assets::PartCatalog& {
+    if (!parts)
+      where.fail(
+          "this key names LEGO parts, but no part index (assets/lego/parts.yaml) was given "
+          "to the scene loader");
+    return parts();
+  };
   root.expect_map();
   for (const SceneOverride& o : overrides)
     root.set_path(o.path, o.value, "--set " + o.path + "=" + o.value);
   root.allow_keys({"format", "name", "expect", "world", "rollers", "plate", "magnets", "sensor",
-                   "friction", "output"});
+                   "friction", "drive", "frame", "output"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
   Scene scene;
@@ -188,7 +201,18 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   }
   if (auto v = root.find("world")) read_world(*v, scene.world);
   if (auto v = root.find("rollers")) read_rollers(*v, scene.rollers);
-  if (auto v = root.find("plate")) read_plate(*v, scene.plate);
+  if (auto v = root.find("plate")) {
+    read_plate(*v, scene.plate);
+    if (auto blocks = v->find("blocks")) scene.plate.blocks = read_plate_blocks(*blocks, catalog);
+  }
+  if (auto v = root.find("drive")) {
+    if (root.has("rollers") && root.at("rollers").has("speed"))
+      root.at("rollers").at("speed").fail(
+          "the drive sets the rollers' speed (motor, duty and gears); remove this key or the "
+          "drive");
+    scene.drive = read_drive(*v, catalog);
+  }
+  if (auto v = root.find("frame")) scene.frame = read_frame(*v, catalog);
   if (auto v = root.find("magnets")) {
     for (std::size_t i = 0; i < v->size(); ++i) scene.magnets.push_back(read_magnet((*v)[i]));
   }
@@ -218,14 +242,15 @@ SceneOverride parse_override(std::string_view text) {
 }
 
 Scene load_scene_text(std::string_view text, const std::string& name,
-                      std::span<const SceneOverride> overrides, const PaperTableSource& paper) {
-  return read_scene(load_yaml_text(text, name), name, overrides, paper);
+                      std::span<const SceneOverride> overrides, const PaperTableSource& paper,
+                      const PartCatalogSource& parts) {
+  return read_scene(load_yaml_text(text, name), name, overrides, paper, parts);
 }
 
 Scene load_scene_file(const std::string& file, std::span<const SceneOverride> overrides,
-                      const PaperTableSource& paper) {
+                      const PaperTableSource& paper, const PartCatalogSource& parts) {
   return read_scene(load_yaml_file(file), std::filesystem::path(file).stem().string(), overrides,
-                    paper);
+                    paper, parts);
 }
 
 }  // namespace fl

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "assets/part_catalog.hpp"
 #include "core/paper_table.hpp"
 #include "scene/scene.hpp"
 
@@ -25,11 +26,16 @@ SceneOverride parse_override(std::string_view text);
 // The paper's table, loaded only if a scene names one of its materials.
 using PaperTableSource = std::function<const PaperTable&()>;
 
+// The LEGO part index (assets/lego/parts.yaml), read only if a scene names LEGO parts (a frame,
+// blocks on the plate, a gearbox). Without one, such a scene is refused with a clear message.
+using PartCatalogSource = std::function<const assets::PartCatalog&()>;
+
 Scene load_scene_file(const std::string& file, std::span<const SceneOverride> overrides,
-                      const PaperTableSource& paper);
+                      const PaperTableSource& paper, const PartCatalogSource& parts = {});
 
 // The same from text (tests, inline scenes); `name` stands for the file in messages.
 Scene load_scene_text(std::string_view text, const std::string& name,
-                      std::span<const SceneOverride> overrides, const PaperTableSource& paper);
+                      std::span<const SceneOverride> overrides, const PaperTableSource& paper,
+                      const PartCatalogSource& parts = {});
 
 }  // namespace fl

@@ -79,7 +79,11 @@ INSTANTIATE_TEST_SUITE_P(
         UnitCase{"100 G", Dimension::kMagneticField, 0.01},
         UnitCase{"25 V/T", Dimension::kSensitivity, 25.0},
         UnitCase{"25 mV/mT", Dimension::kSensitivity, 25.0},
-        UnitCase{"2.5 mV/G", Dimension::kSensitivity, 25.0}));
+        UnitCase{"2.5 mV/G", Dimension::kSensitivity, 25.0},
+        UnitCase{"1e-5 kg m^2", Dimension::kInertia, 1e-5},
+        UnitCase{"1e-5 kg*m^2", Dimension::kInertia, 1e-5},
+        UnitCase{"100 g cm^2", Dimension::kInertia, 1e-5},
+        UnitCase{"100 g*cm^2", Dimension::kInertia, 1e-5}));
 
 std::string error_of(const char* text, Dimension dimension, const char* quantity) {
   try {

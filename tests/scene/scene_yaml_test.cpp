@@ -26,6 +26,12 @@ const PaperTable& paper_table() {
 
 const PaperTableSource kPaper = []() -> const PaperTable& { return paper_table(); };
 
+const PartCatalogSource kParts = []() -> const assets::PartCatalog& {
+  static const assets::PartCatalog catalog =
+      assets::load_part_catalog(assets::part_catalog_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return catalog;
+};
+
 // A small valid scene; tests change one thing at a time.
 const std::string kBase = R"(format: 1
 rollers:
@@ -77,7 +83,7 @@ TEST(SceneYaml, EverySceneInTheRepositoryLoads) {
     if (entry.path().extension() != ".yaml") continue;
     // Sweep files describe sweeps, not scenes.
     if (entry.path().parent_path().filename() == "sweeps") continue;
-    EXPECT_NO_THROW(load_scene_file(entry.path().string(), {}, kPaper)) << entry.path();
+    EXPECT_NO_THROW(load_scene_file(entry.path().string(), {}, kPaper, kParts)) << entry.path();
     ++count;
   }
   EXPECT_GE(count, 1);

@@ -1,0 +1,381 @@
+#include "lab/compare.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+#include "lab/experiment.hpp"
+#include "lab/run_outputs.hpp"
+#include "lab/sweep_pool.hpp"
+
+namespace fl {
+namespace {
+
+struct Simulation {
+  std::optional<double> period;  // s
+  std::optional<double> period_std;
+  std::string regime;
+  std::string evidence;
+  std::optional<std::string> failure;
+};
+
+class Rig {
+ public:
+  Rig(const PaperTable& table, const CompareOptions& options)
+      : table_(table),
+        options_(options),
+        paper_([this]() -> const PaperTable& { return table_; }) {}
+
+  // The scene for a row, with mu_k as a number (or the row's own when `mu_k` is empty).
+  Scene scene(const CompareRow& row, std::optional<double> mu_k,
+              std::optional<double> spacing = std::nullopt) const {
+    std::vector<SceneOverride> overrides = options_.overrides;
+    overrides.push_back({"world.duration", fmt::format("{} s", row.duration)});
+    overrides.push_back({"plate.material", row.material});
+    overrides.push_back({"friction.temperature", fmt::format("{} K", row.temperature)});
+    overrides.push_back(
+        {"friction.mu_k", mu_k ? fmt::format("{:.17g}", *mu_k) : std::string(row.material)});
+    if (spacing) overrides.push_back({"rollers.spacing", fmt::format("{:.17g}", *spacing)});
+    return load_scene_file(options_.scene_file, overrides, paper_);
+  }
+
+  Simulation simulate(const Scene& scene) {
+    ++simulations_;
+    const RunSummary summary = run_experiment(scene, RunOptions{});
+    const nlohmann::json j = summary_json(summary);
+    Simulation s;
+    const auto number = [&j](const char* key) -> std::optional<double> {
+      if (j.contains(key) && j[key].is_number() && std::isfinite(j[key].get<double>()))
+        return j[key].get<double>();
+      return std::nullopt;
+    };
+    s.period = number("period_s");
+    if (!s.period) s.period = number("period_trajectory_s");
+    s.period_std = number("period_std_s");
+    s.regime = j.value("regime", "");
+    for (const char* key : {"regime_evidence", "regime_reason"})
+      if (j.contains(key) && j[key].is_string() && s.evidence.empty()) s.evidence = j[key];
+    if (j.contains("failure") && j["failure"].is_string()) s.failure = j["failure"];
+    return s;
+  }
+
+  int simulations() const { return simulations_.load(); }
+  const PaperTableSource& paper() const { return paper_; }
+
+ private:
+  const PaperTable& table_;
+  const CompareOptions& options_;
+  PaperTableSource paper_;
+  std::atomic<int> simulations_{0};
+};
+
+bool oscillates(const Simulation& s) {
+  return !s.failure && s.regime == "oscillates" && s.period && *s.period > 0.0;
+}
+
+std::string no_oscillation_reason(const Simulation& s) {
+  if (s.failure) return "the run failed: " + *s.failure;
+  if (s.regime != "oscillates")
+    return "the simulated plate " +
+           (s.regime.empty() ? std::string("did not oscillate") : "'" + s.regime + "'") +
+           (s.evidence.empty() ? "" : ": " + s.evidence);
+  return "the estimator measured no period";
+}
+
+void refit(Rig& rig, CompareRow& row, const CompareResult& rig_facts,
+           const CompareOptions& options) {
+  const double target = row.period_measured.value;
+  const double l = rig_facts.spacing;
+  const double h_c = rig_facts.h_c;
+  // Above l / (2 h_c) there is no restoring force: keep every trial below it.
+  const double mu_ceiling = h_c > 0.0 ? 0.999 * l / (2.0 * h_c) : 1e9;
+  const auto run = [&](double mu, std::optional<double> spacing = std::nullopt) {
+    CompareRun r;
+    r.mu_k = mu;
+    r.spacing = spacing.value_or(l);
+    const Simulation s = rig.simulate(rig.scene(row, mu, spacing));
+    r.regime = s.regime;
+    if (oscillates(s)) r.period = s.period;
+    row.runs.push_back(r);
+    if (!r.period)
+      throw std::runtime_error(fmt::format("at mu_k = {:.5g}: {}", mu, no_oscillation_reason(s)));
+    return r;
+  };
+  const double mu0 = *row.mu_k_thick_formula;
+  std::vector<CompareRun> trials{run(mu0)};
+  trials.push_back(run(std::min(mu0 * (1.0 + options.slope_step), mu_ceiling)));
+  // d ln T / d ln mu from the two runs (about -1/2: T ~ mu^-1/2), then Newton steps in log space
+  // from the best trial, refreshing the slope by the secant when two trials are far enough apart.
+  double slope = std::log(*trials[1].period / *trials[0].period) / std::log(trials[1].mu_k / mu0);
+  if (!(slope < 0.0)) throw std::runtime_error("the simulated period does not fall with mu_k");
+  row.sensitivity_mu = slope;
+  const auto miss = [target](const CompareRun& r) { return std::fabs(*r.period / target - 1.0); };
+  const auto best = [&] {
+    return *std::min_element(trials.begin(), trials.end(),
+                             [&](const auto& a, const auto& b) { return miss(a) < miss(b); });
+  };
+  while (miss(best()) > options.tolerance &&
+         static_cast<int>(trials.size()) < options.max_refit_runs) {
+    const CompareRun from = best();
+    const double mu =
+        std::min(from.mu_k * std::exp(std::log(target / *from.period) / slope), mu_ceiling);
+    const CompareRun next = run(mu);
+    if (std::fabs(std::log(next.mu_k / from.mu_k)) > 1e-3) {
+      const double secant = std::log(*next.period / *from.period) / std::log(next.mu_k / from.mu_k);
+      if (secant < 0.0) slope = secant;
+    }
+    trials.push_back(next);
+  }
+  const CompareRun fit = best();
+  row.mu_k_refit = fit.mu_k;
+  row.period_at_refit = fit.period;
+  if (miss(fit) > options.tolerance)
+    row.refit_note = fmt::format("not converged: the closest run is {:+.4f} % off after {} runs",
+                                 100.0 * (*fit.period / target - 1.0), trials.size());
+
+  // The spacing's sensitivity, from one run at l + dl.
+  const double dl = rig_facts.spacing_err > 0.0 ? rig_facts.spacing_err : 0.02 * l;
+  const CompareRun wide = run(fit.mu_k, l + dl);
+  const double slope_l = std::log(*wide.period / *fit.period) / std::log((l + dl) / l);
+  row.sensitivity_spacing = slope_l;
+  // ln mu = (ln T - slope_l ln l) / slope + const: carry dT/T and dl/l through it.
+  const double from_period = std::fabs(1.0 / slope) * row.period_measured.uncertainty / target;
+  const double from_spacing = std::fabs(slope_l / slope) * rig_facts.spacing_err / l;
+  row.mu_k_refit_err_worst = fit.mu_k * (from_period + from_spacing);
+  row.mu_k_refit_err_quadrature = fit.mu_k * std::hypot(from_period, from_spacing);
+}
+
+CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
+                       const CompareOptions& options) {
+  const double l = facts.spacing;
+  const double h_c = facts.h_c;
+  const double g = facts.gravity;
+  const double mu = row.mu_k_paper.value;
+  const double t_measured = row.period_measured.value;
+  row.period_thin = period_thin(l, mu, g);
+  row.mu_k_thick_formula = mu_k_from_period_thick(t_measured, l, h_c, g);
+  row.thin_bias_mu_k = mu_k_from_period_thin(t_measured, l, g) / *row.mu_k_thick_formula - 1.0;
+  if (!has_restoring_force(l, mu, h_c)) {
+    row.status = "no oscillation";
+    row.reason = fmt::format(
+        "no restoring force: l = {:.1f} mm <= 2 mu_k h_c = 2 x {} x {:.2f} mm = {:.1f} mm", l * 1e3,
+        mu, h_c * 1e3, 2.0 * mu * h_c * 1e3);
+    row.refit_note = "not fitted: the paper's numbers give no Coulomb oscillation";
+    return row;
+  }
+  row.period_thick = period_thick(l, mu, h_c, g);
+  row.thin_bias_period = row.period_thin / *row.period_thick - 1.0;
+
+  Simulation s;
+  double amplitude = facts.amplitude;
+  try {
+    const Scene scene = rig.scene(row, std::nullopt);
+    amplitude = initial_amplitude(scene, mu);
+    s = rig.simulate(scene);
+  } catch (const std::exception& e) {
+    row.status = "failed";
+    row.reason = e.what();
+    return row;
+  }
+  row.runs.push_back(CompareRun{mu, l, s.period, s.regime});
+  row.regime = s.regime;
+  if (!oscillates(s)) {
+    row.status = "no oscillation";
+    const double tipping = tipping_amplitude(l, mu, h_c);
+    row.reason = no_oscillation_reason(s);
+    if (amplitude >= tipping)
+      row.reason = fmt::format(
+          "the plate tips: its amplitude {:.1f} mm reaches l/2 - mu_k h_c = {:.1f} mm ({})",
+          amplitude * 1e3, tipping * 1e3, row.reason);
+    row.refit_note = "not fitted: the paper's numbers give no Coulomb oscillation";
+    return row;
+  }
+  row.status = "compared";
+  row.period_simulated = s.period;
+  row.period_simulated_std = s.period_std;
+  if (row.period_measured.uncertainty > 0.0)
+    row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
+  if (!options.refit) return row;
+  try {
+    refit(rig, row, facts, options);
+  } catch (const std::exception& e) {
+    row.mu_k_refit.reset();
+    row.mu_k_refit_err_worst.reset();
+    row.mu_k_refit_err_quadrature.reset();
+    row.refit_note = std::string("no refit: ") + e.what();
+  }
+  return row;
+}
+
+nlohmann::json opt(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+CompareResult run_compare(const PaperTable& table, const CompareOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  Rig rig(table, options);
+  CompareResult result;
+  // The rig's own numbers, from the scene as the rows will see it (LEGO's mu_k for the amplitude).
+  {
+    std::vector<SceneOverride> overrides = options.overrides;
+    overrides.push_back({"friction.mu_k", "0.29"});
+    const Scene base = load_scene_file(options.scene_file, overrides, rig.paper());
+    result.scene = base.name;
+    result.spacing = base.rollers.spacing;
+    result.spacing_err = table.spacing.uncertainty;
+    result.h_c = plate_mass(base).h_c;
+    result.gravity = base.world.gravity;
+    result.amplitude = initial_amplitude(base, 0.29);
+    result.duration = base.world.duration;
+  }
+  std::vector<CompareRow> rows;
+  for (const PaperMaterial& m : table.materials) {
+    for (const PaperMeasurement* at : {&m.room, m.cold ? &*m.cold : nullptr}) {
+      if (at == nullptr) continue;
+      CompareRow row;
+      row.material = m.key;
+      row.name = m.name;
+      row.temperature = at->temperature;
+      row.period_measured = at->period;
+      row.mu_k_paper = at->mu_k;
+      row.duration = std::max(result.duration, options.min_periods * at->period.value);
+      rows.push_back(row);
+    }
+  }
+  // Room temperature first, then 77 K, each in the table's order.
+  std::stable_sort(rows.begin(), rows.end(), [](const CompareRow& a, const CompareRow& b) {
+    return a.temperature > b.temperature;
+  });
+
+  result.workers = options.workers > 0 ? options.workers : hardware_workers();
+  result.rows.resize(rows.size());
+  {
+    WorkPool<std::pair<std::size_t, CompareRow>> pool(
+        std::min<int>(result.workers, static_cast<int>(rows.size())), [&](std::size_t i) {
+          return std::make_pair(i, compare_row(rig, rows[i], result, options));
+        });
+    for (std::size_t i = 0; i < rows.size(); ++i) pool.push(i);
+    pool.close();
+    std::size_t done = 0;
+    while (!pool.finished()) {
+      for (auto& [i, row] : pool.take(std::chrono::milliseconds(250))) {
+        result.rows[i] = std::move(row);
+        ++done;
+        if (options.progress) options.progress(done, rows.size());
+      }
+    }
+  }
+  result.simulations = rig.simulations();
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+nlohmann::json compare_json(const CompareResult& r) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const CompareRow& row : r.rows) {
+    nlohmann::json runs = nlohmann::json::array();
+    for (const CompareRun& run : row.runs)
+      runs.push_back({{"mu_k", run.mu_k},
+                      {"spacing_m", run.spacing},
+                      {"period_s", opt(run.period)},
+                      {"regime", run.regime}});
+    rows.push_back({{"material", row.material},
+                    {"name", row.name},
+                    {"temperature_k", row.temperature},
+                    {"duration_s", row.duration},
+                    {"status", row.status},
+                    {"reason", row.reason},
+                    {"period_measured_s", row.period_measured.value},
+                    {"period_measured_err_s", row.period_measured.uncertainty},
+                    {"period_simulated_s", opt(row.period_simulated)},
+                    {"period_simulated_std_s", opt(row.period_simulated_std)},
+                    {"regime", row.regime},
+                    {"residual_sigma", opt(row.residual_sigma)},
+                    {"period_thin_s", row.period_thin},
+                    {"period_thick_s", opt(row.period_thick)},
+                    {"thin_bias_period", opt(row.thin_bias_period)},
+                    {"thin_bias_mu_k", opt(row.thin_bias_mu_k)},
+                    {"mu_k_paper", row.mu_k_paper.value},
+                    {"mu_k_paper_err", row.mu_k_paper.uncertainty},
+                    {"mu_k_thick_formula", opt(row.mu_k_thick_formula)},
+                    {"mu_k_refit", opt(row.mu_k_refit)},
+                    {"mu_k_refit_err_worst", opt(row.mu_k_refit_err_worst)},
+                    {"mu_k_refit_err_quadrature", opt(row.mu_k_refit_err_quadrature)},
+                    {"period_at_refit_s", opt(row.period_at_refit)},
+                    {"refit_error",
+                     row.period_at_refit
+                         ? nlohmann::json(*row.period_at_refit / row.period_measured.value - 1.0)
+                         : nlohmann::json(nullptr)},
+                    {"sensitivity_mu_k", opt(row.sensitivity_mu)},
+                    {"sensitivity_spacing", opt(row.sensitivity_spacing)},
+                    {"refit_note", row.refit_note},
+                    {"runs", runs}});
+  }
+  return nlohmann::json{{"scene", r.scene},
+                        {"spacing_m", r.spacing},
+                        {"spacing_err_m", r.spacing_err},
+                        {"h_c_m", r.h_c},
+                        {"gravity_m_s2", r.gravity},
+                        {"amplitude_m", r.amplitude},
+                        {"simulations", r.simulations},
+                        {"rows", rows},
+                        {"timing", {{"wall_s", r.wall_s}, {"workers", r.workers}}}};
+}
+
+std::string compare_csv(const CompareResult& r) {
+  static const char* const kColumns[] = {"material",
+                                         "temperature_k",
+                                         "status",
+                                         "period_measured_s",
+                                         "period_measured_err_s",
+                                         "period_simulated_s",
+                                         "period_simulated_std_s",
+                                         "residual_sigma",
+                                         "period_thin_s",
+                                         "period_thick_s",
+                                         "thin_bias_period",
+                                         "thin_bias_mu_k",
+                                         "mu_k_paper",
+                                         "mu_k_paper_err",
+                                         "mu_k_thick_formula",
+                                         "mu_k_refit",
+                                         "mu_k_refit_err_worst",
+                                         "mu_k_refit_err_quadrature",
+                                         "period_at_refit_s",
+                                         "refit_error",
+                                         "regime",
+                                         "reason"};
+  const nlohmann::json j = compare_json(r);
+  std::string csv;
+  for (const char* c : kColumns) csv += std::string(csv.empty() ? "" : ",") + c;
+  csv += "\n";
+  for (const nlohmann::json& row : j["rows"]) {
+    std::string line;
+    for (const char* c : kColumns) {
+      const nlohmann::json& v = row[c];
+      std::string cell;
+      if (v.is_number_float())
+        cell = fmt::format("{}", v.get<double>());
+      else if (v.is_number())
+        cell = v.dump();
+      else if (v.is_string())
+        cell = v.get<std::string>();
+      if (cell.find_first_of(",\"\n") != std::string::npos) {
+        std::string quoted = "\"";
+        for (const char ch : cell) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        cell = quoted + "\"";
+      }
+      line += (line.empty() && c == kColumns[0] ? "" : ",") + cell;
+    }
+    csv += line + "\n";
+  }
+  return csv;
+}
+
+}  // namespace fl

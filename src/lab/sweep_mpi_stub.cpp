@@ -1,0 +1,16 @@
+// A build without MPI (FRICTIONLAB_WITH_MPI=OFF): the MPI runner fails clearly.
+#include "lab/sweep_run.hpp"
+
+namespace fl {
+
+bool sweep_has_mpi() {
+  return false;
+}
+
+SweepOutcome run_sweep_mpi(const SweepSpec& /*spec*/, const SweepRunOptions& /*options*/) {
+  throw InputError(SourceLocation{},
+                   "this frictionlab was built without MPI (FRICTIONLAB_WITH_MPI=OFF): install "
+                   "libopenmpi-dev and reconfigure, or use --shard K/N and frictionlab merge");
+}
+
+}  // namespace fl

@@ -1,0 +1,51 @@
+// The rig's drive (internal to src/physics): the motor, the gearbox's stages and the idlers that
+// couple the rollers, as one rigid gear train. Every shaft of the drive layout turns at a fixed
+// multiple of the motor's speed, taken from the meshing gears' tooth counts (each mesh:
+// omega_driven = -omega_driver x teeth_driver / teeth_driven), so the train has one degree of
+// freedom: the motor's angle. Its equation of motion is
+//     J omega' = s (duty tau_stall - c s omega) + sum_i u_i tau_i,   c = tau_stall / omega_0,
+// with J the whole train's inertia seen at the motor (sum I_k u_k^2), u_i the rollers' speed
+// ratios, tau_i the torques the plate's friction puts on the rollers, and s the motor's sense.
+// It is integrated each step, linearly implicit in the back-EMF damping (stable at any step),
+// and drives the kinematic rollers of the Bullet world. docs/physics.md says why the train is
+// not a chain of Bullet gear constraints.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "scene/drive_layout.hpp"
+#include "scene/scene.hpp"
+
+namespace fl {
+
+class Drivetrain {
+ public:
+  explicit Drivetrain(const Scene& scene);
+
+  // Advances the train by dt under the torques [N m, about +y] the plate's friction put on the
+  // two rollers during the last step.
+  void advance(double dt, const std::array<double, 2>& roller_torques);
+
+  double motor_speed() const { return omega_; }          // rad/s about +y
+  double motor_torque() const { return motor_torque_; }  // N m, in the driving sense
+  double speed(int shaft) const;                         // rad/s about +y
+  double angle(int shaft) const;                         // rad about +y since the start
+  std::array<double, 2> roller_speeds() const { return {speed(0), speed(1)}; }
+  // Each shaft's speed over the motor's (signed), from the tooth counts.
+  const std::vector<double>& ratios() const { return ratios_; }
+  double inertia_at_motor() const { return inertia_; }
+  const DriveLayout& layout() const { return layout_; }
+
+ private:
+  DriveLayout layout_;
+  MotorDesc motor_;
+  std::vector<double> ratios_;  // omega_shaft / omega_motor
+  double inertia_ = 0.0;        // kg m^2, seen at the motor
+  double sign_ = 1.0;           // the motor's sense that turns roller 0 as the scene sets
+  double omega_ = 0.0;          // rad/s, the motor's
+  double theta_ = 0.0;          // rad, the motor's
+  double motor_torque_ = 0.0;
+};
+
+}  // namespace fl

@@ -1,0 +1,41 @@
+// Where the drive's shafts and gears sit: the rollers' axes, the two idlers that couple the
+// rollers (below them, at the rollers' far end) and the gearbox's shafts from the motor to
+// roller 0 (at the near end). The physics hinges a body on each shaft; the renderer draws the
+// gears there. Computed from the scene, never typed in.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace fl {
+
+struct ShaftPlacement {
+  std::string role;  // "roller 0", "roller 1", "idler 1", "idler 2", "motor", "stage shaft 1", ...
+  double x = 0.0;    // m, of the axis (along y)
+  double z = 0.0;    // m
+};
+
+struct GearPlacement {
+  int shaft = 0;  // index into DriveLayout::shafts
+  int teeth = 0;
+  double y = 0.0;  // m, the gear's plane along the axis
+};
+
+struct GearMesh {
+  int driver = 0;  // index into DriveLayout::gears
+  int driven = 0;
+};
+
+struct DriveLayout {
+  std::vector<ShaftPlacement> shafts;  // 0 and 1 are the rollers; the motor's shaft is `motor`
+  std::vector<GearPlacement> gears;
+  std::vector<GearMesh> meshes;  // in order: the gearbox from the motor, then the coupling
+  int motor = 0;                 // the motor's shaft (roller 0 itself when there is no gearbox)
+};
+
+// Throws std::invalid_argument when the idlers cannot reach across the rollers' spacing.
+DriveLayout drive_layout(const Scene& scene);
+
+}  // namespace fl

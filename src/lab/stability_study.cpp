@@ -43,7 +43,7 @@ std::string describe_case(const Scene& s, double h_c) {
   return fmt::format(
       "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
       "dt {:.3g} ms",
-      s.friction.mu_k, s.rollers.spacing * 1e3, h_c * 1e3, s.rollers.speed * kRpm,
+      s.friction.mu_k, s.rollers.spacing * 1e3, h_c * 1e3, nominal_roller_speed(s) * kRpm,
       s.rollers.sense == RollerSense::kOutward ? " outward" : "", std::fabs(s.plate.offset) * 1e3,
       plate_mass(s).mass * 1e3, s.world.time_step * 1e3);
 }

@@ -149,7 +149,7 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
     plate->setLinearFactor(btVector3(1, 1, 1));
     plate->setAngularFactor(btVector3(0, 1, 1));
   }
-  plate->setLinearVelocity(btVector3(p.velocity, 0, 0));
+  plate->setLinearVelocity(btVector3(p.velocity, guides.empty() ? 0.0 : p.sideways_velocity, 0));
   world.addRigidBody(plate.get());
 
   world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
@@ -194,6 +194,8 @@ PlateState RigWorld::plate() const {
   // Rotation about y only: the x axis of the body is (cos p, 0, -sin p).
   const btVector3 ex = t.getBasis().getColumn(0);
   s.pitch = std::atan2(-ex.z(), ex.x());
+  s.y = t.getOrigin().y();
+  s.yaw = std::atan2(ex.y(), ex.x());
   s.vx = b.getLinearVelocity().x();
   s.vz = b.getLinearVelocity().z();
   s.pitch_rate = b.getAngularVelocity().y();

@@ -11,7 +11,8 @@
 
 namespace fl {
 
-// The plate's centre of mass in the x-z plane, and its pitch about y. SI.
+// The plate's centre of mass in the x-z plane, and its pitch about y (and, between guides, its
+// sideways position and yaw). SI.
 struct PlateState {
   double x = 0.0;           // m
   double z = 0.0;           // m, of the centre of mass
@@ -19,6 +20,8 @@ struct PlateState {
   double vx = 0.0;          // m/s
   double vz = 0.0;          // m/s
   double pitch_rate = 0.0;  // rad/s
+  double y = 0.0;           // m, sideways (0 unless guides let the plate move)
+  double yaw = 0.0;         // rad, about +z
 };
 
 // What one roller does to the plate over the last step (impulses divided by the step).

@@ -66,8 +66,9 @@ struct PlateDesc {
   std::string material = "lego";
   PayloadDesc payload;
   std::vector<PlateBlock> blocks;
-  double offset = 0.020;  // m, initial x of the plate's centre
-  double velocity = 0.0;  // m/s, initial x velocity
+  double offset = 0.020;           // m, initial x of the plate's centre
+  double velocity = 0.0;           // m/s, initial x velocity
+  double sideways_velocity = 0.0;  // m/s, initial y velocity (a nudge toward the guides)
 };
 
 // A cylindrical magnet fixed on the plate's top face, magnetised along its axis (z).

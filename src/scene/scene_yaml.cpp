@@ -56,7 +56,7 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
 
 void read_plate(const YamlNode& n, PlateDesc& p) {
   n.allow_keys({"length", "width", "thickness", "mass", "density", "material", "payload", "blocks",
-                "offset", "velocity"});
+                "offset", "velocity", "sideways_velocity"});
   if (auto v = n.find("length")) p.length = v->quantity(Dimension::kLength);
   if (auto v = n.find("width")) p.width = v->quantity(Dimension::kLength);
   if (auto v = n.find("thickness")) p.thickness = v->quantity(Dimension::kLength);
@@ -71,6 +71,7 @@ void read_plate(const YamlNode& n, PlateDesc& p) {
   }
   if (auto v = n.find("offset")) p.offset = v->quantity(Dimension::kLength);
   if (auto v = n.find("velocity")) p.velocity = v->quantity(Dimension::kSpeed);
+  if (auto v = n.find("sideways_velocity")) p.sideways_velocity = v->quantity(Dimension::kSpeed);
 }
 
 MagnetDesc read_magnet(const YamlNode& n) {

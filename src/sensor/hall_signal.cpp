@@ -20,8 +20,9 @@ double hermite(double s, double h, double p0, double p1, double v0, double v1) {
 HallSignal::HallSignal(const Scene& scene) : sensor_(scene.sensor.value()), rng_(scene.world.seed) {
   const PlateMass pm = plate_mass(scene);
   for (const MagnetDesc& m : scene.magnets) {
-    magnets_.push_back({{m.x - pm.x_c, 0.0, scene.plate.thickness + 0.5 * m.thickness - pm.h_c},
-                        magnet_moment(m)});
+    magnets_.push_back(
+        {{m.x - pm.x_c, 0.0, scene.plate.thickness + m.height + 0.5 * m.thickness - pm.h_c},
+         magnet_moment(m)});
   }
   const double norm = std::hypot(sensor_.axis[0], sensor_.axis[1], sensor_.axis[2]);
   axis_ = {sensor_.axis[0] / norm, sensor_.axis[1] / norm, sensor_.axis[2] / norm};

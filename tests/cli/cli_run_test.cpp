@@ -107,5 +107,28 @@ TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
   std::filesystem::remove_all(kTmp);
 }
 
+// The physics opens no mesh: the minimal scene runs with an asset folder holding only the
+// paper's table; the whole paper rig (frame, blocks, gears) with only the table and the part
+// index, no mesh file at all.
+TEST(CliRun, ScenesOpenNoMeshFile) {
+  const auto assets = kTmp / "assets-without-meshes";
+  std::filesystem::remove_all(assets);
+  std::filesystem::create_directories(assets / "paper");
+  std::filesystem::copy_file(std::string(FRICTIONLAB_TEST_ASSET_DIR) + "/paper/table1.yaml",
+                             assets / "paper" / "table1.yaml");
+  const std::string rig = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/paper-rig.yaml";
+  auto r = lab("run " + kMinimal + " --duration 2s --assets " + assets.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = lab("run " + rig + " --duration 2s --assets " + assets.string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("parts.yaml"), std::string::npos) << r.err;
+  std::filesystem::create_directories(assets / "lego");
+  std::filesystem::copy_file(std::string(FRICTIONLAB_TEST_ASSET_DIR) + "/lego/parts.yaml",
+                             assets / "lego" / "parts.yaml");
+  r = lab("run " + rig + " --duration 2s --assets " + assets.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  std::filesystem::remove_all(assets);
+}
+
 }  // namespace
 }  // namespace fl

@@ -22,8 +22,11 @@ const std::filesystem::path kCatalogue =
 
 Scene load_case(const std::string& name) {
   static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  static const assets::PartCatalog parts =
+      assets::load_part_catalog(assets::part_catalog_path(FRICTIONLAB_TEST_ASSET_DIR));
   return load_scene_file((kCatalogue / (name + ".yaml")).string(), {},
-                         []() -> const PaperTable& { return table; });
+                         []() -> const PaperTable& { return table; },
+                         []() -> const assets::PartCatalog& { return parts; });
 }
 
 std::vector<std::string> case_names() {

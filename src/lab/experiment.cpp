@@ -124,9 +124,11 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     hall.emplace(scene);
     estimator.emplace(scene.rollers.spacing, g);
   }
+  StepView view;
   const auto on_sample = [&](const HallSample& sample) {
     estimator->add(sample);
     if (options.record_hall && recording != nullptr) recording->hall.push_back(sample);
+    if (options.observer) view.new_samples.push_back(sample);
   };
 
   RegimeMonitor monitor(scene, world.plate_mass(), world.plate_inertia(), world.plate_h_c());
@@ -135,6 +137,20 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   tracker.add(0.0, state.x, state.vx);
   if (options.record_trajectory && recording != nullptr)
     recording->trajectory.push_back({0.0, state, world.contacts()});
+  // The observer sees the world after each step.
+  const auto observe = [&](double t, const PlateState& plate) {
+    if (!options.observer) return;
+    view.t = t;
+    view.plate = plate;
+    view.roller_angles = world.roller_angles();
+    view.roller_speeds = world.roller_speeds();
+    view.drive = world.drive();
+    view.shafts = world.shafts();
+    view.estimator = estimator ? &*estimator : nullptr;
+    options.observer(view);
+    view.new_samples.clear();
+  };
+  observe(0.0, state);
 
   const long long steps = std::llround(scene.world.duration / scene.world.time_step);
   out.min_normal_force = std::numeric_limits<double>::infinity();
@@ -154,6 +170,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
     if (options.record_trajectory && recording != nullptr)
       recording->trajectory.push_back({t, state, contacts});
+    observe(t, state);
     out.plate_speed_max = std::max(out.plate_speed_max, std::fabs(state.vx));
     if (const auto d = world.drive()) drive_stats.add(*d, contacts, scene.rollers.radius);
     for (const RollerContact& c : contacts) {

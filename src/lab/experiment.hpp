@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -106,9 +107,26 @@ struct RunRecording {
   std::vector<HallSample> hall;           // every sample, when asked for
 };
 
+class HallEstimator;
+
+// What a run looks like after each step, for an observer (the video renderer): everything needed
+// to draw the rig and its overlays at any instant between two steps.
+struct StepView {
+  double t = 0.0;  // s
+  PlateState plate;
+  std::array<double, 2> roller_angles{};     // rad about +y since the start
+  std::array<double, 2> roller_speeds{};     // rad/s about +y
+  std::optional<DriveState> drive;           // the motor and gears, when the scene has a drive
+  std::vector<ShaftState> shafts;            // the drive layout's shafts (scene/drive_layout.hpp)
+  std::vector<HallSample> new_samples;       // the Hall samples taken during this step
+  const HallEstimator* estimator = nullptr;  // the rig's estimator, live (null without a sensor)
+};
+
 struct RunOptions {
   bool record_trajectory = false;
   bool record_hall = false;
+  // Called after every step (and once at t = 0) when set.
+  std::function<void(const StepView&)> observer;
 };
 
 RunSummary run_experiment(const Scene& scene, const RunOptions& options,

@@ -30,6 +30,7 @@ struct RigWorld::Impl {
   double dt = 0.0;
   long long steps = 0;
   std::array<double, 2> roller_omega{};
+  std::array<double, 2> roller_angle{};
 
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
@@ -175,6 +176,7 @@ void RigWorld::step() {
     impl_->roller_omega = impl_->drivetrain->roller_speeds();
   }
   impl_->world.stepSimulation(impl_->dt, 0);
+  for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
   ++impl_->steps;
 }
 
@@ -235,6 +237,10 @@ std::array<RollerContact, 2> RigWorld::contacts() const {
 
 std::array<double, 2> RigWorld::roller_speeds() const {
   return impl_->roller_omega;
+}
+
+std::array<double, 2> RigWorld::roller_angles() const {
+  return impl_->roller_angle;
 }
 
 std::array<double, 2> RigWorld::roller_surface_speeds() const {

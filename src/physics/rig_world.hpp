@@ -63,6 +63,10 @@ class RigWorld {
   // Angular velocity about +y of each roller [rad/s] (roller 0 positive when turning inward).
   std::array<double, 2> roller_speeds() const;
 
+  // Each roller's angle about +y since the start [rad] (the rollers' bodies keep a fixed
+  // transform; this is their speed integrated step by step, for drawing).
+  std::array<double, 2> roller_angles() const;
+
   // Surface speed of each roller's top along +x [m/s].
   std::array<double, 2> roller_surface_speeds() const;
 

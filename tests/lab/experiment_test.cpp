@@ -75,7 +75,9 @@ TEST(Experiment, AScenewithoutSensorBuildsNoEstimator) {
 TEST(Experiment, SameSceneAndSeedGiveBitIdenticalOutputs) {
   Scene s = minimal_scene();
   s.world.duration = 3.0;
-  RunOptions options{true, true};
+  RunOptions options;
+  options.record_trajectory = true;
+  options.record_hall = true;
   RunRecording a, b;
   const RunSummary ra = run_experiment(s, options, &a);
   const RunSummary rb = run_experiment(s, options, &b);
@@ -94,7 +96,9 @@ TEST(Experiment, HallCsvHasOneSamplePerClockTick) {
   Scene s = minimal_scene();
   s.world.duration = 2.0;
   RunRecording rec;
-  run_experiment(s, {false, true}, &rec);
+  RunOptions hall_only;
+  hall_only.record_hall = true;
+  run_experiment(s, hall_only, &rec);
   ASSERT_EQ(rec.hall.size(), 2001u);
   EXPECT_EQ(rec.hall.back().t_us, 2000000u);
   EXPECT_EQ(hall_csv(rec).substr(0, 9), "t_us,adc\n");

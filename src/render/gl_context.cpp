@@ -1,0 +1,103 @@
+#include "render/gl_context.hpp"
+
+#include <array>
+#include <cstdlib>
+
+#include "render/components.hpp"
+#include "render/gl_backends.hpp"
+
+namespace fl::render {
+namespace {
+
+constexpr std::array<std::string_view, 3> kNames = {"osmesa", "egl", "auto"};
+// The order "auto" tries: software first, since it works everywhere.
+constexpr std::array<GlBackend, 2> kAutoOrder = {GlBackend::kOsmesa, GlBackend::kEgl};
+
+std::string valid_names() {
+  std::string out;
+  for (const std::string_view name : kNames) {
+    if (!out.empty()) out += ", ";
+    out += name;
+  }
+  return out;
+}
+
+std::unique_ptr<GlContext> make_backend(GlBackend backend, const GlContextOptions& options) {
+  switch (backend) {
+    case GlBackend::kOsmesa:
+      return make_osmesa_context(options);
+    case GlBackend::kEgl:
+      return make_egl_context(options);
+  }
+  throw RenderError("unknown GL back end");
+}
+
+}  // namespace
+
+void throw_missing(std::string_view what, std::string_view component, std::string_view how) {
+  throw MissingComponent(std::string(what) + " needs " + std::string(component) +
+                         ", which this build of frictionlab does not have (" + std::string(how) +
+                         ")");
+}
+
+std::string_view gl_backend_name(GlBackend backend) {
+  return backend == GlBackend::kOsmesa ? "osmesa" : "egl";
+}
+
+std::span<const std::string_view> gl_backend_names() {
+  return kNames;
+}
+
+bool gl_backend_compiled(GlBackend backend) {
+  switch (backend) {
+    case GlBackend::kOsmesa:
+      return kHasRender;
+    case GlBackend::kEgl:
+      return false;
+  }
+  return false;
+}
+
+GlBackendRequest gl_backend_request(std::string_view requested) {
+  if (!requested.empty()) return {std::string(requested), "--gl"};
+  const char* env = std::getenv(kGlBackendVariable);
+  if (env != nullptr && *env != '\0') return {env, kGlBackendVariable};
+  return {"auto", "default"};
+}
+
+std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options) {
+  GlBackendRequest request{options.backend, options.source};
+  if (request.name.empty()) request = gl_backend_request();
+  if (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384)
+    throw RenderError("a frame of " + std::to_string(options.width) + "x" +
+                      std::to_string(options.height) +
+                      " pixels cannot be rendered; each side must be 1 to 16384");
+  if (options.samples != 1 && options.samples != 4)
+    throw RenderError("multisampling takes 1 or 4 samples, not " + std::to_string(options.samples));
+
+  for (const GlBackend backend : kAutoOrder) {
+    if (request.name == gl_backend_name(backend)) return make_backend(backend, options);
+  }
+  if (request.name == "auto") {
+    std::string failures;
+    for (const GlBackend backend : kAutoOrder) {
+      if (!gl_backend_compiled(backend)) continue;
+      try {
+        return make_backend(backend, options);
+      } catch (const RenderError& e) {
+        failures += "\n  " + std::string(gl_backend_name(backend)) + ": " + e.what();
+      }
+    }
+    if (failures.empty())
+      throw_missing("rendering", "a GL back end (OSMesa)",
+                    "configure with -DFRICTIONLAB_WITH_RENDER=ON after apt-get install "
+                    "libosmesa6-dev");
+    throw RenderError("no GL back end could start:" + failures);
+  }
+  const std::string from =
+      request.source.empty() ? std::string() : " (from " + request.source + ")";
+  throw RenderError("unknown GL back end '" + request.name + "'" + from +
+                    "; valid back ends: " + valid_names());
+}
+
+}  // namespace fl::render

@@ -1,0 +1,264 @@
+// The drawing layer on OSMesa: a box lands where its projection says, poses change the frame,
+// frames are never blank, text and shapes land in their boxes, and the demo scene matches its
+// golden image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/demo_scene.hpp"
+#include "render/gl_api.hpp"
+#include "render/gl_context.hpp"
+#include "render/renderer.hpp"
+#include "render/shader.hpp"
+#include "render_test_support.hpp"
+
+namespace fl::render {
+namespace {
+
+// The default background, (0.93, 0.94, 0.96) in 8 bits.
+constexpr std::array<std::uint8_t, 3> kBackground = {237, 240, 245};
+
+std::unique_ptr<GlContext> osmesa(int width, int height) {
+  GlContextOptions options;
+  options.width = width;
+  options.height = height;
+  options.backend = "osmesa";
+  return make_gl_context(options);
+}
+
+struct Centroid {
+  double x = 0;
+  double y = 0;
+  std::size_t pixels = 0;
+};
+
+// The centre of the pixels that differ from the background.
+Centroid foreground_centroid(const ImageView& frame) {
+  Centroid c;
+  for (int y = 0; y < frame.height; ++y) {
+    for (int x = 0; x < frame.width; ++x) {
+      const auto p = frame.at(x, y);
+      bool differs = false;
+      for (int k = 0; k < 3; ++k) {
+        differs = differs || std::abs(p[static_cast<std::size_t>(k)] -
+                                      kBackground[static_cast<std::size_t>(k)]) > 12;
+      }
+      if (!differs) continue;
+      c.x += x + 0.5;
+      c.y += y + 0.5;
+      ++c.pixels;
+    }
+  }
+  if (c.pixels > 0) {
+    c.x /= static_cast<double>(c.pixels);
+    c.y /= static_cast<double>(c.pixels);
+  }
+  return c;
+}
+
+class RenderScene : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    FL_REQUIRE_RENDER();
+    context_ = osmesa(kWidth, kHeight);
+    renderer_ = std::make_unique<Renderer>(*context_);
+    camera_.position = Eigen::Vector3f(0.05f, -0.45f, 0.20f);
+    camera_.target = Eigen::Vector3f(0.0f, 0.0f, 0.0f);
+    camera_.fov_y_degrees = 35.0f;
+  }
+
+  // One box of 4 cm at `centre`, turned by `yaw` about z.
+  Image draw_box(const Eigen::Vector3f& centre, float yaw) {
+    if (box_ == kNoMesh)
+      box_ =
+          renderer_->upload(make_box(Eigen::Vector3f::Constant(0.04f), Color{0.8f, 0.15f, 0.1f}));
+    renderer_->begin_frame(camera_, DirectionalLight{});
+    Eigen::Affine3f pose = Eigen::Affine3f::Identity();
+    pose.translate(centre);
+    pose.rotate(Eigen::AngleAxisf(yaw, Eigen::Vector3f::UnitZ()));
+    renderer_->draw(box_, pose);
+    return copy_image(renderer_->end_frame());
+  }
+
+  static constexpr int kWidth = 320;
+  static constexpr int kHeight = 180;
+  static constexpr MeshId kNoMesh = ~MeshId{0};
+  std::unique_ptr<GlContext> context_;
+  std::unique_ptr<Renderer> renderer_;
+  Camera camera_;
+  MeshId box_ = kNoMesh;
+};
+
+TEST_F(RenderScene, ABoxLandsWhereItsProjectionSays) {
+  for (const Eigen::Vector3f& centre :
+       {Eigen::Vector3f(0.0f, 0.0f, 0.0f), Eigen::Vector3f(0.08f, 0.02f, 0.04f),
+        Eigen::Vector3f(-0.10f, -0.05f, -0.03f)}) {
+    const Image frame = draw_box(centre, 0.3f);
+    const Centroid c = foreground_centroid(frame.view());
+    const auto expected = project_to_pixel(camera_, kWidth, kHeight, centre);
+    ASSERT_TRUE(expected.has_value());
+    ASSERT_GT(c.pixels, 200u) << "the box is missing at " << centre.transpose();
+    // The silhouette's centroid and the projected centre differ by perspective only.
+    EXPECT_NEAR(c.x, expected->x(), 2.0) << centre.transpose();
+    EXPECT_NEAR(c.y, expected->y(), 2.0) << centre.transpose();
+  }
+}
+
+TEST_F(RenderScene, TwoPosesGiveDifferentFrames) {
+  const Image a = draw_box(Eigen::Vector3f(0.0f, 0.0f, 0.0f), 0.0f);
+  const Image b = draw_box(Eigen::Vector3f(0.0f, 0.0f, 0.0f), 0.4f);
+  const Image c = draw_box(Eigen::Vector3f(0.03f, 0.0f, 0.0f), 0.0f);
+  const Image a_again = draw_box(Eigen::Vector3f(0.0f, 0.0f, 0.0f), 0.0f);
+  EXPECT_GT(rms_difference(a.view(), b.view()), 1.0);
+  EXPECT_GT(rms_difference(a.view(), c.view()), 1.0);
+  // Moving along +x moves the box right in the picture.
+  EXPECT_GT(foreground_centroid(c.view()).x, foreground_centroid(a.view()).x + 10.0);
+  // The same pose draws the same frame.
+  EXPECT_EQ(rms_difference(a.view(), a_again.view()), 0.0);
+}
+
+TEST_F(RenderScene, TheDemoSceneIsNotBlankAndCastsShadows) {
+  const DemoScene scene = make_demo_scene();
+  const auto render = [&](bool shadows, bool soft = false) {
+    RendererOptions options;
+    options.shadows = shadows;
+    options.soft_shadows = soft;
+    Renderer renderer(*context_, options);
+    std::vector<MeshId> local;
+    for (const MeshData& mesh : scene.meshes) local.push_back(renderer.upload(mesh));
+    renderer.begin_frame(scene.camera, scene.light);
+    for (const auto& instance : scene.instances)
+      renderer.draw(local[instance.mesh], instance.pose, instance.casts_shadow);
+    return copy_image(renderer.end_frame());
+  };
+  const Image lit = render(true);
+  const Image flat = render(false);
+  fl::test::keep_frame("demo_shadows", lit.view());
+  fl::test::keep_frame("demo_no_shadows", flat.view());
+  // Most of the frame is the scene, not the background.
+  EXPECT_GT(count_pixels_unlike(lit.view(), kBackground, 12), lit.rgba.size() / 4 / 2);
+  // Shadows darken a part of it and brighten nothing.
+  std::size_t darker = 0;
+  std::size_t brighter = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      int change = 0;
+      for (std::size_t k = 0; k < 3; ++k) change += lit.at(x, y)[k] - flat.at(x, y)[k];
+      darker += change < -6 ? 1 : 0;
+      brighter += change > 2 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(darker, static_cast<std::size_t>(kWidth * kHeight / 100));
+  EXPECT_EQ(brighter, 0u);
+  // Soft shadows differ only along the shadows' edges.
+  const Image soft = render(true, true);
+  EXPECT_GT(rms_difference(soft.view(), lit.view()), 0.0);
+  EXPECT_LT(rms_difference(soft.view(), lit.view()), 3.0);
+}
+
+TEST_F(RenderScene, TextDrawsInsideItsBoxAndNowhereElse) {
+  renderer_->begin_frame(camera_, DirectionalLight{});
+  const Rect box = renderer_->overlay().text("T = 0.794 ± 0.012 s  μₖ", Eigen::Vector2f(20, 30),
+                                             16.0f, Color{0.0f, 0.0f, 0.0f});
+  const Image frame = copy_image(renderer_->end_frame());
+  fl::test::keep_frame("text", frame.view());
+  EXPECT_GT(box.width, 100.0f);
+  EXPECT_NEAR(box.height, 16.0f, 2.0f);
+  std::size_t inside = 0;
+  std::size_t outside = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const bool ink = frame.at(x, y)[0] < 200;
+      const bool in_box = x >= box.x - 1 && x <= box.x + box.width + 1 && y >= box.y - 1 &&
+                          y <= box.y + box.height + 1;
+      (in_box ? inside : outside) += ink ? 1 : 0;
+    }
+  }
+  EXPECT_GT(inside, static_cast<std::size_t>(box.width * box.height * 0.08f));
+  EXPECT_EQ(outside, 0u);
+}
+
+TEST_F(RenderScene, ShapesFillTheirPixelsInTheirColours) {
+  renderer_->begin_frame(camera_, DirectionalLight{});
+  Overlay& overlay = renderer_->overlay();
+  overlay.rect(Rect{10, 10, 40, 20}, Color{1.0f, 0.0f, 0.0f});
+  overlay.rect(Rect{100, 10, 40, 20}, Color{0.0f, 0.0f, 0.0f, 0.5f});
+  const std::vector<Eigen::Vector2f> trace = {{10, 100}, {60, 80}, {110, 120}, {160, 100}};
+  overlay.polyline(trace, 2.0f, Color{0.0f, 0.3f, 1.0f});
+  overlay.dot(Eigen::Vector2f(200, 100), 5.0f, Color{0.0f, 0.6f, 0.0f});
+  const ImageView frame = renderer_->end_frame();
+  fl::test::keep_frame("shapes", frame);
+  EXPECT_EQ(frame.at(30, 20)[0], 255);
+  EXPECT_EQ(frame.at(30, 20)[1], 0);
+  EXPECT_EQ(frame.at(9, 20)[1], kBackground[1]);  // just outside
+  // Half-transparent black over the background halves it.
+  EXPECT_NEAR(frame.at(120, 20)[0], kBackground[0] / 2.0, 2.0);
+  EXPECT_EQ(frame.at(120, 20)[3], 255);
+  // On the polyline's first segment, and its marker.
+  EXPECT_LT(frame.at(35, 90)[0], 60);
+  EXPECT_GT(frame.at(200, 100)[1], 140);
+  EXPECT_LT(frame.at(200, 100)[0], 30);
+}
+
+TEST_F(RenderScene, ABrokenShaderNamesItsStage) {
+  try {
+    ShaderProgram bad(context_->gl(), "bad", "#version 330 core\nvoid main() { oops; }\n",
+                      "#version 330 core\nvoid main() {}\n");
+    FAIL() << "a broken shader compiled";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("the vertex shader of 'bad' does not compile"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// The demo scene with a little overlay at 160x90, against tests/render/golden/. To refresh the
+// golden image on purpose (after a deliberate change of the look), run this test with
+// FRICTIONLAB_UPDATE_GOLDEN=1 and look at the new PNG before committing it.
+TEST(RenderGolden, DemoSceneMatchesTheGoldenImage) {
+  FL_REQUIRE_RENDER();
+  const auto context = osmesa(160, 90);
+  Renderer renderer(*context);
+  DemoScene scene = make_demo_scene();
+  scene.pose(0.012f, 0.4f);
+  std::vector<MeshId> ids;
+  for (const MeshData& mesh : scene.meshes) ids.push_back(renderer.upload(mesh));
+  renderer.begin_frame(scene.camera, scene.light);
+  for (const auto& instance : scene.instances)
+    renderer.draw(ids[instance.mesh], instance.pose, instance.casts_shadow);
+  renderer.overlay().rect(Rect{0, 0, 160, 14}, Color{0.0f, 0.0f, 0.0f, 0.55f});
+  renderer.overlay().text("t = 1.23 s", Eigen::Vector2f(4, 1), 11.0f, Color{1.0f, 1.0f, 1.0f});
+  const std::vector<Eigen::Vector2f> trace = {{100, 10}, {115, 4}, {130, 10}, {145, 4}};
+  renderer.overlay().polyline(trace, 1.5f, Color{1.0f, 0.8f, 0.1f});
+  const Image frame = copy_image(renderer.end_frame());
+
+  const std::string golden =
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/tests/render/golden/demo_scene_160x90.png";
+  const char* update = std::getenv("FRICTIONLAB_UPDATE_GOLDEN");
+  if (update != nullptr && std::string(update) == "1") {
+    write_png(golden, frame.view());
+    GTEST_SKIP() << "wrote the golden image " << golden;
+  }
+  ASSERT_TRUE(std::filesystem::exists(golden))
+      << golden << " is missing; make it with FRICTIONLAB_UPDATE_GOLDEN=1";
+  const Image expected = read_png(golden);
+  const double rms = rms_difference(frame.view(), expected.view());
+  // llvmpipe is deterministic for one Mesa version; the tolerance absorbs small changes of
+  // rasterisation between versions and CPUs, not a changed scene.
+  constexpr double kTolerance = 3.0;
+  if (rms > kTolerance) {
+    fl::test::keep_frame("golden_actual", frame.view());
+    fl::test::keep_frame("golden_difference",
+                         difference_image(frame.view(), expected.view()).view());
+  }
+  EXPECT_LE(rms, kTolerance) << "RMS difference " << rms
+                             << " (0-255) from the golden image; see render-test-output/"
+                                "golden_actual.png and golden_difference.png in the build folder";
+}
+
+}  // namespace
+}  // namespace fl::render

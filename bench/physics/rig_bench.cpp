@@ -21,9 +21,10 @@ const fl::PaperTable& table() {
 fl::Scene paper_rig() {
   const fl::assets::PartCatalog parts =
       fl::assets::load_part_catalog(fl::assets::part_catalog_path(FRICTIONLAB_ASSET_DIR));
-  return fl::load_scene_file(std::string(FRICTIONLAB_SOURCE_DIR) + "/scenes/paper-rig.yaml", {},
-                             [] () -> const fl::PaperTable& { return table(); },
-                             [&parts]() -> const fl::assets::PartCatalog& { return parts; });
+  return fl::load_scene_file(
+      std::string(FRICTIONLAB_SOURCE_DIR) + "/scenes/paper-rig.yaml", {},
+      []() -> const fl::PaperTable& { return table(); },
+      [&parts]() -> const fl::assets::PartCatalog& { return parts; });
 }
 
 void BM_PaperRigTenSeconds(benchmark::State& state) {
@@ -45,14 +46,14 @@ void BM_LoadSceneWith300Parts(benchmark::State& state) {
   const char* parts[] = {"brick-2x4", "brick-2x2", "technic-brick-1x16", "brick-1x2", "plate-2x8"};
   for (int i = 0; i < 300; ++i) {
     text += "    - {part: " + std::string(parts[i % 5]) + ", at: [" + std::to_string(i % 20 - 10) +
-            ", " + std::to_string(8 + i / 20) + ", " + std::to_string(3 * (i % 7)) + "], guide: " +
-            (i % 3 == 0 ? "true" : "false") + "}\n";
+            ", " + std::to_string(8 + i / 20) + ", " + std::to_string(3 * (i % 7)) +
+            "], guide: " + (i % 3 == 0 ? "true" : "false") + "}\n";
   }
   for (auto _ : state) {
     const fl::assets::PartCatalog catalog =
         fl::assets::load_part_catalog(fl::assets::part_catalog_path(FRICTIONLAB_ASSET_DIR));
     const fl::Scene scene = fl::load_scene_text(
-        text, "300-parts.yaml", {}, [] () -> const fl::PaperTable& { return table(); },
+        text, "300-parts.yaml", {}, []() -> const fl::PaperTable& { return table(); },
         [&catalog]() -> const fl::assets::PartCatalog& { return catalog; });
     benchmark::DoNotOptimize(scene.frame->parts.size());
   }

@@ -23,5 +23,6 @@ Command add_table_command(CLI::App& app, const GlobalOptions& global);
 Command add_run_command(CLI::App& app, const GlobalOptions& global);
 Command add_accuracy_command(CLI::App& app, const GlobalOptions& global);
 Command add_stability_command(CLI::App& app, const GlobalOptions& global);
+Command add_estimate_command(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace fl::cli

@@ -24,11 +24,9 @@ int main(int argc, char** argv) {
                  "Folder of the lab's data (default: $FRICTIONLAB_ASSETS or the build's assets/)");
 
   const std::vector<fl::cli::Command> commands{
-      fl::cli::add_analytic_command(app, global),
-      fl::cli::add_table_command(app, global),
-      fl::cli::add_run_command(app, global),
-      fl::cli::add_accuracy_command(app, global),
-      fl::cli::add_stability_command(app, global),
+      fl::cli::add_analytic_command(app, global),  fl::cli::add_table_command(app, global),
+      fl::cli::add_run_command(app, global),       fl::cli::add_accuracy_command(app, global),
+      fl::cli::add_stability_command(app, global), fl::cli::add_estimate_command(app, global),
   };
 
   try {

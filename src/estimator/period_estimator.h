@@ -12,11 +12,13 @@
 // works). Periods are in microseconds in the records and in seconds in Stats.
 //
 // How it works (docs/estimator.md has the long version):
-//  1. Learning the signal: the estimator watches the raw values until it has seen the signal
-//     leave its resting level and come back twice (a swing of at least Config::min_amplitude
-//     counts). The resting level (baseline) is where the signal spends most of its time, the
-//     pulses are on the other side: this gives the polarity (a magnet may push the ADC up or
-//     down), the baseline and the pulse height, with nothing typed in by hand.
+//  1. Learning the signal: the estimator watches the values (through a median of three, so a
+//     lone glitch does not count) until the signal has swung at least Config::min_amplitude
+//     counts, crossed the middle of its range out and back, and returned to the side where it
+//     spends most of its time: that side is the resting level (the baseline, the mean of the
+//     samples there), the other side holds the pulses. This gives the polarity (a magnet may
+//     push the ADC up or down), the baseline and the pulse height, with nothing typed in by
+//     hand; it costs the first two pulses.
 //  2. Pulses: a pulse starts when the signal rises past the timing level (half the pulse height
 //     from the baseline) and ends when it falls below the release level (a quarter). Each
 //     crossing of the timing level is placed between its two samples by linear interpolation;
@@ -24,17 +26,22 @@
 //     that is symmetric in time (the magnet comes to the sensor and turns back) that is the
 //     turning point of the plate, whatever the pulse height. The baseline follows slow drift
 //     between pulses (samples within the release level, time constant about 2 s) and is frozen
-//     during a pulse; the pulse height follows the last pulses' peaks.
+//     during a pulse; the pulse height and width follow the last pulses'. A pulse whose peak or
+//     width is far from the running ones is marked distorted (Pulse::distorted).
 //  3. Geometry: the sensor sits near the plate's largest displacement, so each period shows
 //     either one pulse (the magnet reaches the sensor and turns back) or a close pair (it passes
 //     over the sensor, turns, and passes back). From five pulses in a row the estimator
-//     recognises which: one pulse gives four equal intervals; a pair gives intervals that
-//     alternate short, long, short, long (short < 0.6 long, i.e. the pair spans less than 3/8 of
-//     the period). The pulses are then grouped: pulses closer than half the running median
-//     period form one group, the group's turning point is the midpoint of its first and last
-//     pulse (the mid-point of a pair is the turning point, the plate's motion being symmetric in
-//     time about it). A group with the expected number of pulses (1 or 2) is clean; any other
-//     (a spurious pulse joined a group, or one of a pair is missing) is broken.
+//     recognises which: one pulse gives four equal intervals (within half the tolerance, 10 %,
+//     of their median); a pair gives intervals that alternate short, long, short, long (short
+//     < 0.6 long, i.e. the pair spans less than 3/8 of the period; with Config::geometry set to
+//     kPulsePair any alternation will do). Pulses before that are not used (Stats::unused_pulses).
+//     The pulses are then grouped: pulses closer than half the running median period form one
+//     group, the group's turning point is the midpoint of its first and last pulse (the mid-point
+//     of a pair is the turning point, the plate's motion being symmetric in time about it). A group
+//     with the expected number of pulses (1 or 2) and no distorted pulse is clean; any other (a
+//     spurious pulse joined a group, one of a pair is missing, a pulse was bent out of shape) is
+//     broken. Four broken groups in a row mean the geometry changed (the amplitude grew or shrank
+//     past the sensor): it is recognised again.
 //  4. Periods: the time between two successive clean turning points. A period is rejected when
 //     it is farther than Config::tolerance (20 %) from the median of the last kMedianWindow
 //     periods (a missing pulse doubles it); a period that touches a broken turning point is
@@ -44,6 +51,14 @@
 //     d mu/mu = dl/l + 2 dT/T and the quadrature form sqrt((dl/l)^2 + (2 dT/T)^2).
 //  If no pulse comes for 4 median periods (or a pulse never ends), the estimator starts learning
 //  the signal again (Event kRestart); its statistics carry on.
+//
+// The API in short (all on BasicPeriodEstimator / PeriodEstimator):
+//   PeriodEstimator e(config);                 // or e(spacing_m, spacing_err_m, gravity_m_s2)
+//   uint8_t events = e.add_sample(t_us, adc);  // Event bits: kPulse, kPeriodAccepted, ...
+//   e.finish();                                // at the end of the data
+//   e.pulse(i), i < e.pulse_count();           // the last kPulseHistory pulses
+//   e.period(i), i < e.period_count();         // the last kPeriodHistory periods
+//   Stats s = e.stats();                       // N, T, dT, standard error, mu_k +- d mu_k
 #ifndef FRICTIONLAB_ESTIMATOR_PERIOD_ESTIMATOR_H
 #define FRICTIONLAB_ESTIMATOR_PERIOD_ESTIMATOR_H
 
@@ -90,13 +105,13 @@ enum Geometry : uint8_t {
 // What add_sample() saw in one sample: a bit set (several may be set at once).
 enum Event : uint8_t {
   kNoEvent = 0,
-  kPulse = 1,             // a pulse ended in this sample: pulse(pulse_count() - 1)
-  kPeriodAccepted = 2,    // at least one period was accepted (see period_count())
-  kPeriodRejected = 4,    // at least one period was rejected
-  kGeometryFound = 8,     // the geometry was recognised (the periods of the pulses seen so far
-                          // are judged in this same sample)
-  kSignalLearned = 16,    // baseline, polarity and pulse height are known; pulses can follow
-  kRestart = 32,          // the signal was lost; the estimator is learning it again
+  kPulse = 1,           // a pulse ended in this sample: pulse(pulse_count() - 1)
+  kPeriodAccepted = 2,  // at least one period was accepted (see period_count())
+  kPeriodRejected = 4,  // at least one period was rejected
+  kGeometryFound = 8,   // the geometry was recognised (the periods of the pulses seen so far
+                        // are judged in this same sample)
+  kSignalLearned = 16,  // baseline, polarity and pulse height are known; pulses can follow
+  kRestart = 32,        // the signal was lost; the estimator is learning it again
 };
 
 // Where the pulse detector is.
@@ -119,26 +134,27 @@ struct Config {
   float spacing_err_m = 0.002f;  // its uncertainty dl [m]
   float gravity_m_s2 = 9.81f;    // g [m/s^2]
   Geometry geometry = kAutoGeometry;
-  float tolerance = 0.2f;         // largest accepted |T - median| / median
-  uint16_t min_amplitude = 12;    // smallest swing of the signal that can be a pulse [ADC counts]
+  float tolerance = 0.2f;       // largest accepted |T - median| / median
+  uint16_t min_amplitude = 12;  // smallest swing of the signal that can be a pulse [ADC counts]
 };
 
 // One detected pulse.
 struct Pulse {
-  Instant time;   // midpoint of rise and fall: the turning point (one-pulse geometry)
-  Instant rise;   // crossing of the timing level going away from the baseline
-  Instant fall;   // last crossing of the timing level coming back
-  uint16_t peak;  // largest distance from the baseline in the pulse [ADC counts]
-  bool weak;      // peak below 70 % of the running pulse height (a distorted pulse, as when the
-                  // plate jumps): its turning point counts as broken
+  Instant time;    // midpoint of rise and fall: the turning point (one-pulse geometry)
+  Instant rise;    // crossing of the timing level going away from the baseline
+  Instant fall;    // last crossing of the timing level coming back
+  uint16_t peak;   // largest distance from the baseline in the pulse [ADC counts]
+  bool distorted;  // bent out of shape (as when the plate jumps): the peak is outside 69 % to
+                   // 144 % of the running pulse height, or the width (fall - rise) is more than
+                   // 31 % off the running width; its turning point counts as broken
 };
 
 // One period between two turning points.
 struct Period {
-  Instant start;     // turning point that starts it
-  Instant end;       // turning point that ends it
-  float period_us;   // end - start [us]
-  uint8_t status;    // PeriodStatus
+  Instant start;    // turning point that starts it
+  Instant end;      // turning point that ends it
+  float period_us;  // end - start [us]
+  uint8_t status;   // PeriodStatus
 };
 
 // Running statistics of the accepted periods.
@@ -158,8 +174,8 @@ struct Stats {
 
 // mu_k +- d mu_k from T +- dT [s] and l +- dl [m] (thin plate, the paper's formula).
 inline void mu_k_from_period(float period_s, float period_err_s, float spacing_m,
-                             float spacing_err_m, float gravity_m_s2, float* mu_k,
-                             float* err_worst, float* err_quadrature) {
+                             float spacing_err_m, float gravity_m_s2, float* mu_k, float* err_worst,
+                             float* err_quadrature) {
   const float kPi = 3.14159265358979f;
   const float mu = 2.0f * kPi * kPi * spacing_m / (gravity_m_s2 * period_s * period_s);
   const float rel_l = spacing_err_m / spacing_m;
@@ -205,6 +221,7 @@ class BasicPeriodEstimator {
     base_round_ = 1 << 9;
     geometry_ = kOnePulse;
     peak_ = 0;
+    width_ = 0;
     rise_ = Instant();
     fall_ = Instant();
     last_activity_us_ = 0;
@@ -333,8 +350,9 @@ class BasicPeriodEstimator {
   const Config& config() const { return config_; }
 
  private:
-  static const uint32_t kLearnStallUs = 8000000u;  // give up learning after 8 s without a swing
-  static const uint32_t kMaxStallUs = 16000000u;   // stay below 2^24 us (midpoint's range)
+  // Learning starts over after 4.5 s without the signal crossing its middle (periods up to 4 s).
+  static const uint32_t kLearnStallUs = 4500000u;
+  static const uint32_t kMaxStallUs = 16000000u;    // stay below 2^24 us (midpoint's range)
   static const uint32_t kBaselineTauUs = 2000000u;  // baseline time constant, about 2 s
 
   float level(int32_t offset) const {
@@ -362,6 +380,8 @@ class BasicPeriodEstimator {
     learn_t0_ = 0;
     learn_min_ = 0;
     learn_max_ = 0;
+    learn_prev1_ = 0;
+    learn_prev2_ = 0;
     learn_side_ = 0;
     transitions_ = 0;
     n_above_ = 0;
@@ -372,6 +392,16 @@ class BasicPeriodEstimator {
     unlock();
   }
 
+  static uint16_t median3(uint16_t a, uint16_t b, uint16_t c) {
+    if (a > b) {
+      const uint16_t tmp = a;
+      a = b;
+      b = tmp;
+    }
+    // Now a <= b: the median is b if b < c, else the larger of a and c.
+    return b < c ? b : (a > c ? a : c);
+  }
+
   uint8_t learn(uint32_t t, uint16_t x) {
     if (phase_ == kArming) {
       if (signed_dev(x) < lo_) {
@@ -380,11 +410,25 @@ class BasicPeriodEstimator {
       }
       return kNoEvent;
     }
-    if (learn_n_ == 0) {
+    // The median of the last three samples keeps a lone glitch (a wrong first sample, a spike)
+    // out of the range.
+    if (learn_n_ < 2) {
+      if (learn_n_ == 0) {
+        learn_t0_ = t;
+        last_activity_us_ = t;
+      }
+      learn_prev2_ = learn_prev1_;
+      learn_prev1_ = x;
+      ++learn_n_;
+      return kNoEvent;
+    }
+    const uint16_t raw = x;
+    x = median3(raw, learn_prev1_, learn_prev2_);
+    learn_prev2_ = learn_prev1_;
+    learn_prev1_ = raw;
+    if (learn_n_ == 2) {
       learn_min_ = x;
       learn_max_ = x;
-      learn_t0_ = t;
-      last_activity_us_ = t;
     }
     if (learn_n_ != 0xFFFFFFFFu) ++learn_n_;
     if (x < learn_min_) learn_min_ = x;
@@ -395,9 +439,10 @@ class BasicPeriodEstimator {
     const int32_t twice_x = 2 * static_cast<int32_t>(x);
     const int32_t twice_mid = static_cast<int32_t>(learn_min_) + learn_max_;
     int8_t side = learn_side_;
-    if (twice_x > twice_mid + range / 4) {
+    const int32_t band = range >> 2;
+    if (twice_x > twice_mid + band) {
       side = 1;
-    } else if (twice_x < twice_mid - range / 4) {
+    } else if (twice_x < twice_mid - band) {
       side = -1;
     }
     if (side == 0) return kNoEvent;
@@ -437,6 +482,7 @@ class BasicPeriodEstimator {
     base_ = static_cast<int32_t>(static_cast<float>(sum) / static_cast<float>(n) * 65536.0f);
     const int32_t extreme = static_cast<int32_t>(polarity_ > 0 ? learn_max_ : learn_min_) << 16;
     amp_ = polarity_ > 0 ? extreme - base_ : base_ - extreme;
+    width_ = 0;
     set_levels();
     // Baseline time constant: 2^base_shift_ samples of the mean sample interval, about 2 s.
     const uint32_t dt = learn_n_ > 1 ? (t - learn_t0_) / (learn_n_ - 1) : 1u;
@@ -490,8 +536,15 @@ class BasicPeriodEstimator {
     p.time = midpoint(rise_, fall_);
     const int32_t peak_counts = peak_ >> 16;
     p.peak = static_cast<uint16_t>(peak_counts > 0xFFFF ? 0xFFFF : peak_counts);
-    // 70 % of the running height, as (amp/2 + amp/8 + amp/16) = 0.6875 amp.
-    p.weak = peak_ < hi_ + (amp_ >> 3) + (amp_ >> 4);
+    // The peak within 0.6875 = 1/2 + 1/8 + 1/16 and 1.4375 = 1 + 1/4 + 1/8 + 1/16 of the running
+    // height, the width within 5/16 = 31 % of the running width.
+    const int32_t sixteenth = amp_ >> 4;
+    p.distorted = peak_ < hi_ + 3 * sixteenth || peak_ > amp_ + 7 * sixteenth;
+    const int32_t width = static_cast<int32_t>(fall_.us - rise_.us);
+    if (width_ == 0) width_ = width;
+    const int32_t slack = (width_ >> 2) + (width_ >> 4);
+    p.distorted = p.distorted || width > width_ + slack || width < width_ - slack;
+    width_ += (width - width_) >> 2;
     ++pulse_count_;
     amp_ += (peak_ - amp_) >> 2;
     set_levels();
@@ -506,7 +559,7 @@ class BasicPeriodEstimator {
     locked_ = false;
     window_pulses_ = 0;
     group_size_ = 0;
-    group_weak_ = false;
+    group_distorted_ = false;
     have_turn_ = false;
     broken_streak_ = 0;
     ring_count_ = 0;
@@ -597,7 +650,7 @@ class BasicPeriodEstimator {
     if (group_size_ != 0) {
       if (static_cast<uint32_t>(p.time.us - group_last_.us) <= theta_us_) {
         group_last_ = p.time;
-        group_weak_ = group_weak_ || p.weak;
+        group_distorted_ = group_distorted_ || p.distorted;
         if (group_size_ != 0xFF) ++group_size_;
         return kNoEvent;
       }
@@ -605,14 +658,14 @@ class BasicPeriodEstimator {
     }
     group_first_ = p.time;
     group_last_ = p.time;
-    group_weak_ = p.weak;
+    group_distorted_ = p.distorted;
     group_size_ = 1;
     return events;
   }
 
   uint8_t close_group() {
     const Instant turn = midpoint(group_first_, group_last_);
-    const bool clean = group_size_ == expected_group_size() && !group_weak_;
+    const bool clean = group_size_ == expected_group_size() && !group_distorted_;
     group_size_ = 0;
     uint8_t events = kNoEvent;
     if (have_turn_) {
@@ -684,6 +737,7 @@ class BasicPeriodEstimator {
   int32_t hi_;
   int32_t lo_;
   int32_t peak_;
+  int32_t width_;  // running pulse width [us] (0: none yet)
   Instant rise_;
   Instant fall_;
   uint32_t last_activity_us_;
@@ -694,6 +748,8 @@ class BasicPeriodEstimator {
   uint32_t learn_t0_;
   uint16_t learn_min_;
   uint16_t learn_max_;
+  uint16_t learn_prev1_;
+  uint16_t learn_prev2_;
   int8_t learn_side_;
   uint8_t transitions_;
   uint32_t n_above_;
@@ -710,7 +766,7 @@ class BasicPeriodEstimator {
   Geometry geometry_;
   uint8_t window_pulses_;
   uint8_t group_size_;
-  bool group_weak_;
+  bool group_distorted_;
   Instant group_first_;
   Instant group_last_;
   bool have_turn_;

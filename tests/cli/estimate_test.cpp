@@ -1,0 +1,214 @@
+// frictionlab estimate LOG: T +- dT and mu_k from Hall logs the test writes from a synthetic
+// signal with a known period, and exit status 2 with a located message for logs that give none.
+#include <unistd.h>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.hpp"
+#include "core/analytic_model.hpp"
+#include "estimator/synthetic_hall.hpp"
+
+namespace fl {
+namespace {
+
+const std::string kExe = FRICTIONLAB_EXE;
+
+class Estimate : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("fl-estimate-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  std::string write(const std::string& name, const std::string& text) {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  // The samples as a CSV with the given header; the time in microseconds or seconds.
+  std::string write_csv(const std::string& name, const test::HallSamples& s,
+                        const std::string& header, bool seconds, const std::string& prefix = "") {
+    std::string text = prefix + header + "\n";
+    char line[64];
+    for (std::size_t i = 0; i < s.adc.size(); ++i) {
+      if (seconds)
+        std::snprintf(line, sizeof line, "%.6f,%u\n", s.t_us[i] * 1e-6, s.adc[i]);
+      else
+        std::snprintf(line, sizeof line, "%u,%u\n", s.t_us[i], s.adc[i]);
+      text += line;
+    }
+    return write(name, text);
+  }
+
+  test::CommandResult lab(const std::string& args) {
+    return test::run_command(kExe + " estimate " + args);
+  }
+
+  nlohmann::json json(const std::string& args) {
+    const test::CommandResult r = lab(args + " --json");
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  }
+
+  std::filesystem::path dir_;
+};
+
+test::HallSignal rig() {
+  test::HallSignal s;
+  s.period_s = 0.79;
+  s.duration_s = 30.0;
+  return s;
+}
+
+TEST_F(Estimate, APeriodWithinFiveHundredthsOfAPercentAndTheModelsMuK) {
+  const test::HallSignal s = rig();
+  const std::string log = write_csv("hall.csv", test::generate(s), "t_us,adc", false);
+  const nlohmann::json j = json(log);
+  for (const char* key :
+       {"period_s", "period_std_s", "period_sem_s", "periods_used", "periods_discarded", "mu_k",
+        "mu_k_err_worst", "mu_k_err_quadrature", "pulses", "geometry", "samples", "spacing_m",
+        "spacing_err_m", "gravity_m_s2", "format", "periods", "plot"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  const double period = j["period_s"].get<double>();
+  EXPECT_NEAR(period, s.period_s, 5e-4 * s.period_s);
+  EXPECT_EQ(j["periods_discarded"].get<int>(), 0);
+  EXPECT_GE(j["periods_used"].get<int>(),
+            static_cast<int>(test::turning_times(s, 0.0, s.duration_s).size()) - 4);
+  EXPECT_EQ(j["geometry"], "one-pulse");
+  EXPECT_EQ(j["format"], "csv");
+  EXPECT_DOUBLE_EQ(j["spacing_m"].get<double>(), 0.089);
+  const MuKUncertainty model = mu_k_with_uncertainty(period, j["period_std_s"].get<double>(), 0.089,
+                                                     0.002, 0.0, kDefaultGravity);
+  EXPECT_NEAR(j["mu_k"].get<double>(), model.mu_k, 1e-6 * model.mu_k);
+  EXPECT_NEAR(j["mu_k_err_worst"].get<double>(), model.worst, 1e-6 * model.worst);
+  EXPECT_NEAR(j["mu_k_err_quadrature"].get<double>(), model.quadrature, 1e-6 * model.quadrature);
+  EXPECT_EQ(j["periods"].size(),
+            j["periods_used"].get<std::size_t>() + j["periods_discarded"].get<std::size_t>());
+}
+
+TEST_F(Estimate, SecondsMicrosecondsAndTheFirmwaresCaptureAgree) {
+  test::HallSignal s = rig();
+  s.noise_counts = 2.0;
+  s.sensor_offset_m = -0.010;  // a pair per period
+  const test::HallSamples samples = test::generate(s);
+  const nlohmann::json us = json(write_csv("us.csv", samples, "t_us,adc", false));
+  const nlohmann::json sec = json(write_csv("s.csv", samples, "time,value", true));
+  const nlohmann::json fw = json(write_csv(
+      "rig.log", samples, "t_us,adc", false,
+      "# frictionlab rig firmware 1: sample_hz=1000 sample_us=1000.0000 raw_every=1\r\n"));
+  EXPECT_EQ(us["geometry"], "pair");
+  EXPECT_EQ(us["period_s"], sec["period_s"]);
+  EXPECT_EQ(us["period_std_s"], sec["period_std_s"]);
+  EXPECT_EQ(us["period_s"], fw["period_s"]);
+  EXPECT_EQ(fw["format"], "firmware");
+  EXPECT_EQ(sec["time_column"], "time");
+  EXPECT_EQ(sec["adc_column"], "value");
+}
+
+TEST_F(Estimate, JumpsAreCountedAndLeftOut) {
+  test::HallSignal s = rig();
+  const auto turn = test::turning_times(s, 0.0, s.duration_s);
+  s.blanks.push_back({turn.at(10) - 0.15, turn.at(10) + 0.15});
+  s.spurious.push_back(turn.at(20) + 0.3 * s.period_s);
+  const nlohmann::json j = json(write_csv("jumps.csv", test::generate(s), "t_us,adc", false));
+  EXPECT_EQ(j["periods_discarded"].get<int>(), 3);
+  EXPECT_EQ(j["periods_outliers"].get<int>(), 1);
+  EXPECT_NEAR(j["period_s"].get<double>(), s.period_s, 5e-4 * s.period_s);
+}
+
+TEST_F(Estimate, TheSpacingGivesMuK) {
+  const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
+  const nlohmann::json a = json(log);
+  const nlohmann::json b = json(log + " --spacing 10cm --spacing-err 1mm");
+  EXPECT_DOUBLE_EQ(b["spacing_m"].get<double>(), 0.1);
+  EXPECT_DOUBLE_EQ(b["spacing_err_m"].get<double>(), 0.001);
+  EXPECT_NEAR(b["mu_k"].get<double>() / a["mu_k"].get<double>(), 0.1 / 0.089, 1e-6);
+}
+
+TEST_F(Estimate, PrintsAReadableSummary) {
+  const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
+  const test::CommandResult r = lab(log);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* text :
+       {"period T", "mu_k", "one pulse per period", "discarded", "89.0 +- 2.0 mm"})
+    EXPECT_NE(r.out.find(text), std::string::npos) << text << "\n" << r.out;
+}
+
+TEST_F(Estimate, PlotsWhatTheEstimatorSaw) {
+  test::HallSignal s = rig();
+  s.spurious.push_back(12.3);
+  const std::string log = write_csv("hall.csv", test::generate(s), "t_us,adc", false);
+  const std::string png = (dir_ / "hall.png").string();
+  const nlohmann::json j = json(log + " --plot " + png);
+  EXPECT_EQ(j["plot"], png);
+  std::ifstream f(png, std::ios::binary);
+  char magic[8] = {};
+  f.read(magic, 8);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+  EXPECT_GT(std::filesystem::file_size(png), 10000u);
+}
+
+TEST_F(Estimate, BadLogsExitWithStatusTwoAndSayWhatWasFound) {
+  test::HallSignal flat = rig();
+  flat.peak_counts = 0.0;
+  flat.noise_counts = 1.0;
+  flat.duration_s = 5.0;
+  test::HallSignal three = rig();  // three pulses: two to learn the signal from, one left
+  three.duration_s = 2.0;
+  test::HallSignal few = rig();  // too few pulses to tell the geometry
+  few.duration_s = 4.5;
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  const std::string dir = dir_.string();
+  for (const Case& c : {
+           Case{write("numbers.csv", "0,512\n1000,513\n"),
+                dir + "/numbers.csv:1:1: error: expected a header naming the time and ADC"},
+           Case{write("text.csv", "t_us,adc\n0,512\nabc,513\n"),
+                dir + "/text.csv:3:1: error: column \"t_us\": expected a number, found \"abc\""},
+           Case{write("back.csv", "t_s,adc\n0.1,512\n0.3,513\n0.2,514\n"),
+                dir + "/back.csv:4:1: error: time 0.2 s is not after the previous sample's 0.3 s"},
+           Case{write("empty.csv", ""), dir + "/empty.csv:1: error: the log is empty"},
+           Case{write_csv("flat.csv", test::generate(flat), "t_us,adc", false),
+                dir + "/flat.csv:2: error: no pulse in 5000 samples"},
+           Case{write_csv("three.csv", test::generate(three), "t_us,adc", false),
+                dir + "/three.csv:"},
+           Case{write_csv("few.csv", test::generate(few), "t_us,adc", false), dir + "/few.csv:"},
+           Case{dir + "/missing.csv", dir + "/missing.csv: error: cannot open the log"},
+           Case{dir + "/x.csv --geometry banana", "error: --geometry: expected auto, one or pair"},
+           Case{dir + "/x.csv --spacing 89kg", "error: --spacing: expected a length"},
+       }) {
+    const test::CommandResult r = lab(c.args);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out << r.err;
+    EXPECT_EQ(r.err.rfind(c.message, 0), 0u) << c.args << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args;  // never a made-up period
+  }
+  EXPECT_NE(lab(dir + "/three.csv").err.find("only one pulse"), std::string::npos);
+  EXPECT_NE(lab(dir + "/few.csv").err.find("needs five in a row"), std::string::npos);
+}
+
+TEST_F(Estimate, APlotEvenWhenThereIsNoPeriod) {
+  test::HallSignal flat = rig();
+  flat.peak_counts = 0.0;
+  flat.duration_s = 3.0;
+  const std::string log = write_csv("flat.csv", test::generate(flat), "t_us,adc", false);
+  const std::string png = (dir_ / "flat.png").string();
+  const test::CommandResult r = lab(log + " --plot " + png);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("the plot " + png + " shows the signal"), std::string::npos) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(png));
+}
+
+}  // namespace
+}  // namespace fl

@@ -14,7 +14,12 @@ namespace {
 
 const std::string kExe = FRICTIONLAB_EXE;
 const std::string kMinimal = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
-const std::filesystem::path kTmp = std::filesystem::path(FRICTIONLAB_TEST_BINARY_DIR) / "cli-run";
+// Each test its own folder: ctest runs them in parallel.
+std::filesystem::path test_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return std::filesystem::path(FRICTIONLAB_TEST_BINARY_DIR) /
+         ("cli-run-" + std::string(info->name()));
+}
 
 test::CommandResult lab(const std::string& args) {
   return test::run_command(kExe + " " + args);
@@ -36,20 +41,20 @@ TEST(CliRun, JsonHasEveryDocumentedKey) {
 }
 
 TEST(CliRun, OutputsAreWrittenAndBitIdenticalAcrossRuns) {
-  std::filesystem::remove_all(kTmp);
+  std::filesystem::remove_all(test_dir());
   for (const char* name : {"a", "b"}) {
-    const auto r = lab("run " + kMinimal + " --duration 3s --out " + (kTmp / name).string());
+    const auto r = lab("run " + kMinimal + " --duration 3s --out " + (test_dir() / name).string());
     ASSERT_EQ(r.status, 0) << r.err;
   }
   for (const char* file : {"summary.json", "hall.csv", "trajectory.csv"}) {
-    const std::string a = test::read_text(kTmp / "a" / file);
+    const std::string a = test::read_text(test_dir() / "a" / file);
     EXPECT_FALSE(a.empty()) << file;
-    EXPECT_EQ(a, test::read_text(kTmp / "b" / file)) << file;
+    EXPECT_EQ(a, test::read_text(test_dir() / "b" / file)) << file;
   }
-  EXPECT_TRUE(std::filesystem::exists(kTmp / "a" / "timing.json"));
+  EXPECT_TRUE(std::filesystem::exists(test_dir() / "a" / "timing.json"));
   // The Hall log is what `frictionlab estimate` reads.
-  EXPECT_EQ(test::read_text(kTmp / "a" / "hall.csv").substr(0, 9), "t_us,adc\n");
-  std::filesystem::remove_all(kTmp);
+  EXPECT_EQ(test::read_text(test_dir() / "a" / "hall.csv").substr(0, 9), "t_us,adc\n");
+  std::filesystem::remove_all(test_dir());
 }
 
 TEST(CliRun, SetOverridesAndAccuracyChoosesTheStep) {
@@ -65,10 +70,10 @@ TEST(CliRun, SetOverridesAndAccuracyChoosesTheStep) {
 }
 
 TEST(CliRun, BadScenesExitWithStatusTwo) {
-  std::filesystem::create_directories(kTmp);
+  std::filesystem::create_directories(test_dir());
   const auto write = [](const std::string& name, const std::string& text) {
-    std::ofstream(kTmp / name) << text;
-    return (kTmp / name).string();
+    std::ofstream(test_dir() / name) << text;
+    return (test_dir() / name).string();
   };
   struct Case {
     std::string args;
@@ -92,11 +97,11 @@ TEST(CliRun, BadScenesExitWithStatusTwo) {
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
   }
-  std::filesystem::remove_all(kTmp);
+  std::filesystem::remove_all(test_dir());
 }
 
 TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
-  const auto out = kTmp / "accuracy";
+  const auto out = test_dir() / "accuracy";
   const auto r = lab("accuracy " + kMinimal + " --periods 4 --json --out " + out.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -104,14 +109,14 @@ TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
   EXPECT_NEAR(j["law"]["exponent"].get<double>(), 2.0, 0.05);
   EXPECT_NEAR(j["law"]["coefficient"].get<double>() * 24.0, 1.0, 0.05);
   EXPECT_TRUE(std::filesystem::exists(out / "accuracy.csv"));
-  std::filesystem::remove_all(kTmp);
+  std::filesystem::remove_all(test_dir());
 }
 
 // The physics opens no mesh: the minimal scene runs with an asset folder holding only the
 // paper's table; the whole paper rig (frame, blocks, gears) with only the table and the part
 // index, no mesh file at all.
 TEST(CliRun, ScenesOpenNoMeshFile) {
-  const auto assets = kTmp / "assets-without-meshes";
+  const auto assets = test_dir() / "assets-without-meshes";
   std::filesystem::remove_all(assets);
   std::filesystem::create_directories(assets / "paper");
   std::filesystem::copy_file(std::string(FRICTIONLAB_TEST_ASSET_DIR) + "/paper/table1.yaml",

@@ -105,7 +105,7 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   fmt::print(
       "| case | parameters | theory expects | found | largest trustworthy step | period error at "
       "the "
-      "scene's step | d ln mu / d ln T | run time |\n");
+      "scene's step | d ln mu / d ln T, d ln h_c | run time |\n");
   fmt::print("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const StabilityRow& r : rows) {
     fmt::print(
@@ -113,7 +113,9 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
         r.found, r.as_expected ? "" : " (UNEXPECTED)",
         r.largest_step ? fmt::format("{:.3g} ms", *r.largest_step * 1e3) : "none: " + r.step_note,
         r.period_error ? fmt::format("{:+.2e}", *r.period_error) : "-",
-        r.condition_period > 0 ? fmt::format("{:.3f}", r.condition_period) : "-", r.wall_s);
+        r.condition_period > 0 ? fmt::format("{:.3f}, {:.3f}", r.condition_period, r.condition_h_c)
+                               : std::string("-"),
+        r.wall_s);
   }
   fmt::print("\n{} of {} cases end in the regime theory expects.\n", rows.size() - unexpected,
              rows.size());

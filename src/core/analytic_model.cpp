@@ -69,6 +69,7 @@ MuKUncertainty mu_k_with_uncertainty(double period, double period_err, double sp
   const double denominator = gravity * period * period + 4.0 * kPi * kPi * h_c;
   out.condition_spacing = 1.0;
   out.condition_period = 2.0 * gravity * period * period / denominator;
+  out.condition_h_c = 4.0 * kPi * kPi * h_c / denominator;
   const double rel_l = out.condition_spacing * spacing_err / spacing;
   const double rel_t = out.condition_period * period_err / period;
   out.worst = out.mu_k * (rel_l + rel_t);

@@ -41,6 +41,9 @@ struct MuKUncertainty {
   double quadrature = 0.0;  // d mu = mu sqrt((kappa_l dl/l)^2 + (kappa_T dT/T)^2)
   double condition_period = 0.0;   // kappa_T = |d ln mu / d ln T| (2 for the thin plate)
   double condition_spacing = 0.0;  // kappa_l = |d ln mu / d ln l| (1)
+  // kappa_h = |d ln mu / d ln h_c| = 4 pi^2 h_c / (g T^2 + 4 pi^2 h_c): near 1 (and kappa_T near
+  // 0) the period no longer pins mu_k down: mu_k tends to l / (2 h_c), set by the plate's build.
+  double condition_h_c = 0.0;
 };
 
 // mu_k +- d mu_k from T +- dT and l +- dl, through the thick formula (h_c = 0 gives the paper's

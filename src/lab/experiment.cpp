@@ -115,6 +115,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
         mu_k_with_uncertainty(*out.period_thick, 0.0, out.spacing, 0.0, out.h_c, g);
     out.condition_period = c.condition_period;
     out.condition_spacing = c.condition_spacing;
+    out.condition_h_c = c.condition_h_c;
   }
 
   // Only what the scene names: no sensor, no Hall signal and no estimator.

@@ -96,6 +96,7 @@ struct RunSummary {
   // How errors in T and l carry into mu_k through the thick formula for this h_c.
   double condition_period = 0.0;
   double condition_spacing = 0.0;
+  double condition_h_c = 0.0;
 
   double wall_s = 0.0;
   double real_time_factor = 0.0;

@@ -47,6 +47,7 @@ nlohmann::json summary_json(const RunSummary& s) {
   j["estimator_disagreement"] = optional_text(s.estimator_disagreement);
   j["condition_period"] = s.condition_period;
   j["condition_spacing"] = s.condition_spacing;
+  j["condition_h_c"] = s.condition_h_c;
   j["period_s"] = optional(period);
   j["period_std_s"] =
       s.estimator ? nlohmann::json(s.estimator->period_std) : nlohmann::json(nullptr);
@@ -152,9 +153,10 @@ std::string summary_text(const RunSummary& s) {
   }
   if (s.condition_period > 0.0 && s.regime == "oscillates")
     line(fmt::format(
-        "  conditioning           d mu/mu = {:.3f} dT/T + {:.0f} dl/l (thick formula, h_c = "
-        "{:.2f} mm)",
-        s.condition_period, s.condition_spacing, s.h_c * 1e3));
+        "  conditioning           d mu/mu = {:.3f} dT/T + {:.0f} dl/l + {:.3f} dh_c/h_c "
+        "(thick formula, h_c = {:.2f} mm){}",
+        s.condition_period, s.condition_spacing, s.condition_h_c, s.h_c * 1e3,
+        s.condition_period < 0.5 ? ": the period hardly pins mu_k down here, h_c does" : ""));
   if (s.mu_k_recovered_thick)
     line(fmt::format("  mu_k through the thick formula (h_c = {:.2f} mm): {:.4f}", s.h_c * 1e3,
                      *s.mu_k_recovered_thick));

@@ -75,6 +75,7 @@ StabilityRow run_stability_case(const Scene& scene) {
         scene.rollers.spacing, 0.0, h_c, scene.world.gravity);
     row.condition_period = c.condition_period;
     row.condition_spacing = c.condition_spacing;
+    row.condition_h_c = c.condition_h_c;
   }
 
   // Bisection on log(dt) between the smallest and the largest step.

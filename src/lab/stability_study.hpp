@@ -26,6 +26,7 @@ struct StabilityRow {
   std::optional<double> period_error;  // relative to the thick formula, at the scene's step
   double condition_period = 0.0;       // d ln mu_k / d ln T through the thick formula
   double condition_spacing = 0.0;
+  double condition_h_c = 0.0;
   double wall_s = 0.0;  // for this case, bisection included
 };
 

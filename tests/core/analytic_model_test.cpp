@@ -62,6 +62,8 @@ TEST(AnalyticModel, ThickConditionNumberIsBelowTwo) {
   const MuKUncertainty u = mu_k_with_uncertainty(t, 0.0, 0.089, 0.0, h, kG);
   EXPECT_NEAR(u.condition_period, expected, 1e-15);
   EXPECT_LT(u.condition_period, 2.0);
+  // kappa_T / 2 + kappa_h = 1: what the period does not decide, the build (h_c) does.
+  EXPECT_NEAR(0.5 * u.condition_period + u.condition_h_c, 1.0, 1e-15);
   // A numerical derivative agrees with the closed form.
   const double eps = 1e-6;
   const double numeric = -(std::log(mu_k_from_period_thick(t * (1 + eps), 0.089, h, kG)) -

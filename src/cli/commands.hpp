@@ -24,5 +24,8 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global);
 Command add_accuracy_command(CLI::App& app, const GlobalOptions& global);
 Command add_stability_command(CLI::App& app, const GlobalOptions& global);
 Command add_estimate_command(CLI::App& app, const GlobalOptions& global);
+Command add_sweep_command(CLI::App& app, const GlobalOptions& global);
+Command add_merge_command(CLI::App& app, const GlobalOptions& global);
+Command add_compare_command(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace fl::cli

@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
       fl::cli::add_analytic_command(app, global),  fl::cli::add_table_command(app, global),
       fl::cli::add_run_command(app, global),       fl::cli::add_accuracy_command(app, global),
       fl::cli::add_stability_command(app, global), fl::cli::add_estimate_command(app, global),
+      fl::cli::add_sweep_command(app, global),     fl::cli::add_merge_command(app, global),
+      fl::cli::add_compare_command(app, global),
   };
 
   try {

@@ -28,7 +28,8 @@ class Rig {
   Rig(const PaperTable& table, const CompareOptions& options)
       : table_(table),
         options_(options),
-        paper_([this]() -> const PaperTable& { return table_; }) {}
+        paper_([this]() -> const PaperTable& { return table_; }),
+        parts_(shared_once(options.parts)) {}
 
   // The scene for a row, with mu_k as a number (or the row's own when `mu_k` is empty).
   Scene scene(const CompareRow& row, std::optional<double> mu_k,
@@ -40,7 +41,7 @@ class Rig {
     overrides.push_back(
         {"friction.mu_k", mu_k ? fmt::format("{:.17g}", *mu_k) : std::string(row.material)});
     if (spacing) overrides.push_back({"rollers.spacing", fmt::format("{:.17g}", *spacing)});
-    return load_scene_file(options_.scene_file, overrides, paper_);
+    return load_scene_file(options_.scene_file, overrides, paper_, parts_);
   }
 
   Simulation simulate(const Scene& scene) {
@@ -65,11 +66,13 @@ class Rig {
 
   int simulations() const { return simulations_.load(); }
   const PaperTableSource& paper() const { return paper_; }
+  const PartCatalogSource& parts() const { return parts_; }
 
  private:
   const PaperTable& table_;
   const CompareOptions& options_;
   PaperTableSource paper_;
+  PartCatalogSource parts_;
   std::atomic<int> simulations_{0};
 };
 
@@ -105,7 +108,9 @@ void refit(Rig& rig, CompareRow& row, const CompareResult& rig_facts,
       throw std::runtime_error(fmt::format("at mu_k = {:.5g}: {}", mu, no_oscillation_reason(s)));
     return r;
   };
-  const double mu0 = *row.mu_k_thick_formula;
+  const double mu0 = options.start_from_thin_formula
+                         ? std::min(mu_k_from_period_thin(target, l, rig_facts.gravity), mu_ceiling)
+                         : *row.mu_k_thick_formula;
   std::vector<CompareRun> trials{run(mu0)};
   trials.push_back(run(std::min(mu0 * (1.0 + options.slope_step), mu_ceiling)));
   // d ln T / d ln mu from the two runs (about -1/2: T ~ mu^-1/2), then Newton steps in log space
@@ -225,7 +230,7 @@ CompareResult run_compare(const PaperTable& table, const CompareOptions& options
   {
     std::vector<SceneOverride> overrides = options.overrides;
     overrides.push_back({"friction.mu_k", "0.29"});
-    const Scene base = load_scene_file(options.scene_file, overrides, rig.paper());
+    const Scene base = load_scene_file(options.scene_file, overrides, rig.paper(), rig.parts());
     result.scene = base.name;
     result.spacing = base.rollers.spacing;
     result.spacing_err = table.spacing.uncertainty;

@@ -20,10 +20,14 @@ namespace fl {
 
 struct CompareOptions {
   std::string scene_file;                // the rig's scene
+  PartCatalogSource parts;               // the LEGO part index, for a scene with LEGO parts
   std::vector<SceneOverride> overrides;  // --set, --duration; applied before each row's own
   int workers = 0;                       // rows in parallel; 0: every core
   bool refit = true;
-  double tolerance = 1e-4;   // the refit stops when |T_sim / T_measured - 1| is below this
+  double tolerance = 1e-4;  // the refit stops when |T_sim / T_measured - 1| is below this
+  // Where the root finding starts: the thick formula's closed form for the scene's h_c (the
+  // default: usually within the tolerance already), or the paper's thin formula (a few % off).
+  bool start_from_thin_formula = false;
   int max_refit_runs = 8;    // simulations for the root of one row, at most
   double slope_step = 0.02;  // relative step in mu_k for the simulated d ln T / d ln mu_k
   // Each run simulates at least this many measured periods (the rig averaged 10 to 100), or the

@@ -117,7 +117,7 @@ SweepOutcome run_root(const SweepSpec& spec, const SweepRunOptions& options,
     return i;
   };
   WorkPool<PointResult> pool(threads, [&](std::size_t index) {
-    PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.paper);
+    PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.inputs);
     store.save_point(r);
     return r;
   });
@@ -188,7 +188,7 @@ SweepOutcome run_root(const SweepSpec& spec, const SweepRunOptions& options,
 void run_worker(const SweepSpec& spec, const SweepRunOptions& options, const std::string& digest,
                 int threads) {
   WorkPool<PointResult> pool(threads, [&](std::size_t index) {
-    return run_sweep_point(spec, sweep_point(spec, index), options.paper);
+    return run_sweep_point(spec, sweep_point(spec, index), options.inputs);
   });
   bool exhausted = false;
   std::vector<std::string> outbox;

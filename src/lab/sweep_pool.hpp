@@ -10,6 +10,7 @@
 #include <deque>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <stop_token>
@@ -22,6 +23,22 @@ namespace fl {
 // The number of hardware threads, at least 1.
 inline int hardware_workers() {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+// A lazily read input (a table, an index) made safe to share between workers: the source is
+// asked at most once; an empty source stays empty.
+template <class T>
+std::function<const T&()> shared_once(const std::function<const T&()>& source) {
+  if (!source) return source;
+  struct State {
+    std::once_flag flag;
+    const T* value = nullptr;
+  };
+  auto state = std::make_shared<State>();
+  return [state, source]() -> const T& {
+    std::call_once(state->flag, [&] { state->value = &source(); });
+    return *state->value;
+  };
 }
 
 template <class Result>

@@ -162,14 +162,15 @@ std::string csv_cell(const nlohmann::json& v) {
 }  // namespace
 
 PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
-                            const PaperTableSource& paper) {
+                            const SceneInputs& inputs) {
   const auto start = std::chrono::steady_clock::now();
   PointResult out;
   out.index = point.index;
   out.row = empty_row(spec, point);
   std::optional<Scene> scene;
   try {
-    scene = load_scene_text(spec.scene_text, spec.scene_file, point.overrides, paper);
+    scene = load_scene_text(spec.scene_text, spec.scene_file, point.overrides, inputs.paper,
+                            inputs.parts);
   } catch (const std::exception& e) {
     out.row["status"] = "invalid";
     out.row["error"] = e.what();

@@ -24,9 +24,9 @@ struct PointResult {
 // Runs one point: loads the base scene with the point's overrides and simulates it. Never throws
 // for the point's own trouble: an invalid override or scene gives status "invalid", a run that a
 // guard stopped or that threw gives "failed", each with its error; both still give a row.
-// Thread-safe (each call builds its own scene and world); `paper` must be thread-safe.
+// Thread-safe (each call builds its own scene and world) if `inputs` are.
 PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
-                            const PaperTableSource& paper);
+                            const SceneInputs& inputs);
 
 // The results' columns in order: index, one per axis of the plan (sweep_plan), then the fixed
 // ones.

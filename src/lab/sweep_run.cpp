@@ -72,19 +72,6 @@ bool is_point_file_name(const std::string& name, std::size_t& index) {
   return true;
 }
 
-// Thread-safe access to the paper's table (asked for at most once).
-PaperTableSource once(const PaperTableSource& source) {
-  struct State {
-    std::once_flag flag;
-    const PaperTable* table = nullptr;
-  };
-  auto state = std::make_shared<State>();
-  return [state, source]() -> const PaperTable& {
-    std::call_once(state->flag, [&] { state->table = &source(); });
-    return *state->table;
-  };
-}
-
 }  // namespace
 
 SweepStore::SweepStore(std::string dir, nlohmann::json plan)
@@ -208,7 +195,8 @@ int mpi_launch_size() {
 
 SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
   SweepRunOptions options = given;
-  options.paper = once(given.paper);
+  options.inputs.paper = shared_once(given.inputs.paper);
+  options.inputs.parts = shared_once(given.inputs.parts);
   const int launched = mpi_launch_size();
   if (launched > 0 && sweep_has_mpi()) return run_sweep_mpi(spec, options);
   if (launched > 1)
@@ -241,7 +229,7 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
     const int threads = std::max(
         1, std::min(outcome.workers, static_cast<int>(std::max<std::size_t>(1, pending.size()))));
     WorkPool<PointResult> pool(threads, [&](std::size_t index) {
-      PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.paper);
+      PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.inputs);
       store.save_point(r);
       return r;
     });
@@ -262,6 +250,7 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (options.progress) options.progress(progress);
     }
+    outcome.workers = threads;
   }
   outcome.interrupted = outcome.ran < pending.size();
   outcome.ran_by_rank = {outcome.ran};

@@ -74,7 +74,7 @@ struct SweepRunOptions {
   // Called on the process's main thread (rank 0's under MPI) as points finish, and at least
   // every quarter second.
   std::function<void(const SweepProgress&)> progress;
-  PaperTableSource paper;  // must be safe to call from several threads
+  SceneInputs inputs;  // the runner makes them safe to call from several threads
 };
 
 struct SweepOutcome {

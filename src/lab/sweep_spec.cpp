@@ -320,9 +320,9 @@ bool is_key_path_problem(const InputError& e, const std::string& path) {
 // located at `where` in the sweep file, any other (a value the point will report) is ignored.
 void probe_key(const SweepSpec& spec, const std::vector<SceneOverride>& overrides,
                const std::string& path, const SourceLocation& where, const std::string& what,
-               const PaperTableSource& paper) {
+               const SceneInputs& inputs) {
   try {
-    load_scene_text(spec.scene_text, spec.scene_file, overrides, paper);
+    load_scene_text(spec.scene_text, spec.scene_file, overrides, inputs.paper, inputs.parts);
   } catch (const InputError& e) {
     if (is_key_path_problem(e, path))
       throw InputError(where, what + ": \"" + path + "\" is not a key of the scene " +
@@ -333,7 +333,8 @@ void probe_key(const SweepSpec& spec, const std::vector<SceneOverride>& override
 }
 
 SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::string& base_dir,
-                     const PaperTableSource& paper) {
+                     const SceneInputs& inputs) {
+  const PaperTableSource& paper = inputs.paper;
   root.expect_map();
   root.allow_keys({"format", "name", "description", "scene", "set", "axes"});
   const YamlNode format = root.at("format");
@@ -415,13 +416,13 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
                           kMaxSweepPoints));
 
   // Key paths must be keys of the scene (their values are each point's business).
-  for (const auto& [path, where] : set_paths) probe_key(spec, spec.set, path, where, "set", paper);
+  for (const auto& [path, where] : set_paths) probe_key(spec, spec.set, path, where, "set", inputs);
   for (const SweepAxis* a : all) {
     if (a->kind != SweepAxisKind::kKey) continue;
     std::vector<SceneOverride> overrides = spec.set;
     overrides.insert(overrides.end(), a->values.front().overrides.begin(),
                      a->values.front().overrides.end());
-    probe_key(spec, overrides, a->key, a->where, "axis " + a->name, paper);
+    probe_key(spec, overrides, a->key, a->where, "axis " + a->name, inputs);
   }
   return spec;
 }
@@ -458,13 +459,13 @@ std::vector<const SweepAxis*> SweepSpec::axes() const {
 }
 
 SweepSpec load_sweep_text(std::string_view text, const std::string& name,
-                          const std::string& base_dir, const PaperTableSource& paper) {
-  return read_sweep(load_yaml_text(text, name), name, base_dir, paper);
+                          const std::string& base_dir, const SceneInputs& inputs) {
+  return read_sweep(load_yaml_text(text, name), name, base_dir, inputs);
 }
 
-SweepSpec load_sweep_file(const std::string& file, const PaperTableSource& paper) {
+SweepSpec load_sweep_file(const std::string& file, const SceneInputs& inputs) {
   return read_sweep(load_yaml_file(file), file, std::filesystem::path(file).parent_path().string(),
-                    paper);
+                    inputs);
 }
 
 SweepPoint sweep_point(const SweepSpec& spec, std::size_t index) {

@@ -28,6 +28,13 @@ enum class SweepAxisKind {
   kSeed,         // world.seed
 };
 
+// What loading a scene may ask for: the paper's Table I (a material named for mu_k) and the LEGO
+// part index (a scene with a frame, blocks or a gearbox). Either may be empty if no scene needs it.
+struct SceneInputs {
+  PaperTableSource paper;
+  PartCatalogSource parts;
+};
+
 // "key", "material", "paper_rows", "temperature", "seed".
 std::string_view sweep_axis_kind_name(SweepAxisKind kind);
 
@@ -77,15 +84,15 @@ struct SweepPoint {
 // More points than this is refused (a typo in `steps` should not fill a disk).
 inline constexpr std::size_t kMaxSweepPoints = 1'000'000;
 
-// Reads a sweep file; the base scene must exist. `paper` is asked for Table I only when the file
-// names materials. Every key path an axis or `set:` names is checked against the base scene: an
+// Reads a sweep file; the base scene must exist. Table I is asked for only when the file names
+// materials. Every key path an axis or `set:` names is checked against the base scene: an
 // unknown key is an error located in the sweep file. Throws InputError.
-SweepSpec load_sweep_file(const std::string& file, const PaperTableSource& paper);
+SweepSpec load_sweep_file(const std::string& file, const SceneInputs& inputs);
 
 // The same from text: `name` stands for the file in messages, and a relative `scene:` is
 // resolved against `base_dir`.
 SweepSpec load_sweep_text(std::string_view text, const std::string& name,
-                          const std::string& base_dir, const PaperTableSource& paper);
+                          const std::string& base_dir, const SceneInputs& inputs);
 
 // Point `index` (0 <= index < point_count()).
 SweepPoint sweep_point(const SweepSpec& spec, std::size_t index);

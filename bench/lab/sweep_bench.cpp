@@ -1,0 +1,68 @@
+// Throughput of frictionlab sweep: scenes/sweeps/spacing.yaml (3 materials x 40 spacings x 20
+// simulated seconds, 120 points) run whole, into a fresh folder, on 1 and on 2 worker threads.
+// Reports the wall time, points per second, and for 2 workers the speed-up over 1 and the
+// parallel efficiency (speed-up / workers). Targets (issue 7): under 20 s on a 2-core machine,
+// efficiency at least 85 %. Run: build/.../bench/lab/bench_sweep [--benchmark_repetitions=3]
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "io/paper_table_yaml.hpp"
+#include "lab/sweep_run.hpp"
+
+namespace {
+
+const fl::PaperTable& table() {
+  static const fl::PaperTable t =
+      fl::load_paper_table(fl::paper_table_path(FRICTIONLAB_BENCH_ASSET_DIR));
+  return t;
+}
+
+// The fastest wall time seen per worker count, for the speed-up.
+std::map<int, double>& best_wall() {
+  static std::map<int, double> best;
+  return best;
+}
+
+void BM_SpacingSweep(benchmark::State& state) {
+  const int workers = static_cast<int>(state.range(0));
+  const fl::SceneInputs inputs{[]() -> const fl::PaperTable& { return table(); }, {}};
+  const fl::SweepSpec spec = fl::load_sweep_file(
+      std::string(FRICTIONLAB_BENCH_SOURCE_DIR) + "/scenes/sweeps/spacing.yaml", inputs);
+  const std::filesystem::path dir =
+      std::filesystem::path(FRICTIONLAB_BENCH_BINARY_DIR) / "bench-sweep" / std::to_string(workers);
+  fl::SweepOutcome outcome;
+  for (auto _ : state) {
+    fl::SweepRunOptions options;
+    options.out_dir = dir.string();
+    options.workers = workers;
+    options.fresh = true;
+    options.inputs = inputs;
+    outcome = fl::run_sweep(spec, options);
+    state.SetIterationTime(outcome.wall_s);
+    if (!outcome.complete || outcome.ran != spec.point_count())
+      state.SkipWithError("the sweep did not run every point");
+  }
+  double& best = best_wall()[workers];
+  if (best == 0.0 || outcome.wall_s < best) best = outcome.wall_s;
+  state.counters["points"] = static_cast<double>(outcome.ran);
+  state.counters["points_per_s"] = static_cast<double>(outcome.ran) / outcome.wall_s;
+  state.counters["sim_s_per_wall_s"] = 20.0 * static_cast<double>(outcome.ran) / outcome.wall_s;
+  if (workers > 1 && best_wall().contains(1)) {
+    const double speedup = best_wall()[1] / best;
+    state.counters["speedup"] = speedup;
+    state.counters["efficiency"] = speedup / workers;
+  }
+}
+BENCHMARK(BM_SpacingSweep)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kSecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

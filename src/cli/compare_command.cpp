@@ -1,0 +1,146 @@
+// frictionlab compare: every row of the paper's Table I simulated in the rig, residuals in units
+// of the paper's dT, and mu_k refitted through the simulation.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/option_quantity.hpp"
+#include "cli/plot_script.hpp"
+#include "cli/scene_options.hpp"
+#include "io/atomic_file.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/compare.hpp"
+
+namespace fl::cli {
+namespace {
+
+struct CompareCommandOptions {
+  std::string scene;
+  std::vector<std::string> overrides;
+  std::string duration;
+  int workers = 0;
+  std::string out = "out/compare";
+  bool plot = false;
+  bool json = false;
+  bool no_refit = false;
+};
+
+// The rig's scene: scenes/paper-rig.yaml from the working folder, else from the source tree.
+std::string default_scene() {
+  const std::string relative = "scenes/paper-rig.yaml";
+  if (std::filesystem::exists(relative)) return relative;
+  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
+}
+
+std::string measured_text(const Measured& m) {
+  return fmt::format("{:.{}f} +- {:.{}f}", m.value, m.decimals, m.uncertainty,
+                     m.uncertainty_decimals);
+}
+
+void print_table(const CompareResult& r) {
+  fmt::print(
+      "frictionlab compare: the paper's Table I in the scene {} (l = {:.1f} +- {:.1f} mm, h_c = "
+      "{:.2f} mm, g = {} m/s^2)\n",
+      r.scene, r.spacing * 1e3, r.spacing_err * 1e3, r.h_c * 1e3, r.gravity);
+  fmt::print(
+      "  residual = (T_sim - T_measured) / dT; thin bias = how much the paper's formula "
+      "overestimates mu_k for this h_c\n\n");
+  fmt::print("  {:<28} {:>5}  {:>15} {:>10} {:>9} {:>9}  {:>14}  {:>27} {:>9}\n", "material",
+             "temp", "T measured [s]", "T sim [s]", "residual", "thin bias", "mu_k paper",
+             "mu_k refit (worst) (quad.)", "T at fit");
+  for (const CompareRow& row : r.rows) {
+    const std::string head = fmt::format("  {:<28} {:>3} K  {:>15}", row.name, row.temperature,
+                                         measured_text(row.period_measured));
+    if (row.status != "compared") {
+      fmt::print("{}  {}: {}\n", head, row.status, row.reason);
+      continue;
+    }
+    const std::string refit = row.mu_k_refit
+                                  ? fmt::format("{:.4f} +- {:.4f} ({:.4f})", *row.mu_k_refit,
+                                                row.mu_k_refit_err_worst.value_or(0.0),
+                                                row.mu_k_refit_err_quadrature.value_or(0.0))
+                                  : std::string("-");
+    const std::string at_fit =
+        row.period_at_refit
+            ? fmt::format("{:+.4f}%",
+                          100.0 * (*row.period_at_refit / row.period_measured.value - 1))
+            : std::string("-");
+    fmt::print("{} {:>10.5f} {:>7.2f} sd {:>+8.2f}%  {:>14}  {:>27} {:>9}{}\n", head,
+               row.period_simulated.value_or(NAN), row.residual_sigma.value_or(NAN),
+               100.0 * row.thin_bias_mu_k.value_or(NAN), measured_text(row.mu_k_paper), refit,
+               at_fit, row.refit_note.empty() ? "" : "  (" + row.refit_note + ")");
+  }
+}
+
+int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
+  const PaperTable table = load_paper_table(paper_table_path(resolve_asset_dir(global.asset_dir)));
+  CompareOptions options;
+  options.scene_file = o.scene.empty() ? default_scene() : o.scene;
+  options.parts = scene_sources(global).parts;
+  for (const std::string& text : o.overrides) options.overrides.push_back(parse_override(text));
+  if (!o.duration.empty()) {
+    option_quantity(o.duration, Dimension::kTime, "--duration");
+    options.overrides.push_back({"world.duration", o.duration});
+    options.min_periods = 0;
+  }
+  options.workers = o.workers;
+  options.refit = !o.no_refit;
+  const bool tty = isatty(2) == 1;
+  options.progress = [tty](std::size_t done, std::size_t total) {
+    if (tty) {
+      fmt::print(stderr, "\r\033[Kcompare: {}/{} rows", done, total);
+      if (done == total) fmt::print(stderr, "\n");
+    }
+  };
+  const CompareResult result = run_compare(table, options);
+  const nlohmann::json j = compare_json(result);
+  const std::string csv = o.out + "/compare.csv";
+  const std::string json = o.out + "/compare.json";
+  write_file_atomic(csv, compare_csv(result));
+  write_file_atomic(json, j.dump(1) + "\n");
+  std::string png;
+  if (o.plot) {
+    png = o.out + "/compare.png";
+    run_plot_script("plot_compare.py", {json, png});
+  }
+  if (o.json) {
+    fmt::print("{}\n", j.dump(2));
+    return 0;
+  }
+  print_table(result);
+  fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", result.simulations, result.wall_s,
+             result.workers, result.workers == 1 ? "" : "s");
+  fmt::print("  written: {}, {}{}\n", csv, json, png.empty() ? "" : ", " + png);
+  return 0;
+}
+
+}  // namespace
+
+Command add_compare_command(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<CompareCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "compare", "Simulate every row of the paper's Table I and refit mu_k through the model");
+  sub->add_option("--scene", options->scene, "The rig's scene (default scenes/paper-rig.yaml)");
+  sub->add_option("--set", options->overrides,
+                  "Override a scene key, e.g. --set plate.thickness=5mm (repeatable)");
+  sub->add_option("--duration", options->duration,
+                  "Simulated time per run, e.g. 20s (default: 15 measured periods, at least the "
+                  "scene's duration)");
+  sub->add_option("-j,--jobs", options->workers, "Rows simulated in parallel (default: every core)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("--out", options->out, "Folder for compare.csv, compare.json, compare.png");
+  sub->add_flag("--plot", options->plot, "Draw compare.png (python3 + matplotlib)");
+  sub->add_flag("--json", options->json, "Print one JSON object instead of the table");
+  sub->add_flag("--no-refit", options->no_refit, "Only simulate the paper's mu_k");
+  return Command{sub, [options, &global] { return run_compare_command(*options, global); }};
+}
+
+}  // namespace fl::cli

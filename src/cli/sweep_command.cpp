@@ -1,0 +1,272 @@
+// frictionlab sweep SWEEP.yaml: every point of a sweep, in parallel on the local cores (or across
+// MPI ranks under mpirun), resumable; and frictionlab merge DIR...: shards joined.
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/plot_script.hpp"
+#include "cli/scene_options.hpp"
+#include "lab/sweep_run.hpp"
+
+namespace fl::cli {
+namespace {
+
+// Set by SIGINT/SIGTERM: hand out no more points. A second signal ends the process at once.
+std::atomic<bool> g_stop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_stop_signal(int signal) {
+  if (g_stop.exchange(true)) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+  }
+}
+
+// Installs the handlers for the life of a sweep, and restores the old ones after.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop = false;
+    old_int_ = std::signal(SIGINT, on_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_stop_signal);
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  void (*old_int_)(int) = SIG_DFL;
+  void (*old_term_)(int) = SIG_DFL;
+};
+
+std::string clock_text(double seconds) {
+  const long s = std::lround(std::max(0.0, seconds));
+  if (s >= 3600) return fmt::format("{}:{:02d}:{:02d}", s / 3600, (s / 60) % 60, s % 60);
+  return fmt::format("{}:{:02d}", s / 60, s % 60);
+}
+
+// Progress on stderr: a bar redrawn in place on a terminal, plain lines (at most one a second)
+// otherwise.
+class ProgressReport {
+ public:
+  explicit ProgressReport(std::string name) : name_(std::move(name)), tty_(isatty(2) == 1) {}
+
+  void operator()(const SweepProgress& p) {
+    const std::size_t ran = p.done - p.resumed;
+    const double rate = p.elapsed_s > 0.0 ? static_cast<double>(ran) / p.elapsed_s : 0.0;
+    const std::size_t left = p.total - p.done;
+    const std::string eta =
+        rate > 0.0 ? clock_text(static_cast<double>(left) / rate) : std::string("?");
+    const std::string failed = p.failed ? fmt::format(", {} failed", p.failed) : "";
+    const std::string stopping = p.stopping ? "  stopping: finishing the running points" : "";
+    if (tty_) {
+      constexpr int kWidth = 28;
+      const int filled =
+          p.total ? static_cast<int>(kWidth * static_cast<double>(p.done) / p.total) : kWidth;
+      fmt::print(stderr, "\r\033[K{} [{}{}] {}/{} points  {:.1f} points/s  {} left{}{}", name_,
+                 std::string(filled, '#'), std::string(kWidth - filled, '.'), p.done, p.total, rate,
+                 eta, failed, stopping);
+      drawn_ = true;
+    } else if (p.done != last_done_ && p.done > p.resumed &&
+               (p.done == p.total || p.elapsed_s - last_line_ >= 1.0)) {
+      fmt::print(stderr, "sweep {}: {}/{} points, {:.1f} points/s, {} left{}{}\n", name_, p.done,
+                 p.total, rate, eta, failed, stopping);
+      last_line_ = p.elapsed_s;
+      last_done_ = p.done;
+    } else if (p.stopping && !said_stopping_) {
+      fmt::print(stderr, "sweep {}: interrupted; finishing the running points\n", name_);
+      said_stopping_ = true;
+    }
+    std::fflush(stderr);
+  }
+  void end() {
+    if (tty_ && drawn_) fmt::print(stderr, "\n");
+  }
+
+ private:
+  std::string name_;
+  bool tty_ = false;
+  bool drawn_ = false;
+  bool said_stopping_ = false;
+  double last_line_ = -1e9;
+  std::size_t last_done_ = static_cast<std::size_t>(-1);
+};
+
+std::vector<std::string> plot_sweep(const std::string& dir) {
+  namespace fs = std::filesystem;
+  run_plot_script("plot_sweep.py", {(fs::path(dir) / "results.csv").string(),
+                                    (fs::path(dir) / "sweep.json").string(), dir});
+  std::vector<std::string> pngs;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".png") pngs.push_back(entry.path().string());
+  std::sort(pngs.begin(), pngs.end());
+  return pngs;
+}
+
+std::string counts_text(const std::map<std::string, int>& counts) {
+  std::string out;
+  for (const auto& [key, n] : counts)
+    if (n > 0) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, key);
+  return out.empty() ? "none" : out;
+}
+
+struct SweepCommandOptions {
+  std::string file;
+  int workers = 0;
+  std::string out;
+  bool plot = false;
+  std::string shard;
+  bool json = false;
+  bool fresh = false;
+};
+
+int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global) {
+  const SceneSources sources = scene_sources(global);
+  const SceneInputs inputs{sources.paper, sources.parts};
+  const SweepSpec spec = load_sweep_file(o.file, inputs);
+  SweepRunOptions options;
+  options.out_dir = o.out.empty() ? "out/sweep/" + spec.name : o.out;
+  options.workers = o.workers;
+  if (!o.shard.empty()) options.shard = parse_shard(o.shard);
+  options.fresh = o.fresh;
+  options.inputs = inputs;
+  options.stop = &g_stop;
+  const std::string label =
+      options.shard ? fmt::format("{} (shard {}/{})", spec.name, options.shard->k, options.shard->n)
+                    : spec.name;
+  ProgressReport report(label);
+  options.progress = [&report](const SweepProgress& p) { report(p); };
+
+  SweepOutcome outcome;
+  {
+    StopSignals signals;
+    outcome = run_sweep(spec, options);
+  }
+  report.end();
+  if (!outcome.root) return 0;
+
+  std::vector<std::string> pngs;
+  if (o.plot && outcome.complete) pngs = plot_sweep(options.out_dir);
+  if (o.json) {
+    nlohmann::json j{{"sweep", spec.name},
+                     {"out", options.out_dir},
+                     {"points", outcome.points},
+                     {"selected", outcome.selected},
+                     {"resumed", outcome.resumed},
+                     {"ran", outcome.ran},
+                     {"interrupted", outcome.interrupted},
+                     {"complete", outcome.complete},
+                     {"status", outcome.status},
+                     {"regimes", outcome.regimes},
+                     {"workers", outcome.workers},
+                     {"ranks", outcome.ranks},
+                     {"wall_s", outcome.wall_s},
+                     {"files", outcome.files},
+                     {"plots", pngs}};
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    fmt::print(
+        "frictionlab sweep: {} ({} points{}; {} worker{} x {} rank{})\n", spec.name, outcome.points,
+        options.shard
+            ? fmt::format(", shard {}/{}: {}", options.shard->k, options.shard->n, outcome.selected)
+            : "",
+        outcome.workers, outcome.workers == 1 ? "" : "s", outcome.ranks,
+        outcome.ranks == 1 ? "" : "s");
+    fmt::print("  ran {} point{} in {:.2f} s ({:.2f} points/s){}\n", outcome.ran,
+               outcome.ran == 1 ? "" : "s", outcome.wall_s,
+               outcome.wall_s > 0 ? outcome.ran / outcome.wall_s : 0.0,
+               outcome.resumed ? fmt::format("; {} were already done", outcome.resumed) : "");
+    if (outcome.interrupted)
+      fmt::print(
+          "  interrupted: {} of the {} points are done; run the same command again to "
+          "finish\n",
+          outcome.resumed + outcome.ran, outcome.selected);
+    if (outcome.complete) {
+      fmt::print("  status: {}\n", counts_text(outcome.status));
+      fmt::print("  regimes: {}\n", counts_text(outcome.regimes));
+      for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
+      for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
+    } else if (!outcome.interrupted) {
+      fmt::print(
+          "  this shard is done; when every shard is, join them: frictionlab merge DIR...\n");
+    }
+  }
+  return outcome.interrupted ? 130 : 0;
+}
+
+struct MergeCommandOptions {
+  std::vector<std::string> dirs;
+  std::string out;
+  bool plot = false;
+  bool json = false;
+};
+
+int run_merge_command(const MergeCommandOptions& o) {
+  const std::string out = o.out.empty() ? o.dirs.front() : o.out;
+  const MergeOutcome outcome = merge_sweeps(o.dirs, out);
+  std::vector<std::string> pngs;
+  if (o.plot) pngs = plot_sweep(out);
+  if (o.json) {
+    fmt::print("{}\n", nlohmann::json{{"out", out},
+                                      {"points", outcome.points},
+                                      {"status", outcome.status},
+                                      {"files", outcome.files},
+                                      {"plots", pngs}}
+                           .dump(2));
+    return 0;
+  }
+  fmt::print("frictionlab merge: {} folder{} -> {} ({} points; {})\n", o.dirs.size(),
+             o.dirs.size() == 1 ? "" : "s", out, outcome.points, counts_text(outcome.status));
+  for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
+  for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
+  return 0;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<SweepCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "sweep", "Run every point of a sweep file in parallel (resumable; MPI under mpirun)");
+  sub->add_option("sweep", options->file, "Sweep file (scenes/sweeps/*.yaml)")->required();
+  sub->add_option("-j,--jobs", options->workers,
+                  "Worker threads (default: every core; under MPI: the cores per rank)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option(
+      "--out", options->out,
+      "Folder for plan.json, points/, results.csv, sweep.json (default out/sweep/NAME)");
+  sub->add_flag("--plot", options->plot, "Draw the sweep's PNG plots (python3 + matplotlib)");
+  sub->add_option("--shard", options->shard,
+                  "Run shard K of N (points whose index % N == K-1), e.g. 2/8; join with merge");
+  sub->add_flag("--json", options->json, "Print one JSON object instead of the summary");
+  sub->add_flag("--fresh", options->fresh, "Discard the folder's earlier results and start over");
+  return Command{sub, [options, &global] { return run_sweep_command(*options, global); }};
+}
+
+Command add_merge_command(CLI::App& app, const GlobalOptions& /*global*/) {
+  auto options = std::make_shared<MergeCommandOptions>();
+  CLI::App* sub =
+      app.add_subcommand("merge", "Join the shards of a sweep (folders of --shard runs)");
+  sub->add_option("dirs", options->dirs, "Sweep folders (each with plan.json and points/)")
+      ->required();
+  sub->add_option("--out", options->out, "Folder for the joined results (default: the first)");
+  sub->add_flag("--plot", options->plot, "Draw the sweep's PNG plots (python3 + matplotlib)");
+  sub->add_flag("--json", options->json, "Print one JSON object instead of the summary");
+  return Command{sub, [options] { return run_merge_command(*options); }};
+}
+
+}  // namespace fl::cli

@@ -1,0 +1,256 @@
+// frictionlab sweep, merge and compare from the command line: a sweep killed with SIGKILL (or
+// stopped with SIGINT) part-way and started again ends with the same bytes as an uninterrupted
+// one; the same under mpirun; shards and merge; plots; exit status 2 for bad sweep files.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.hpp"
+
+extern char** environ;
+
+namespace fl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kExe = FRICTIONLAB_EXE;
+const std::string kSource = FRICTIONLAB_TEST_SOURCE_DIR;
+
+fs::path folder(const std::string& name) {
+  const fs::path dir = fs::path(FRICTIONLAB_TEST_BINARY_DIR) / "cli-sweep-test" /
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir.parent_path());
+  return dir;
+}
+
+// A sweep file in a test folder, reading the minimal scene by its absolute path.
+std::string write_sweep(const fs::path& dir, const std::string& axes, const std::string& duration) {
+  fs::create_directories(dir);
+  const fs::path file = dir / "sweep.yaml";
+  std::ofstream(file) << "format: 1\nname: test\nscene: " << kSource
+                      << "/scenes/minimal.yaml\nset:\n  world.duration: " << duration << "\naxes:\n"
+                      << axes;
+  return file.string();
+}
+
+// Twelve points of 20 simulated seconds: long enough to kill the sweep part-way.
+const std::string kTwelve =
+    "  - material: [lego, cardboard, plexiglas]\n"
+    "  - key: rollers.spacing\n    values: [70 mm, 89 mm, 110 mm, 130 mm]\n";
+
+test::CommandResult lab(const std::string& args) {
+  return test::run_command(kExe + " " + args);
+}
+
+void expect_same_final_files(const fs::path& a, const fs::path& b) {
+  for (const char* file : {"results.csv", "sweep.json"}) {
+    const std::string text = test::read_text(a / file);
+    EXPECT_FALSE(text.empty()) << a / file;
+    EXPECT_TRUE(text == test::read_text(b / file))
+        << file << " differs between " << a << " and " << b;
+  }
+}
+
+std::size_t point_files(const fs::path& dir) {
+  std::size_t n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir / "points", ec))
+    if (e.path().extension() == ".json") ++n;
+  return n;
+}
+
+// Starts `frictionlab sweep` as a child process (output to /dev/null).
+pid_t start_sweep(const std::vector<std::string>& args) {
+  std::vector<std::string> storage{kExe, "sweep"};
+  storage.insert(storage.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : storage) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, kExe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  EXPECT_EQ(rc, 0);
+  return pid;
+}
+
+// Waits until the sweep has finished `n` points (or gives up after a minute).
+bool wait_for_points(const fs::path& dir, std::size_t n) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (point_files(dir) >= n) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return false;
+}
+
+TEST(CliSweep, KilledPartWayAndResumedGivesTheSameBytes) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kTwelve, "20 s");
+  const fs::path reference = base / "reference", killed = base / "killed";
+  const auto r = lab("sweep " + file + " -j 1 --out " + reference.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+
+  const pid_t pid = start_sweep({file, "-j", "2", "--out", killed.string()});
+  ASSERT_TRUE(wait_for_points(killed, 3));
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  const std::size_t done = point_files(killed);
+  ASSERT_LT(done, 12u) << "the sweep finished before it could be killed";
+  EXPECT_FALSE(fs::exists(killed / "results.csv"));
+
+  // The same command again: skips the points done, finishes the rest.
+  const auto again = lab("sweep " + file + " -j 2 --out " + killed.string() + " --json");
+  ASSERT_EQ(again.status, 0) << again.err;
+  const auto j = nlohmann::json::parse(again.out);
+  EXPECT_EQ(j["resumed"].get<std::size_t>(), done);
+  EXPECT_EQ(j["ran"].get<std::size_t>(), 12u - done);
+  EXPECT_TRUE(j["complete"].get<bool>());
+  expect_same_final_files(reference, killed);
+}
+
+TEST(CliSweep, SigintStopsCleanlyAndTheSweepResumes) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kTwelve, "20 s");
+  const fs::path reference = base / "reference", stopped = base / "stopped";
+  ASSERT_EQ(lab("sweep " + file + " -j 2 --out " + reference.string()).status, 0);
+  const pid_t pid = start_sweep({file, "-j", "1", "--out", stopped.string()});
+  ASSERT_TRUE(wait_for_points(stopped, 2));
+  kill(pid, SIGINT);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_LT(point_files(stopped), 12u);
+  ASSERT_EQ(lab("sweep " + file + " --out " + stopped.string()).status, 0);
+  expect_same_final_files(reference, stopped);
+}
+
+TEST(CliSweep, MpiRanksWriteTheSameFileAsOneProcess) {
+  if (!FRICTIONLAB_TEST_MPI) GTEST_SKIP() << "built without MPI";
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kTwelve, "4 s");
+  const fs::path single = base / "single", ranks = base / "mpi";
+  ASSERT_EQ(lab("sweep " + file + " -j 1 --out " + single.string()).status, 0);
+  // As root, Open MPI's mpirun needs these; the sanitizers' leak check knows nothing of MPI's
+  // lifetime allocations.
+  const auto r = test::run_command(
+      "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ASAN_OPTIONS=detect_leaks=0 " +
+      std::string(FRICTIONLAB_TEST_MPIEXEC) + " -np 2 --oversubscribe " + kExe + " sweep " + file +
+      " --out " + ranks.string() + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);  // rank 0 alone prints
+  EXPECT_EQ(j["ranks"], 2);
+  EXPECT_EQ(j["ran"], 12);
+  expect_same_final_files(single, ranks);
+  const auto timing = nlohmann::json::parse(test::read_text(ranks / "timing.json"));
+  ASSERT_EQ(timing["ran_by_rank"].size(), 2u);
+  EXPECT_EQ(timing["ran_by_rank"][0].get<int>() + timing["ran_by_rank"][1].get<int>(), 12);
+}
+
+TEST(CliSweep, ShardsAndMerge) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kTwelve, "2 s");
+  ASSERT_EQ(lab("sweep " + file + " --out " + (base / "whole").string()).status, 0);
+  std::string dirs;
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path d = base / ("shard" + std::to_string(k));
+    const auto r =
+        lab("sweep " + file + " --shard " + std::to_string(k) + "/3 --out " + d.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("this shard is done"), std::string::npos) << r.out;
+    dirs += " " + d.string();
+  }
+  const auto m = lab("merge" + dirs + " --out " + (base / "merged").string());
+  ASSERT_EQ(m.status, 0) << m.err;
+  EXPECT_NE(m.out.find("12 points; 12 ok"), std::string::npos) << m.out;
+  expect_same_final_files(base / "whole", base / "merged");
+  const auto partial =
+      lab("merge " + (base / "shard1").string() + " --out " + (base / "partial").string());
+  EXPECT_EQ(partial.status, 2);
+  EXPECT_NE(partial.err.find("missing: 1, 2, 4, 5"), std::string::npos) << partial.err;
+  EXPECT_EQ(lab("sweep " + file + " --shard 4/3").status, 2);
+}
+
+TEST(CliSweep, PlotsAreDrawn) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(
+      base,
+      "  - material: [lego, rigid-foam]\n  - {key: rollers.spacing, from: 60 mm, to: 120 mm, "
+      "steps: 3}\n",
+      "2 s");
+  const auto r = lab("sweep " + file + " --plot --out " + (base / "out").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* png : {"period-vs-spacing.png", "mu-recovered.png", "map.png"}) {
+    EXPECT_TRUE(fs::exists(base / "out" / png)) << png;
+    EXPECT_NE(r.out.find(png), std::string::npos) << r.out;
+  }
+}
+
+TEST(CliSweep, BadSweepFilesExitWithStatusTwo) {
+  const fs::path base = folder("");
+  fs::create_directories(base);
+  std::ofstream(base / "bad.yaml") << "format: 1\nscene: " << kSource
+                                   << "/scenes/minimal.yaml\naxes:\n  - {key: rollers.spaceing, "
+                                      "values: [1 mm]}\n";
+  const auto r = lab("sweep " + (base / "bad.yaml").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("bad.yaml:4:5: error: axis rollers.spaceing"), std::string::npos) << r.err;
+  EXPECT_EQ(lab("sweep /nonexistent.yaml").status, 2);
+  EXPECT_EQ(lab("merge " + base.string()).status, 2);  // not a sweep folder
+}
+
+TEST(CliCompare, EveryRowOfTableOneIsReported) {
+  const fs::path out = folder("out");
+  const auto r = lab("compare --duration 5s --json --plot --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["rows"].size(), 15u);
+  int room = 0, cold = 0;
+  for (const auto& row : j["rows"]) {
+    (row["temperature_k"].get<double>() > 200 ? room : cold) += 1;
+    if (row["material"] == "flexible-foam" && row["temperature_k"].get<double>() > 200) {
+      EXPECT_EQ(row["status"], "no oscillation");
+      EXPECT_FALSE(row["reason"].get<std::string>().empty());
+      EXPECT_TRUE(row["mu_k_refit"].is_null());
+      continue;
+    }
+    EXPECT_EQ(row["status"], "compared") << row["material"];
+    EXPECT_TRUE(row["mu_k_refit"].is_number()) << row["material"];
+    EXPECT_NEAR(row["residual_sigma"].get<double>(),
+                (row["period_simulated_s"].get<double>() - row["period_measured_s"].get<double>()) /
+                    row["period_measured_err_s"].get<double>(),
+                1e-12);
+  }
+  EXPECT_EQ(room, 10);
+  EXPECT_EQ(cold, 5);
+  for (const char* file : {"compare.csv", "compare.json", "compare.png"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  const auto table = lab("compare --duration 3s --no-refit --out " + out.string());
+  ASSERT_EQ(table.status, 0) << table.err;
+  EXPECT_NE(table.out.find("Polyurethane flexible foam   300 K     0.13 +- 0.01  no oscillation"),
+            std::string::npos)
+      << table.out;
+}
+
+}  // namespace
+}  // namespace fl

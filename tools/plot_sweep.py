@@ -1,0 +1,261 @@
+#!/usr/bin/env python3
+"""Draws a frictionlab sweep's plots from its results.csv and sweep.json, as the sweep calls for:
+
+  period-vs-spacing.png  T +- dT against the roller spacing l, the analytic thin and thick curves
+                         over it, and the error against the thick curve below (when l varies)
+  mu-recovered.png       mu_k recovered (thin and thick formulas) against mu_k set (when mu_k varies)
+  roller-speed.png       amplitude and period against the rollers' speed, by regime, with the
+                         analytic slip threshold (when the roller speed varies)
+  map.png                the error against the thick curve over the first two axes, regimes marked
+                         (when two axes have more than one value)
+  axis.png               the period against the only axis (when none of the above applies)
+
+Usage: plot_sweep.py results.csv sweep.json OUTDIR"""
+import csv
+import json
+import math
+import os
+import sys
+import tempfile
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+REGIME_COLOURS = {"oscillates": "tab:blue", "sticks": "tab:orange", "tips": "tab:red",
+                  "no restoring force": "tab:purple", "lost": "tab:brown"}
+
+
+def number(row, key):
+    v = row.get(key, "")
+    try:
+        return float(v) if v != "" else None
+    except ValueError:
+        return None
+
+
+def save(fig, path):
+    # Written atomically: a temporary file beside the target, then renamed.
+    fd, tmp = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(path)))
+    os.close(fd)
+    fig.savefig(tmp, dpi=110)
+    plt.close(fig)
+    os.replace(tmp, path)
+
+
+def distinct(rows, key):
+    return sorted({number(r, key) for r in rows if number(r, key) is not None})
+
+
+def group_key(row, axes, leave_out):
+    return tuple(row[a["name"]] for a in axes if a["name"] not in leave_out)
+
+
+def period_thin(l, mu, g):
+    return math.pi * math.sqrt(2 * l / (mu * g))
+
+
+def period_thick(l, mu, h, g):
+    return math.pi * math.sqrt(2 * (l - 2 * mu * h) / (mu * g)) if l > 2 * mu * h else float("nan")
+
+
+def plot_spacing(rows, meta, out):
+    axes = meta["axes"]
+    spacing_axes = [a["name"] for a in axes if a.get("key") == "rollers.spacing"]
+    groups = {}
+    for r in rows:
+        groups.setdefault(group_key(r, axes, spacing_axes), []).append(r)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True,
+                                      gridspec_kw={"height_ratios": [3, 1.4]})
+    for n, (key, members) in enumerate(sorted(groups.items())):
+        colour = f"C{n % 10}"
+        pts = sorted((number(r, "spacing_m"), number(r, "period_s"), number(r, "period_std_s"),
+                      number(r, "error_vs_thick")) for r in members if number(r, "period_s"))
+        label = ", ".join(key) if key else meta["sweep"]
+        mu = number(members[0], "mu_k_set")
+        h = number(members[0], "h_c_m")
+        g = number(members[0], "gravity_m_s2") or 9.81
+        if pts:
+            top.errorbar([p[0] * 1e3 for p in pts], [p[1] for p in pts], yerr=[p[2] or 0 for p in pts],
+                         fmt="o", ms=3.5, color=colour, label=f"{label} (mu_k {mu:g}): T +- dT")
+            bottom.plot([p[0] * 1e3 for p in pts], [100 * p[3] for p in pts], "o", ms=3.5, color=colour)
+        ls = sorted(distinct(members, "spacing_m"))
+        if ls and mu:
+            fine = [ls[0] + (ls[-1] - ls[0]) * i / 200 for i in range(201)]
+            top.plot([l * 1e3 for l in fine], [period_thick(l, mu, h, g) for l in fine], "-",
+                     color=colour, lw=1, alpha=0.8)
+            top.plot([l * 1e3 for l in fine], [period_thin(l, mu, g) for l in fine], "--",
+                     color=colour, lw=1, alpha=0.6)
+    top.plot([], [], "k-", lw=1, label="thick plate: π √(2 (l − 2 μ h_c) / (μ g))")
+    top.plot([], [], "k--", lw=1, label="thin plate (the paper): π √(2 l / (μ g))")
+    top.set_ylabel("period T [s]")
+    top.set_title(f"{meta['sweep']}: period against roller spacing")
+    top.grid(True, alpha=0.3)
+    top.legend(fontsize=8)
+    bottom.axhspan(-0.05, 0.05, color="tab:green", alpha=0.12, label="±0.05 %")
+    bottom.axhline(0, color="k", lw=0.8)
+    bottom.set_xlabel("roller spacing l [mm]")
+    bottom.set_ylabel("T / T_thick − 1 [%]")
+    bottom.grid(True, alpha=0.3)
+    bottom.legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    save(fig, os.path.join(out, "period-vs-spacing.png"))
+
+
+def plot_mu(rows, meta, out):
+    pts = [(number(r, "mu_k_set"), number(r, "mu_k_recovered"), number(r, "mu_k_recovered_thick"),
+            number(r, "mu_k_err_worst")) for r in rows if number(r, "mu_k_recovered")]
+    fig, ax = plt.subplots(figsize=(6.5, 6))
+    if pts:
+        ax.errorbar([p[0] for p in pts], [p[1] for p in pts], yerr=[p[3] or 0 for p in pts], fmt="o",
+                    ms=4, capsize=2, label="recovered, thin formula (the paper's) ± worst case")
+        ax.plot([p[0] for p in pts], [p[2] for p in pts], "x", ms=6, color="k",
+                label="recovered, thick formula with h_c")
+    failed = [r for r in rows if not number(r, "mu_k_recovered") and number(r, "mu_k_set")]
+    for r in failed:
+        ax.axvline(number(r, "mu_k_set"), color=REGIME_COLOURS.get(r["regime"], "grey"), ls=":", lw=1)
+    if failed:
+        ax.plot([], [], ":", color="grey", label="no period (regime marked by colour)")
+    values = [p[0] for p in pts] + [number(r, "mu_k_set") for r in failed]
+    if values:
+        lo, hi = min(values), max(values)
+        ax.plot([lo, hi], [lo, hi], "k-", lw=0.8, alpha=0.6, label="recovered = set")
+        if hi / lo > 8:
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+    ax.set_xlabel("μ_k set in the scene")
+    ax.set_ylabel("μ_k recovered from the rig's estimator")
+    ax.set_title(f"{meta['sweep']}: μ_k recovered against μ_k set")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, os.path.join(out, "mu-recovered.png"))
+
+
+def plot_roller_speed(rows, meta, out):
+    rpm = 60 / (2 * math.pi)
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for regime in sorted({r["regime"] for r in rows if r["regime"]}):
+        members = [r for r in rows if r["regime"] == regime]
+        colour = REGIME_COLOURS.get(regime, "grey")
+        top.plot([number(r, "roller_speed_rad_s") * rpm for r in members],
+                 [1e3 * (number(r, "amplitude_end_m") or float("nan")) for r in members], "o", ms=4,
+                 color=colour, label=regime)
+        with_period = [r for r in members if number(r, "period_s")]
+        bottom.plot([number(r, "roller_speed_rad_s") * rpm for r in with_period],
+                    [number(r, "period_s") for r in with_period], "o", ms=4, color=colour, label=regime)
+    thresholds = sorted(t for t in (number(r, "slip_threshold_rad_s") for r in rows) if t)
+    if thresholds:
+        t = thresholds[len(thresholds) // 2] * rpm
+        for ax in (top, bottom):
+            ax.axvline(t, color="k", ls="--", lw=1)
+        top.plot([], [], "k--", lw=1, label=f"slip condition a ω_r = A ω: {t:.0f} rpm")
+    thick = sorted(t for t in (number(r, "period_thick_s") for r in rows) if t)
+    if thick:
+        bottom.axhline(thick[len(thick) // 2], color="k", lw=0.8, alpha=0.6, label="thick-plate T")
+    axis = next((a for a in meta["axes"] if a.get("key") == "rollers.speed"), None)
+    if axis and axis.get("scale") == "log":
+        top.set_xscale("log")
+    top.set_ylabel("amplitude at the end [mm]")
+    top.set_title(f"{meta['sweep']}: the slip threshold")
+    top.grid(True, which="both", alpha=0.3)
+    top.legend(fontsize=8)
+    bottom.set_xlabel("roller speed [rpm]")
+    bottom.set_ylabel("period T [s] (oscillating runs)")
+    bottom.grid(True, which="both", alpha=0.3)
+    bottom.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, os.path.join(out, "roller-speed.png"))
+
+
+def axis_positions(axis):
+    numbers = axis.get("numbers") or []
+    if numbers and all(n is not None for n in numbers):
+        return {v: n for v, n in zip(axis["values"], numbers)}, True
+    return {v: i for i, v in enumerate(axis["values"])}, False
+
+
+def plot_map(rows, meta, out, a, b):
+    xa, xnum = axis_positions(a)
+    ya, ynum = axis_positions(b)
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    xs = [xa[r[a["name"]]] for r in rows]
+    ys = [ya[r[b["name"]]] for r in rows]
+    errs = [100 * (number(r, "error_vs_thick") if number(r, "error_vs_thick") is not None else float("nan"))
+            for r in rows]
+    finite = [abs(e) for e in errs if not math.isnan(e)]
+    lim = max(finite) if finite else 1.0
+    sc = ax.scatter(xs, ys, c=errs, cmap="coolwarm", vmin=-lim, vmax=lim, s=90, marker="s")
+    fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
+    for x, y, r in zip(xs, ys, rows):
+        if r["regime"] != "oscillates" or r["status"] != "ok":
+            mark = r["regime"] or r["status"]
+            ax.scatter([x], [y], s=90, marker="s", color=REGIME_COLOURS.get(r["regime"], "lightgrey"))
+            ax.annotate(mark[:1], (x, y), ha="center", va="center", fontsize=7, color="white")
+    ax.set_xlabel(a["name"] + (f" [{a['unit']}]" if xnum and a.get("unit") else ""))
+    ax.set_ylabel(b["name"] + (f" [{b['unit']}]" if ynum and b.get("unit") else ""))
+    if not xnum:
+        ax.set_xticks(list(xa.values()), list(xa.keys()), rotation=30, ha="right", fontsize=8)
+    if not ynum:
+        ax.set_yticks(list(ya.values()), list(ya.keys()), fontsize=8)
+    if a.get("scale") == "log":
+        ax.set_xscale("log")
+    if b.get("scale") == "log":
+        ax.set_yscale("log")
+    ax.set_title(f"{meta['sweep']}: error against the thick-plate formula "
+                 "(letters: regimes other than oscillating)")
+    fig.tight_layout()
+    save(fig, os.path.join(out, "map.png"))
+
+
+def plot_axis(rows, meta, out, a):
+    pos, numeric = axis_positions(a)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for regime in sorted({r["regime"] or r["status"] for r in rows}):
+        members = [r for r in rows if (r["regime"] or r["status"]) == regime and number(r, "period_s")]
+        ax.errorbar([pos[r[a["name"]]] for r in members], [number(r, "period_s") for r in members],
+                    yerr=[number(r, "period_std_s") or 0 for r in members], fmt="o", ms=4,
+                    color=REGIME_COLOURS.get(regime, "grey"), label=regime)
+    thick = [(pos[r[a["name"]]], number(r, "period_thick_s")) for r in rows if number(r, "period_thick_s")]
+    ax.plot([t[0] for t in thick], [t[1] for t in thick], "k_", ms=12, label="thick-plate T")
+    if not numeric:
+        ax.set_xticks(list(pos.values()), list(pos.keys()), rotation=30, ha="right", fontsize=8)
+    if a.get("scale") == "log":
+        ax.set_xscale("log")
+    ax.set_xlabel(a["name"] + (f" [{a['unit']}]" if numeric and a.get("unit") else ""))
+    ax.set_ylabel("period T [s]")
+    ax.set_title(f"{meta['sweep']}: period against {a['name']}")
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    save(fig, os.path.join(out, "axis.png"))
+
+
+def main(csv_path, json_path, out):
+    with open(csv_path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    with open(json_path) as f:
+        meta = json.load(f)
+    drawn = 0
+    if len(distinct(rows, "spacing_m")) > 1:
+        plot_spacing(rows, meta, out)
+        drawn += 1
+    if len(distinct(rows, "mu_k_set")) > 1:
+        plot_mu(rows, meta, out)
+        drawn += 1
+    if len(distinct(rows, "roller_speed_rad_s")) > 1:
+        plot_roller_speed(rows, meta, out)
+        drawn += 1
+    varied = [a for a in meta["axes"] if len(a["values"]) > 1]
+    if len(varied) >= 2:
+        plot_map(rows, meta, out, varied[0], varied[1])
+        drawn += 1
+    if drawn == 0 and varied:
+        plot_axis(rows, meta, out, varied[0])
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 4:
+        sys.exit(__doc__)
+    main(*sys.argv[1:])

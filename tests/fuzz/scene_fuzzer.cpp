@@ -17,13 +17,20 @@ const fl::PaperTable& table() {
   return t;
 }
 
+const fl::assets::PartCatalog& parts() {
+  static const fl::assets::PartCatalog c =
+      fl::assets::load_part_catalog(fl::assets::part_catalog_path(FRICTIONLAB_ASSET_DIR));
+  return c;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   try {
-    const fl::Scene scene = fl::load_scene_text(text, "fuzz.yaml", {},
-                                                []() -> const fl::PaperTable& { return table(); });
+    const fl::Scene scene = fl::load_scene_text(
+        text, "fuzz.yaml", {}, []() -> const fl::PaperTable& { return table(); },
+        []() -> const fl::assets::PartCatalog& { return parts(); });
     (void)scene;
   } catch (const fl::InputError&) {
     // A refused input: expected.

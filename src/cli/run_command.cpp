@@ -1,6 +1,9 @@
 // frictionlab run SCENE: one simulation of a scene, summarised against the analytic model.
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -9,9 +12,11 @@
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/scene_options.hpp"
+#include "io/input_error.hpp"
 #include "lab/experiment.hpp"
 #include "lab/run_outputs.hpp"
 #include "lab/step_choice.hpp"
+#include "lab/video_recorder.hpp"
 
 namespace fl::cli {
 namespace {
@@ -21,7 +26,29 @@ struct RunCommandOptions {
   std::string out;
   std::string accuracy;
   bool json = false;
+  // Frames of the run (--video, --frames, --still and their settings).
+  VideoRequest video;
+  std::string size;
+  std::string slow_motion;
+  std::string camera;
 };
+
+void print_video(const VideoReport& v, const VideoRequest& request) {
+  fmt::print(
+      "  video                  {} frames ({} title), {}x{} at {} fps, slow motion x{:g}, "
+      "camera {}\n",
+      v.frames, v.title_frames, v.width, v.height, v.fps, v.slow_motion, v.camera);
+  fmt::print(
+      "  rendering              {:.2f} s drawing, {:.2f} s set-up, {:.2f} s to finish; "
+      "{} triangles a frame (LEGO frame {} of {})\n",
+      v.render_seconds, v.setup_seconds, v.finish_seconds, v.triangles, v.frame_triangles,
+      v.frame_triangles_full);
+  for (const auto& [label, path] :
+       {std::pair{"video file", request.video}, std::pair{"frames", request.frames},
+        std::pair{"still", request.still}}) {
+    if (!path.empty()) fmt::print("  {:<22} {}\n", label, path);
+  }
+}
 
 int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   Scene scene = load_scene_with_options(o.scene, global);
@@ -35,8 +62,34 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   RunOptions options;
   options.record_trajectory = !o.out.empty() && scene.output.trajectory;
   options.record_hall = !o.out.empty() && scene.output.hall;
+  // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.
+  std::unique_ptr<VideoRecorder> recorder;
+  if (o.video.any()) {
+    VideoRequest request = o.video;
+    request.asset_dir = resolve_asset_dir(global.asset_dir);
+    if (!o.size.empty()) {
+      request.size = parse_video_size(o.size);
+      if (!request.size)
+        throw InputError(
+            SourceLocation{"--size", 0, 0},
+            "expected WIDTHxHEIGHT in pixels (e.g. 1280x720), found \"" + o.size + "\"");
+    }
+    if (!o.slow_motion.empty())
+      request.slow_motion =
+          option_quantity(o.slow_motion, Dimension::kDimensionless, "--slow-motion");
+    if (!o.camera.empty()) request.camera = o.camera;
+    try {
+      recorder = std::make_unique<VideoRecorder>(scene, request);
+    } catch (const VideoUnavailable& e) {
+      fmt::print(stderr, "error: {}\n", e.what());
+      return 2;
+    }
+    options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
+  }
   RunRecording recording;
   const RunSummary summary = run_experiment(scene, options, &recording);
+  std::optional<VideoReport> video;
+  if (recorder) video = recorder->finish();
   if (!o.out.empty()) write_run_outputs(o.out, scene, summary, recording);
   if (o.json) {
     nlohmann::json j = summary_json(summary);
@@ -45,6 +98,7 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   } else {
     fmt::print("{}", summary_text(summary));
     if (!o.out.empty()) fmt::print("  outputs                {}/\n", o.out);
+    if (video) print_video(*video, o.video);
   }
   // A guard stopped the run: the outputs up to that point are written, and the status says so.
   return summary.failure ? 3 : 0;
@@ -62,6 +116,19 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global) {
       "--accuracy", options->accuracy,
       "Pick the largest time step whose predicted period bias is below this, e.g. 0.01%");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the summary");
+  sub->add_option("--video", options->video.video,
+                  "Write an MP4 (H.264) of the rig with the Hall trace and the estimate");
+  sub->add_option("--frames", options->video.frames,
+                  "Write every frame as DIR/frame_000000.png, ... (earlier frames are replaced)");
+  sub->add_option("--still", options->video.still, "Write the frame at the run's end as a PNG");
+  sub->add_option("--gl", options->video.gl,
+                  "GL back end: osmesa, egl or auto (default: $FRICTIONLAB_GL, then auto)");
+  sub->add_option("--size", options->size,
+                  "Frame size WIDTHxHEIGHT (default: the scene's, 1280x720)");
+  sub->add_option("--fps", options->video.fps, "Frames per second of video (default 30)");
+  sub->add_option("--slow-motion", options->slow_motion,
+                  "Slow-motion factor: 4 renders 4 x fps frames per simulated second (default 1)");
+  sub->add_option("--camera", options->camera, "Camera preset: front, top or sensor");
   return Command{sub, [options, &global] { return run_run(*options, global); }};
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/units.hpp"
+#include "scene/video_yaml.hpp"
 
 namespace fl {
 
@@ -182,6 +183,7 @@ struct Scene {
   std::optional<DriveDesc> drive;  // absent: the ideal drive (rollers.speed)
   std::optional<FrameDesc> frame;  // absent: no frame, no guides, no mesh
   OutputDesc output;
+  std::optional<VideoDesc> video;  // how --video/--frames/--still draw it (video_yaml.hpp)
 };
 
 // Mass properties of the plate as built (slab + payload + blocks + magnets).

@@ -184,7 +184,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   for (const SceneOverride& o : overrides)
     root.set_path(o.path, o.value, "--set " + o.path + "=" + o.value);
   root.allow_keys({"format", "name", "expect", "world", "rollers", "plate", "magnets", "sensor",
-                   "friction", "drive", "frame", "output"});
+                   "friction", "drive", "frame", "output", "video"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
   Scene scene;
@@ -220,6 +220,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   if (auto v = root.find("sensor")) scene.sensor = read_sensor(*v);
   read_friction(root.at("friction"), scene.plate.material, scene.friction, paper);
   if (auto v = root.find("output")) read_output(*v, scene.output);
+  if (auto v = root.find("video")) scene.video = read_video(*v);
 
   const std::vector<SceneProblem> problems = check_scene(scene);
   if (!problems.empty()) {

@@ -1,0 +1,50 @@
+// The video's settings and frame clock: built in every configuration (the command line checks
+// its options with them even in a build without rendering).
+#include <cmath>
+
+#include "io/input_error.hpp"
+#include "lab/video_recorder.hpp"
+
+namespace fl {
+namespace {
+
+void check(const std::string& option, const std::string& problem) {
+  if (!problem.empty()) throw InputError(SourceLocation{option, 0, 0}, problem);
+}
+
+}  // namespace
+
+VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
+  VideoDesc v = scene.video.value_or(VideoDesc{});
+  if (request.size) {
+    v.width = (*request.size)[0];
+    v.height = (*request.size)[1];
+    check("--size", video_size_problem(v.width, v.height));
+  }
+  if (request.fps) {
+    v.fps = *request.fps;
+    check("--fps", video_fps_problem(v.fps));
+  }
+  if (request.slow_motion) {
+    v.slow_motion = *request.slow_motion;
+    check("--slow-motion", video_slow_motion_problem(v.slow_motion));
+  }
+  if (request.camera) {
+    check("--camera", video_camera_problem(*request.camera));
+    v.camera = *request.camera;
+    v.placed.reset();
+  }
+  return v;
+}
+
+std::size_t run_frame_count(const VideoDesc& video, double duration) {
+  const double frames = duration * video.fps * video.slow_motion;
+  // Frames at t_k = k / (fps s) < duration; a product that should be whole is taken as whole.
+  return static_cast<std::size_t>(std::max(0.0, std::ceil(frames - 1e-6)));
+}
+
+std::size_t title_frame_count(const VideoDesc& video) {
+  return video.title ? static_cast<std::size_t>(std::lround(kTitleSeconds * video.fps)) : 0;
+}
+
+}  // namespace fl

@@ -1,0 +1,78 @@
+// What a teaching video shows over the rig: the simulated time and the slow-motion factor, the
+// motor's and the rollers' speeds, a scrolling plot of the Hall signal with the detected pulses
+// marked, the running period and mu_k from the rig's estimator, and what the paper measured;
+// and a title card with the material and the set-up. Sizes are laid out for 640x360 and scale
+// with the frame's height, so the smallest text is 12 px at 640x360.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/units.hpp"
+#include "render/overlay.hpp"
+#include "scene/scene.hpp"
+
+namespace fl::render {
+
+// One Hall sample for the plot.
+struct HallPoint {
+  double t = 0.0;    // s
+  double adc = 0.0;  // ADC counts
+};
+
+// The estimator's running values (the rig's estimator, as the Arduino computes them).
+struct EstimatorValues {
+  int pulses = 0;
+  int periods = 0;                   // periods averaged
+  std::optional<double> period;      // s, mean
+  std::optional<double> period_std;  // s, standard deviation of the periods
+  std::optional<double> mu_k;
+  std::optional<double> mu_k_err;  // worst case, the paper's d mu/mu = dl/l + 2 dT/T
+};
+
+struct RigOverlayState {
+  std::string heading;       // the top bar's text, e.g. "LEGO blocks on PVC rollers, l = 89 mm"
+  double t = 0.0;            // s of simulated time
+  double slow_motion = 1.0;  // the video's slow-motion factor
+  std::optional<double> motor_speed;  // rad/s (scenes with a drive)
+  double roller_speed = 0.0;          // rad/s, |roller 0|
+  // The Hall trace: samples in time order (older ones are not drawn), the ADC's full scale,
+  // the range the plot shows, and the detected pulses' times.
+  std::span<const HallPoint> hall;
+  double hall_window = 2.5;                         // s of simulated time the plot spans
+  std::optional<std::array<double, 2>> hall_range;  // ADC counts shown, bottom to top
+  std::span<const double> pulses;                   // s
+  bool has_sensor = true;
+  EstimatorValues estimator;
+  // What the paper measured for this material, if the scene took mu_k from its table.
+  std::string material;  // "LEGO blocks"
+  std::optional<Measured> paper_period;
+  std::optional<Measured> paper_mu_k;
+};
+
+struct TitleCard {
+  std::string title;
+  std::string subtitle;
+  std::vector<std::string> lines;
+  std::string footer;
+};
+
+// The title card of a scene: the material, the rig's set-up and the video's settings.
+// `material` is the material's name as the paper writes it ("LEGO blocks").
+TitleCard make_title_card(const Scene& scene, const std::string& material, double slow_motion,
+                          int fps);
+
+// Draws the running overlay (time, speeds, Hall plot, T and mu_k) into a width x height frame.
+// Frames smaller than 320x180 get none (its text would be under 6 px), nor a title card.
+void draw_rig_overlay(Overlay& overlay, int width, int height, const RigOverlayState& state);
+
+// Draws the title card over the frame; `opacity` 0..1 fades it.
+void draw_title_card(Overlay& overlay, int width, int height, const TitleCard& card, float opacity);
+
+// "0.794 ± 0.006": the uncertainty to one significant digit (two when it starts with 1 or 2),
+// the value to the same decimals.
+std::string format_plus_minus(double value, double uncertainty);
+
+}  // namespace fl::render

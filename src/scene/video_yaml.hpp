@@ -1,0 +1,56 @@
+// The scene's `video` part: how `frictionlab run --video/--frames/--still` draws the rig (frame
+// size, frame rate, slow motion, camera, orbit, title card). Plain structs with their defaults,
+// and the strict reader of the YAML key. The command line's --size, --fps, --slow-motion and
+// --camera override these values and go through the same checks.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace fl {
+
+class YamlNode;
+
+// A camera placed by hand (instead of a preset).
+struct VideoCameraPlacement {
+  std::array<double, 3> position{0.0, -0.4, 0.15};  // m, world
+  std::array<double, 3> target{0.0, 0.0, 0.0};      // m, world: the point at the frame's centre
+  double fov = 0.6108652381980153;                  // rad, vertical field of view (35 deg)
+};
+
+struct VideoDesc {
+  int width = 1280;              // pixels (even: H.264 in yuv420p)
+  int height = 720;              // pixels (even)
+  int fps = 30;                  // frames per second of video
+  double slow_motion = 1.0;      // factor s: the video shows 1/s simulated seconds per second,
+                                 // rendering fps x s frames per simulated second
+  std::string camera = "front";  // preset: front, top, sensor (see kCameraPresets)
+  std::optional<VideoCameraPlacement> placed;  // a placed camera instead of the preset
+  double orbit = 0.0;                          // rad per second of video, about the vertical
+                                               // through the camera's target
+  bool title = false;  // a title card (kTitleSeconds of video) before the run
+};
+
+// Seconds of video the title card lasts (frames rendered before the run's first frame).
+inline constexpr double kTitleSeconds = 2.0;
+
+// The camera presets: the whole rig from the front (from -y, a little above and to the right),
+// from above, and a close-up on the Hall sensor and the magnet that passes under it.
+inline constexpr std::array<std::string_view, 3> kCameraPresets = {"front", "top", "sensor"};
+
+// Reads `video:`; every error is located at its key. Keys: size ("1280x720" or [1280, 720]),
+// fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title.
+VideoDesc read_video(const YamlNode& node);
+
+// "1280x720" -> {1280, 720}; nothing for anything else.
+std::optional<std::array<int, 2>> parse_video_size(std::string_view text);
+
+// The reason a value is out of range, or empty when it is fine (shared with the command line).
+std::string video_size_problem(int width, int height);
+std::string video_fps_problem(int fps);
+std::string video_slow_motion_problem(double factor);
+std::string video_camera_problem(std::string_view preset);
+
+}  // namespace fl

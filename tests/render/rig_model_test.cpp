@@ -1,0 +1,404 @@
+// The rig renderer's geometry, without GL: the LEGO frame merged with only hidden faces left out,
+// gears whose teeth interleave on their shafts, blur at speed, camera presets that frame the rig,
+// a scene without LEGO parts built without the part index or any mesh; the overlay's numbers and
+// title card; the video's settings and frame clock; the scene's `video` keys.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <numbers>
+#include <string>
+
+#include "io/input_error.hpp"
+#include "lab/video_recorder.hpp"
+#include "render/rig_overlay.hpp"
+#include "render/rig_view.hpp"
+#include "rig_test_support.hpp"
+#include "scene/drive_layout.hpp"
+
+namespace fl::render {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+#define FL_REQUIRE_ASSETS()                                                                    \
+  do {                                                                                         \
+    if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)"; \
+  } while (0)
+
+RigModel paper_rig_model() {
+  assets::MeshLibrary meshes;
+  return build_rig_model(test::paper_rig(), &test::part_catalog(), &meshes);
+}
+
+// A scene with a frame of the given parts (YAML list items) and nothing else special.
+Scene frame_scene(const std::string& parts) {
+  const std::string text = R"(format: 1
+rollers: {spacing: 89 mm, radius: 10 mm}
+plate: {length: 200 mm, thickness: 5 mm, offset: 20 mm}
+friction: {mu_k: 0.3}
+frame:
+  origin: [0 mm, 100 mm, -40 mm]
+  parts:
+)" + parts;
+  return load_scene_text(
+      text, "frame.yaml", {}, []() -> const PaperTable& { return test::paper_table(); },
+      []() -> const assets::PartCatalog& { return test::part_catalog(); });
+}
+
+TEST(RigModel, TheFrameLeavesOutOnlyWhatNoCameraSees) {
+  FL_REQUIRE_ASSETS();
+  const RigModel rig = paper_rig_model();
+  EXPECT_EQ(rig.stats.frame_parts, test::paper_rig().frame->parts.size());
+  // Stacked bricks hide their studs and cavities: about half the frame's triangles go.
+  EXPECT_LT(rig.stats.frame_triangles_drawn, rig.stats.frame_triangles_full * 6 / 10);
+  EXPECT_GT(rig.stats.frame_triangles_drawn, rig.stats.frame_triangles_full * 3 / 10);
+  std::cout << "paper rig: LEGO frame " << rig.stats.frame_triangles_drawn << " of "
+            << rig.stats.frame_triangles_full << " triangles drawn; "
+            << rig.triangles(rest_pose(test::paper_rig()), 0.0) << " in all at rest\n";
+
+  // One brick on the table keeps everything but its underside (cavity and rim) ...
+  const Scene one = frame_scene("    - {part: brick-2x4, at: [0, 0, 0]}\n");
+  assets::MeshLibrary library;
+  const RigModel single = build_rig_model(one, &test::part_catalog(), &library);
+  const std::size_t brick = test::part_catalog().at("brick-2x4").triangles;
+  EXPECT_EQ(single.stats.frame_triangles_full, brick);
+  EXPECT_LT(single.stats.frame_triangles_drawn, brick);
+  // ... its studs among them: the frame's highest point is a stud's top.
+  float top = -1.0f;
+  for (const auto& v : single.meshes[single.parts[0].mesh].positions) top = std::max(top, v.z());
+  EXPECT_NEAR(static_cast<double>(top), -0.040 + assets::kBrickHeight + assets::kStudHeight, 1e-5);
+
+  // A brick on top hides the lower one's studs and its own cavity: fewer than two singles.
+  const Scene two = frame_scene(
+      "    - {part: brick-2x4, at: [0, 0, 0]}\n    - {part: brick-2x4, at: [0, 0, 3]}\n");
+  assets::MeshLibrary meshes;
+  const RigModel stack = build_rig_model(two, &test::part_catalog(), &meshes);
+  EXPECT_EQ(stack.stats.frame_triangles_full, 2 * brick);
+  EXPECT_LT(stack.stats.frame_triangles_drawn, 2 * single.stats.frame_triangles_drawn - 8 * 40);
+  std::size_t studs_between = 0;
+  for (const auto& v : stack.meshes[stack.parts[0].mesh].positions) {
+    const float z = v.z() - (-0.040f + static_cast<float>(assets::kBrickHeight));
+    studs_between += (z > 1e-4f && z < 0.0016f) ? 1 : 0;
+  }
+  EXPECT_EQ(studs_between, 0u) << "the lower brick's studs are inside the upper brick";
+  // The library read the brick's mesh once (and the rollers' axle).
+  EXPECT_EQ(meshes.files_read(), 2u);
+}
+
+TEST(RigModel, ASceneWithoutLegoPartsNeedsNoIndexAndNoMesh) {
+  const Scene scene = test::scene_file("minimal.yaml");
+  ASSERT_FALSE(scene_uses_parts(scene));
+  // No catalogue, no mesh library: built from boxes and cylinders alone.
+  const RigModel rig = build_rig_model(scene, nullptr, nullptr);
+  EXPECT_EQ(rig.stats.meshes_read, 0u);
+  EXPECT_EQ(rig.stats.frame_parts, 0u);
+  EXPECT_EQ(rig.shafts.size(), 2u);
+  EXPECT_GT(rig.triangles(rest_pose(scene), 0.0), 500u);
+  // The paper's rig does need them.
+  EXPECT_TRUE(scene_uses_parts(test::paper_rig()));
+  EXPECT_THROW(build_rig_model(test::paper_rig(), nullptr, nullptr), std::invalid_argument);
+}
+
+// The gear drawn for `placement` turned to its angle at `pose`: the angle about +y of its tooth 0.
+double tooth_angle(const RigModel& rig, const RigPose& pose, std::size_t gear_part) {
+  const RigPart& part = rig.parts[gear_part];
+  return pose.shaft_angles[static_cast<std::size_t>(part.shaft)] + part.phase;
+}
+
+TEST(RigModel, MeshingGearsPutATeethIntoTheOthersGaps) {
+  FL_REQUIRE_ASSETS();
+  const Scene& scene = test::paper_rig();
+  const DriveLayout layout = drive_layout(scene);
+  const RigModel rig = paper_rig_model();
+  // The gear parts, in the layout's order, are the last parts of the model.
+  const std::size_t first_gear = rig.parts.size() - layout.gears.size();
+  RigPose pose = rest_pose(scene);
+  for (const double turn : {0.0, 0.37, 2.9}) {
+    // The train turned from rest: each shaft by the tooth-count ratio, in alternate senses.
+    std::vector<double> angle(layout.shafts.size(), 0.0);
+    std::vector<bool> set(layout.shafts.size(), false);
+    angle[static_cast<std::size_t>(layout.motor)] = turn;
+    set[static_cast<std::size_t>(layout.motor)] = true;
+    for (int pass = 0; pass < 2; ++pass) {
+      for (const GearMesh& m : layout.meshes) {
+        const GearPlacement& a = layout.gears[static_cast<std::size_t>(m.driver)];
+        const GearPlacement& b = layout.gears[static_cast<std::size_t>(m.driven)];
+        if (!set[static_cast<std::size_t>(a.shaft)]) continue;
+        angle[static_cast<std::size_t>(b.shaft)] =
+            -angle[static_cast<std::size_t>(a.shaft)] * a.teeth / b.teeth;
+        set[static_cast<std::size_t>(b.shaft)] = true;
+      }
+    }
+    pose.shaft_angles = angle;
+    for (const GearMesh& m : layout.meshes) {
+      const GearPlacement& a = layout.gears[static_cast<std::size_t>(m.driver)];
+      const GearPlacement& b = layout.gears[static_cast<std::size_t>(m.driven)];
+      const ShaftPlacement& sa = layout.shafts[static_cast<std::size_t>(a.shaft)];
+      const ShaftPlacement& sb = layout.shafts[static_cast<std::size_t>(b.shaft)];
+      // The direction from a's axis to b's, measured like a turn about +y.
+      const double alpha = std::atan2(-(sb.z - sa.z), sb.x - sa.x);
+      const double pitch_a = 2 * kPi / a.teeth;
+      const double pitch_b = 2 * kPi / b.teeth;
+      const double ta = tooth_angle(rig, pose, first_gear + static_cast<std::size_t>(m.driver));
+      const double tb = tooth_angle(rig, pose, first_gear + static_cast<std::size_t>(m.driven));
+      // Where each gear's teeth stand against the line between the axes, in teeth. Turning
+      // moves one gear's teeth toward the contact as fast as the other's move away, so their
+      // sum is fixed: half a tooth, each tooth facing a gap.
+      const double fa = (alpha - ta) / pitch_a;
+      const double fb = (alpha + kPi - tb) / pitch_b;
+      EXPECT_NEAR(std::fabs(std::remainder(fa + fb, 1.0)), 0.5, 1e-6)
+          << a.teeth << " -> " << b.teeth << " at a turn of " << turn;
+    }
+  }
+}
+
+TEST(RigModel, FastPartsAreDrawnBlurred) {
+  FL_REQUIRE_ASSETS();
+  const RigModel rig = paper_rig_model();
+  RigPose pose = rest_pose(test::paper_rig());
+  const std::size_t still = rig.triangles(pose, 1.0 / 120.0);
+  // 1600 rpm at the rollers, 960 rpm at the idlers, 200 rpm at the motor.
+  const auto& shafts = rig.shafts;
+  for (std::size_t s = 0; s < shafts.size(); ++s) {
+    double speed = 167.55;
+    if (shafts[s].role == "motor") speed = 20.94;
+    if (shafts[s].role.rfind("idler", 0) == 0) speed = 100.5;
+    if (shafts[s].role.rfind("stage", 0) == 0) speed = 41.9;
+    pose.shaft_speeds[s] = speed;
+  }
+  // The blurred teeth of the fast gears are rings with far fewer triangles.
+  EXPECT_LT(rig.triangles(pose, 1.0 / 120.0), still - 5000);
+  // A roller picks its smeared variant; the motor's gear stays sharp.
+  for (const RigPart& part : rig.parts) {
+    if (part.body != RigPart::Body::kShaft || part.blur_variants.empty()) continue;
+    const PlacedPart placed = place_part(rig, part, pose, 1.0 / 120.0);
+    if (part.shaft < 2 && part.blur_variants.size() == kBlurSweeps.size() &&
+        part.blur_variants[0] != part.blur_variants[1]) {
+      EXPECT_NE(placed.mesh, part.mesh);  // a roller at speed
+    }
+    if (shafts[static_cast<std::size_t>(part.shaft)].role == "motor") {
+      EXPECT_EQ(placed.mesh, part.mesh);
+    }
+    // Standing still, everything is sharp.
+    EXPECT_EQ(place_part(rig, part, rest_pose(test::paper_rig()), 1.0 / 120.0).mesh, part.mesh);
+  }
+}
+
+TEST(RigModel, CameraPresetsFrameTheWholeRig) {
+  FL_REQUIRE_ASSETS();
+  const RigModel rig = paper_rig_model();
+  for (const std::string_view preset : kCameraPresets) {
+    VideoDesc video;
+    video.width = 640;
+    video.height = 360;
+    video.camera = std::string(preset);
+    const Camera camera = rig_camera(rig, video);
+    if (preset == "sensor") {
+      const auto at = project_to_pixel(camera, 640, 360, rig.sensor);
+      ASSERT_TRUE(at.has_value());
+      EXPECT_NEAR(at->x(), 320.0f, 160.0f);
+      EXPECT_LT(at->y(), 0.70f * 360.0f);
+      continue;
+    }
+    // Every part of the rig lands in the picture, above the overlay's bottom panels.
+    for (const auto& point : rig.outline) {
+      const auto at = project_to_pixel(camera, 640, 360, point);
+      ASSERT_TRUE(at.has_value()) << preset;
+      EXPECT_GE(at->x(), 0.0f) << preset;
+      EXPECT_LE(at->x(), 640.0f) << preset;
+      EXPECT_GE(at->y(), 0.07f * 360.0f) << preset;
+      EXPECT_LE(at->y(), 0.71f * 360.0f) << preset;
+    }
+  }
+  // The orbit turns the camera about the vertical through its target, keeping its distance.
+  VideoDesc video;
+  const Camera camera = rig_camera(rig, video);
+  const Camera turned = orbit_camera(camera, kPi / 2);
+  EXPECT_NEAR((turned.position - turned.target).norm(), (camera.position - camera.target).norm(),
+              1e-5);
+  EXPECT_NEAR(turned.position.z(), camera.position.z(), 1e-6);
+  EXPECT_GT((turned.position - camera.position).norm(), 0.05f);
+}
+
+TEST(RigModel, PosesInterpolatePartByPart) {
+  RigPose a;
+  a.plate_x = 0.01;
+  a.pitch = 0.002;
+  a.shaft_angles = {1.0, -1.0};
+  a.shaft_speeds = {100.0, -100.0};
+  RigPose b = a;
+  b.plate_x = 0.03;
+  b.pitch = 0.004;
+  b.shaft_angles = {1.2, -1.2};
+  const RigPose m = interpolate(a, b, 0.25);
+  EXPECT_DOUBLE_EQ(m.plate_x, 0.015);
+  EXPECT_DOUBLE_EQ(m.pitch, 0.0025);
+  EXPECT_DOUBLE_EQ(m.shaft_angles[0], 1.05);
+  EXPECT_DOUBLE_EQ(m.shaft_angles[1], -1.05);
+  // The plate's body frame: its centre of mass at the pose, pitched about +y.
+  const Eigen::Affine3f t = plate_transform(b);
+  EXPECT_NEAR((t * Eigen::Vector3f(0.1f, 0, 0)).z(), -0.1f * std::sin(0.004f), 1e-7);
+}
+
+TEST(RigOverlay, ValuesCarryTheirUncertaintysDigits) {
+  EXPECT_EQ(format_plus_minus(0.7941, 0.0062), "0.794 \xc2\xb1 0.006");
+  EXPECT_EQ(format_plus_minus(0.2856, 0.031), "0.29 \xc2\xb1 0.03");
+  EXPECT_EQ(format_plus_minus(0.79412, 0.0012), "0.7941 \xc2\xb1 0.0012");
+  EXPECT_EQ(format_plus_minus(12.3, 0.0), "12.300 \xc2\xb1 0.000");
+}
+
+TEST(RigOverlay, TheTitleCardNamesTheMaterialAndTheSetUp) {
+  const TitleCard card = make_title_card(test::paper_rig(), "LEGO blocks", 4.0, 30);
+  EXPECT_EQ(card.subtitle, "LEGO blocks on PVC rollers, 300 K");
+  std::string all;
+  for (const std::string& line : card.lines) all += line + "\n";
+  for (const char* text : {"l = 89 mm", "1600 rpm", "8:1 gearbox", "4 LEGO bricks", "2 magnets",
+                           "x = 114 mm", "T = 0.79 \xc2\xb1 0.03 s"})
+    EXPECT_NE(all.find(text), std::string::npos) << text << " in\n" << all;
+  EXPECT_NE(card.footer.find("slow motion \xc3\x97"
+                             "4"),
+            std::string::npos)
+      << card.footer;
+}
+
+TEST(VideoClock, FramesFollowTheVideosClock) {
+  VideoDesc v;
+  EXPECT_EQ(run_frame_count(v, 10.0), 300u);  // 10 s at 30 fps, t = 0 included, t = 10 s not
+  v.slow_motion = 4.0;
+  EXPECT_EQ(run_frame_count(v, 10.0), 1200u);
+  v.slow_motion = 0.5;
+  EXPECT_EQ(run_frame_count(v, 1.0), 15u);
+  v.slow_motion = 0.35;  // 10.5 frames a simulated second: t_k < 1 s for k = 0 .. 10
+  EXPECT_EQ(run_frame_count(v, 1.0), 11u);
+  v.fps = 24;
+  v.slow_motion = 1.0;
+  EXPECT_EQ(run_frame_count(v, 0.001), 1u);
+  EXPECT_EQ(title_frame_count(v), 0u);
+  v.title = true;
+  EXPECT_EQ(title_frame_count(v), 48u);
+}
+
+TEST(VideoClock, TheCommandLineOverridesTheScene) {
+  Scene scene = test::paper_rig();
+  VideoRequest request;
+  VideoDesc v = effective_video(scene, request);
+  EXPECT_EQ(v.width, 1280);
+  EXPECT_EQ(v.camera, "front");
+  EXPECT_TRUE(v.title);
+  request.size = std::array<int, 2>{640, 360};
+  request.fps = 24;
+  request.slow_motion = 2.5;
+  request.camera = "sensor";
+  v = effective_video(scene, request);
+  EXPECT_EQ(v.width, 640);
+  EXPECT_EQ(v.height, 360);
+  EXPECT_EQ(v.fps, 24);
+  EXPECT_DOUBLE_EQ(v.slow_motion, 2.5);
+  EXPECT_EQ(v.camera, "sensor");
+  const auto message = [&](VideoRequest r) -> std::string {
+    try {
+      effective_video(scene, r);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  VideoRequest odd;
+  odd.size = std::array<int, 2>{641, 360};
+  EXPECT_NE(message(odd).find("--size: error: H.264 in yuv420p needs an even width and height"),
+            std::string::npos)
+      << message(odd);
+  VideoRequest camera;
+  camera.camera = "side";
+  EXPECT_NE(message(camera).find("--camera"), std::string::npos);
+  EXPECT_NE(message(camera).find("found \"side\""), std::string::npos);
+  VideoRequest fps;
+  fps.fps = 0;
+  EXPECT_NE(message(fps).find("--fps"), std::string::npos);
+  VideoRequest slow;
+  slow.slow_motion = 0.0;
+  EXPECT_NE(message(slow).find("--slow-motion"), std::string::npos);
+}
+
+// A scene with a `video` part, as the loader reads it.
+Scene with_video(const std::string& video) {
+  const std::string text =
+      "format: 1\n"
+      "rollers: {spacing: 89 mm, radius: 10 mm}\n"
+      "plate: {length: 200 mm, thickness: 5 mm, offset: 20 mm}\n"
+      "friction: {mu_k: 0.3}\n"
+      "video:\n" +
+      video;
+  return load_scene_text(text, "v.yaml", {},
+                         []() -> const PaperTable& { return test::paper_table(); });
+}
+
+std::string video_error(const std::string& video) {
+  try {
+    with_video(video);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VideoKeys, AreReadWithTheirUnitsAndDefaults) {
+  const Scene none = test::scene_file("minimal.yaml");
+  EXPECT_FALSE(none.video.has_value());
+  const Scene s = with_video(
+      "  size: 640x360\n  fps: 24\n  slow_motion: 4\n  camera: top\n  orbit: 6 deg/s\n"
+      "  title: true\n");
+  ASSERT_TRUE(s.video.has_value());
+  EXPECT_EQ(s.video->width, 640);
+  EXPECT_EQ(s.video->height, 360);
+  EXPECT_EQ(s.video->fps, 24);
+  EXPECT_DOUBLE_EQ(s.video->slow_motion, 4.0);
+  EXPECT_EQ(s.video->camera, "top");
+  EXPECT_NEAR(s.video->orbit, 6.0 * kPi / 180.0, 1e-12);
+  EXPECT_TRUE(s.video->title);
+  const Scene d = with_video("  size: [320, 180]\n");
+  EXPECT_EQ(d.video->width, 320);
+  EXPECT_EQ(d.video->fps, 30);
+  EXPECT_DOUBLE_EQ(d.video->slow_motion, 1.0);
+  EXPECT_EQ(d.video->camera, "front");
+  EXPECT_FALSE(d.video->title);
+  const Scene placed =
+      with_video("  camera: {position: [0.1 m, -0.3 m, 0.2 m], target: [0, 0, 0], fov: 25 deg}\n");
+  ASSERT_TRUE(placed.video->placed.has_value());
+  EXPECT_DOUBLE_EQ(placed.video->placed->position[1], -0.3);
+  EXPECT_NEAR(placed.video->placed->fov, 25.0 * kPi / 180.0, 1e-12);
+  EXPECT_TRUE(placed.video->camera.empty());
+  // The paper's rig asks for a title card at 720p.
+  ASSERT_TRUE(test::paper_rig().video.has_value());
+  EXPECT_TRUE(test::paper_rig().video->title);
+}
+
+TEST(VideoKeys, MistakesAreLocatedErrors) {
+  EXPECT_NE(video_error("  sise: 640x360\n").find("v.yaml:6:3: error: video"), std::string::npos)
+      << video_error("  sise: 640x360\n");
+  EXPECT_NE(video_error("  sise: 640x360\n").find("did you mean 'size'"), std::string::npos);
+  EXPECT_NE(video_error("  size: 641x360\n").find("v.yaml:6:9: error: video.size: H.264"),
+            std::string::npos)
+      << video_error("  size: 641x360\n");
+  EXPECT_NE(video_error("  size: big\n").find("expected a frame size like \"1280x720\""),
+            std::string::npos);
+  EXPECT_NE(video_error("  camera: side\n")
+                .find("v.yaml:6:11: error: video.camera: expected a "
+                      "camera preset (front, top, sensor)"),
+            std::string::npos)
+      << video_error("  camera: side\n");
+  EXPECT_NE(video_error("  camera: {position: [0, 0, 1], target: [0, 0, 0], fov: 170 deg}\n")
+                .find("from 5 deg to 120 deg"),
+            std::string::npos);
+  EXPECT_NE(video_error("  camera: {position: [0, 0, 1]}\n").find("'target'"), std::string::npos)
+      << video_error("  camera: {position: [0, 0, 1]}\n");
+  EXPECT_NE(video_error("  fps: 0\n").find("1 to 240 frames per second"), std::string::npos);
+  EXPECT_NE(video_error("  slow_motion: 0\n").find("slow-motion factor"), std::string::npos);
+  EXPECT_NE(video_error("  orbit: 5 mm\n").find("video.orbit"), std::string::npos)
+      << video_error("  orbit: 5 mm\n");
+  EXPECT_NE(video_error("  title: maybe\n").find("expected true or false"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fl::render

@@ -1,0 +1,242 @@
+// The paper's rig drawn on OSMesa: a frame is not blank, the plate's pixels lie where the
+// projection of its pose says, two poses give two pictures, the overlay's text shows, and each
+// camera preset matches its golden image.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "render/renderer.hpp"
+#include "render/rig_overlay.hpp"
+#include "render/rig_view.hpp"
+#include "render_test_support.hpp"
+#include "rig_test_support.hpp"
+
+namespace fl::render {
+namespace {
+
+std::unique_ptr<GlContext> osmesa(int width, int height) {
+  GlContextOptions options;
+  options.width = width;
+  options.height = height;
+  options.backend = "osmesa";
+  return make_gl_context(options);
+}
+
+RigModel paper_rig_model() {
+  assets::MeshLibrary meshes;
+  return build_rig_model(test::paper_rig(), &test::part_catalog(), &meshes);
+}
+
+// The rig at a pose: the plate at x, the rollers turned.
+RigPose pose_at(double plate_x, double roller_angle) {
+  RigPose pose = rest_pose(test::paper_rig());
+  pose.plate_x = plate_x;
+  pose.shaft_angles[0] = roller_angle;
+  pose.shaft_angles[1] = -roller_angle;
+  return pose;
+}
+
+Image draw(Renderer& renderer, const RigView& view, const Camera& camera, const RigPose& pose) {
+  renderer.begin_frame(camera, rig_light());
+  view.draw(pose, 0.0);
+  return copy_image(renderer.end_frame());
+}
+
+struct Centroid {
+  double x = 0;
+  double y = 0;
+  std::size_t pixels = 0;
+};
+
+// The centre of the pixels where two frames differ.
+Centroid difference_centroid(const ImageView& a, const ImageView& b) {
+  Centroid c;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) {
+      int change = 0;
+      for (std::size_t k = 0; k < 3; ++k) change += std::abs(a.at(x, y)[k] - b.at(x, y)[k]);
+      if (change <= 24) continue;
+      c.x += x + 0.5;
+      c.y += y + 0.5;
+      ++c.pixels;
+    }
+  }
+  if (c.pixels > 0) {
+    c.x /= static_cast<double>(c.pixels);
+    c.y /= static_cast<double>(c.pixels);
+  }
+  return c;
+}
+
+class RigRender : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    FL_REQUIRE_RENDER();
+    if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)";
+  }
+};
+
+TEST_F(RigRender, TheRigIsDrawnAndThePlateLandsWhereItsPoseSays) {
+  constexpr int kWidth = 480;
+  constexpr int kHeight = 270;
+  const auto context = osmesa(kWidth, kHeight);
+  // No shadows: the plate's silhouette is then all that changes when it is left out.
+  RendererOptions options;
+  options.shadows = false;
+  Renderer renderer(*context, options);
+  const RigModel model = paper_rig_model();
+  RigModel without_plate = model;
+  std::erase_if(without_plate.parts,
+                [](const RigPart& p) { return p.body == RigPart::Body::kPlate; });
+  const RigView view(renderer, model);
+  const RigView empty(renderer, without_plate);
+  VideoDesc video;
+  video.width = kWidth;
+  video.height = kHeight;
+  video.camera = "top";
+  const Camera camera = rig_camera(model, video);
+
+  const PlateMass mass = plate_mass(test::paper_rig());
+  const PlateDesc& plate = test::paper_rig().plate;
+  for (const double x : {-0.025, 0.0, 0.02}) {
+    const RigPose pose = pose_at(x, 0.3);
+    const Image with = draw(renderer, view, camera, pose);
+    const Image without = draw(renderer, empty, camera, pose);
+    fl::test::keep_frame("rig_top_" + std::to_string(static_cast<int>(x * 1000)), with.view());
+    // Not blank: the rig covers a good part of the frame, in many colours.
+    EXPECT_GT(count_pixels_unlike(with.view(), {237, 240, 245}, 12),
+              static_cast<std::size_t>(kWidth * kHeight / 2));
+    // The plate's silhouette (slab, blocks, magnets) is centred on the projection of the centre
+    // of its top face (the blocks stand symmetrically on it).
+    const Centroid c = difference_centroid(with.view(), without.view());
+    const Eigen::Vector3f top_centre =
+        plate_transform(pose) * Eigen::Vector3f(static_cast<float>(-mass.x_c), 0.0f,
+                                                static_cast<float>(plate.thickness - mass.h_c));
+    const auto expected = project_to_pixel(camera, kWidth, kHeight, top_centre);
+    ASSERT_TRUE(expected.has_value());
+    ASSERT_GT(c.pixels, 2000u) << "the plate is missing at x = " << x;
+    EXPECT_NEAR(c.x, expected->x(), 3.0) << "plate at x = " << x;
+    EXPECT_NEAR(c.y, expected->y(), 3.0) << "plate at x = " << x;
+  }
+}
+
+TEST_F(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
+  const auto context = osmesa(320, 180);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  VideoDesc video;
+  video.width = 320;
+  video.height = 180;
+  const Camera camera = rig_camera(view.model(), video);
+  const Image a = draw(renderer, view, camera, pose_at(0.0, 0.0));
+  const Image b = draw(renderer, view, camera, pose_at(0.02, 0.0));
+  const Image c = draw(renderer, view, camera, pose_at(0.0, 1.2));
+  const Image a_again = draw(renderer, view, camera, pose_at(0.0, 0.0));
+  EXPECT_GT(rms_difference(a.view(), b.view()), 1.0);  // the plate moved
+  EXPECT_GT(rms_difference(a.view(), c.view()), 0.1);  // the rollers' marks turned
+  EXPECT_EQ(rms_difference(a.view(), a_again.view()), 0.0);
+  // Moving the plate along +x moves it right in the front view.
+  EXPECT_GT(difference_centroid(a.view(), b.view()).pixels, 200u);
+}
+
+TEST_F(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
+  const auto context = osmesa(640, 360);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  VideoDesc video;
+  video.width = 640;
+  video.height = 360;
+  std::vector<HallPoint> hall;
+  for (int k = 0; k < 2500; ++k) {
+    const double t = 0.5 + k * 1e-3;
+    hall.push_back({t, 512.0 + 300.0 * std::exp(-std::pow((std::fmod(t, 0.794) - 0.4) / 0.02, 2))});
+  }
+  const std::vector<double> pulses = {1.194, 1.988, 2.782};
+  RigOverlayState state;
+  state.heading = "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm";
+  state.t = 3.0;
+  state.motor_speed = 20.7;
+  state.roller_speed = 165.6;
+  state.hall = hall;
+  state.hall_range = std::array<double, 2>{480.0, 840.0};
+  state.pulses = pulses;
+  state.estimator.pulses = 4;
+  state.estimator.periods = 3;
+  state.estimator.period = 0.794;
+  state.estimator.period_std = 0.006;
+  state.estimator.mu_k = 0.285;
+  state.estimator.mu_k_err = 0.008;
+  state.paper_period = test::paper_rig().friction.paper_period;
+  state.paper_mu_k = test::paper_rig().friction.paper_mu_k;
+  renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+  view.draw(pose_at(0.01, 0.5), 1.0 / 120.0);
+  draw_rig_overlay(renderer.overlay(), 640, 360, state);
+  const Image frame = copy_image(renderer.end_frame());
+  fl::test::keep_frame("rig_overlay_640x360", frame.view());
+  // The panels are dark, with light text on them: the top bar, the Hall plot, the results.
+  const auto light_pixels = [&](int x0, int y0, int x1, int y1) {
+    std::size_t n = 0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) n += frame.at(x, y)[0] > 180 && frame.at(x, y)[2] > 180;
+    return n;
+  };
+  EXPECT_GT(light_pixels(8, 4, 300, 18), 150u);       // the heading
+  EXPECT_GT(light_pixels(372, 290, 620, 310), 150u);  // T = 0.794 ± 0.006 s
+  // The trace is drawn in yellow inside the plot, and the pulses in green.
+  std::size_t yellow = 0, green = 0;
+  for (int y = 278; y < 350; ++y) {
+    for (int x = 14; x < 302; ++x) {
+      const auto p = frame.at(x, y);
+      yellow += p[0] > 200 && p[1] > 150 && p[2] < 90;
+      green += p[1] > 180 && p[0] < 150 && p[2] < 150;
+    }
+  }
+  EXPECT_GT(yellow, 300u);
+  EXPECT_GT(green, 30u);
+}
+
+// Each camera preset at 160x90, the rig at a fixed pose (no overlay), against
+// tests/render/golden/rig_<preset>_160x90.png. Refresh on purpose, after a deliberate change of
+// the look, with FRICTIONLAB_UPDATE_GOLDEN=1, and look at the new PNGs before committing them.
+TEST_F(RigRender, EachCameraPresetMatchesItsGoldenImage) {
+  const auto context = osmesa(160, 90);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  RigPose pose = pose_at(0.012, 0.4);
+  for (std::size_t s = 2; s < pose.shaft_angles.size(); ++s) pose.shaft_angles[s] = 0.1 * s;
+  const char* update = std::getenv("FRICTIONLAB_UPDATE_GOLDEN");
+  for (const std::string_view preset : kCameraPresets) {
+    VideoDesc video;
+    video.width = 160;
+    video.height = 90;
+    video.camera = std::string(preset);
+    const Image frame = draw(renderer, view, rig_camera(view.model(), video), pose);
+    const std::string name = "rig_" + std::string(preset) + "_160x90";
+    const std::string golden =
+        std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/tests/render/golden/" + name + ".png";
+    if (update != nullptr && std::string(update) == "1") {
+      write_png(golden, frame.view());
+      continue;
+    }
+    ASSERT_TRUE(std::filesystem::exists(golden))
+        << golden << " is missing; make it with FRICTIONLAB_UPDATE_GOLDEN=1";
+    const Image expected = read_png(golden);
+    const double rms = rms_difference(frame.view(), expected.view());
+    constexpr double kTolerance = 3.0;  // as the demo scene's golden image
+    if (rms > kTolerance) {
+      fl::test::keep_frame(name + "_actual", frame.view());
+      fl::test::keep_frame(name + "_difference",
+                           difference_image(frame.view(), expected.view()).view());
+    }
+    EXPECT_LE(rms, kTolerance) << preset << ": RMS difference " << rms
+                               << " from the golden image; see render-test-output/" << name
+                               << "_actual.png and _difference.png in the build folder";
+  }
+  if (update != nullptr && std::string(update) == "1") GTEST_SKIP() << "wrote the golden images";
+}
+
+}  // namespace
+}  // namespace fl::render

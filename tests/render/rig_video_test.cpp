@@ -1,0 +1,210 @@
+// frictionlab run --video/--frames/--still: an MP4 that ffprobe reports as H.264 in yuv420p with
+// duration x fps x slow-motion frames (plus the title card's), exactly the expected PNG files,
+// a still; a run that asks for no frames never starts GL or opens a mesh; missing components and
+// bad options fail with status 2 and a message that names them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "../support/run_command.hpp"
+#include "render/components.hpp"
+#include "render/png.hpp"
+
+namespace fl {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kExe = FRICTIONLAB_EXE;
+const std::string kScenes = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/";
+const std::string kRig = kScenes + "paper-rig.yaml";
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path dir = fs::path(FRICTIONLAB_TEST_BINARY_DIR) / "rig-video-test" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// Under LeakSanitizer, frictionlab's GL runs meet OSMesa's own leaks: the suppressions the GL
+// tests use (lsan.supp) go to it too; without a sanitizer the variable is ignored.
+test::CommandResult lab(const std::string& args, const std::string& env = "") {
+  const std::string lsan =
+      "LSAN_OPTIONS=suppressions=" FRICTIONLAB_TEST_SOURCE_DIR "/tests/render/lsan.supp ";
+  return test::run_command(lsan + env + (env.empty() ? "" : " ") + kExe + " " + args);
+}
+
+bool have_ffprobe() {
+  return test::run_command("ffprobe -version").status == 0;
+}
+
+// ffprobe's view of the video stream and the container.
+nlohmann::json probe(const fs::path& file) {
+  const auto r = test::run_command(
+      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+      "stream=codec_name,pix_fmt,width,height,r_frame_rate,nb_read_frames,duration "
+      "-show_entries format=duration -of json " +
+      file.string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  return nlohmann::json::parse(r.out);
+}
+
+#define FL_REQUIRE_VIDEO_RUN()                                                                \
+  do {                                                                                        \
+    if (!render::kHasRender || !render::kHasVideo)                                            \
+      GTEST_SKIP() << "built without rendering or video";                                     \
+    if (!have_ffprobe()) GTEST_SKIP() << "ffprobe is not installed (apt-get install ffmpeg)"; \
+  } while (0)
+
+TEST(RigVideo, TheMp4HasTheFramesOfTheVideosClock) {
+  FL_REQUIRE_VIDEO_RUN();
+  const fs::path dir = fresh_dir("mp4");
+  struct Case {
+    std::string args;
+    int frames;       // duration x fps x slow motion, + 2 s x fps of title card
+    double duration;  // s of video
+  };
+  for (const Case& c : {
+           // 1 s simulated at 10 fps, 2x slow motion: 20 frames, 2 s of video.
+           Case{"--duration 1s --fps 10 --slow-motion 2 --set video.title=false", 20, 2.0},
+           // With the scene's title card: 2 s x 10 fps more in front.
+           Case{"--duration 1s --fps 10 --slow-motion 2", 40, 4.0},
+           // Real time at 24 fps: 0.5 s -> 12 frames.
+           Case{"--duration 0.5s --fps 24 --set video.title=false", 12, 0.5},
+       }) {
+    const fs::path file = dir / "rig.mp4";
+    fs::remove(file);
+    const auto r = lab("run " + kRig + " --size 320x180 " + c.args + " --video " + file.string());
+    ASSERT_EQ(r.status, 0) << c.args << "\n" << r.err;
+    const auto j = probe(file);
+    const auto& s = j["streams"][0];
+    EXPECT_EQ(s["codec_name"], "h264") << c.args;
+    EXPECT_EQ(s["pix_fmt"], "yuv420p") << c.args;
+    EXPECT_EQ(s["width"], 320);
+    EXPECT_EQ(s["height"], 180);
+    EXPECT_EQ(std::stoi(s["nb_read_frames"].get<std::string>()), c.frames) << c.args;
+    EXPECT_NEAR(std::stod(s["duration"].get<std::string>()), c.duration, 1e-3) << c.args;
+    EXPECT_NEAR(std::stod(j["format"]["duration"].get<std::string>()), c.duration, 1e-3) << c.args;
+    EXPECT_NE(r.out.find("video                  " + std::to_string(c.frames) + " frames"),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(file.string() + ".part"));
+  }
+}
+
+TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
+  if (!render::kHasRender) GTEST_SKIP() << "built without rendering";
+  const fs::path dir = fresh_dir("frames");
+  const fs::path frames = dir / "frames";
+  const fs::path still = dir / "still.png";
+  const auto names = [&] {
+    std::set<std::string> out;
+    for (const auto& e : fs::directory_iterator(frames)) out.insert(e.path().filename().string());
+    return out;
+  };
+  // 0.5 s at 10 fps: frames at t = 0, 0.1, ... 0.4 s.
+  auto r = lab("run " + kRig + " --duration 0.5s --fps 10 --size 160x90 --set video.title=false" +
+               " --frames " + frames.string() + " --still " + still.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(names(),
+            (std::set<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png",
+                                   "frame_000003.png", "frame_000004.png"}));
+  const render::Image first = render::read_png((frames / "frame_000000.png").string());
+  EXPECT_EQ(first.width, 160);
+  EXPECT_EQ(first.height, 90);
+  const render::Image end = render::read_png(still.string());
+  EXPECT_EQ(end.width, 160);
+  // A second run into the same folder replaces the first one's frames: 3 frames now.
+  r = lab("run " + kRig + " --duration 0.3s --fps 10 --size 160x90 --set video.title=false" +
+          " --frames " + frames.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(names(),
+            (std::set<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
+}
+
+TEST(RigVideo, ARunWithoutFramesNeverStartsGl) {
+  // An unknown back end: a plain run does not care, a run that draws fails naming it.
+  const std::string env = "FRICTIONLAB_GL=nonsense";
+  auto r = lab("run " + kRig + " --duration 0.2s --json", env);
+  EXPECT_EQ(r.status, 0) << r.err;
+  r = lab("run " + kRig + " --duration 0.2s --still x.png", env);
+  EXPECT_EQ(r.status, 2);
+  if (render::kHasRender) {
+    EXPECT_NE(r.err.find("unknown GL back end 'nonsense' (from FRICTIONLAB_GL); valid back ends: "
+                         "osmesa, egl, auto"),
+              std::string::npos)
+        << r.err;
+  }
+  // The command line's --gl wins over the variable, and is named when it is wrong.
+  r = lab("run " + kRig + " --duration 0.2s --still x.png --gl glfw", env);
+  EXPECT_EQ(r.status, 2);
+  if (render::kHasRender) {
+    EXPECT_NE(r.err.find("unknown GL back end 'glfw' (from --gl)"), std::string::npos) << r.err;
+  }
+}
+
+TEST(RigVideo, ARunWithoutFramesOpensNoMesh) {
+  // An asset folder with the part index and the paper's table but no mesh file.
+  const fs::path assets = fresh_dir("assets-without-meshes");
+  fs::create_directories(assets / "lego");
+  fs::copy_file(fs::path(FRICTIONLAB_TEST_ASSET_DIR) / "lego" / "parts.yaml",
+                assets / "lego" / "parts.yaml");
+  fs::copy(fs::path(FRICTIONLAB_TEST_ASSET_DIR) / "paper", assets / "paper",
+           fs::copy_options::recursive);
+  const std::string with = "--assets " + assets.string() + " ";
+  // The paper's rig (frame, gears, blocks) runs without its meshes ...
+  auto r = lab(with + "run " + kRig + " --duration 0.2s --json");
+  EXPECT_EQ(r.status, 0) << r.err;
+  if (!render::kHasRender) return;
+  // ... and drawing it needs them: the missing file is named.
+  r = lab(with + "run " + kRig + " --duration 0.2s --size 160x90 --still " +
+          (assets / "x.png").string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(".glb"), std::string::npos) << r.err;
+  // A scene without LEGO parts draws without any mesh.
+  r = lab(with + "run " + kScenes + "minimal.yaml --duration 0.2s --size 160x90 --still " +
+          (assets / "minimal.png").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(assets / "minimal.png"));
+}
+
+TEST(RigVideo, MissingComponentsAndBadOptionsExitWithStatusTwo) {
+  const fs::path dir = fresh_dir("bad");
+  const std::string video = " --video " + (dir / "x.mp4").string();
+  auto r = lab("run " + kRig + " --duration 0.2s" + video);
+  if (!render::kHasRender) {
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("OSMesa"), std::string::npos) << r.err;
+  } else if (!render::kHasVideo) {
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("libav"), std::string::npos) << r.err;
+    // Frames still work without libav.
+    r = lab("run " + kRig + " --duration 0.1s --size 160x90 --frames " + (dir / "f").string());
+    EXPECT_EQ(r.status, 0) << r.err;
+  } else {
+    EXPECT_EQ(r.status, 0) << r.err;
+  }
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  for (const Case& c : {
+           Case{"--size 641x360", "--size: error: H.264 in yuv420p needs an even width"},
+           Case{"--size huge", "--size: error: expected WIDTHxHEIGHT"},
+           Case{"--camera side", "--camera: error: expected a camera preset"},
+           Case{"--fps 0", "--fps: error: expected 1 to 240 frames per second"},
+           Case{"--slow-motion 0", "--slow-motion: error: expected a slow-motion factor"},
+       }) {
+    r = lab("run " + kRig + " --duration 0.1s " + c.args + video);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace fl

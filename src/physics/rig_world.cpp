@@ -31,6 +31,8 @@ struct RigWorld::Impl {
   long long steps = 0;
   std::array<double, 2> roller_omega{};
   std::array<double, 2> roller_angle{};
+  // What the rollers did to the plate in the last step, read once per step from the manifolds.
+  std::array<RollerContact, 2> contacts{};
 
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
@@ -169,7 +171,7 @@ void RigWorld::step() {
   if (impl_->drivetrain) {
     // The train advances under the torques the plate's friction put on the rollers in the last
     // step: -a F_i about y for a friction force F_i (along x) on the plate at roller i's top.
-    const std::array<RollerContact, 2> last = contacts();
+    const std::array<RollerContact, 2>& last = impl_->contacts;
     const double a = impl_->scene.rollers.radius;
     impl_->drivetrain->advance(impl_->dt,
                                {-a * last[0].friction_force, -a * last[1].friction_force});
@@ -177,6 +179,7 @@ void RigWorld::step() {
   }
   impl_->world.stepSimulation(impl_->dt, 0);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
+  impl_->contacts = measure_contacts();
   ++impl_->steps;
 }
 
@@ -205,6 +208,10 @@ PlateState RigWorld::plate() const {
 }
 
 std::array<RollerContact, 2> RigWorld::contacts() const {
+  return impl_->contacts;
+}
+
+std::array<RollerContact, 2> RigWorld::measure_contacts() const {
   std::array<RollerContact, 2> out{};
   const int n = impl_->dispatcher.getNumManifolds();
   for (int m = 0; m < n; ++m) {

@@ -80,6 +80,9 @@ class RigWorld {
   double plate_inertia() const;  // kg m^2, pitch
 
  private:
+  // Reads the contact manifolds (once per step, in step()).
+  std::array<RollerContact, 2> measure_contacts() const;
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

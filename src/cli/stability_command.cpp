@@ -33,10 +33,10 @@ nlohmann::json row_json(const StabilityRow& r) {
   return {
       {"case", r.name},
       {"parameters", r.parameters},
-      {"expected", r.expected},
+      {"expected", regime_name(r.expected)},
       {"expected_reason", r.expected_reason},
-      {"declared", r.declared},
-      {"found", r.found},
+      {"declared", r.declared ? regime_name(*r.declared) : ""},
+      {"found", regime_name(r.found)},
       {"evidence", r.evidence},
       {"as_expected", r.as_expected},
       {"largest_step_s",
@@ -91,8 +91,8 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
         "case,expected,found,as_expected,largest_step_s,period_error,condition_period,wall_s\n";
     for (const StabilityRow& r : rows)
       csv += fmt::format(
-          "{},{},{},{},{},{},{},{}\n", r.name, r.expected, r.found, r.as_expected ? 1 : 0,
-          r.largest_step ? fmt::format("{}", *r.largest_step) : "",
+          "{},{},{},{},{},{},{},{}\n", r.name, regime_name(r.expected), regime_name(r.found),
+          r.as_expected ? 1 : 0, r.largest_step ? fmt::format("{}", *r.largest_step) : "",
           r.period_error ? fmt::format("{}", *r.period_error) : "", r.condition_period, r.wall_s);
     write_file_atomic(o.out + "/stability.csv", csv);
     write_file_atomic(o.out + "/stability.json", all.dump(2) + "\n");
@@ -109,8 +109,8 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   fmt::print("| --- | --- | --- | --- | --- | --- | --- | --- |\n");
   for (const StabilityRow& r : rows) {
     fmt::print(
-        "| {} | {} | {} | {}{} | {} | {} | {} | {:.2f} s |\n", r.name, r.parameters, r.expected,
-        r.found, r.as_expected ? "" : " (UNEXPECTED)",
+        "| {} | {} | {} | {}{} | {} | {} | {} | {:.2f} s |\n", r.name, r.parameters,
+        regime_name(r.expected), regime_name(r.found), r.as_expected ? "" : " (UNEXPECTED)",
         r.largest_step ? fmt::format("{:.3g} ms", *r.largest_step * 1e3) : "none: " + r.step_note,
         r.period_error ? fmt::format("{:+.2e}", *r.period_error) : "-",
         r.condition_period > 0 ? fmt::format("{:.3f}, {:.3f}", r.condition_period, r.condition_h_c)
@@ -121,8 +121,8 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
              rows.size());
   for (const StabilityRow& r : rows) {
     if (!r.as_expected)
-      fmt::print("  {}: expected {} ({}), found {}: {}\n", r.name, r.expected, r.expected_reason,
-                 r.found, r.evidence);
+      fmt::print("  {}: expected {} ({}), found {}: {}\n", r.name, regime_name(r.expected),
+                 r.expected_reason, regime_name(r.found), r.evidence);
   }
   return unexpected == 0 ? 0 : 1;
 }

@@ -81,6 +81,11 @@ double angular_frequency(double spacing, double mu_k, double h_c, double gravity
   return 2.0 * kPi / period_thick(spacing, mu_k, h_c, gravity);
 }
 
+double amplitude_from_start(double offset, double velocity, double omega) {
+  check_positive(omega, "the angular frequency omega", "rad/s");
+  return std::hypot(offset, velocity / omega);
+}
+
 double roller_speed_for_full_slip(double amplitude, double roller_radius, double spacing,
                                   double mu_k, double h_c, double gravity) {
   check_non_negative(amplitude, "the amplitude A", "m");

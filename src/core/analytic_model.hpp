@@ -55,6 +55,10 @@ MuKUncertainty mu_k_with_uncertainty(double period, double period_err, double sp
 // Angular frequency of the oscillation, 2 pi / T_thick [rad/s].
 double angular_frequency(double spacing, double mu_k, double h_c, double gravity = kDefaultGravity);
 
+// The largest |x| of a harmonic oscillation at angular frequency omega [rad/s] that starts at x0
+// [m] with speed v0 [m/s]: sqrt(x0^2 + (v0 / omega)^2).
+double amplitude_from_start(double offset, double velocity, double omega);
+
 // Roller angular speed [rad/s] at which the roller's surface just keeps up with the plate's
 // largest speed A omega: below it the plate sticks to a roller for part of each cycle.
 double roller_speed_for_full_slip(double amplitude, double roller_radius, double spacing,

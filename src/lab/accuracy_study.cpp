@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/analytic_model.hpp"
+#include "core/integrator_error.hpp"
 #include "core/oscillation_tracker.hpp"
 #include "physics/rig_world.hpp"
 
@@ -14,10 +15,11 @@ namespace fl {
 
 AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid) {
   AccuracyStudy study;
-  const double h_c = plate_mass(base).h_c;
-  study.period_thick =
-      period_thick(base.rollers.spacing, base.friction.mu_k, h_c, base.world.gravity);
-  study.omega = 2.0 * std::numbers::pi / study.period_thick;
+  const CompiledRig rig = compile_rig(base);
+  if (!rig.period_thick)
+    throw DomainError("the accuracy study needs an oscillation: the scene has no restoring force");
+  study.period_thick = *rig.period_thick;
+  study.omega = *rig.omega;
   const double seconds = grid.periods * study.period_thick;
   for (const int iterations : grid.solver_iterations) {
     for (const double dt : grid.time_steps) {
@@ -41,8 +43,7 @@ AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid) {
       p.time_step = dt;
       p.solver_iterations = iterations;
       p.wall_per_simulated_second = wall / world.time();
-      const double omega_dt = study.omega * dt;
-      p.predicted_error = -omega_dt * omega_dt / 24.0;
+      p.predicted_error = integrator_period_bias(study.omega, dt);
       if (const auto fit = tracker.period()) {
         p.valid = true;
         p.period = fit->slope;

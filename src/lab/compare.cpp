@@ -8,9 +8,11 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "io/json_value.hpp"
 #include "lab/experiment.hpp"
-#include "lab/run_outputs.hpp"
 #include "lab/sweep_pool.hpp"
+#include "scene/compiled_rig.hpp"
+#include "scene/scene_checks.hpp"
 
 namespace fl {
 namespace {
@@ -18,7 +20,7 @@ namespace {
 struct Simulation {
   std::optional<double> period;  // s
   std::optional<double> period_std;
-  std::string regime;
+  std::optional<Regime> regime;
   std::string evidence;
   std::optional<std::string> failure;
 };
@@ -31,36 +33,26 @@ class Rig {
         paper_([this]() -> const PaperTable& { return table_; }),
         parts_(shared_once(options.parts)) {}
 
-  // The scene for a row, with mu_k as a number (or the row's own when `mu_k` is empty).
-  Scene scene(const CompareRow& row, std::optional<double> mu_k,
-              std::optional<double> spacing = std::nullopt) const {
+  // The rig's scene for a row, read once: the row's material, temperature and duration, with
+  // the paper's mu_k for that material.
+  Scene scene(const CompareRow& row) const {
     std::vector<SceneOverride> overrides = options_.overrides;
     overrides.push_back({"world.duration", fmt::format("{} s", row.duration)});
     overrides.push_back({"plate.material", row.material});
     overrides.push_back({"friction.temperature", fmt::format("{} K", row.temperature)});
-    overrides.push_back(
-        {"friction.mu_k", mu_k ? fmt::format("{:.17g}", *mu_k) : std::string(row.material)});
-    if (spacing) overrides.push_back({"rollers.spacing", fmt::format("{:.17g}", *spacing)});
+    overrides.push_back({"friction.mu_k", row.material});
     return load_scene_file(options_.scene_file, overrides, paper_, parts_);
   }
 
   Simulation simulate(const Scene& scene) {
     ++simulations_;
     const RunSummary summary = run_experiment(scene, RunOptions{});
-    const nlohmann::json j = summary_json(summary);
     Simulation s;
-    const auto number = [&j](const char* key) -> std::optional<double> {
-      if (j.contains(key) && j[key].is_number() && std::isfinite(j[key].get<double>()))
-        return j[key].get<double>();
-      return std::nullopt;
-    };
-    s.period = number("period_s");
-    if (!s.period) s.period = number("period_trajectory_s");
-    s.period_std = number("period_std_s");
-    s.regime = j.value("regime", "");
-    for (const char* key : {"regime_evidence", "regime_reason"})
-      if (j.contains(key) && j[key].is_string() && s.evidence.empty()) s.evidence = j[key];
-    if (j.contains("failure") && j["failure"].is_string()) s.failure = j["failure"];
+    s.period = summary.period ? summary.period : summary.period_trajectory;
+    if (summary.estimator) s.period_std = summary.estimator->period_std;
+    s.regime = summary.regime;
+    s.evidence = summary.regime_evidence;
+    s.failure = summary.failure;
     return s;
   }
 
@@ -76,20 +68,37 @@ class Rig {
   std::atomic<int> simulations_{0};
 };
 
+// The row's scene with mu_k (and the spacing) set as numbers, checked as the loader checks a
+// scene.
+Scene with_mu_k(const Scene& row_scene, double mu_k, std::optional<double> spacing) {
+  Scene scene = row_scene;
+  scene.friction.mu_k = mu_k;
+  scene.friction.from_paper = false;
+  scene.friction.paper_material.clear();
+  scene.friction.paper_period.reset();
+  scene.friction.paper_mu_k.reset();
+  if (spacing) scene.rollers.spacing = *spacing;
+  const std::vector<SceneProblem> problems = check_scene(scene);
+  if (!problems.empty())
+    throw std::runtime_error(problems.front().key + ": " + problems.front().message);
+  return scene;
+}
+
 bool oscillates(const Simulation& s) {
-  return !s.failure && s.regime == "oscillates" && s.period && *s.period > 0.0;
+  return !s.failure && s.regime == Regime::kOscillates && s.period && *s.period > 0.0;
 }
 
 std::string no_oscillation_reason(const Simulation& s) {
   if (s.failure) return "the run failed: " + *s.failure;
-  if (s.regime != "oscillates")
+  if (s.regime != Regime::kOscillates)
     return "the simulated plate " +
-           (s.regime.empty() ? std::string("did not oscillate") : "'" + s.regime + "'") +
+           (!s.regime ? std::string("did not oscillate")
+                      : "'" + std::string(regime_name(*s.regime)) + "'") +
            (s.evidence.empty() ? "" : ": " + s.evidence);
   return "the estimator measured no period";
 }
 
-void refit(Rig& rig, CompareRow& row, const CompareResult& rig_facts,
+void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareResult& rig_facts,
            const CompareOptions& options) {
   const double target = row.period_measured.value;
   const double l = rig_facts.spacing;
@@ -100,7 +109,7 @@ void refit(Rig& rig, CompareRow& row, const CompareResult& rig_facts,
     CompareRun r;
     r.mu_k = mu;
     r.spacing = spacing.value_or(l);
-    const Simulation s = rig.simulate(rig.scene(row, mu, spacing));
+    const Simulation s = rig.simulate(with_mu_k(row_scene, mu, spacing));
     r.regime = s.regime;
     if (oscillates(s)) r.period = s.period;
     row.runs.push_back(r);
@@ -177,10 +186,11 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
 
   Simulation s;
   double amplitude = facts.amplitude;
+  std::optional<Scene> scene;
   try {
-    const Scene scene = rig.scene(row, std::nullopt);
-    amplitude = initial_amplitude(scene, mu);
-    s = rig.simulate(scene);
+    scene = rig.scene(row);
+    amplitude = compile_rig(*scene).amplitude_initial;
+    s = rig.simulate(*scene);
   } catch (const std::exception& e) {
     row.status = "failed";
     row.reason = e.what();
@@ -206,7 +216,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;
   try {
-    refit(rig, row, facts, options);
+    refit(rig, *scene, row, facts, options);
   } catch (const std::exception& e) {
     row.mu_k_refit.reset();
     row.mu_k_refit_err_worst.reset();
@@ -216,8 +226,8 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
   return row;
 }
 
-nlohmann::json opt(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+std::string name_or_empty(const std::optional<Regime>& regime) {
+  return regime ? regime_name(*regime) : "";
 }
 
 }  // namespace
@@ -234,9 +244,10 @@ CompareResult run_compare(const PaperTable& table, const CompareOptions& options
     result.scene = base.name;
     result.spacing = base.rollers.spacing;
     result.spacing_err = table.spacing.uncertainty;
-    result.h_c = plate_mass(base).h_c;
-    result.gravity = base.world.gravity;
-    result.amplitude = initial_amplitude(base, 0.29);
+    const CompiledRig compiled = compile_rig(base);
+    result.h_c = compiled.plate.h_c;
+    result.gravity = compiled.gravity;
+    result.amplitude = compiled.amplitude_initial;
     result.duration = base.world.duration;
   }
   std::vector<CompareRow> rows;
@@ -288,8 +299,8 @@ nlohmann::json compare_json(const CompareResult& r) {
     for (const CompareRun& run : row.runs)
       runs.push_back({{"mu_k", run.mu_k},
                       {"spacing_m", run.spacing},
-                      {"period_s", opt(run.period)},
-                      {"regime", run.regime}});
+                      {"period_s", json_or_null(run.period)},
+                      {"regime", name_or_empty(run.regime)}});
     rows.push_back({{"material", row.material},
                     {"name", row.name},
                     {"temperature_k", row.temperature},
@@ -298,27 +309,27 @@ nlohmann::json compare_json(const CompareResult& r) {
                     {"reason", row.reason},
                     {"period_measured_s", row.period_measured.value},
                     {"period_measured_err_s", row.period_measured.uncertainty},
-                    {"period_simulated_s", opt(row.period_simulated)},
-                    {"period_simulated_std_s", opt(row.period_simulated_std)},
-                    {"regime", row.regime},
-                    {"residual_sigma", opt(row.residual_sigma)},
+                    {"period_simulated_s", json_or_null(row.period_simulated)},
+                    {"period_simulated_std_s", json_or_null(row.period_simulated_std)},
+                    {"regime", name_or_empty(row.regime)},
+                    {"residual_sigma", json_or_null(row.residual_sigma)},
                     {"period_thin_s", row.period_thin},
-                    {"period_thick_s", opt(row.period_thick)},
-                    {"thin_bias_period", opt(row.thin_bias_period)},
-                    {"thin_bias_mu_k", opt(row.thin_bias_mu_k)},
+                    {"period_thick_s", json_or_null(row.period_thick)},
+                    {"thin_bias_period", json_or_null(row.thin_bias_period)},
+                    {"thin_bias_mu_k", json_or_null(row.thin_bias_mu_k)},
                     {"mu_k_paper", row.mu_k_paper.value},
                     {"mu_k_paper_err", row.mu_k_paper.uncertainty},
-                    {"mu_k_thick_formula", opt(row.mu_k_thick_formula)},
-                    {"mu_k_refit", opt(row.mu_k_refit)},
-                    {"mu_k_refit_err_worst", opt(row.mu_k_refit_err_worst)},
-                    {"mu_k_refit_err_quadrature", opt(row.mu_k_refit_err_quadrature)},
-                    {"period_at_refit_s", opt(row.period_at_refit)},
+                    {"mu_k_thick_formula", json_or_null(row.mu_k_thick_formula)},
+                    {"mu_k_refit", json_or_null(row.mu_k_refit)},
+                    {"mu_k_refit_err_worst", json_or_null(row.mu_k_refit_err_worst)},
+                    {"mu_k_refit_err_quadrature", json_or_null(row.mu_k_refit_err_quadrature)},
+                    {"period_at_refit_s", json_or_null(row.period_at_refit)},
                     {"refit_error",
                      row.period_at_refit
                          ? nlohmann::json(*row.period_at_refit / row.period_measured.value - 1.0)
                          : nlohmann::json(nullptr)},
-                    {"sensitivity_mu_k", opt(row.sensitivity_mu)},
-                    {"sensitivity_spacing", opt(row.sensitivity_spacing)},
+                    {"sensitivity_mu_k", json_or_null(row.sensitivity_mu)},
+                    {"sensitivity_spacing", json_or_null(row.sensitivity_spacing)},
                     {"refit_note", row.refit_note},
                     {"runs", runs}});
   }

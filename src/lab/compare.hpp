@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/paper_table.hpp"
+#include "core/regime.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace fl {
@@ -42,7 +43,7 @@ struct CompareRun {
   double mu_k = 0.0;
   double spacing = 0.0;          // m
   std::optional<double> period;  // s
-  std::string regime;
+  std::optional<Regime> regime;
 };
 
 struct CompareRow {
@@ -60,7 +61,7 @@ struct CompareRow {
   // The rig run with the paper's mu_k.
   std::optional<double> period_simulated;      // s, the rig's estimator
   std::optional<double> period_simulated_std;  // s, standard deviation of its periods
-  std::string regime;
+  std::optional<Regime> regime;
   std::optional<double> residual_sigma;    // (T_sim - T_measured) / dT
   double period_thin = 0.0;                // s, thin formula at the paper's mu_k
   std::optional<double> period_thick;      // s, thick formula at the paper's mu_k and h_c

@@ -38,8 +38,8 @@ std::optional<std::string> cross_check(const EstimatorReport& e, double trajecto
 // Running means and extremes of the drive's state.
 class DriveStats {
  public:
-  explicit DriveStats(const Scene& scene) {
-    if (scene.drive) design_ratio_ = gearbox_ratio(*scene.drive);
+  explicit DriveStats(const CompiledRig& rig) {
+    if (rig.drive) design_ratio_ = rig.drive->gearbox_ratio;
   }
 
   void add(const DriveState& d, const std::array<RollerContact, 2>& contacts, double radius) {
@@ -86,13 +86,19 @@ class DriveStats {
 
 }  // namespace
 
-RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunRecording* recording) {
+RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
+                          RunRecording* recording) {
   const auto wall_start = std::chrono::steady_clock::now();
+  const Scene& scene = rig.scene;
   RunSummary out;
   out.scene = scene.name;
   out.seed = scene.world.seed;
-  out.spacing = scene.rollers.spacing;
-  out.mu_k_set = scene.friction.mu_k;
+  out.spacing = rig.spacing;
+  out.mu_k_set = rig.mu_k;
+  out.h_c = rig.plate.h_c;
+  out.plate_mass = rig.plate.mass;
+  out.gravity = rig.gravity;
+  out.temperature = scene.friction.temperature;
   out.time_step = scene.world.time_step;
   out.solver_iterations = scene.world.solver_iterations;
   out.roller_speed = scene.rollers.speed;
@@ -101,29 +107,24 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     out.paper_period = scene.friction.paper_period;
     out.paper_mu_k = scene.friction.paper_mu_k;
   }
-
-  RigWorld world(scene);
-  out.h_c = world.plate_h_c();
-  out.plate_mass = world.plate_mass();
-  const double g = scene.world.gravity;
-  out.period_thin = period_thin(out.spacing, out.mu_k_set, g);
-  if (has_restoring_force(out.spacing, out.mu_k_set, out.h_c)) {
-    out.period_thick = period_thick(out.spacing, out.mu_k_set, out.h_c, g);
-    const double omega_dt = 2.0 * std::numbers::pi / *out.period_thick * out.time_step;
-    out.predicted_integrator_bias = -omega_dt * omega_dt / 24.0;
-    const MuKUncertainty c =
-        mu_k_with_uncertainty(*out.period_thick, 0.0, out.spacing, 0.0, out.h_c, g);
-    out.condition_period = c.condition_period;
-    out.condition_spacing = c.condition_spacing;
-    out.condition_h_c = c.condition_h_c;
+  out.period_thin = rig.period_thin;
+  out.period_thick = rig.period_thick;
+  out.predicted_integrator_bias = rig.integrator_bias;
+  out.slip_threshold = rig.slip_threshold;
+  if (rig.conditioning) {
+    out.condition_period = rig.conditioning->condition_period;
+    out.condition_spacing = rig.conditioning->condition_spacing;
+    out.condition_h_c = rig.conditioning->condition_h_c;
   }
+  const double g = rig.gravity;
+  RigWorld world(rig);
 
   // Only what the scene names: no sensor, no Hall signal and no estimator.
   std::optional<HallSignal> hall;
   std::optional<HallEstimator> estimator;
   if (scene.sensor && !scene.magnets.empty()) {
-    hall.emplace(scene);
-    estimator.emplace(scene.rollers.spacing, g);
+    hall.emplace(rig);
+    estimator.emplace(rig.spacing, g);
   }
   StepView view;
   const auto on_sample = [&](const HallSample& sample) {
@@ -132,7 +133,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
     if (options.observer) view.new_samples.push_back(sample);
   };
 
-  RegimeMonitor monitor(scene, world.plate_mass(), world.plate_inertia(), world.plate_h_c());
+  RegimeMonitor monitor(rig);
   OscillationTracker tracker;
   PlateState state = world.plate();
   tracker.add(0.0, state.x, state.vx);
@@ -158,7 +159,7 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
   double t_previous = 0.0;
   PlateState previous = state;
   std::optional<RunFailure> failure;
-  DriveStats drive_stats(scene);
+  DriveStats drive_stats(rig);
   for (long long i = 0; i < steps && !failure; ++i) {
     world.step();
     const double t = world.time();
@@ -205,33 +206,54 @@ RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunReco
                                               : std::numeric_limits<double>::infinity();
 
   const RegimeFinding finding = monitor.finding(failure);
-  out.regime = regime_name(finding.regime);
+  out.regime = finding.regime;
   out.regime_since = finding.since;
   out.regime_evidence = finding.evidence;
-
-  if (finding.regime != Regime::kOscillates) {
-    out.period_withheld = "no period: the regime is '" + out.regime +
-                          "', not a harmonic oscillation, so the paper's model does not hold";
-  } else if (!(estimator ? out.estimator->periods_used > 0 : out.period_trajectory.has_value())) {
-    out.period_withheld = "no period: fewer than two turning points were measured; simulate longer";
-  }
   if (out.estimator && out.period_trajectory)
     out.estimator_disagreement = cross_check(*out.estimator, *out.period_trajectory);
 
-  // mu_k as the rig would report it: from the estimator's period (the trajectory's when the
-  // scene has no sensor), only for a harmonic oscillation.
-  const double period_for_mu = out.estimator && out.estimator->periods_used > 0
-                                   ? out.estimator->period
-                                   : out.period_trajectory.value_or(0.0);
-  if (finding.regime == Regime::kOscillates && period_for_mu > 0.0) {
-    out.mu_k_recovered = mu_k_from_period_thin(period_for_mu, out.spacing, g);
-    out.mu_k_recovered_thick = mu_k_from_period_thick(period_for_mu, out.spacing, out.h_c, g);
+  // The headline: a period only for a harmonic oscillation, where the paper's model holds.
+  if (!out.harmonic()) {
+    out.period_trajectory.reset();
+    out.period_trajectory_err.reset();
+    out.period_withheld = fmt::format(
+        "no period: the regime is '{}', not a harmonic oscillation, so the paper's model does "
+        "not hold",
+        regime_name(out.regime));
+  } else {
+    // mu_k as the rig would report it: from the estimator's period; from the trajectory's when
+    // the scene has no sensor or its estimator accepted no period.
+    if (out.estimator) {
+      out.mu_k_estimator = out.estimator->mu_k;
+      out.mu_k_err_worst = out.estimator->mu_k_err_worst;
+      out.mu_k_err_quadrature = out.estimator->mu_k_err_quadrature;
+    }
+    std::optional<double> period_for_mu = out.period_trajectory;
+    out.mu_k_source = PeriodSource::kTrajectory;
+    if (out.estimator && out.estimator->periods_used > 0) {
+      out.period = out.estimator->period;
+      period_for_mu = out.period;
+      out.mu_k_source = PeriodSource::kHallEstimator;
+    } else if (out.estimator || !out.period_trajectory) {
+      out.period_withheld =
+          "no period: fewer than two turning points were measured; simulate longer";
+    }
+    if (period_for_mu && *period_for_mu > 0.0) {
+      out.mu_k_recovered = mu_k_from_period_thin(*period_for_mu, out.spacing, g);
+      out.mu_k_recovered_thick = mu_k_from_period_thick(*period_for_mu, out.spacing, out.h_c, g);
+    } else {
+      out.mu_k_source.reset();
+    }
   }
 
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   out.real_time_factor = out.duration / out.wall_s;
   out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;
   return out;
+}
+
+RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunRecording* recording) {
+  return run_experiment(compile_rig(scene), options, recording);
 }
 
 }  // namespace fl

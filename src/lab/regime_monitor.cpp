@@ -22,28 +22,14 @@ bool finite(const PlateState& s) {
 
 }  // namespace
 
-const char* regime_name(Regime regime) {
-  switch (regime) {
-    case Regime::kOscillates:
-      return "oscillates";
-    case Regime::kSticks:
-      return "sticks";
-    case Regime::kTips:
-      return "tips";
-    case Regime::kNoRestoringForce:
-      return "no restoring force";
-    case Regime::kLost:
-      return "lost";
-    case Regime::kNumericallyFailed:
-      return "numerically failed";
-  }
-  return "unknown";
-}
-
-RegimeMonitor::RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia,
-                             double h_c)
-    : scene_(scene), mass_(plate_mass), inertia_(plate_inertia), h_c_(h_c) {
-  surface_speed_ = nominal_roller_speed(scene) * scene.rollers.radius;
+RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
+    : scene_(rig.scene),
+      mass_(rig.plate.mass),
+      inertia_(rig.plate.inertia_pitch),
+      h_c_(rig.plate.h_c) {
+  const Scene& scene = rig.scene;
+  const double plate_mass = mass_;
+  surface_speed_ = rig.roller_speed_nominal * scene.rollers.radius;
   // Friction cannot drive the plate faster than the rollers' surface, and gravity gives at most
   // m g times the plate's length: ten times more energy than both is a numerical blow-up.
   const double v = std::max(surface_speed_, std::fabs(scene.plate.velocity));
@@ -54,7 +40,7 @@ RegimeMonitor::RegimeMonitor(const Scene& scene, double plate_mass, double plate
   speed_bound_ = 2.0 * v + 0.5;
   start_abs_x_ = std::fabs(scene.plate.offset);
   previous_x_ = scene.plate.offset;
-  z0_ = h_c;
+  z0_ = h_c_;
 }
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,

@@ -8,22 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "core/regime.hpp"
 #include "physics/rig_world.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
-
-enum class Regime {
-  kOscillates,         // harmonic oscillation: both rollers slip all the time
-  kSticks,             // stick-slip: the plate reached a roller's surface speed
-  kTips,               // tipping or lift-off: a normal force reached zero
-  kNoRestoringForce,   // the plate drifts off (l <= 2 mu_k h_c, or rollers turning outward)
-  kLost,               // the plate fell off or left the rig's bounds
-  kNumericallyFailed,  // NaN, infinity, energy blow-up or penetration beyond a bound
-};
-
-// "oscillates", "sticks", "tips", "no restoring force", "lost", "numerically failed".
-const char* regime_name(Regime regime);
 
 struct RegimeFinding {
   Regime regime = Regime::kOscillates;
@@ -42,7 +31,8 @@ struct RunFailure {
 
 class RegimeMonitor {
  public:
-  RegimeMonitor(const Scene& scene, double plate_mass, double plate_inertia, double h_c);
+  // The rig must outlive the monitor.
+  explicit RegimeMonitor(const CompiledRig& rig);
 
   // One step's state. Returns a failure when a guard fires; the run must stop then.
   // `surface` is each roller's top's velocity along +x [m/s] this step.
@@ -58,7 +48,7 @@ class RegimeMonitor {
   double slip_margin_observed() const { return slip_ratio_min_; }
 
  private:
-  Scene scene_;
+  const Scene& scene_;
   double mass_, inertia_, h_c_;
   double surface_speed_;  // m/s, the rollers' top without load (for the bounds)
   double energy_bound_;   // J

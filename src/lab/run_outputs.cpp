@@ -5,114 +5,9 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "lab/summary_fields.hpp"
 
 namespace fl {
-namespace {
-
-nlohmann::json optional(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
-std::optional<double> relative_error(const std::optional<double>& value,
-                                     const std::optional<double>& reference) {
-  if (!value || !reference) return std::nullopt;
-  return *value / *reference - 1.0;
-}
-
-// The period the summary leads with: the estimator's, from the Hall signal, and only for a
-// harmonic oscillation (otherwise period_withheld says why there is none).
-std::optional<double> headline_period(const RunSummary& s) {
-  if (s.regime == "oscillates" && s.estimator && s.estimator->periods_used > 0)
-    return s.estimator->period;
-  return std::nullopt;
-}
-
-nlohmann::json optional_text(const std::optional<std::string>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
-}  // namespace
-
-nlohmann::json summary_json(const RunSummary& s) {
-  nlohmann::json j;
-  const auto period = headline_period(s);
-  j["scene"] = s.scene;
-  j["seed"] = s.seed;
-  j["regime"] = s.regime;
-  j["regime_since_s"] = s.regime_since;
-  j["regime_evidence"] = s.regime_evidence;
-  j["period_withheld"] =
-      s.period_withheld.empty() ? nlohmann::json(nullptr) : nlohmann::json(s.period_withheld);
-  j["failure"] = optional_text(s.failure);
-  j["estimator_disagreement"] = optional_text(s.estimator_disagreement);
-  j["condition_period"] = s.condition_period;
-  j["condition_spacing"] = s.condition_spacing;
-  j["condition_h_c"] = s.condition_h_c;
-  j["period_s"] = optional(period);
-  j["period_std_s"] =
-      s.estimator ? nlohmann::json(s.estimator->period_std) : nlohmann::json(nullptr);
-  j["period_std_error_s"] =
-      s.estimator ? nlohmann::json(s.estimator->period_std_error) : nlohmann::json(nullptr);
-  j["periods_used"] = s.estimator ? s.estimator->periods_used : 0;
-  j["periods_discarded"] = s.estimator ? s.estimator->periods_discarded : 0;
-  const bool harmonic = s.regime == "oscillates";
-  j["period_trajectory_s"] = harmonic ? optional(s.period_trajectory) : nlohmann::json(nullptr);
-  j["period_trajectory_err_s"] =
-      harmonic ? optional(s.period_trajectory_err) : nlohmann::json(nullptr);
-  j["mu_k_set"] = s.mu_k_set;
-  j["mu_k_recovered"] = optional(s.mu_k_recovered);
-  j["mu_k_recovered_thick"] = optional(s.mu_k_recovered_thick);
-  if (s.estimator && harmonic) {
-    j["mu_k_estimator"] = s.estimator->mu_k;
-    j["mu_k_err_worst"] = s.estimator->mu_k_err_worst;
-    j["mu_k_err_quadrature"] = s.estimator->mu_k_err_quadrature;
-  }
-  if (s.paper_period) {
-    j["paper"] = {{"material", s.paper_material},
-                  {"period_s", s.paper_period->value},
-                  {"period_err_s", s.paper_period->uncertainty},
-                  {"mu_k", s.paper_mu_k->value},
-                  {"mu_k_err", s.paper_mu_k->uncertainty}};
-  }
-  j["period_thin_s"] = s.period_thin;
-  j["period_thick_s"] = optional(s.period_thick);
-  j["error_vs_thin"] = optional(relative_error(period, s.period_thin));
-  j["error_vs_thick"] = optional(relative_error(period, s.period_thick));
-  j["trajectory_error_vs_thick"] =
-      harmonic ? optional(relative_error(s.period_trajectory, s.period_thick))
-               : nlohmann::json(nullptr);
-  j["predicted_integrator_bias"] = optional(s.predicted_integrator_bias);
-  j["h_c_m"] = s.h_c;
-  j["plate_mass_kg"] = s.plate_mass;
-  j["spacing_m"] = s.spacing;
-  j["amplitude_start_m"] = s.amplitude_start;
-  j["amplitude_end_m"] = s.amplitude_end;
-  j["amplitude_drift_per_period"] = optional(s.amplitude_drift_per_period);
-  j["roller_speed_rad_s"] = s.roller_speed;
-  if (s.drive) {
-    const DriveReport& d = *s.drive;
-    j["drive"] = {{"motor_speed_rad_s", d.motor_speed},
-                  {"motor_torque_n_m", d.motor_torque},
-                  {"roller_speeds_rad_s", {d.roller_speeds[0], d.roller_speeds[1]}},
-                  {"gearbox_ratio", d.gearbox_ratio},
-                  {"speed_ratio", d.speed_ratio},
-                  {"speed_ratio_error", d.speed_ratio_error},
-                  {"senses_opposite", d.senses_opposite},
-                  {"load_torque_n_m", d.load_torque}};
-  } else {
-    j["drive"] = nullptr;
-  }
-  j["plate_speed_max_m_s"] = s.plate_speed_max;
-  j["slip_margin"] =
-      std::isfinite(s.slip_margin) ? nlohmann::json(s.slip_margin) : nlohmann::json(nullptr);
-  j["min_normal_force_n"] = s.min_normal_force;
-  j["max_penetration_m"] = s.max_penetration;
-  j["time_step_s"] = s.time_step;
-  j["solver_iterations"] = s.solver_iterations;
-  j["duration_s"] = s.duration;
-  j["steps"] = s.steps;
-  return j;
-}
 
 nlohmann::json timing_json(const RunSummary& s) {
   return nlohmann::json{{"wall_s", s.wall_s},
@@ -125,19 +20,18 @@ std::string summary_text(const RunSummary& s) {
   const auto line = [&out](const std::string& text) { out += text + "\n"; };
   constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
   line(fmt::format("frictionlab run: {} (seed {})", s.scene, s.seed));
-  line(fmt::format("  regime                 {}{}: {}", s.regime,
+  line(fmt::format("  regime                 {}{}: {}", regime_name(s.regime),
                    s.regime_since > 0.0 ? fmt::format(" since t = {:.4f} s", s.regime_since) : "",
                    s.regime_evidence));
   if (s.failure) line(fmt::format("  STOPPED                {}", *s.failure));
-  if (!s.period_withheld.empty())
-    line(fmt::format("  period                 {}", s.period_withheld));
+  if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));
   line(fmt::format(
       "  roller spacing l       {:.2f} mm, h_c {:.2f} mm, plate {:.1f} g, mu_k set {:.4g}",
       s.spacing * 1e3, s.h_c * 1e3, s.plate_mass * 1e3, s.mu_k_set));
-  const auto period = headline_period(s);
-  if (s.estimator && s.regime == "oscillates") {
+  const std::optional<double>& period = s.period;
+  if (s.estimator && s.harmonic()) {
     const EstimatorReport& e = *s.estimator;
     if (e.periods_used > 0) {
       line(fmt::format("  period (Hall estimator) T = {:.5f} +- {:.5f} s (N = {}, {} discarded)",
@@ -151,7 +45,7 @@ std::string summary_text(const RunSummary& s) {
           fmt::format("  period (Hall estimator) none: {} pulse(s), no accepted period", e.pulses));
     }
   }
-  if (s.condition_period > 0.0 && s.regime == "oscillates")
+  if (s.condition_period > 0.0 && s.harmonic())
     line(fmt::format(
         "  conditioning           d mu/mu = {:.3f} dT/T + {:.0f} dl/l + {:.3f} dh_c/h_c "
         "(thick formula, h_c = {:.2f} mm){}",
@@ -160,7 +54,7 @@ std::string summary_text(const RunSummary& s) {
   if (s.mu_k_recovered_thick)
     line(fmt::format("  mu_k through the thick formula (h_c = {:.2f} mm): {:.4f}", s.h_c * 1e3,
                      *s.mu_k_recovered_thick));
-  if (s.period_trajectory && s.regime == "oscillates")
+  if (s.period_trajectory)
     line(fmt::format("  period (trajectory)    {:.6f} s", *s.period_trajectory));
   line(fmt::format(
       "  analytic, thin plate   {:.6f} s{}", s.period_thin,

@@ -7,11 +7,12 @@
 #include <nlohmann/json.hpp>
 
 #include "lab/experiment.hpp"
+#include "lab/summary_fields.hpp"
 
 namespace fl {
 
-// Everything a run found, deterministic: the same scene and seed give the same bytes.
-nlohmann::json summary_json(const RunSummary& summary);
+// summary_json (everything a run found, deterministic: the same scene and seed give the same
+// bytes) is in lab/summary_fields.hpp.
 // What the run cost on this machine (wall time, real-time factor, steps per second).
 nlohmann::json timing_json(const RunSummary& summary);
 std::string summary_text(const RunSummary& summary);

@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "core/analytic_model.hpp"
 #include "lab/experiment.hpp"
 #include "lab/regime_theory.hpp"
 
@@ -21,7 +20,7 @@ struct Trial {
   RunSummary summary;
 };
 
-Trial try_step(const Scene& base, double dt, const std::string& expected) {
+Trial try_step(const Scene& base, double dt, Regime expected) {
   Scene scene = base;
   scene.world.time_step = dt;
   // The diagnosis and the trajectory's period need no sensor.
@@ -29,8 +28,8 @@ Trial try_step(const Scene& base, double dt, const std::string& expected) {
   Trial trial;
   trial.summary = run_experiment(scene, {});
   const RunSummary& r = trial.summary;
-  trial.trustworthy = r.regime == expected && r.regime != "numerically failed";
-  if (trial.trustworthy && expected == "oscillates") {
+  trial.trustworthy = r.regime == expected && r.regime != Regime::kNumericallyFailed;
+  if (trial.trustworthy && expected == Regime::kOscillates) {
     trial.trustworthy =
         r.period_trajectory && r.period_thick &&
         std::fabs(*r.period_trajectory / *r.period_thick - 1.0) <= kTrustworthyPeriodError;
@@ -38,14 +37,15 @@ Trial try_step(const Scene& base, double dt, const std::string& expected) {
   return trial;
 }
 
-std::string describe_case(const Scene& s, double h_c) {
+std::string describe_case(const CompiledRig& rig) {
+  const Scene& s = rig.scene;
   constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
   return fmt::format(
       "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
       "dt {:.3g} ms",
-      s.friction.mu_k, s.rollers.spacing * 1e3, h_c * 1e3, nominal_roller_speed(s) * kRpm,
+      rig.mu_k, rig.spacing * 1e3, rig.plate.h_c * 1e3, rig.roller_speed_nominal * kRpm,
       s.rollers.sense == RollerSense::kOutward ? " outward" : "", std::fabs(s.plate.offset) * 1e3,
-      plate_mass(s).mass * 1e3, s.world.time_step * 1e3);
+      rig.plate.mass * 1e3, s.world.time_step * 1e3);
 }
 
 }  // namespace
@@ -54,28 +54,24 @@ StabilityRow run_stability_case(const Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   StabilityRow row;
   row.name = scene.name;
-  const double h_c = plate_mass(scene).h_c;
-  row.parameters = describe_case(scene, h_c);
-  const TheoryRegime theory = regime_from_theory(scene);
+  const CompiledRig rig = compile_rig(scene);
+  row.parameters = describe_case(rig);
+  const TheoryRegime theory = regime_from_theory(rig);
   row.expected = theory.regime;
   row.expected_reason = theory.reason;
-  row.declared = scene.expected_regime.value_or("");
+  row.declared = scene.expected_regime;
 
   // At the scene's own step, as `frictionlab run` would.
   const Trial own = try_step(scene, scene.world.time_step, row.expected);
   row.found = own.summary.regime;
   row.evidence = own.summary.regime_evidence;
-  row.as_expected =
-      row.found == row.expected && (row.declared.empty() || row.declared == row.expected);
-  if (row.found == "oscillates" && own.summary.period_trajectory && own.summary.period_thick)
+  row.as_expected = row.found == row.expected && (!row.declared || *row.declared == row.expected);
+  if (own.summary.period_trajectory && own.summary.period_thick)
     row.period_error = *own.summary.period_trajectory / *own.summary.period_thick - 1.0;
-  if (has_restoring_force(scene.rollers.spacing, scene.friction.mu_k, h_c)) {
-    const MuKUncertainty c = mu_k_with_uncertainty(
-        period_thick(scene.rollers.spacing, scene.friction.mu_k, h_c, scene.world.gravity), 0.0,
-        scene.rollers.spacing, 0.0, h_c, scene.world.gravity);
-    row.condition_period = c.condition_period;
-    row.condition_spacing = c.condition_spacing;
-    row.condition_h_c = c.condition_h_c;
+  if (rig.conditioning) {
+    row.condition_period = rig.conditioning->condition_period;
+    row.condition_spacing = rig.conditioning->condition_spacing;
+    row.condition_h_c = rig.conditioning->condition_h_c;
   }
 
   // Bisection on log(dt) between the smallest and the largest step.

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "core/regime.hpp"
 #include "scene/scene.hpp"
 
 namespace fl {
@@ -13,10 +14,10 @@ namespace fl {
 struct StabilityRow {
   std::string name;
   std::string parameters;  // the case in a few words (mu_k, l, h_c, speed, amplitude, dt)
-  std::string expected;    // from theory (regime_from_theory)
+  Regime expected = Regime::kOscillates;  // from theory (regime_from_theory)
   std::string expected_reason;
-  std::string declared;  // the scene's expect.regime (empty if none)
-  std::string found;     // diagnosed by the run at the scene's step
+  std::optional<Regime> declared;      // the scene's expect.regime
+  Regime found = Regime::kOscillates;  // diagnosed by the run at the scene's step
   std::string evidence;
   bool as_expected = false;  // found == expected (and == declared, if any)
   // Largest step in [1e-5 s, 1/60 s] at which the run is trustworthy: no numerical failure, the

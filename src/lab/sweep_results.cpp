@@ -7,81 +7,22 @@
 
 #include <fmt/format.h>
 
-#include "core/analytic_model.hpp"
 #include "lab/experiment.hpp"
-#include "lab/run_outputs.hpp"
+#include "lab/summary_fields.hpp"
 
 namespace fl {
 namespace {
 
-// The row's columns after the index and the axes, in CSV order. Every row has every key (null
-// when the point has no such value).
+// The row's columns after the index and the axes, in CSV order: the run's fields from the one
+// table of summary fields. Every row has every key (null when the point has no such value).
 const std::vector<std::string>& fixed_columns() {
-  static const std::vector<std::string> columns{"seed",
-                                                "status",
-                                                "regime",
-                                                "period_s",
-                                                "period_std_s",
-                                                "period_std_error_s",
-                                                "periods_used",
-                                                "period_trajectory_s",
-                                                "period_thin_s",
-                                                "period_thick_s",
-                                                "error_vs_thin",
-                                                "error_vs_thick",
-                                                "mu_k_set",
-                                                "mu_k_recovered",
-                                                "mu_k_recovered_thick",
-                                                "mu_k_err_worst",
-                                                "mu_k_err_quadrature",
-                                                "spacing_m",
-                                                "h_c_m",
-                                                "temperature_k",
-                                                "gravity_m_s2",
-                                                "roller_speed_rad_s",
-                                                "slip_margin",
-                                                "slip_threshold_rad_s",
-                                                "amplitude_start_m",
-                                                "amplitude_end_m",
-                                                "paper_material",
-                                                "paper_period_s",
-                                                "paper_period_err_s",
-                                                "paper_mu_k",
-                                                "paper_mu_k_err",
-                                                "time_step_s",
-                                                "duration_s",
-                                                "steps",
-                                                "regime_detail",
-                                                "error"};
+  static const std::vector<std::string> columns = [] {
+    std::vector<std::string> names;
+    for (const char* c : sweep_summary_columns()) names.emplace_back(c);
+    return names;
+  }();
   return columns;
 }
-
-// The keys copied from the run's summary JSON as they are (run_outputs.hpp names them).
-constexpr const char* kFromSummary[] = {"seed",
-                                        "regime",
-                                        "period_s",
-                                        "period_std_s",
-                                        "period_std_error_s",
-                                        "periods_used",
-                                        "period_trajectory_s",
-                                        "period_thin_s",
-                                        "period_thick_s",
-                                        "error_vs_thin",
-                                        "error_vs_thick",
-                                        "mu_k_set",
-                                        "mu_k_recovered",
-                                        "mu_k_recovered_thick",
-                                        "mu_k_err_worst",
-                                        "mu_k_err_quadrature",
-                                        "spacing_m",
-                                        "h_c_m",
-                                        "roller_speed_rad_s",
-                                        "slip_margin",
-                                        "amplitude_start_m",
-                                        "amplitude_end_m",
-                                        "time_step_s",
-                                        "duration_s",
-                                        "steps"};
 
 nlohmann::json empty_row(const SweepSpec& spec, const SweepPoint& point) {
   nlohmann::json row;
@@ -95,52 +36,6 @@ nlohmann::json empty_row(const SweepSpec& spec, const SweepPoint& point) {
   for (const SceneOverride& o : point.overrides) set.push_back(o.path + "=" + o.value);
   row["set"] = set;
   return row;
-}
-
-nlohmann::json finite_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-void fill_from_run(nlohmann::json& row, const Scene& scene, const RunSummary& summary) {
-  const nlohmann::json s = summary_json(summary);
-  for (const char* key : kFromSummary) {
-    const auto it = s.find(key);
-    if (it == s.end()) continue;
-    // A non-finite number is no result.
-    row[key] = it->is_number_float() ? finite_or_null(it->get<double>()) : *it;
-  }
-  // The regime's evidence (its key has changed name as the diagnosis grew).
-  for (const char* key : {"regime_evidence", "regime_reason"}) {
-    if (s.contains(key) && s[key].is_string()) {
-      row["regime_detail"] = s[key];
-      break;
-    }
-  }
-  if (s.contains("paper") && s["paper"].is_object()) {
-    const nlohmann::json& p = s["paper"];
-    row["paper_material"] = p.value("material", "");
-    row["paper_period_s"] = p.value("period_s", 0.0);
-    row["paper_period_err_s"] = p.value("period_err_s", 0.0);
-    row["paper_mu_k"] = p.value("mu_k", 0.0);
-    row["paper_mu_k_err"] = p.value("mu_k_err", 0.0);
-  }
-  row["temperature_k"] = scene.friction.temperature;
-  row["gravity_m_s2"] = scene.world.gravity;
-  // Where the analytic slip condition puts the threshold: the rollers' surface just keeps up
-  // with the plate's largest speed for the scene's initial amplitude.
-  const double mu = scene.friction.mu_k;
-  if (has_restoring_force(summary.spacing, mu, summary.h_c)) {
-    const double amplitude = initial_amplitude(scene, mu);
-    row["slip_threshold_rad_s"] = roller_speed_for_full_slip(
-        amplitude, scene.rollers.radius, summary.spacing, mu, summary.h_c, scene.world.gravity);
-  }
-  // A guard that stopped the run is a failed point.
-  if (s.contains("failure") && s["failure"].is_string()) {
-    row["status"] = "failed";
-    row["error"] = s["failure"];
-  } else {
-    row["status"] = "ok";
-  }
 }
 
 std::string csv_cell(const nlohmann::json& v) {
@@ -179,7 +74,7 @@ PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
     out.row["seed"] = scene->world.seed;
     try {
       const RunSummary summary = run_experiment(*scene, RunOptions{});
-      fill_from_run(out.row, *scene, summary);
+      fill_sweep_columns(out.row, summary);
     } catch (const std::exception& e) {
       out.row["status"] = "failed";
       out.row["error"] = std::string("the run stopped: ") + e.what();

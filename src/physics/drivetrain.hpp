@@ -14,14 +14,15 @@
 #include <array>
 #include <vector>
 
-#include "scene/drive_layout.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
 class Drivetrain {
  public:
-  explicit Drivetrain(const Scene& scene);
+  // The train of the compiled rig's drive (its layout, ratios and inertia); the rig must outlive
+  // the train.
+  explicit Drivetrain(const CompiledRig& rig);
 
   // Advances the train by dt under the torques [N m, about +y] the plate's friction put on the
   // two rollers during the last step.
@@ -32,19 +33,13 @@ class Drivetrain {
   double speed(int shaft) const;                         // rad/s about +y
   double angle(int shaft) const;                         // rad about +y since the start
   std::array<double, 2> roller_speeds() const { return {speed(0), speed(1)}; }
-  // Each shaft's speed over the motor's (signed), from the tooth counts.
-  const std::vector<double>& ratios() const { return ratios_; }
-  double inertia_at_motor() const { return inertia_; }
-  const DriveLayout& layout() const { return layout_; }
+  const DriveLayout& layout() const { return drive_.layout; }
 
  private:
-  DriveLayout layout_;
-  MotorDesc motor_;
-  std::vector<double> ratios_;  // omega_shaft / omega_motor
-  double inertia_ = 0.0;        // kg m^2, seen at the motor
-  double sign_ = 1.0;           // the motor's sense that turns roller 0 as the scene sets
-  double omega_ = 0.0;          // rad/s, the motor's
-  double theta_ = 0.0;          // rad, the motor's
+  const CompiledDrive& drive_;
+  const MotorDesc& motor_;
+  double omega_ = 0.0;  // rad/s, the motor's
+  double theta_ = 0.0;  // rad, the motor's
   double motor_torque_ = 0.0;
 };
 

@@ -25,8 +25,9 @@ struct FrictionCallbackInstaller {
 }  // namespace
 
 struct RigWorld::Impl {
-  Scene scene;
-  PlateMass mass;
+  std::shared_ptr<const CompiledRig> owned;  // when the world compiled its scene itself
+  const CompiledRig& rig;
+  const Scene& scene;
   double dt = 0.0;
   long long steps = 0;
   std::array<double, 2> roller_omega{};
@@ -48,12 +49,12 @@ struct RigWorld::Impl {
   std::unique_ptr<btBoxShape> plate_shape;
   std::unique_ptr<btRigidBody> plate;
 
-  explicit Impl(const Scene& s);
+  Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep);
   ~Impl();
 
   // Before each internal step: kinematic rollers keep a fixed transform and a forced angular
   // velocity (Bullet would otherwise derive their velocity from a changing transform, which
-  // aliases at large steps and leaves stale contact points; ../shared/bullet-facts.md). With a
+  // aliases at large steps and leaves stale contact points; docs/physics.md). With a
   // drive, the speed is the gear train's (advanced in RigWorld::step).
   static void before_step(btDynamicsWorld* world, btScalar /*time_step*/) {
     auto* impl = static_cast<Impl*>(world->getWorldUserInfo());
@@ -64,14 +65,20 @@ struct RigWorld::Impl {
   }
 };
 
-RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.world.time_step) {
+RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep)
+    : owned(std::move(keep)),
+      rig(compiled),
+      scene(compiled.scene),
+      dt(compiled.scene.world.time_step) {
+  const Scene& s = scene;
+  const PlateMass& mass = rig.plate;
   static const FrictionCallbackInstaller install;
   world.setGravity(btVector3(0, 0, -s.world.gravity));
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
 
   // Rollers. For collision each is one sphere of the roller's radius (a cylinder against a box
-  // gives one contact point that jumps between the plate's edges; ../shared/bullet-facts.md);
+  // gives one contact point that jumps between the plate's edges; docs/physics.md);
   // the renderer draws the cylinder.
   const double l = s.rollers.spacing;
   const double a = s.rollers.radius;
@@ -81,7 +88,7 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
   // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
   roller_omega = {sense * s.rollers.speed, -sense * s.rollers.speed};
   if (s.drive) {
-    drivetrain = std::make_unique<Drivetrain>(s);
+    drivetrain = std::make_unique<Drivetrain>(rig);
     roller_omega = drivetrain->roller_speeds();
   }
   for (int i = 0; i < 2; ++i) {
@@ -100,8 +107,7 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
   }
 
   // Guide towers: only the frame's parts marked as guides collide, each through its boxes
-  // (from the part index, never the render mesh). Guide-plate friction 0.3 (ABS on the slab).
-  constexpr double kGuideFriction = 0.3;
+  // (from the part index, never the render mesh), with the rig's guide friction.
   if (s.frame) {
     for (const FramePart& part : s.frame->parts) {
       if (!part.guide) continue;
@@ -114,8 +120,8 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
             btQuaternion::getIdentity(),
             btVector3(part.position[0] + box.center[0], part.position[1] + box.center[1],
                       part.position[2] + box.center[2])));
-        // Combined as a product with the plate's mu_k: this gives kGuideFriction.
-        object->setFriction(kGuideFriction / s.friction.mu_k);
+        // Combined as a product with the plate's mu_k: this gives the guide friction.
+        object->setFriction(rig.guide_friction / rig.mu_k);
         object->setRestitution(0.0);
         world.addCollisionObject(object.get());
         guides.push_back(std::move(object));
@@ -134,7 +140,7 @@ RigWorld::Impl::Impl(const Scene& s) : scene(s), mass(fl::plate_mass(s)), dt(s.w
   btRigidBody::btRigidBodyConstructionInfo ci(mass.mass, nullptr, plate_shape.get(), inertia);
   ci.m_startWorldTransform =
       btTransform(btQuaternion::getIdentity(), btVector3(p.offset, 0, mass.h_c));
-  ci.m_friction = s.friction.mu_k;
+  ci.m_friction = rig.mu_k;
   ci.m_restitution = 0.0;
   ci.m_rollingFriction = 0.0;
   ci.m_spinningFriction = 0.0;
@@ -164,7 +170,11 @@ RigWorld::Impl::~Impl() {
   for (auto& r : rollers) world.removeRigidBody(r.get());
 }
 
-RigWorld::RigWorld(const Scene& scene) : impl_(std::make_unique<Impl>(scene)) {}
+RigWorld::RigWorld(const CompiledRig& rig) : impl_(std::make_unique<Impl>(rig, nullptr)) {}
+RigWorld::RigWorld(const Scene& scene) {
+  auto rig = compile_rig_shared(scene);
+  impl_ = std::make_unique<Impl>(*rig, rig);
+}
 RigWorld::~RigWorld() = default;
 
 void RigWorld::step() {
@@ -246,6 +256,10 @@ std::array<double, 2> RigWorld::roller_speeds() const {
   return impl_->roller_omega;
 }
 
+std::array<double, 2> RigWorld::roller_body_speeds() const {
+  return {impl_->rollers[0]->getAngularVelocity().y(), impl_->rollers[1]->getAngularVelocity().y()};
+}
+
 std::array<double, 2> RigWorld::roller_angles() const {
   return impl_->roller_angle;
 }
@@ -275,14 +289,8 @@ std::vector<ShaftState> RigWorld::shafts() const {
   return out;
 }
 
-double RigWorld::plate_mass() const {
-  return impl_->mass.mass;
-}
-double RigWorld::plate_h_c() const {
-  return impl_->mass.h_c;
-}
-double RigWorld::plate_inertia() const {
-  return impl_->mass.inertia_pitch;
+const CompiledRig& RigWorld::rig() const {
+  return impl_->rig;
 }
 
 }  // namespace fl

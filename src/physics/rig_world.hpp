@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
@@ -47,6 +47,9 @@ struct ShaftState {
 
 class RigWorld {
  public:
+  // The world of a compiled rig, which must outlive the world.
+  explicit RigWorld(const CompiledRig& rig);
+  // The same for a scene, compiled for (and kept by) this world.
   explicit RigWorld(const Scene& scene);
   ~RigWorld();
   RigWorld(const RigWorld&) = delete;
@@ -63,6 +66,10 @@ class RigWorld {
   // Angular velocity about +y of each roller [rad/s] (roller 0 positive when turning inward).
   std::array<double, 2> roller_speeds() const;
 
+  // The Bullet roller bodies' own angular velocity about +y [rad/s]: what the contact solver
+  // used in the last step (the drive's speed, as the world handed it to Bullet).
+  std::array<double, 2> roller_body_speeds() const;
+
   // Each roller's angle about +y since the start [rad] (the rollers' bodies keep a fixed
   // transform; this is their speed integrated step by step, for drawing).
   std::array<double, 2> roller_angles() const;
@@ -75,9 +82,7 @@ class RigWorld {
   // Every shaft of the drive layout, in its order (empty for the ideal drive).
   std::vector<ShaftState> shafts() const;
 
-  double plate_mass() const;     // kg, slab + payload + magnets
-  double plate_h_c() const;      // m, centre of mass above the contact line
-  double plate_inertia() const;  // kg m^2, pitch
+  const CompiledRig& rig() const;
 
  private:
   // Reads the contact manifolds (once per step, in step()).

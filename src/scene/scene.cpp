@@ -71,7 +71,7 @@ double nominal_roller_speed(const Scene& scene) {
 double initial_amplitude(const Scene& scene, double mu_k) {
   const PlateMass pm = plate_mass(scene);
   const double omega = angular_frequency(scene.rollers.spacing, mu_k, pm.h_c, scene.world.gravity);
-  return std::hypot(scene.plate.offset, scene.plate.velocity / omega);
+  return amplitude_from_start(scene.plate.offset, scene.plate.velocity, omega);
 }
 
 }  // namespace fl

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/regime.hpp"
 #include "core/units.hpp"
 #include "scene/video_yaml.hpp"
 
@@ -170,10 +171,10 @@ struct OutputDesc {
 
 struct Scene {
   std::string name;  // file stem or "inline"
-  // A scene that explores a breakdown says which regime theory expects ("oscillates", "sticks",
-  // "tips", "no restoring force", "lost"); the loader then lets set-ups through that it would
+  // A scene that explores a breakdown says which regime theory expects (oscillates, sticks,
+  // tips, no restoring force, lost); the loader then lets set-ups through that it would
   // otherwise refuse (no restoring force, a plate too short), and the run diagnoses them.
-  std::optional<std::string> expected_regime;
+  std::optional<Regime> expected_regime;
   WorldDesc world;
   RollersDesc rollers;
   PlateDesc plate;

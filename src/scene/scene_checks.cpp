@@ -84,7 +84,10 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     return problems;
   }
   const double amplitude =
-      has_restoring_force(l, mu, pm.h_c) ? initial_amplitude(s, mu) : std::fabs(s.plate.offset);
+      has_restoring_force(l, mu, pm.h_c)
+          ? amplitude_from_start(s.plate.offset, s.plate.velocity,
+                                 angular_frequency(l, mu, pm.h_c, s.world.gravity))
+          : std::fabs(s.plate.offset);
   need(exploring || 0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
        describe("the plate (", s.plate.length * 1e3,
                 " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,

@@ -194,11 +194,11 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
     expect->allow_keys({"regime"});
     const YamlNode regime = expect->at("regime");
     const std::string text = regime.text();
-    if (text != "oscillates" && text != "sticks" && text != "tips" &&
-        text != "no restoring force" && text != "lost")
+    const std::optional<Regime> expected = regime_from_name(text);
+    if (!expected || *expected == Regime::kNumericallyFailed)
       regime.fail("expected one of: oscillates, sticks, tips, no restoring force, lost; found \"" +
                   text + "\"");
-    scene.expected_regime = text;
+    scene.expected_regime = expected;
   }
   if (auto v = root.find("world")) read_world(*v, scene.world);
   if (auto v = root.find("rollers")) read_rollers(*v, scene.rollers);

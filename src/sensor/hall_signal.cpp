@@ -17,8 +17,10 @@ double hermite(double s, double h, double p0, double p1, double v0, double v1) {
 
 }  // namespace
 
-HallSignal::HallSignal(const Scene& scene) : sensor_(scene.sensor.value()), rng_(scene.world.seed) {
-  const PlateMass pm = plate_mass(scene);
+HallSignal::HallSignal(const CompiledRig& rig)
+    : sensor_(rig.scene.sensor.value()), rng_(rig.scene.world.seed) {
+  const Scene& scene = rig.scene;
+  const PlateMass& pm = rig.plate;
   for (const MagnetDesc& m : scene.magnets) {
     magnets_.push_back(
         {{m.x - pm.x_c, 0.0, scene.plate.thickness + m.height + 0.5 * m.thickness - pm.h_c},

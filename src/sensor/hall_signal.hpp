@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
@@ -29,8 +29,8 @@ struct PlatePose {
 
 class HallSignal {
  public:
-  // Needs scene.sensor. The noise and the jitter come from scene.world.seed.
-  explicit HallSignal(const Scene& scene);
+  // Needs the scene's sensor. The noise and the jitter come from its world.seed.
+  explicit HallSignal(const CompiledRig& rig);
 
   // Field component along the sensor's axis [T] for the plate at `pose`.
   double field_along_axis(const PlatePose& pose) const;

@@ -1,5 +1,5 @@
 // The analytic model against values computed by hand (python, 17 digits) from the formulas in
-// the paper and DESIGN.md, and its refusal of inputs where it means nothing.
+// the paper and docs/physics.md, and its refusal of inputs where it means nothing.
 #include "core/analytic_model.hpp"
 
 #include <cmath>
@@ -73,7 +73,7 @@ TEST(AnalyticModel, ThickConditionNumberIsBelowTwo) {
 }
 
 TEST(AnalyticModel, SlipMarginAt200RpmIsBelowOneAsDesignSays) {
-  // DESIGN.md: at 200 rpm, a = 10 mm: 0.21 m/s, below 0.24 m/s for A = 30 mm at T = 0.79 s.
+  // docs/physics.md: at 200 rpm, a = 10 mm: 0.21 m/s, below 0.24 m/s for A = 30 mm at T = 0.79 s.
   const double mu = mu_k_from_period_thin(0.79, 0.089, kG);
   const double rpm = 2.0 * std::numbers::pi / 60.0;
   EXPECT_NEAR(slip_margin(200.0 * rpm, 0.010, 0.030, 0.089, mu, 0.0, kG), 0.877777777777778, 1e-12);

@@ -45,7 +45,7 @@ TEST_P(EstimatorPeriod, WithinFiveHundredthsOfAPercentOfTheThickFormula) {
   ASSERT_TRUE(r.period_thick.has_value());
   EXPECT_NEAR(r.estimator->period / *r.period_thick - 1.0, 0.0, kEstimatorTolerance)
       << GetParam().material << " " << GetParam().temperature;
-  EXPECT_EQ(r.regime, "oscillates");
+  EXPECT_EQ(r.regime, Regime::kOscillates);
 }
 
 INSTANTIATE_TEST_SUITE_P(TableI, EstimatorPeriod,

@@ -42,11 +42,12 @@ class Catalogue : public ::testing::TestWithParam<std::string> {};
 TEST_P(Catalogue, EndsInTheRegimeTheoryExpects) {
   const Scene scene = load_case(GetParam());
   ASSERT_TRUE(scene.expected_regime.has_value()) << "every case declares expect.regime";
-  // The declared regime is theory's (DESIGN.md's conditions), not a record of a past run.
-  EXPECT_EQ(*scene.expected_regime, regime_from_theory(scene).regime);
+  // The declared regime is theory's (the conditions in docs/physics.md), not a record of a past
+  // run.
+  EXPECT_EQ(*scene.expected_regime, regime_from_theory(compile_rig(scene)).regime);
   const StabilityRow row = run_stability_case(scene);
   EXPECT_EQ(row.found, row.expected) << row.evidence;
-  EXPECT_NE(row.found, "numerically failed");
+  EXPECT_NE(row.found, Regime::kNumericallyFailed);
   EXPECT_TRUE(row.largest_step.has_value()) << row.step_note;
 }
 
@@ -66,7 +67,7 @@ TEST(StiffCases, MuTenWithinOneTenthPercentAtTheReportedStep) {
   ASSERT_TRUE(row.largest_step.has_value());
   scene.world.time_step = *row.largest_step;
   const RunSummary r = run_experiment(scene, {});
-  ASSERT_EQ(r.regime, "oscillates");
+  ASSERT_EQ(r.regime, Regime::kOscillates);
   ASSERT_TRUE(r.period_thick.has_value());
   EXPECT_NEAR(*r.period_thick, 0.0886, 0.001);
   EXPECT_LE(std::fabs(*r.period_trajectory / *r.period_thick - 1.0), 1e-3);

@@ -28,7 +28,7 @@ TEST(BulletPrecision, LibraryRoutineComputesTheBoxInertiaInDouble) {
 
 // A 1 s free fall from 10 m through the library's world and integrator, at a fixed step:
 // semi-implicit Euler gives z_n = z_0 - g dt^2 n (n + 1) / 2 exactly (to double rounding).
-// A precision mismatch ended at z = 1.0 here (../shared/bullet-facts.md).
+// A precision mismatch ended at z = 1.0 here (docs/physics.md).
 TEST(BulletPrecision, FreeFallThroughTheLibraryWorldMatchesTheIntegratorInDouble) {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher(&configuration);

@@ -46,7 +46,7 @@ Measured simulate(const Scene& scene, double seconds) {
   EXPECT_TRUE(p.has_value());
   m.period = p ? p->slope : 0.0;
   m.drift_per_period = tracker.amplitude_drift_per_period().value_or(1.0);
-  m.h_c = world.plate_h_c();
+  m.h_c = world.rig().plate.h_c;
   return m;
 }
 

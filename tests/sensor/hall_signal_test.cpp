@@ -49,7 +49,7 @@ Scene sensed_scene() {
 
 TEST(HallSignal, FieldUnderTheMagnetAndTheAdcTransfer) {
   const Scene s = sensed_scene();
-  HallSignal hall(s);
+  HallSignal hall(compile_rig(s));
   const PlateMass pm = plate_mass(s);
   // Plate centred: the magnet's centre is straight below the sensor.
   PlatePose pose;
@@ -70,7 +70,7 @@ TEST(HallSignal, FieldUnderTheMagnetAndTheAdcTransfer) {
 TEST(HallSignal, SamplesFollowTheAdcClockNotThePhysicsStep) {
   Scene s = sensed_scene();
   s.sensor->sample_rate = 1000.0;
-  HallSignal hall(s);
+  HallSignal hall(compile_rig(s));
   std::vector<HallSample> samples;
   // Physics steps of 3.7 ms: the samples still come every 1 ms, stamped on the clock.
   PlatePose a, b;
@@ -90,7 +90,7 @@ TEST(HallSignal, SameSeedSameNoiseOtherSeedOtherNoise) {
     s.sensor->noise = 0.01;
     s.sensor->jitter = 20e-6;
     s.world.seed = seed;
-    HallSignal hall(s);
+    HallSignal hall(compile_rig(s));
     std::vector<int> codes;
     PlatePose a, b;
     a.z = b.z = plate_mass(s).h_c;

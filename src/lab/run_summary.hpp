@@ -1,0 +1,120 @@
+// What one run found, as one typed value: the regime (the same enum theory uses), the headline
+// period and mu_k decided by the run (lab/experiment.cpp) with their source, the estimator's and
+// the trajectory's periods, the analytic model's, the drive's figures and the run's cost. Compare,
+// sweeps, stability and the outputs read this struct; its JSON and CSV forms come from one table
+// of fields (lab/summary_fields.hpp).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/regime.hpp"
+#include "core/units.hpp"
+
+namespace fl {
+
+// The period the rig's estimator measured from the simulated Hall signal.
+struct EstimatorReport {
+  int periods_used = 0;
+  int periods_discarded = 0;
+  int pulses = 0;
+  double period = 0.0;            // s, mean
+  double period_std = 0.0;        // s, standard deviation of the periods
+  double period_std_error = 0.0;  // s, of the mean
+  double mu_k = 0.0;              // from the mean period, thin formula (the paper's)
+  double mu_k_err_worst = 0.0;
+  double mu_k_err_quadrature = 0.0;
+};
+
+// The motor and gears over the run (scenes with a drive).
+struct DriveReport {
+  double motor_speed = 0.0;               // rad/s, mean, in the motor's driving sense
+  double motor_torque = 0.0;              // N m, mean
+  std::array<double, 2> roller_speeds{};  // rad/s about +y, mean
+  double gearbox_ratio = 0.0;             // the design's speed-up, from the tooth counts
+  double speed_ratio = 0.0;               // |roller 0| / |motor|, mean
+  double speed_ratio_error = 0.0;         // largest |ratio / design - 1| over the steps
+  bool senses_opposite = true;            // the rollers turned opposite ways at every step
+  double load_torque = 0.0;  // N m, mean torque the plate's friction takes from the rollers
+};
+
+// Where the run's mu_k comes from: the rig's estimator on the Hall signal, or (for a scene
+// without a sensor) the trajectory's own period.
+enum class PeriodSource { kHallEstimator, kTrajectory };
+
+struct RunSummary {
+  std::string scene;
+  std::uint64_t seed = 0;
+  double spacing = 0.0;  // m
+  double mu_k_set = 0.0;
+  double h_c = 0.0;          // m
+  double plate_mass = 0.0;   // kg
+  double gravity = 0.0;      // m/s^2
+  double temperature = 0.0;  // K, of the rollers (friction.temperature)
+  double time_step = 0.0;    // s
+  int solver_iterations = 0;
+  double duration = 0.0;  // s simulated
+  long long steps = 0;
+  std::string paper_material;            // Table I key, when the scene took mu_k from the paper
+  std::optional<Measured> paper_period;  // what the paper measured for it [s]
+  std::optional<Measured> paper_mu_k;
+
+  // The analytic model for the scene's true mu_k and h_c (from the compiled rig).
+  double period_thin = 0.0;                         // s
+  std::optional<double> period_thick;               // s; none without a restoring force
+  std::optional<double> predicted_integrator_bias;  // relative, -(omega dt)^2 / 24
+  std::optional<double> slip_threshold;             // rad/s, roller speed for full slip
+
+  // The regime diagnosed from the run (lab/regime_monitor.hpp), when it began and why.
+  Regime regime = Regime::kOscillates;
+  double regime_since = 0.0;  // s
+  std::string regime_evidence;
+
+  // The headline, decided by the run: a period only for a harmonic oscillation. `period` is the
+  // rig's estimator's mean period from the Hall signal; mu_k comes from it, or from the
+  // trajectory's period when the scene has no sensor (mu_k_source). When there is no period,
+  // period_withheld says why.
+  std::optional<double> period;                // s
+  std::optional<double> mu_k_recovered;        // thin formula (the paper's)
+  std::optional<double> mu_k_recovered_thick;  // thick formula with the rig's h_c
+  std::optional<PeriodSource> mu_k_source;
+  std::optional<std::string> period_withheld;
+  // The estimator's own mu_k (thin formula) and its uncertainties, for a harmonic oscillation.
+  std::optional<double> mu_k_estimator;
+  std::optional<double> mu_k_err_worst;
+  std::optional<double> mu_k_err_quadrature;
+
+  // The estimator's report (scenes with a sensor and magnets), whatever the regime.
+  std::optional<EstimatorReport> estimator;
+  // The trajectory's own period (crossings of x = 0), for a harmonic oscillation only.
+  std::optional<double> period_trajectory;      // s
+  std::optional<double> period_trajectory_err;  // s, standard error of the fit
+  // The estimator's period against the trajectory's: a disagreement beyond both uncertainties.
+  std::optional<std::string> estimator_disagreement;
+
+  double amplitude_start = 0.0;                      // m, first turning point
+  double amplitude_end = 0.0;                        // m, last turning point
+  std::optional<double> amplitude_drift_per_period;  // relative
+  double roller_speed = 0.0;                         // rad/s (mean |roller 0| when driven)
+  std::optional<DriveReport> drive;
+  double plate_speed_max = 0.0;   // m/s
+  double slip_margin = 0.0;       // roller surface speed / plate's largest speed
+  double min_normal_force = 0.0;  // N, over the run
+  double max_penetration = 0.0;   // m
+  // A guard stopped the run (numerical failure, or the plate left the rig): exit status 3.
+  std::optional<std::string> failure;
+  // How errors in T and l carry into mu_k through the thick formula for this h_c.
+  double condition_period = 0.0;
+  double condition_spacing = 0.0;
+  double condition_h_c = 0.0;
+
+  double wall_s = 0.0;
+  double real_time_factor = 0.0;
+  double steps_per_second = 0.0;
+
+  bool harmonic() const { return regime == Regime::kOscillates; }
+};
+
+}  // namespace fl

@@ -1,0 +1,88 @@
+#include "scene/compiled_rig.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/integrator_error.hpp"
+
+namespace fl {
+namespace {
+
+CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double mu_k) {
+  const DriveDesc& drive = scene.drive.value();
+  CompiledDrive out;
+  out.layout = drive_layout(scene);
+  const DriveLayout& layout = out.layout;
+  const std::size_t n = layout.shafts.size();
+  // Each shaft's speed over the motor's, mesh by mesh from the motor.
+  out.shaft_ratios.assign(n, 0.0);
+  out.shaft_ratios[static_cast<std::size_t>(layout.motor)] = 1.0;
+  for (const GearMesh& m : layout.meshes) {
+    const GearPlacement& a = layout.gears[static_cast<std::size_t>(m.driver)];
+    const GearPlacement& b = layout.gears[static_cast<std::size_t>(m.driven)];
+    out.shaft_ratios[static_cast<std::size_t>(b.shaft)] =
+        -out.shaft_ratios[static_cast<std::size_t>(a.shaft)] * a.teeth / b.teeth;
+  }
+  out.gearbox_ratio = gearbox_ratio(drive);
+  // Each shaft's moment of inertia about its axis: its gears, the motor, the roller's tube;
+  // the train's, seen at the motor: sum I_k u_k^2.
+  std::vector<double> inertia(n, 0.0);
+  for (const GearPlacement& g : layout.gears)
+    inertia[static_cast<std::size_t>(g.shaft)] += drive.gear(g.teeth).inertia;
+  inertia[static_cast<std::size_t>(layout.motor)] += drive.motor.inertia;
+  const RollersDesc& r = scene.rollers;
+  const double inner = std::max(0.0, r.radius - r.wall);
+  const double tube =
+      r.density * std::numbers::pi * (r.radius * r.radius - inner * inner) * r.length;
+  for (std::size_t i = 0; i < 2; ++i)
+    inertia[i] += 0.5 * tube * (r.radius * r.radius + inner * inner);
+  for (std::size_t k = 0; k < n; ++k)
+    out.inertia_at_motor += inertia[k] * out.shaft_ratios[k] * out.shaft_ratios[k];
+  // The motor turns the way that makes roller 0's top move toward the centre (inward) or away.
+  const double roller0 = scene.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
+  out.motor_sense = out.shaft_ratios[0] > 0.0 ? roller0 : -roller0;
+
+  // Both rollers slip against the plate, taking mu_k m g a between them, G times that at the
+  // motor; on the linear curve the motor keeps duty - load / stall of its no-load speed.
+  const MotorDesc& motor = drive.motor;
+  out.stall_load_torque = mu_k * plate.mass * scene.world.gravity * r.radius * out.gearbox_ratio;
+  const double share = motor.duty - out.stall_load_torque / motor.stall_torque;
+  if (share > 0.0) out.roller_speed_loaded = out.gearbox_ratio * motor.no_load_speed * share;
+  return out;
+}
+
+}  // namespace
+
+CompiledRig compile_rig(Scene scene) {
+  CompiledRig rig;
+  rig.plate = plate_mass(scene);
+  rig.mu_k = scene.friction.mu_k;
+  rig.spacing = scene.rollers.spacing;
+  rig.gravity = scene.world.gravity;
+  rig.roller_speed_nominal = nominal_roller_speed(scene);
+  if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.mu_k);
+
+  const double l = rig.spacing, mu = rig.mu_k, h_c = rig.plate.h_c, g = rig.gravity;
+  rig.period_thin = period_thin(l, mu, g);
+  rig.restoring = has_restoring_force(l, mu, h_c);
+  rig.amplitude_initial = std::fabs(scene.plate.offset);
+  if (rig.restoring) {
+    rig.period_thick = period_thick(l, mu, h_c, g);
+    rig.omega = 2.0 * std::numbers::pi / *rig.period_thick;
+    rig.integrator_bias = integrator_period_bias(*rig.omega, scene.world.time_step);
+    rig.conditioning = mu_k_with_uncertainty(*rig.period_thick, 0.0, l, 0.0, h_c, g);
+    rig.amplitude_initial =
+        amplitude_from_start(scene.plate.offset, scene.plate.velocity, *rig.omega);
+    rig.tipping_amplitude = tipping_amplitude(l, mu, h_c);
+    rig.slip_threshold =
+        roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
+  }
+  rig.scene = std::move(scene);
+  return rig;
+}
+
+std::shared_ptr<const CompiledRig> compile_rig_shared(Scene scene) {
+  return std::make_shared<const CompiledRig>(compile_rig(std::move(scene)));
+}
+
+}  // namespace fl

@@ -1,0 +1,73 @@
+// The rig compiled from its scene, once: every quantity the physics, the sensor, the regime
+// diagnosis, the outputs and the renderer derive from a Scene (the plate's mass properties and
+// h_c, the drive's layout and ratios, the rollers' speed, the oscillation's angular frequency and
+// periods, the slip threshold, the integrator's predicted bias...), computed in one place by one
+// function per formula and read by every layer instead of being recomputed.
+//
+// A CompiledRig is immutable: change the Scene and compile again (sweeps and compare do).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/analytic_model.hpp"
+#include "scene/drive_layout.hpp"
+#include "scene/scene.hpp"
+
+namespace fl {
+
+// The drive's gear train as built (scenes with a `drive`).
+struct CompiledDrive {
+  DriveLayout layout;
+  std::vector<double> shaft_ratios;  // each shaft's speed over the motor's, signed, from the teeth
+  double gearbox_ratio = 1.0;        // the gearbox's speed-up, motor to roller 0 (|ratio|)
+  double inertia_at_motor = 0.0;     // kg m^2, the whole train seen at the motor (sum I_k u_k^2)
+  double motor_sense = 1.0;          // +1 or -1: the motor's turning that gives the rollers' sense
+  // The rollers' steady speed [rad/s] with the plate sliding on both (its friction torque
+  // mu_k m g a at the rollers, G times that at the motor), on the motor's linear curve; nullopt
+  // when that load stalls the motor.
+  std::optional<double> roller_speed_loaded;
+  double stall_load_torque = 0.0;  // N m at the motor, of that load
+};
+
+struct CompiledRig {
+  Scene scene;
+
+  // The plate as built (slab, payload, blocks, magnets).
+  PlateMass plate;
+  double mu_k = 0.0;     // plate on the rollers
+  double spacing = 0.0;  // l, m
+  double gravity = 0.0;  // m/s^2
+
+  // The rollers' speed without load [rad/s]: rollers.speed for the ideal drive, the duty's
+  // share of the motor's no-load speed times the gearbox's speed-up for the motor drive.
+  double roller_speed_nominal = 0.0;
+  std::optional<CompiledDrive> drive;
+
+  // The analytic oscillator for this plate. `restoring` is false when the rollers turn outward
+  // or l <= 2 mu_k h_c; the thick-plate quantities are then absent.
+  bool restoring = false;
+  double period_thin = 0.0;                    // s, the paper's formula
+  std::optional<double> period_thick;          // s
+  std::optional<double> omega;                 // rad/s, 2 pi / T_thick
+  std::optional<double> integrator_bias;       // relative period error -(omega dt)^2 / 24
+  std::optional<MuKUncertainty> conditioning;  // how errors in T, l, h_c carry into mu_k
+  double amplitude_initial = 0.0;              // m, from plate.offset and plate.velocity
+  std::optional<double> tipping_amplitude;     // m, l/2 - mu_k h_c
+  // Roller speed [rad/s] at which the rollers' surface keeps up with the plate's largest speed
+  // A omega (below it the plate sticks to a roller for part of each cycle).
+  std::optional<double> slip_threshold;
+
+  // The guide towers' friction on the plate (ABS on the slab), apart from mu_k.
+  double guide_friction = 0.3;
+};
+
+// Compiles a scene that passed check_scene (scene_checks.hpp). Throws std::invalid_argument when
+// the drive's gears cannot span the rollers (drive_layout).
+CompiledRig compile_rig(Scene scene);
+
+// The same, shared: what many readers hold (a sweep point, a run and its video).
+std::shared_ptr<const CompiledRig> compile_rig_shared(Scene scene);
+
+}  // namespace fl

@@ -1,0 +1,102 @@
+// The one table of result fields: names that do not collide, the summary and the sweep rows
+// generated from it, and the rule that a period (and the mu_k from it) exists only for a harmonic
+// oscillation, with null (never 0) where the run measured nothing.
+#include "lab/summary_fields.hpp"
+
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/paper_table_yaml.hpp"
+#include "lab/experiment.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+Scene minimal_scene(std::vector<SceneOverride> overrides = {}) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
+                         overrides, []() -> const PaperTable& { return table; });
+}
+
+TEST(SummaryFields, NamesAreUniqueAndEveryFieldIsWrittenSomewhere) {
+  std::set<std::string> keys, columns;
+  for (const SummaryField& f : summary_fields()) {
+    EXPECT_TRUE(f.summary_key != nullptr || f.sweep_column != nullptr);
+    if (f.summary_key != nullptr) {
+      EXPECT_TRUE(keys.insert(f.summary_key).second) << f.summary_key;
+    }
+    if (f.sweep_column != nullptr) {
+      EXPECT_TRUE(columns.insert(f.sweep_column).second) << f.sweep_column;
+    }
+  }
+}
+
+TEST(SummaryFields, SummaryAndSweepRowAgreeOnTheValuesTheyShare) {
+  const RunSummary r = run_experiment(minimal_scene({{"world.duration", "5 s"}}), {});
+  const nlohmann::json summary = summary_json(r);
+  nlohmann::json row = nlohmann::json::object();
+  fill_sweep_columns(row, r);
+  for (const SummaryField& f : summary_fields()) {
+    if (f.summary_key == nullptr || f.sweep_column == nullptr) continue;
+    ASSERT_TRUE(summary.contains(f.summary_key)) << f.summary_key;
+    EXPECT_EQ(summary[f.summary_key], row[f.sweep_column]) << f.summary_key;
+  }
+  EXPECT_EQ(row["status"], "ok");
+  EXPECT_TRUE(row["error"].is_null());
+}
+
+// A harmonic run with a sensor: the headline period is the rig's estimator's.
+TEST(Headline, HarmonicRunLeadsWithTheEstimatorsPeriod) {
+  const RunSummary r = run_experiment(minimal_scene({{"world.duration", "8 s"}}), {});
+  ASSERT_EQ(r.regime, Regime::kOscillates);
+  ASSERT_TRUE(r.period && r.estimator && r.mu_k_recovered);
+  EXPECT_EQ(*r.period, r.estimator->period);
+  EXPECT_EQ(r.mu_k_source, PeriodSource::kHallEstimator);
+  EXPECT_FALSE(r.period_withheld.has_value());
+  const nlohmann::json j = summary_json(r);
+  EXPECT_EQ(j["period_s"], r.estimator->period);
+  EXPECT_TRUE(j.contains("mu_k_estimator"));
+}
+
+// Without a sensor there is no estimator: its numbers are null, not 0, and mu_k comes from the
+// trajectory's own period.
+TEST(Headline, WithoutASensorTheEstimatorsNumbersAreNull) {
+  Scene s = minimal_scene({{"world.duration", "8 s"}});
+  s.sensor.reset();
+  const RunSummary r = run_experiment(s, {});
+  ASSERT_EQ(r.regime, Regime::kOscillates);
+  EXPECT_FALSE(r.period.has_value());
+  EXPECT_EQ(r.mu_k_source, PeriodSource::kTrajectory);
+  const nlohmann::json j = summary_json(r);
+  EXPECT_TRUE(j["period_s"].is_null());
+  EXPECT_TRUE(j["period_std_s"].is_null());
+  EXPECT_FALSE(j.contains("mu_k_estimator"));
+  EXPECT_FALSE(j.contains("mu_k_err_worst"));
+  ASSERT_TRUE(j["mu_k_recovered"].is_number());
+  EXPECT_NEAR(j["mu_k_recovered_thick"].get<double>() / r.mu_k_set, 1.0, 1e-3);
+}
+
+// Started beyond the tipping amplitude, the plate lifts off a roller: its trajectory still
+// crosses the centre at a steady rate, but the paper's model does not hold, so there is no period
+// of any kind (neither the estimator's nor the trajectory's), and the run says why.
+TEST(Headline, NoPeriodForARunThatIsNotHarmonic) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  const Scene s = load_scene_file(
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/amplitude-60pct.yaml", {},
+      []() -> const PaperTable& { return table; });
+  const RunSummary r = run_experiment(s, {});
+  ASSERT_EQ(r.regime, Regime::kTips);
+  EXPECT_FALSE(r.period || r.period_trajectory || r.mu_k_recovered || r.mu_k_estimator);
+  ASSERT_TRUE(r.period_withheld.has_value());
+  EXPECT_NE(r.period_withheld->find("tips"), std::string::npos);
+  const nlohmann::json j = summary_json(r);
+  for (const char* key : {"period_s", "period_trajectory_s", "mu_k_recovered", "error_vs_thick",
+                          "trajectory_error_vs_thick"})
+    EXPECT_TRUE(j[key].is_null()) << key;
+}
+
+}  // namespace
+}  // namespace fl

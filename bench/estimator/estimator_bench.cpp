@@ -1,4 +1,4 @@
-// Samples per second of the host build of the rig's period estimator on one core (the issue's
+// Samples per second of the host build of the rig's period estimator on one core (the lab's
 // target: 50 million or more). The samples are made beforehand
 // (tests/estimator/synthetic_hall.hpp): only add_sample is timed.
 #include <benchmark/benchmark.h>

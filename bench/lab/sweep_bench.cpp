@@ -1,7 +1,7 @@
 // Throughput of frictionlab sweep: scenes/sweeps/spacing.yaml (3 materials x 40 spacings x 20
 // simulated seconds, 120 points) run whole, into a fresh folder, on 1 and on 2 worker threads.
 // Reports the wall time, points per second, and for 2 workers the speed-up over 1 and the
-// parallel efficiency (speed-up / workers). Targets (issue 7): under 20 s on a 2-core machine,
+// parallel efficiency (speed-up / workers). Targets: under 20 s on a 2-core machine,
 // efficiency at least 85 %. Run: build/.../bench/lab/bench_sweep [--benchmark_repetitions=3]
 #include <filesystem>
 #include <map>

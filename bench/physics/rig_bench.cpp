@@ -1,6 +1,6 @@
 // The paper's rig, whole: real-time factor of a 10 s run (frame, guides, motor and gear train,
-// Hall sensor and estimator; issue target: 20 x real time or faster), and loading a scene of 300
-// LEGO frame parts (issue target: under 0.5 s, meshes not needed by the physics).
+// Hall sensor and estimator; target: 20 x real time or faster), and loading a scene of 300
+// LEGO frame parts (target: under 0.5 s, meshes not needed by the physics).
 #include <string>
 
 #include <benchmark/benchmark.h>

@@ -1,4 +1,4 @@
-// Physics steps per second of the minimal scene on one core (issue target: >= 200 000), and the
+// Physics steps per second of the minimal scene on one core (target: >= 200 000), and the
 // cost of one simulated second at the default step.
 #include <benchmark/benchmark.h>
 
@@ -24,7 +24,7 @@ void BM_MinimalSceneStep(benchmark::State& state) {
 }
 BENCHMARK(BM_MinimalSceneStep);
 
-// Ten simulated seconds at 1 kHz, world construction included (issue target: under 0.05 s).
+// Ten simulated seconds at 1 kHz, world construction included (target: under 0.05 s).
 void BM_MinimalSceneTenSecondsAt1kHz(benchmark::State& state) {
   fl::Scene scene = minimal_scene();
   scene.world.time_step = 1e-3;

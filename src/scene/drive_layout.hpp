@@ -1,7 +1,9 @@
 // Where the drive's shafts and gears sit: the rollers' axes, the two idlers that couple the
 // rollers (below them, at the rollers' far end) and the gearbox's shafts from the motor to
-// roller 0 (at the near end). The physics hinges a body on each shaft; the renderer draws the
-// gears there. Computed from the scene, never typed in.
+// roller 0 (at the near end). The drive's gear train (physics/drivetrain.hpp) turns each shaft at
+// its tooth-count ratio to the motor (one degree of freedom, no Bullet body per shaft); the
+// renderer draws the gears there. Computed from the scene (once, in the compiled rig), never
+// typed in.
 #pragma once
 
 #include <string>

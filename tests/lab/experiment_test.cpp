@@ -1,5 +1,5 @@
 // A whole run: the period the rig's estimator measures from the simulated Hall signal against
-// the thick-plate formula (issue claim: within 0.05 %), the parts built only when named,
+// the thick-plate formula (the claim: within 0.05 %), the parts built only when named,
 // determinism of every output, and the choice of a step from an accuracy target.
 #include "lab/experiment.hpp"
 

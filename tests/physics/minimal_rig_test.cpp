@@ -1,5 +1,5 @@
 // The minimal rig in Bullet against the analytic model. Each claim is its own test with the
-// tolerance the claim states (issue "The Bullet world", How well):
+// tolerance the claim states (the Bullet world's targets):
 //   - the simulated x(t) period is within 0.01 % of the thick-plate period at the default step
 //     for every Table I material with 0.05 <= mu_k <= 1;
 //   - the amplitude drifts by less than 0.1 % per period;

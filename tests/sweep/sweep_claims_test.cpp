@@ -1,4 +1,4 @@
-// The claims about the sweep scenes and compare, each with the tolerance it states:
+// The lab's claims about the sweep scenes and compare, each with the tolerance it states:
 // a sweep over l reproduces the thick-plate curve within 0.05 % at every point; the roller-speed
 // sweep puts the slip threshold where the analytic slip condition does (within one step); and
 // compare's refitted mu_k, simulated again, gives the measured T within 0.05 %.

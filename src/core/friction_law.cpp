@@ -6,14 +6,23 @@ namespace fl {
 
 double FrictionLaw::kinetic(double slip_speed) const {
   if (kind == FrictionLawKind::kCoulomb) return mu_k;
-  const double r = slip_speed / v_s;
-  return mu_k + (mu_s - mu_k) * std::exp(-r * r) + beta * slip_speed;
+  double mu = mu_k + beta * slip_speed;
+  // Without a static excess the Stribeck term is zero (and v_s may be unset).
+  if (mu_s != mu_k) {
+    const double r = slip_speed / v_s;
+    mu += (mu_s - mu_k) * std::exp(-r * r);
+  }
+  return mu;
 }
 
 double FrictionLaw::slope(double slip_speed) const {
   if (kind == FrictionLawKind::kCoulomb) return 0.0;
-  const double r = slip_speed / v_s;
-  return -2.0 * (mu_s - mu_k) * r / v_s * std::exp(-r * r) + beta;
+  double slope = beta;
+  if (mu_s != mu_k) {
+    const double r = slip_speed / v_s;
+    slope -= 2.0 * (mu_s - mu_k) * r / v_s * std::exp(-r * r);
+  }
+  return slope;
 }
 
 bool FrictionLaw::depends_on_slip() const {

@@ -48,6 +48,7 @@ constexpr std::array kMagneticField{Unit{"T", 1.0, 0.0}, Unit{"mT", 1e-3, 0.0},
                                     Unit{"G", 1e-4, 0.0}};
 constexpr std::array kInertia{Unit{"kg m^2", 1.0, 0.0}, Unit{"kg*m^2", 1.0, 0.0},
                               Unit{"g cm^2", 1e-7, 0.0}, Unit{"g*cm^2", 1e-7, 0.0}};
+constexpr std::array kInverseSpeed{Unit{"s/m", 1.0, 0.0}};
 constexpr std::array kSensitivity{Unit{"V/T", 1.0, 0.0}, Unit{"mV/mT", 1.0, 0.0},
                                   Unit{"mV/G", 10.0, 0.0}};
 
@@ -89,6 +90,8 @@ std::span<const Unit> units_of(Dimension dimension) {
       return kSensitivity;
     case Dimension::kInertia:
       return kInertia;
+    case Dimension::kInverseSpeed:
+      return kInverseSpeed;
   }
   return kDimensionless;
 }
@@ -189,6 +192,8 @@ std::string_view dimension_name(Dimension dimension) {
       return "sensitivity";
     case Dimension::kInertia:
       return "moment of inertia";
+    case Dimension::kInverseSpeed:
+      return "inverse speed";
   }
   return "quantity";
 }

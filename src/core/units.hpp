@@ -29,6 +29,7 @@ enum class Dimension {
   kMagneticField,  // T
   kSensitivity,    // V/T (a Hall sensor's output per field)
   kInertia,        // kg m^2 (moment of inertia)
+  kInverseSpeed,   // s/m (a friction coefficient's slope against slip speed)
 };
 
 // A quantity's text could not be read as the dimension asked for.

@@ -6,20 +6,24 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/contact_friction.hpp"
 #include "physics/drivetrain.hpp"
 
 namespace fl {
 namespace {
 
-// Bullet combines two bodies' friction as their product clamped to 10. We give the rollers
-// friction 1 and the plate mu_k, and combine without the clamp, so the plate-roller
-// coefficient is exactly the scene's mu_k (also above 10).
-btScalar combine_friction_unclamped(const btCollisionObject* a, const btCollisionObject* b) {
-  return a->getFriction() * b->getFriction();
-}
+// Bullet's world with the rig's friction applied after collision detection and before the
+// solver, each step: the one place the friction law acts (physics/contact_friction.hpp).
+class FrictionWorld final : public btDiscreteDynamicsWorld {
+ public:
+  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  ContactFriction* friction = nullptr;
 
-struct FrictionCallbackInstaller {
-  FrictionCallbackInstaller() { gCalculateCombinedFrictionCallback = &combine_friction_unclamped; }
+ protected:
+  void solveConstraints(btContactSolverInfo& info) override {
+    if (friction != nullptr) friction->before_solve(*getDispatcher());
+    btDiscreteDynamicsWorld::solveConstraints(info);
+  }
 };
 
 }  // namespace
@@ -39,7 +43,8 @@ struct RigWorld::Impl {
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
-  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  FrictionWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  std::unique_ptr<ContactFriction> friction;
 
   std::unique_ptr<btSphereShape> roller_shape;
   std::array<std::unique_ptr<btRigidBody>, 2> rollers;
@@ -72,10 +77,11 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
       dt(compiled.scene.world.time_step) {
   const Scene& s = scene;
   const PlateMass& mass = rig.plate;
-  static const FrictionCallbackInstaller install;
   world.setGravity(btVector3(0, 0, -s.world.gravity));
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
+  // A stuck contact's friction directions are set per point (physics/contact_friction.hpp).
+  info.m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
 
   // Rollers. For collision each is one sphere of the roller's radius (a cylinder against a box
   // gives one contact point that jumps between the plate's edges; docs/physics.md);
@@ -95,7 +101,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
     const double x = (i == 0 ? -0.5 : 0.5) * l;
     btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, roller_shape.get());
     ci.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), btVector3(x, 0, -a));
-    ci.m_friction = 1.0;
+    ci.m_friction = 0.0;  // per contact point (ContactFriction)
     ci.m_restitution = 0.0;
     ci.m_rollingFriction = 0.0;
     ci.m_spinningFriction = 0.0;
@@ -120,8 +126,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
             btQuaternion::getIdentity(),
             btVector3(part.position[0] + box.center[0], part.position[1] + box.center[1],
                       part.position[2] + box.center[2])));
-        // Combined as a product with the plate's mu_k: this gives the guide friction.
-        object->setFriction(rig.guide_friction / rig.mu_k);
+        object->setFriction(0.0);  // per contact point (ContactFriction)
         object->setRestitution(0.0);
         world.addCollisionObject(object.get());
         guides.push_back(std::move(object));
@@ -140,7 +145,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   btRigidBody::btRigidBodyConstructionInfo ci(mass.mass, nullptr, plate_shape.get(), inertia);
   ci.m_startWorldTransform =
       btTransform(btQuaternion::getIdentity(), btVector3(p.offset, 0, mass.h_c));
-  ci.m_friction = rig.mu_k;
+  ci.m_friction = 0.0;  // per contact point (ContactFriction)
   ci.m_restitution = 0.0;
   ci.m_rollingFriction = 0.0;
   ci.m_spinningFriction = 0.0;
@@ -162,6 +167,10 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   world.addRigidBody(plate.get());
 
   world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
+  friction = std::make_unique<ContactFriction>(
+      rig.friction, rig.guide_friction, plate.get(),
+      std::array<const btRigidBody*, 2>{rollers[0].get(), rollers[1].get()});
+  world.friction = friction.get();
 }
 
 RigWorld::Impl::~Impl() {
@@ -188,6 +197,7 @@ void RigWorld::step() {
     impl_->roller_omega = impl_->drivetrain->roller_speeds();
   }
   impl_->world.stepSimulation(impl_->dt, 0);
+  impl_->friction->after_step(impl_->dispatcher);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
   impl_->contacts = measure_contacts();
   ++impl_->steps;

@@ -56,7 +56,8 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
 CompiledRig compile_rig(Scene scene) {
   CompiledRig rig;
   rig.plate = plate_mass(scene);
-  rig.mu_k = scene.friction.mu_k;
+  rig.friction = friction_law(scene.friction);
+  rig.mu_k = rig.friction.mu_k;
   rig.spacing = scene.rollers.spacing;
   rig.gravity = scene.world.gravity;
   rig.roller_speed_nominal = nominal_roller_speed(scene);

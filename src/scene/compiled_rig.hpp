@@ -36,7 +36,8 @@ struct CompiledRig {
 
   // The plate as built (slab, payload, blocks, magnets).
   PlateMass plate;
-  double mu_k = 0.0;     // plate on the rollers
+  FrictionLaw friction;  // plate on the rollers (scene.friction as one value)
+  double mu_k = 0.0;     // the law's kinetic coefficient at large slip (Coulomb's mu_k)
   double spacing = 0.0;  // l, m
   double gravity = 0.0;  // m/s^2
 

@@ -1,5 +1,6 @@
 #include "scene/scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -49,6 +50,21 @@ PlateMass plate_mass(const Scene& scene) {
     out.inertia_pitch += part.own + part.m * (dx * dx + dz * dz);
   }
   return out;
+}
+
+FrictionLaw friction_law(const FrictionDesc& f) {
+  FrictionLaw law;
+  law.kind = f.law;
+  law.mu_k = f.mu_k;
+  law.mu_s = f.mu_s.value_or(f.mu_k);
+  law.v_s = f.v_s.value_or(0.0);
+  law.beta = f.beta;
+  return law;
+}
+
+double largest_slip_speed(const Scene& scene) {
+  const double surface = nominal_roller_speed(scene) * scene.rollers.radius;
+  return surface + std::max(surface, std::fabs(scene.plate.velocity));
 }
 
 const GearSpec& DriveDesc::gear(int teeth) const {

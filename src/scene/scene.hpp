@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "core/friction_law.hpp"
 #include "core/regime.hpp"
 #include "core/units.hpp"
 #include "scene/video_yaml.hpp"
@@ -97,9 +98,15 @@ struct SensorDesc {
 };
 
 struct FrictionDesc {
+  // The law between plate and rollers (core/friction_law.hpp): coulomb (mu_k, and a static limit
+  // mu_s) or stribeck (mu_k, mu_s, v_s, beta).
+  FrictionLawKind law = FrictionLawKind::kCoulomb;
   // mu_k between plate and rollers. Empty `mu_k` with `from_paper` takes the paper's Table I
   // value for the plate's material at `temperature`.
   double mu_k = 0.29;
+  std::optional<double> mu_s;  // the static limit, >= mu_k; absent: mu_k
+  std::optional<double> v_s;   // m/s, the Stribeck speed (stribeck; needed when mu_s > mu_k)
+  double beta = 0.0;           // s/m, the kinetic coefficient's slope (stribeck)
   bool from_paper = false;
   std::string paper_material;  // the Table I key used, when from_paper
   double temperature = 300.0;  // K
@@ -186,6 +193,14 @@ struct Scene {
   OutputDesc output;
   std::optional<VideoDesc> video;  // how --video/--frames/--still draw it (video_yaml.hpp)
 };
+
+// The friction law the scene describes, as one value.
+FrictionLaw friction_law(const FrictionDesc& friction);
+
+// The largest slip speed a contact can see in a run [m/s]: the rollers' surface speed (without
+// load) plus the plate's largest possible speed, which friction keeps below the surface speed
+// unless the plate starts faster.
+double largest_slip_speed(const Scene& scene);
 
 // Mass properties of the plate as built (slab + payload + blocks + magnets).
 struct PlateMass {

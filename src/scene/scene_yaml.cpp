@@ -104,7 +104,27 @@ SensorDesc read_sensor(const YamlNode& n) {
 
 void read_friction(const YamlNode& n, const std::string& plate_material, FrictionDesc& f,
                    const PaperTableSource& paper) {
-  n.allow_keys({"mu_k", "temperature"});
+  n.allow_keys({"law", "mu_k", "mu_s", "v_s", "beta", "temperature"});
+  if (auto v = n.find("law")) {
+    const std::string law = v->text();
+    if (law == "coulomb")
+      f.law = FrictionLawKind::kCoulomb;
+    else if (law == "stribeck")
+      f.law = FrictionLawKind::kStribeck;
+    else
+      v->fail("expected coulomb or stribeck, found \"" + law + "\"");
+  }
+  for (const char* key : {"v_s", "beta"}) {
+    if (auto v = n.find(key); v && f.law != FrictionLawKind::kStribeck)
+      v->fail(std::string("the coulomb law has no ") + key +
+              "; set friction.law: stribeck to use it, or remove the key");
+  }
+  if (auto v = n.find("v_s")) {
+    f.v_s = v->quantity(Dimension::kSpeed);
+    if (!(*f.v_s > 0.0)) v->fail("expected a speed > 0 (e.g. 10 mm/s), found " + v->text());
+  }
+  if (auto v = n.find("beta")) f.beta = v->quantity(Dimension::kInverseSpeed);
+  if (auto v = n.find("mu_s")) f.mu_s = v->quantity(Dimension::kDimensionless);
   if (auto v = n.find("temperature")) f.temperature = v->quantity(Dimension::kTemperature);
   const auto mu = n.find("mu_k");
   if (!mu)

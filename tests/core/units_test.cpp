@@ -83,7 +83,8 @@ INSTANTIATE_TEST_SUITE_P(
         UnitCase{"1e-5 kg m^2", Dimension::kInertia, 1e-5},
         UnitCase{"1e-5 kg*m^2", Dimension::kInertia, 1e-5},
         UnitCase{"100 g cm^2", Dimension::kInertia, 1e-5},
-        UnitCase{"100 g*cm^2", Dimension::kInertia, 1e-5}));
+        UnitCase{"100 g*cm^2", Dimension::kInertia, 1e-5},
+        UnitCase{"-0.5 s/m", Dimension::kInverseSpeed, -0.5}));
 
 std::string error_of(const char* text, Dimension dimension, const char* quantity) {
   try {

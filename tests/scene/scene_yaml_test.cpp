@@ -141,6 +141,38 @@ TEST(SceneYaml, PaperMaterialsByNameAndTemperature) {
             std::string::npos);
 }
 
+// The friction law: Table I names keep giving mu_k; a law's keys are its own, located when wrong.
+TEST(SceneYaml, FrictionLawKeysAreCheckedAndLocated) {
+  const Scene coulomb = load("format: 1\nfriction: {mu_k: lego, mu_s: 0.35}\n");
+  EXPECT_EQ(coulomb.friction.law, FrictionLawKind::kCoulomb);
+  EXPECT_DOUBLE_EQ(coulomb.friction.mu_k, 0.29);
+  EXPECT_DOUBLE_EQ(friction_law(coulomb.friction).mu_s, 0.35);
+  EXPECT_DOUBLE_EQ(friction_law(load("format: 1\nfriction: {mu_k: 0.3}\n").friction).mu_s, 0.3);
+  const Scene stribeck = load(
+      "format: 1\nfriction: {law: stribeck, mu_k: 0.3, mu_s: 0.4, v_s: 5 mm/s, beta: -0.01}\n");
+  const FrictionLaw law = friction_law(stribeck.friction);
+  EXPECT_EQ(law.kind, FrictionLawKind::kStribeck);
+  EXPECT_DOUBLE_EQ(law.v_s, 0.005);
+  EXPECT_DOUBLE_EQ(law.kinetic(0.0), 0.4);
+  EXPECT_NEAR(law.kinetic(1.0), 0.3 - 0.01, 1e-15);
+  EXPECT_EQ(error_of("format: 1\nfriction: {mu_k: 0.3, v_s: 1 mm/s}\n"),
+            "t.yaml:2:28: error: friction.v_s: the coulomb law has no v_s; set friction.law: "
+            "stribeck to use it, or remove the key");
+  EXPECT_NE(error_of("format: 1\nfriction: {law: dahl, mu_k: 0.3}\n")
+                .find("t.yaml:2:17: error: friction.law: expected coulomb or stribeck"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: 0.3, mu_s: 0.2}\n")
+                .find("friction.mu_s: the static limit mu_s must be at least mu_k = 0.3"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 1\nfriction: {law: stribeck, mu_k: 0.3, mu_s: 0.4}\n")
+                .find("needs friction.v_s"),
+            std::string::npos);
+  // At 1600 rpm the slip reaches 2 x 1.68 m/s: beta = -0.1 s/m leaves mu at 0.3 - 0.335 < 0.
+  EXPECT_NE(error_of("format: 1\nfriction: {law: stribeck, mu_k: 0.3, beta: -0.1}\n")
+                .find("friction.beta: the law's mu(s) goes negative"),
+            std::string::npos);
+}
+
 TEST(SceneYaml, ImpossibleSetUpsAreRefusedWithTheReason) {
   struct Case {
     std::vector<SceneOverride> overrides;

@@ -1,0 +1,131 @@
+#include "physics/contact_friction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fl {
+namespace {
+
+// A friction impulse below this fraction of its limit is not saturated: the contact is stuck.
+constexpr double kSaturation = 1.0 - 1e-9;
+
+// The plate's direction of motion (x) in the contact plane of normal n, and the second direction.
+void stuck_directions(const btVector3& n, btVector3& along, btVector3& across) {
+  along = btVector3(1, 0, 0) - n * n.x();
+  along.normalize();
+  across = n.cross(along);
+  across.normalize();
+}
+
+}  // namespace
+
+ContactFriction::ContactFriction(const FrictionLaw& law, double guide_friction,
+                                 const btRigidBody* plate,
+                                 std::array<const btRigidBody*, 2> rollers)
+    : law_(law),
+      guide_friction_(guide_friction),
+      plate_(plate),
+      rollers_(rollers),
+      slip_dependent_(law.depends_on_slip()) {}
+
+int ContactFriction::classify(const btPersistentManifold& manifold, bool& plate_first) const {
+  const btCollisionObject* a = manifold.getBody0();
+  const btCollisionObject* b = manifold.getBody1();
+  if (a != plate_ && b != plate_) return -2;
+  plate_first = a == plate_;
+  const btCollisionObject* other = plate_first ? b : a;
+  for (int i = 0; i < 2; ++i)
+    if (other == rollers_[static_cast<std::size_t>(i)]) return i;
+  return -1;
+}
+
+void ContactFriction::before_solve(btDispatcher& dispatcher) {
+  const int manifolds = dispatcher.getNumManifolds();
+  for (int m = 0; m < manifolds; ++m) {
+    btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    bool plate_first = false;
+    const int who = classify(*manifold, plate_first);
+    if (who == -2) continue;
+    for (int k = 0; k < manifold->getNumContacts(); ++k) {
+      btManifoldPoint& pt = manifold->getContactPoint(k);
+      if (who == -1) {
+        pt.m_combinedFriction = guide_friction_;
+        continue;
+      }
+      const auto i = static_cast<std::size_t>(who);
+      const btRigidBody& roller = *rollers_[i];
+      // The plate's velocity relative to the roller's surface at the point, in the contact plane.
+      const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
+      const btVector3 relative =
+          plate_->getVelocityInLocalPoint(at - plate_->getCenterOfMassPosition()) -
+          roller.getVelocityInLocalPoint(at - roller.getCenterOfMassPosition());
+      const btVector3& n = pt.m_normalWorldOnB;
+      const btVector3 slip = relative - n * n.dot(relative);
+
+      if (stuck_[i]) {
+        double limit = law_.mu_s;
+        // The ratio |F|/N extrapolated to the step's end: if it crosses mu_s inside the step,
+        // the contact breaks there; the limit is blended by the fraction before the crossing.
+        if (stuck_steps_[i] >= 2) {
+          const double next = 2.0 * ratio_now_[i] - ratio_before_[i];
+          if (next > law_.mu_s && next > ratio_now_[i]) {
+            const double before = (law_.mu_s - ratio_now_[i]) / (next - ratio_now_[i]);
+            limit = before * law_.mu_s + (1.0 - before) * law_.kinetic(0.0);
+          }
+        }
+        pt.m_combinedFriction = limit;
+        stuck_directions(n, pt.m_lateralFrictionDir1, pt.m_lateralFrictionDir2);
+        pt.m_contactMotion1 = 0;
+        pt.m_contactMotion2 = 0;
+        pt.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+      } else {
+        pt.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+        double mu = law_.mu_k;
+        if (slip_dependent_) {
+          // The slip at mid-step, extrapolated from this step's start and the last one's.
+          const btVector3 mid = has_slip_before_[i] ? 1.5 * slip - 0.5 * slip_now_[i] : slip;
+          mu = law_.kinetic(mid.length());
+        }
+        pt.m_combinedFriction = mu;
+      }
+      slip_before_[i] = slip_now_[i];
+      slip_now_[i] = slip;
+      has_slip_before_[i] = true;
+    }
+  }
+}
+
+void ContactFriction::after_step(btDispatcher& dispatcher) {
+  std::array<bool, 2> pressed{}, saturated{};
+  std::array<double, 2> ratio{};
+  const int manifolds = dispatcher.getNumManifolds();
+  for (int m = 0; m < manifolds; ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    bool plate_first = false;
+    const int who = classify(*manifold, plate_first);
+    if (who < 0) continue;
+    const auto i = static_cast<std::size_t>(who);
+    for (int k = 0; k < manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = manifold->getContactPoint(k);
+      const double normal = pt.getAppliedImpulse();
+      if (!(normal > 0.0)) continue;
+      const double friction = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2);
+      pressed[i] = true;
+      saturated[i] = saturated[i] || !(friction < kSaturation * pt.m_combinedFriction * normal);
+      ratio[i] = std::max(ratio[i], friction / normal);
+    }
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    const bool stuck = pressed[i] && !saturated[i];
+    if (stuck) {
+      ratio_before_[i] = stuck_[i] ? ratio_now_[i] : ratio[i];
+      ratio_now_[i] = ratio[i];
+      ++stuck_steps_[i];
+    } else {
+      stuck_steps_[i] = 0;
+    }
+    stuck_[i] = stuck;
+  }
+}
+
+}  // namespace fl

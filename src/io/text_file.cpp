@@ -14,13 +14,13 @@ std::string read_text_file(const std::string& path, std::string_view what) {
     return InputError(SourceLocation{path, 0, 0},
                       std::string(why) + " " + std::string(what) + ": " + std::strerror(errno));
   };
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw fail("cannot open");
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     errno = EISDIR;
     throw fail("cannot read");
   }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw fail("cannot open");
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0)

@@ -16,12 +16,13 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import atomic_png  # noqa: E402
 
 REGIME_COLOURS = {"oscillates": "tab:blue", "sticks": "tab:orange", "tips": "tab:red",
                   "no restoring force": "tab:purple", "lost": "tab:brown"}
@@ -33,15 +34,6 @@ def number(row, key):
         return float(v) if v != "" else None
     except ValueError:
         return None
-
-
-def save(fig, path):
-    # Written atomically: a temporary file beside the target, then renamed.
-    fd, tmp = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(path)))
-    os.close(fd)
-    fig.savefig(tmp, dpi=110)
-    plt.close(fig)
-    os.replace(tmp, path)
 
 
 def distinct(rows, key):
@@ -100,7 +92,7 @@ def plot_spacing(rows, meta, out):
     bottom.grid(True, alpha=0.3)
     bottom.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
-    save(fig, os.path.join(out, "period-vs-spacing.png"))
+    atomic_png.save(fig, os.path.join(out, "period-vs-spacing.png"))
 
 
 def plot_mu(rows, meta, out):
@@ -130,7 +122,7 @@ def plot_mu(rows, meta, out):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "mu-recovered.png"))
+    atomic_png.save(fig, os.path.join(out, "mu-recovered.png"))
 
 
 def plot_roller_speed(rows, meta, out):
@@ -166,7 +158,7 @@ def plot_roller_speed(rows, meta, out):
     bottom.grid(True, which="both", alpha=0.3)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "roller-speed.png"))
+    atomic_png.save(fig, os.path.join(out, "roller-speed.png"))
 
 
 def axis_positions(axis):
@@ -206,7 +198,7 @@ def plot_map(rows, meta, out, a, b):
     ax.set_title(f"{meta['sweep']}: error against the thick-plate formula "
                  "(letters: regimes other than oscillating)")
     fig.tight_layout()
-    save(fig, os.path.join(out, "map.png"))
+    atomic_png.save(fig, os.path.join(out, "map.png"))
 
 
 def plot_axis(rows, meta, out, a):
@@ -229,7 +221,7 @@ def plot_axis(rows, meta, out, a):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "axis.png"))
+    atomic_png.save(fig, os.path.join(out, "axis.png"))
 
 
 def main(csv_path, json_path, out):

@@ -177,9 +177,12 @@ def plot_map(rows, meta, out, a, b):
     errs = [100 * (number(r, "error_vs_thick") if number(r, "error_vs_thick") is not None else float("nan"))
             for r in rows]
     finite = [abs(e) for e in errs if not math.isnan(e)]
-    lim = max(finite) if finite else 1.0
-    sc = ax.scatter(xs, ys, c=errs, cmap="coolwarm", vmin=-lim, vmax=lim, s=90, marker="s")
-    fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
+    if finite:
+        lim = max(finite)
+        sc = ax.scatter(xs, ys, c=errs, cmap="coolwarm", vmin=-lim, vmax=lim, s=90, marker="s")
+        fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
+    else:  # no point gave a period (all failed, invalid, or too short): the points alone
+        ax.scatter(xs, ys, s=90, marker="s", color="lightgrey")
     for x, y, r in zip(xs, ys, rows):
         if r["regime"] != "oscillates" or r["status"] != "ok":
             mark = r["regime"] or r["status"]

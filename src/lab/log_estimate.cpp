@@ -28,6 +28,20 @@ nlohmann::json periods_json(const LogEstimate& estimate) {
   return periods;
 }
 
+// The estimator's verdict: the geometry, the periods' counts, T +- dT and mu_k +- d mu_k.
+nlohmann::json verdict_json(const LogEstimate& estimate) {
+  const fl_estimator::Stats& s = estimate.stats;
+  return {{"geometry", geometry_name(estimate.geometry)},
+          {"periods_used", s.periods_used},
+          {"periods_discarded", s.periods_discarded},
+          {"period_s", static_cast<double>(s.period_s)},
+          {"period_std_s", static_cast<double>(s.period_std_s)},
+          {"period_sem_s", static_cast<double>(s.period_sem_s)},
+          {"mu_k", static_cast<double>(s.mu_k)},
+          {"mu_k_err_worst", static_cast<double>(s.mu_k_err_worst)},
+          {"mu_k_err_quadrature", static_cast<double>(s.mu_k_err_quadrature)}};
+}
+
 }  // namespace
 
 fl_estimator::Config LogSetUp::config() const {
@@ -148,7 +162,7 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
 
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   const fl_estimator::Stats& s = est.stats;
-  nlohmann::json out;
+  nlohmann::json out = verdict_json(est);
   out["log"] = log.path;
   out["format"] = log.format;
   out["time_column"] = log.time_column;
@@ -156,22 +170,13 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   out["samples"] = log.adc.size();
   out["duration_s"] = est.duration;
   out["sample_rate_hz"] = est.sample_rate;
-  out["geometry"] = geometry_name(est.geometry);
   out["polarity"] = est.polarity;
   out["baseline_adc"] = est.baseline;
   out["pulses"] = s.pulses;
   out["pulses_distorted"] = est.distorted;
   out["pulses_unused"] = s.unused_pulses;
   out["restarts"] = s.restarts;
-  out["periods_used"] = s.periods_used;
-  out["periods_discarded"] = s.periods_discarded;
   out["periods_outliers"] = est.outliers;
-  out["period_s"] = static_cast<double>(s.period_s);
-  out["period_std_s"] = static_cast<double>(s.period_std_s);
-  out["period_sem_s"] = static_cast<double>(s.period_sem_s);
-  out["mu_k"] = static_cast<double>(s.mu_k);
-  out["mu_k_err_worst"] = static_cast<double>(s.mu_k_err_worst);
-  out["mu_k_err_quadrature"] = static_cast<double>(s.mu_k_err_quadrature);
   out["spacing_m"] = est.set_up.spacing;
   out["spacing_err_m"] = est.set_up.spacing_err;
   out["gravity_m_s2"] = est.set_up.gravity;
@@ -201,7 +206,7 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
     keep.push_back(std::min(lo, hi));
     if (lo != hi) keep.push_back(std::max(lo, hi));
   }
-  nlohmann::json data;
+  nlohmann::json data = verdict_json(est);
   nlohmann::json t = nlohmann::json::array();
   nlohmann::json adc = nlohmann::json::array();
   nlohmann::json baseline = nlohmann::json::array();
@@ -226,14 +231,6 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
                       {"distorted", p.distorted}});
   data["pulses"] = std::move(pulses);
   data["periods"] = periods_json(est);
-  const fl_estimator::Stats& s = est.stats;
-  data["geometry"] = geometry_name(est.geometry);
-  data["periods_used"] = s.periods_used;
-  data["periods_discarded"] = s.periods_discarded;
-  data["period_s"] = static_cast<double>(s.period_s);
-  data["period_std_s"] = static_cast<double>(s.period_std_s);
-  data["mu_k"] = static_cast<double>(s.mu_k);
-  data["mu_k_err_worst"] = static_cast<double>(s.mu_k_err_worst);
   data["spacing_m"] = static_cast<double>(est.set_up.config().spacing_m);
   return data;
 }

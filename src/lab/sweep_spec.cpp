@@ -22,8 +22,7 @@ struct NumberWithUnit {
 };
 
 std::optional<NumberWithUnit> split_number(std::string_view text) {
-  std::string_view s = text;
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+  std::string_view s = trim(text);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   NumberWithUnit out;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out.number);

@@ -4,14 +4,14 @@ second (one line per solver-iteration count), and error against omega*dt with th
 theoretical law.  Usage: plot_accuracy.py accuracy.csv accuracy.json accuracy.png"""
 import csv
 import json
-import os
 import sys
-import tempfile
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import atomic_png  # noqa: E402
 
 
 def main(csv_path, json_path, png_path):
@@ -45,11 +45,7 @@ def main(csv_path, json_path, png_path):
     right.grid(True, which="both", alpha=0.3)
     right.legend(fontsize=8)
     fig.tight_layout()
-    # Written atomically: a temporary file beside the target, then renamed.
-    fd, tmp = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(png_path)))
-    os.close(fd)
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, png_path)
+    atomic_png.save(fig, png_path)
 
 
 if __name__ == "__main__":

@@ -3,14 +3,14 @@
 paper's Table I (with the paper's dT and the simulated spread as error bars), and mu_k refitted
 through the simulation against the paper's mu_k.  Usage: plot_compare.py compare.json compare.png"""
 import json
-import os
 import sys
-import tempfile
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import atomic_png  # noqa: E402
 
 
 def short(name):
@@ -79,11 +79,7 @@ def main(json_path, png_path):
     right.grid(True, which="both", axis="x", alpha=0.3)
     right.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
-    # Written atomically: a temporary file beside the target, then renamed.
-    fd, tmp = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(png_path)))
-    os.close(fd)
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, png_path)
+    atomic_png.save(fig, png_path)
 
 
 if __name__ == "__main__":

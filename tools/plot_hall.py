@@ -24,6 +24,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import atomic_png  # noqa: E402
+
 ACCEPTED = "#1f77b4"
 REJECTED = "#d62728"
 PULSE = "#2ca02c"
@@ -137,9 +139,7 @@ def main(argv):
     bottom.legend(loc="upper right", fontsize=8, ncol=3, framealpha=0.85)
     bottom.grid(True, alpha=0.3)
 
-    tmp = out + ".tmp.png"
-    fig.savefig(tmp, dpi=110)
-    os.replace(tmp, out)
+    atomic_png.save(fig, out)
     return 0
 
 

@@ -16,12 +16,13 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import atomic_png  # noqa: E402
 
 REGIME_COLOURS = {"oscillates": "tab:blue", "sticks": "tab:orange", "tips": "tab:red",
                   "no restoring force": "tab:purple", "lost": "tab:brown"}
@@ -33,15 +34,6 @@ def number(row, key):
         return float(v) if v != "" else None
     except ValueError:
         return None
-
-
-def save(fig, path):
-    # Written atomically: a temporary file beside the target, then renamed.
-    fd, tmp = tempfile.mkstemp(suffix=".png", dir=os.path.dirname(os.path.abspath(path)))
-    os.close(fd)
-    fig.savefig(tmp, dpi=110)
-    plt.close(fig)
-    os.replace(tmp, path)
 
 
 def distinct(rows, key):
@@ -100,7 +92,7 @@ def plot_spacing(rows, meta, out):
     bottom.grid(True, alpha=0.3)
     bottom.legend(fontsize=8, loc="upper right")
     fig.tight_layout()
-    save(fig, os.path.join(out, "period-vs-spacing.png"))
+    atomic_png.save(fig, os.path.join(out, "period-vs-spacing.png"))
 
 
 def plot_mu(rows, meta, out):
@@ -130,7 +122,7 @@ def plot_mu(rows, meta, out):
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "mu-recovered.png"))
+    atomic_png.save(fig, os.path.join(out, "mu-recovered.png"))
 
 
 def plot_roller_speed(rows, meta, out):
@@ -166,7 +158,7 @@ def plot_roller_speed(rows, meta, out):
     bottom.grid(True, which="both", alpha=0.3)
     bottom.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "roller-speed.png"))
+    atomic_png.save(fig, os.path.join(out, "roller-speed.png"))
 
 
 def axis_positions(axis):
@@ -185,9 +177,12 @@ def plot_map(rows, meta, out, a, b):
     errs = [100 * (number(r, "error_vs_thick") if number(r, "error_vs_thick") is not None else float("nan"))
             for r in rows]
     finite = [abs(e) for e in errs if not math.isnan(e)]
-    lim = max(finite) if finite else 1.0
-    sc = ax.scatter(xs, ys, c=errs, cmap="coolwarm", vmin=-lim, vmax=lim, s=90, marker="s")
-    fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
+    if finite:
+        lim = max(finite)
+        sc = ax.scatter(xs, ys, c=errs, cmap="coolwarm", vmin=-lim, vmax=lim, s=90, marker="s")
+        fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
+    else:  # no point gave a period (all failed, invalid, or too short): the points alone
+        ax.scatter(xs, ys, s=90, marker="s", color="lightgrey")
     for x, y, r in zip(xs, ys, rows):
         if r["regime"] != "oscillates" or r["status"] != "ok":
             mark = r["regime"] or r["status"]
@@ -206,7 +201,7 @@ def plot_map(rows, meta, out, a, b):
     ax.set_title(f"{meta['sweep']}: error against the thick-plate formula "
                  "(letters: regimes other than oscillating)")
     fig.tight_layout()
-    save(fig, os.path.join(out, "map.png"))
+    atomic_png.save(fig, os.path.join(out, "map.png"))
 
 
 def plot_axis(rows, meta, out, a):
@@ -229,7 +224,7 @@ def plot_axis(rows, meta, out, a):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    save(fig, os.path.join(out, "axis.png"))
+    atomic_png.save(fig, os.path.join(out, "axis.png"))
 
 
 def main(csv_path, json_path, out):

@@ -1,17 +1,17 @@
-// frictionlab analytic: the analytic model for a set-up given by l, mu_k or T, and h_c.
-#include <cmath>
-#include <optional>
+// frictionlab analytic: the analytic model for a set-up given by l, mu_k or T, and h_c. The
+// model's report is lab/analytic_report; this command reads the options and prints.
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
-#include "core/analytic_model.hpp"
 #include "core/paper_table.hpp"
 #include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "io/unknown_material.hpp"
+#include "lab/analytic_report.hpp"
 
 namespace fl::cli {
 namespace {
@@ -32,149 +32,99 @@ struct AnalyticOptions {
   bool json = false;
 };
 
-nlohmann::json optional_number(const std::optional<double>& v) {
-  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+// The material and its row of Table I that --material and --temperature name.
+std::pair<const PaperMaterial*, const PaperMeasurement*> paper_row(const PaperTable& table,
+                                                                   const AnalyticOptions& o) {
+  const PaperMaterial* material = table.find(o.material);
+  if (material == nullptr)
+    throw InputError({}, "--material: unknown material \"" + o.material + "\"; " +
+                             unknown_material_note(table, o.material));
+  const double temperature =
+      option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
+  const PaperMeasurement* row = PaperTable::at(*material, temperature);
+  if (row == nullptr)
+    throw InputError({}, fmt::format("--temperature: the paper measured {} at 300 K{} only",
+                                     material->name, material->cold ? " and 77 K" : ""));
+  return {material, row};
+}
+
+void print_report(const AnalyticReport& r) {
+  const AnalyticSetUp& s = r.set_up;
+  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+  fmt::print("frictionlab analytic: the friction oscillator for {}\n", r.source);
+  fmt::print("  roller spacing l             {:.1f} +- {:.1f} mm\n", s.spacing * 1e3,
+             s.spacing_err * 1e3);
+  fmt::print("  centre-of-mass height h_c    {:.2f} mm\n", s.h_c * 1e3);
+  if (r.period_measured) {
+    fmt::print("  measured period T            {:.4g} +- {:.2g} s\n", *r.period_measured,
+               r.period_measured_err);
+    if (r.material)
+      fmt::print("  paper's mu_k                 {} +- {}\n", r.paper_mu_k.value,
+                 r.paper_mu_k.uncertainty);
+    fmt::print(
+        "  mu_k, thin formula           {:.4f} +- {:.4f} (worst case) +- {:.4f} (quadrature)\n",
+        r.mu_k_thin.mu_k, r.mu_k_thin.worst, r.mu_k_thin.quadrature);
+    fmt::print(
+        "  mu_k, thick formula          {:.4f} +- {:.4f} (worst case) +- {:.4f} (quadrature)\n",
+        r.mu_k_thick.mu_k, r.mu_k_thick.worst, r.mu_k_thick.quadrature);
+    fmt::print(
+        "  condition numbers            d ln mu / d ln T = {:.3f}, d ln mu / d ln l = {:.0f}\n",
+        r.mu_k_thick.condition_period, r.mu_k_thick.condition_spacing);
+  } else {
+    fmt::print("  mu_k                         {:.4g}\n", r.mu_k);
+  }
+  fmt::print("  period, thin formula         {:.5f} s\n", r.period_thin);
+  if (!r.restoring_force) {
+    fmt::print(
+        "  no restoring force: l = {:.1f} mm <= 2 mu_k h_c = {:.1f} mm; the plate drifts off\n",
+        s.spacing * 1e3, 2.0 * r.mu_k * s.h_c * 1e3);
+    return;
+  }
+  fmt::print("  period, thick formula        {:.5f} s ({:+.2f} % against thin)\n", *r.period_thick,
+             100.0 * (*r.period_thick / r.period_thin - 1.0));
+  fmt::print("  tipping amplitude            {:.1f} mm (a normal force reaches zero)\n",
+             *r.tipping_amplitude * 1e3);
+  fmt::print(
+      "  full slip at amplitude {:.0f} mm needs the rollers above {:.0f} rpm; at {:.0f} rpm the "
+      "slip margin is {:.2f}{}\n",
+      s.amplitude * 1e3, *r.roller_speed_for_full_slip * kRpm, s.roller_speed * kRpm,
+      *r.slip_margin,
+      *r.slip_margin > 1.0 ? "" : " (< 1: the plate sticks to a roller for part of each cycle)");
 }
 
 int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
-  const double spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
-  const double spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
-  const double h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
-  const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  const double radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
-  const double roller_speed =
-      option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
-  const double amplitude = option_quantity(o.amplitude, Dimension::kLength, "--amplitude");
+  AnalyticSetUp set_up;
+  set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
+  set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
+  set_up.h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
+  set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
+  set_up.roller_radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
+  set_up.roller_speed = option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
+  set_up.amplitude = option_quantity(o.amplitude, Dimension::kLength, "--amplitude");
   const int given =
       (o.mu_k.empty() ? 0 : 1) + (o.period.empty() ? 0 : 1) + (o.material.empty() ? 0 : 1);
   if (given != 1)
     throw InputError({}, "give exactly one of --mu-k, --period or --material (found " +
                              std::to_string(given) + ")");
 
-  nlohmann::json out;
-  out["spacing_m"] = spacing;
-  out["spacing_err_m"] = spacing_err;
-  out["h_c_m"] = h_c;
-  out["gravity_m_s2"] = gravity;
-
-  std::optional<double> mu_k;
-  std::string source;
-  std::optional<double> period;
-  double period_err = 0.0;
+  AnalyticReport report;
   if (!o.mu_k.empty()) {
-    mu_k = option_quantity(o.mu_k, Dimension::kDimensionless, "--mu-k");
-    source = "given mu_k";
+    report =
+        analytic_for_mu_k(set_up, option_quantity(o.mu_k, Dimension::kDimensionless, "--mu-k"));
   } else if (!o.period.empty()) {
-    period = option_quantity(o.period, Dimension::kTime, "--period");
-    period_err = option_quantity(o.period_err, Dimension::kTime, "--period-err");
-    source = "given period";
+    const double period = option_quantity(o.period, Dimension::kTime, "--period");
+    const double period_err = option_quantity(o.period_err, Dimension::kTime, "--period-err");
+    report = analytic_for_period(set_up, period, period_err);
   } else {
     const PaperTable table =
         load_paper_table(paper_table_path(resolve_asset_dir(global.asset_dir)));
-    const PaperMaterial* material = table.find(o.material);
-    if (material == nullptr) {
-      std::string known;
-      for (const PaperMaterial& m : table.materials) known += " " + m.key;
-      throw InputError({}, "--material: unknown material \"" + o.material +
-                               "\"; the paper's materials are:" + known);
-    }
-    const double temperature =
-        option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
-    const PaperMeasurement* row = PaperTable::at(*material, temperature);
-    if (row == nullptr)
-      throw InputError({}, fmt::format("--temperature: the paper measured {} at 300 K{} only",
-                                       material->name, material->cold ? " and 77 K" : ""));
-    period = row->period.value;
-    period_err = row->period.uncertainty;
-    source = fmt::format("the paper's {} at {:.0f} K", material->name, row->temperature);
-    out["material"] = material->key;
-    out["temperature_k"] = row->temperature;
-    out["mu_k_paper"] = row->mu_k.value;
-    out["mu_k_paper_err"] = row->mu_k.uncertainty;
+    const auto [material, row] = paper_row(table, o);
+    report = analytic_for_material(set_up, *material, *row);
   }
-  out["source"] = source;
-
-  if (period) {
-    const MuKUncertainty thin =
-        mu_k_with_uncertainty(*period, period_err, spacing, spacing_err, 0.0, gravity);
-    const MuKUncertainty thick =
-        mu_k_with_uncertainty(*period, period_err, spacing, spacing_err, h_c, gravity);
-    out["period_measured_s"] = *period;
-    out["period_measured_err_s"] = period_err;
-    out["mu_k_thin"] = thin.mu_k;
-    out["mu_k_thin_err_worst"] = thin.worst;
-    out["mu_k_thin_err_quadrature"] = thin.quadrature;
-    out["mu_k_thick"] = thick.mu_k;
-    out["mu_k_thick_err_worst"] = thick.worst;
-    out["mu_k_thick_err_quadrature"] = thick.quadrature;
-    out["condition_period"] = thick.condition_period;
-    out["condition_spacing"] = thick.condition_spacing;
-    mu_k = thick.mu_k;
-  }
-  out["mu_k"] = *mu_k;
-  const bool restoring = has_restoring_force(spacing, *mu_k, h_c);
-  out["restoring_force"] = restoring;
-  std::optional<double> t_thin, t_thick, tipping, full_slip, margin;
-  t_thin = period_thin(spacing, *mu_k, gravity);
-  if (restoring) {
-    t_thick = period_thick(spacing, *mu_k, h_c, gravity);
-    tipping = tipping_amplitude(spacing, *mu_k, h_c);
-    full_slip = roller_speed_for_full_slip(amplitude, radius, spacing, *mu_k, h_c, gravity);
-    margin = slip_margin(roller_speed, radius, amplitude, spacing, *mu_k, h_c, gravity);
-  }
-  out["period_thin_s"] = optional_number(t_thin);
-  out["period_thick_s"] = optional_number(t_thick);
-  out["tipping_amplitude_m"] = optional_number(tipping);
-  out["amplitude_m"] = amplitude;
-  out["roller_radius_m"] = radius;
-  out["roller_speed_rad_s"] = roller_speed;
-  out["roller_speed_for_full_slip_rad_s"] = optional_number(full_slip);
-  out["slip_margin"] = optional_number(margin);
-
-  if (o.json) {
-    fmt::print("{}\n", out.dump(2));
-    return 0;
-  }
-  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
-  fmt::print("frictionlab analytic: the friction oscillator for {}\n", source);
-  fmt::print("  roller spacing l             {:.1f} +- {:.1f} mm\n", spacing * 1e3,
-             spacing_err * 1e3);
-  fmt::print("  centre-of-mass height h_c    {:.2f} mm\n", h_c * 1e3);
-  if (period) {
-    fmt::print("  measured period T            {:.4g} +- {:.2g} s\n", *period, period_err);
-    if (out.contains("mu_k_paper"))
-      fmt::print("  paper's mu_k                 {} +- {}\n", out["mu_k_paper"].get<double>(),
-                 out["mu_k_paper_err"].get<double>());
-    fmt::print(
-        "  mu_k, thin formula           {:.4f} +- {:.4f} (worst case) +- {:.4f} (quadrature)\n",
-        out["mu_k_thin"].get<double>(), out["mu_k_thin_err_worst"].get<double>(),
-        out["mu_k_thin_err_quadrature"].get<double>());
-    fmt::print(
-        "  mu_k, thick formula          {:.4f} +- {:.4f} (worst case) +- {:.4f} (quadrature)\n",
-        out["mu_k_thick"].get<double>(), out["mu_k_thick_err_worst"].get<double>(),
-        out["mu_k_thick_err_quadrature"].get<double>());
-    fmt::print(
-        "  condition numbers            d ln mu / d ln T = {:.3f}, d ln mu / d ln l = {:.0f}\n",
-        out["condition_period"].get<double>(), out["condition_spacing"].get<double>());
-  } else {
-    fmt::print("  mu_k                         {:.4g}\n", *mu_k);
-  }
-  fmt::print("  period, thin formula         {:.5f} s\n", *t_thin);
-  if (!restoring) {
-    fmt::print(
-        "  no restoring force: l = {:.1f} mm <= 2 mu_k h_c = {:.1f} mm; the plate drifts off\n",
-        spacing * 1e3, 2.0 * *mu_k * h_c * 1e3);
-    return 0;
-  }
-  fmt::print("  period, thick formula        {:.5f} s ({:+.2f} % against thin)\n", *t_thick,
-             100.0 * (*t_thick / *t_thin - 1.0));
-  fmt::print("  tipping amplitude            {:.1f} mm (a normal force reaches zero)\n",
-             *tipping * 1e3);
-  fmt::print(
-      "  full slip at amplitude {:.0f} mm needs the rollers above {:.0f} rpm; at {:.0f} rpm the "
-      "slip margin is {:.2f}{}\n",
-      amplitude * 1e3, *full_slip * kRpm, roller_speed * kRpm, *margin,
-      *margin > 1.0 ? "" : " (< 1: the plate sticks to a roller for part of each cycle)");
+  if (o.json)
+    fmt::print("{}\n", analytic_json(report).dump(2));
+  else
+    print_report(report);
   return 0;
 }
 

@@ -14,6 +14,7 @@
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/json_value.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "lab/stability_study.hpp"
 #include "scene/scene_yaml.hpp"
@@ -30,22 +31,20 @@ struct StabilityOptions {
 };
 
 nlohmann::json row_json(const StabilityRow& r) {
-  return {
-      {"case", r.name},
-      {"parameters", r.parameters},
-      {"expected", regime_name(r.expected)},
-      {"expected_reason", r.expected_reason},
-      {"declared", r.declared ? regime_name(*r.declared) : ""},
-      {"found", regime_name(r.found)},
-      {"evidence", r.evidence},
-      {"as_expected", r.as_expected},
-      {"largest_step_s",
-       r.largest_step ? nlohmann::json(*r.largest_step) : nlohmann::json(nullptr)},
-      {"step_note", r.step_note},
-      {"period_error", r.period_error ? nlohmann::json(*r.period_error) : nlohmann::json(nullptr)},
-      {"condition_period", r.condition_period},
-      {"condition_spacing", r.condition_spacing},
-      {"wall_s", r.wall_s}};
+  return {{"case", r.name},
+          {"parameters", r.parameters},
+          {"expected", regime_name(r.expected)},
+          {"expected_reason", r.expected_reason},
+          {"declared", r.declared ? regime_name(*r.declared) : ""},
+          {"found", regime_name(r.found)},
+          {"evidence", r.evidence},
+          {"as_expected", r.as_expected},
+          {"largest_step_s", json_or_null(r.largest_step)},
+          {"step_note", r.step_note},
+          {"period_error", json_or_null(r.period_error)},
+          {"condition_period", r.condition_period},
+          {"condition_spacing", r.condition_spacing},
+          {"wall_s", r.wall_s}};
 }
 
 int run_stability(const StabilityOptions& o, const GlobalOptions& global) {

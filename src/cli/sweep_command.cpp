@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -124,6 +125,30 @@ std::string counts_text(const std::map<std::string, int>& counts) {
   return out.empty() ? "none" : out;
 }
 
+// The exit status of a sweep whose results hold points without a result (docs/cli.md).
+constexpr int kPointsFailed = 3;
+
+// Says on stderr how many of the points in a sweep's results gave no result (failed: a guard
+// stopped the run; invalid: the scene refused the point's overrides) and where their errors are;
+// returns that number.
+int report_failed_points(const std::string& command, const std::map<std::string, int>& status,
+                         std::size_t points, const std::vector<std::string>& files) {
+  const auto count = [&](const char* key) {
+    const auto it = status.find(key);
+    return it == status.end() ? 0 : it->second;
+  };
+  const int failed = count("failed");
+  const int invalid = count("invalid");
+  if (failed + invalid == 0) return 0;
+  std::string where;
+  for (const std::string& f : files) where += (where.empty() ? "" : " and ") + f;
+  fmt::print(stderr,
+             "frictionlab {}: {} of {} points gave no result ({} failed, {} invalid); every "
+             "point's row, with its error, is in {}\n",
+             command, failed + invalid, points, failed, invalid, where);
+  return failed + invalid;
+}
+
 struct SweepCommandOptions {
   std::string file;
   int workers = 0;
@@ -205,7 +230,11 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
           "  this shard is done; when every shard is, join them: frictionlab merge DIR...\n");
     }
   }
-  return outcome.interrupted ? 130 : 0;
+  if (outcome.interrupted) return 130;
+  if (outcome.complete &&
+      report_failed_points("sweep", outcome.status, outcome.points, outcome.files) > 0)
+    return kPointsFailed;
+  return 0;
 }
 
 struct MergeCommandOptions {
@@ -227,13 +256,15 @@ int run_merge_command(const MergeCommandOptions& o) {
                                       {"files", outcome.files},
                                       {"plots", pngs}}
                            .dump(2));
-    return 0;
+  } else {
+    fmt::print("frictionlab merge: {} folder{} -> {} ({} points; {})\n", o.dirs.size(),
+               o.dirs.size() == 1 ? "" : "s", out, outcome.points, counts_text(outcome.status));
+    for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
+    for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
   }
-  fmt::print("frictionlab merge: {} folder{} -> {} ({} points; {})\n", o.dirs.size(),
-             o.dirs.size() == 1 ? "" : "s", out, outcome.points, counts_text(outcome.status));
-  for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
-  for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
-  return 0;
+  return report_failed_points("merge", outcome.status, outcome.points, outcome.files) > 0
+             ? kPointsFailed
+             : 0;
 }
 
 }  // namespace

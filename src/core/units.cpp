@@ -6,6 +6,8 @@
 #include <numbers>
 #include <span>
 
+#include "core/text.hpp"
+
 namespace fl {
 namespace {
 
@@ -94,13 +96,6 @@ std::span<const Unit> units_of(Dimension dimension) {
       return kInverseSpeed;
   }
   return kDimensionless;
-}
-
-std::string_view trim(std::string_view s) {
-  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
-  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  return s;
 }
 
 [[noreturn]] void fail(Dimension dimension, std::string_view text, std::string_view quantity,

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <array>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <sstream>
 #include <system_error>
 
+#include "core/micros_clock.hpp"
+#include "core/text.hpp"
 #include "io/input_error.hpp"
+#include "io/text_file.hpp"
 
 namespace fl {
 namespace {
@@ -24,15 +24,8 @@ bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r';
 }
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (is_space(s.front()) || s.front() == '"' || s.front() == '\'')) {
-    s.remove_prefix(1);
-  }
-  while (!s.empty() && (is_space(s.back()) || s.back() == '"' || s.back() == '\'')) {
-    s.remove_suffix(1);
-  }
-  return s;
-}
+// Around a field: blanks and quotes.
+constexpr std::string_view kPadding = " \t\r\"'";
 
 // Splits a line at `delimiter` (0: runs of spaces or tabs), keeping each field's column.
 std::vector<Field> split(std::string_view line, char delimiter) {
@@ -54,7 +47,7 @@ std::vector<Field> split(std::string_view line, char delimiter) {
         line.substr(i, end == std::string_view::npos ? line.npos : end - i);
     std::size_t lead = 0;
     while (lead < raw.size() && is_space(raw[lead])) ++lead;
-    out.push_back({trim(raw), static_cast<int>(i + lead) + 1});
+    out.push_back({trim(raw, kPadding), static_cast<int>(i + lead) + 1});
     if (end == std::string_view::npos) break;
     i = end + 1;
   }
@@ -72,7 +65,7 @@ std::string lower(std::string_view s) {
 // The unit of a time column's name ("t_us" -> "us", "time (s)" -> "s", "t" -> "s"), or "" when
 // the name is not a time column's.
 std::string time_unit_of(std::string_view header) {
-  const std::string name = lower(trim(header));
+  const std::string name = lower(trim(header, kPadding));
   if (name == "micros") return "us";
   if (name == "millis") return "ms";
   for (std::string_view base : {"timestamp", "time", "ts", "t"}) {
@@ -100,12 +93,12 @@ bool is_adc_name(std::string_view header) {
   static constexpr std::array<std::string_view, 14> kNames = {
       "adc", "value",  "val",    "hall",   "hall_adc", "adc_value",  "a0",
       "raw", "analog", "counts", "sensor", "reading",  "analogread", "signal"};
-  const std::string name = lower(trim(header));
+  const std::string name = lower(trim(header, kPadding));
   return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
 }
 
 bool parse_number(std::string_view text, double* out) {
-  text = trim(text);
+  text = trim(text, kPadding);
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   if (text.empty()) return false;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
@@ -146,8 +139,8 @@ HallLog parse_hall_log(std::string_view text, const std::string& name) {
   std::size_t time_index = 0;
   std::size_t adc_index = 0;
   std::size_t fields_needed = 0;
-  double scale = 1.0;   // seconds per unit of the time column
-  double offset = 0.0;  // added to undo wraps of a microsecond clock
+  double scale = 1.0;  // seconds per unit of the time column
+  MicrosClock clock;   // a microsecond column may be the firmware's wrapping clock
   double previous_raw = 0.0;
   int previous_line = 0;
   int line_number = 0;
@@ -250,22 +243,13 @@ HallLog parse_hall_log(std::string_view text, const std::string& name) {
       throw fail(line_number, af.column,
                  "column " + quoted(log.adc_column) +
                      ": expected an ADC value from 0 to 65535 counts, found " + shown(value));
-    if (!log.t_s.empty()) {
-      // The firmware's 32-bit microsecond clock wraps every 71.6 minutes.
-      constexpr double kWrap = 4294967296.0;
-      if (log.time_unit == "us" && t_raw < previous_raw && previous_raw - t_raw > kWrap / 2 &&
-          previous_raw < kWrap) {
-        offset += kWrap;
-        ++log.clock_wraps;
-      }
-      const double t = (t_raw + offset) * scale;
-      if (!(t > log.t_s.back()))
-        throw fail(line_number, tf.column,
-                   "time " + shown(t_raw) + " " + log.time_unit + " is not after the previous " +
-                       "sample's " + shown(previous_raw) + " " + log.time_unit + " (line " +
-                       std::to_string(previous_line) + "): the times must increase");
-    }
-    log.t_s.push_back((t_raw + offset) * scale);
+    const double t = (log.time_unit == "us" ? clock.advance(t_raw) : t_raw) * scale;
+    if (!log.t_s.empty() && !(t > log.t_s.back()))
+      throw fail(line_number, tf.column,
+                 "time " + shown(t_raw) + " " + log.time_unit + " is not after the previous " +
+                     "sample's " + shown(previous_raw) + " " + log.time_unit + " (line " +
+                     std::to_string(previous_line) + "): the times must increase");
+    log.t_s.push_back(t);
     log.adc.push_back(static_cast<uint16_t>(std::lround(value)));
     log.line.push_back(line_number);
     previous_raw = t_raw;
@@ -277,6 +261,7 @@ HallLog parse_hall_log(std::string_view text, const std::string& name) {
       throw fail(1, 0, "the log has only comment lines: expected " + std::string(kExpected));
     throw fail(1, 0, "the log is empty: expected " + std::string(kExpected));
   }
+  log.clock_wraps = clock.wraps();
   if (log.t_s.empty())
     throw fail(log.header_line, 0,
                "no samples after the header: expected lines of " + log.time_column + " and " +
@@ -292,13 +277,7 @@ HallLog parse_hall_log(std::string_view text, const std::string& name) {
 }
 
 HallLog read_hall_log(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw InputError(SourceLocation{path, 0, 0},
-                     std::string("cannot open the log: ") + std::strerror(errno));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_hall_log(text.str(), path);
+  return parse_hall_log(read_text_file(path, "the log"), path);
 }
 
 }  // namespace fl

@@ -2,12 +2,11 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <utility>
 #include <vector>
 
 #include "io/suggest.hpp"
+#include "io/text_file.hpp"
 
 namespace fl {
 namespace {
@@ -234,11 +233,7 @@ YamlNode load_yaml_file(const std::string& file, std::size_t max_bytes) {
     throw InputError(SourceLocation{file, 0, 0},
                      "the file is " + std::to_string(bytes) + " bytes, more than the " +
                          std::to_string(max_bytes) + " bytes a YAML input may have");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(SourceLocation{file, 0, 0}, "cannot open the file for reading");
-  std::ostringstream content;
-  content << in.rdbuf();
-  return load_yaml_text(content.str(), file);
+  return load_yaml_text(read_text_file(file), file);
 }
 
 }  // namespace fl

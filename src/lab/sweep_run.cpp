@@ -6,26 +6,18 @@
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "io/text_file.hpp"
 #include "lab/sweep_pool.hpp"
 
 namespace fl {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::string point_file_name(std::size_t index) {
   return fmt::format("{:08d}.json", index);
@@ -88,7 +80,8 @@ SweepStore SweepStore::create(const std::string& dir, const nlohmann::json& plan
   }
   SweepStore store(dir, plan);
   if (fs::exists(plan_file, ec)) {
-    const nlohmann::json old = nlohmann::json::parse(read_text(plan_file), nullptr, false);
+    const nlohmann::json old =
+        nlohmann::json::parse(read_text_file(plan_file.string()), nullptr, false);
     if (old.is_discarded() || text_digest(old.dump()) != store.digest_)
       throw InputError(SourceLocation{plan_file.string(), 0, 0},
                        "this folder holds the results of another sweep (" +
@@ -110,7 +103,7 @@ SweepStore SweepStore::open(const std::string& dir) {
     throw InputError(
         SourceLocation{dir, 0, 0},
         "not a sweep folder: it has no plan.json (frictionlab sweep --out writes one)");
-  nlohmann::json plan = nlohmann::json::parse(read_text(plan_file), nullptr, false);
+  nlohmann::json plan = nlohmann::json::parse(read_text_file(plan_file.string()), nullptr, false);
   if (plan.is_discarded() || !plan.is_object() || !plan.contains("points") ||
       !plan.contains("axes"))
     throw InputError(SourceLocation{plan_file.string(), 0, 0}, "not a sweep plan (damaged?)");
@@ -123,7 +116,7 @@ std::map<std::size_t, PointResult> SweepStore::load_points() const {
   for (const auto& entry : fs::directory_iterator(fs::path(dir_) / "points", ec)) {
     std::size_t index = 0;
     if (!is_point_file_name(entry.path().filename().string(), index)) continue;
-    auto result = parse_point_file(read_text(entry.path()), digest_);
+    auto result = parse_point_file(read_text_file(entry.path().string()), digest_);
     if (result && result->index == index && index < point_count())
       out.emplace(index, std::move(*result));
   }

@@ -3,12 +3,13 @@
 #include <charconv>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
 #include "core/units.hpp"
+#include "io/text_file.hpp"
+#include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
 
 namespace fl {
@@ -20,15 +21,8 @@ struct NumberWithUnit {
   std::string unit;
 };
 
-std::string trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
-  return std::string(s);
-}
-
 std::optional<NumberWithUnit> split_number(std::string_view text) {
-  std::string_view s = text;
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+  std::string_view s = trim(text);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   NumberWithUnit out;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out.number);
@@ -50,13 +44,6 @@ std::string value_text(const YamlNode& node) {
 std::string format_number(double value) {
   std::string s = fmt::format("{:.12g}", value);
   return s == "-0" ? "0" : s;
-}
-
-std::string read_text_file(const std::string& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // The axis kinds and the keys each allows.
@@ -167,12 +154,9 @@ std::vector<const PaperMaterial*> read_materials(const YamlNode& node, const Pap
     const YamlNode item = node[i];
     const std::string key = item.text();
     const PaperMaterial* m = table.find(key);
-    if (m == nullptr) {
-      std::string known;
-      for (const PaperMaterial& k : table.materials) known += " " + k.key;
-      item.fail("\"" + key + "\" is not a material of the paper's Table I (" + known.substr(1) +
-                ")");
-    }
+    if (m == nullptr)
+      item.fail("\"" + key + "\" is not a material of the paper's Table I; " +
+                unknown_material_note(table, key));
     out.push_back(m);
   }
   return out;

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "io/input_error.hpp"
+#include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
 #include "scene/rig_parts_yaml.hpp"
 #include "scene/scene_checks.hpp"
@@ -146,13 +147,10 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   const std::string material = text == "paper" ? plate_material : text;
   const PaperTable& table = paper();
   const PaperMaterial* row = table.find(material);
-  if (row == nullptr) {
-    std::string known;
-    for (const PaperMaterial& m : table.materials) known += " " + m.key;
-    mu->fail("expected a number, \"paper\" or one of the paper's materials (" + known.substr(1) +
-             "), found \"" + text + "\"" +
-             (text == "paper" ? " (plate.material is \"" + plate_material + "\")" : ""));
-  }
+  if (row == nullptr)
+    mu->fail("expected a number, \"paper\" or one of the paper's materials, found \"" + text +
+             "\"" + (text == "paper" ? " (plate.material is \"" + plate_material + "\")" : "") +
+             "; " + unknown_material_note(table, material));
   const PaperMeasurement* at = PaperTable::at(*row, f.temperature);
   if (at == nullptr) {
     const YamlNode where = n.find("temperature") ? n.at("temperature") : *mu;

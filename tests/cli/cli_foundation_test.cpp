@@ -87,5 +87,15 @@ TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
   }
 }
 
+TEST(Cli, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
+  const auto r = lab("analytic --material plexiglass");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--material: unknown material \"plexiglass\"; the paper's materials are "
+                       "lego, paper, "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("did you mean 'plexiglas'?"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace fl

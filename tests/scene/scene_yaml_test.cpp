@@ -237,5 +237,13 @@ TEST(PlateMass, SlabPayloadAndMagnetsByHand) {
   EXPECT_NEAR(pm.h_c, (0.060 * 0.0025 + 0.040 * 0.015 + mm * 0.0065) / (0.1 + mm), 1e-15);
 }
 
+TEST(SceneYaml, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
+  const std::string message = error_of("format: 1\nfriction: {mu_k: plexiglass}\n");
+  EXPECT_NE(message.find("found \"plexiglass\"; the paper's materials are lego, paper, "),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("did you mean 'plexiglas'?"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace fl

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -204,6 +205,75 @@ TEST(CliSweep, PlotsAreDrawn) {
     EXPECT_TRUE(fs::exists(base / "out" / png)) << png;
     EXPECT_NE(r.out.find(png), std::string::npos) << r.out;
   }
+}
+
+// Four points: one that runs, one whose 0.3 s step blows up (failed: a guard stops the run) and
+// two whose spacing is not a length (invalid).
+const std::string kFailing =
+    "  - key: rollers.spacing\n    values: [89 mm, abc]\n"
+    "  - key: world.time_step\n    values: [1 ms, 0.3 s]\n";
+
+// The data rows of a results.csv, and the statuses of a sweep.json's rows, in point order.
+std::size_t csv_rows(const fs::path& file) {
+  const std::string text = test::read_text(file);
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) - 1;
+}
+std::vector<std::string> statuses(const fs::path& file) {
+  std::vector<std::string> out;
+  const nlohmann::json sweep = nlohmann::json::parse(test::read_text(file));
+  for (const auto& row : sweep["rows"]) out.push_back(row["status"].get<std::string>());
+  return out;
+}
+
+TEST(CliSweep, PointsWithoutAResultExitWithStatusThreeAndEveryRowIsWritten) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kFailing, "2 s");
+  const fs::path out = base / "out";
+  const auto r = lab("sweep " + file + " -j 2 --plot --out " + out.string());
+  EXPECT_EQ(r.status, 3) << r.err;
+  // Drawn too, though no point gave a period (2 s runs are too short for one).
+  EXPECT_TRUE(fs::exists(out / "map.png"));
+  EXPECT_NE(r.err.find("frictionlab sweep: 3 of 4 points gave no result (1 failed, 2 invalid)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find((out / "results.csv").string()), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("status: 1 failed, 2 invalid, 1 ok"), std::string::npos) << r.out;
+  // The results are written whole: a row for every point, failed ones with their error.
+  EXPECT_EQ(csv_rows(out / "results.csv"), 4u);
+  EXPECT_EQ(statuses(out / "sweep.json"),
+            (std::vector<std::string>{"ok", "failed", "invalid", "invalid"}));
+
+  // Started again, every point is found done: the same results, the same status.
+  const auto again = lab("sweep " + file + " --out " + out.string() + " --json");
+  EXPECT_EQ(again.status, 3) << again.err;
+  const auto j = nlohmann::json::parse(again.out);  // stdout stays one JSON object
+  EXPECT_EQ(j["resumed"], 4);
+  EXPECT_EQ(j["status"]["failed"], 1);
+  EXPECT_EQ(j["status"]["invalid"], 2);
+  EXPECT_NE(again.err.find("3 of 4 points gave no result"), std::string::npos) << again.err;
+}
+
+TEST(CliSweep, MergedShardsWithPointsWithoutAResultExitWithStatusThree) {
+  const fs::path base = folder("");
+  const std::string file = write_sweep(base, kFailing, "2 s");
+  std::string dirs;
+  for (int k = 1; k <= 2; ++k) {
+    const fs::path d = base / ("shard" + std::to_string(k));
+    // A shard that does not complete the sweep leaves the verdict to merge.
+    const auto r =
+        lab("sweep " + file + " --shard " + std::to_string(k) + "/2 --out " + d.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    dirs += " " + d.string();
+  }
+  const fs::path merged = base / "merged";
+  const auto m = lab("merge" + dirs + " --out " + merged.string());
+  EXPECT_EQ(m.status, 3) << m.err;
+  EXPECT_NE(m.err.find("frictionlab merge: 3 of 4 points gave no result (1 failed, 2 invalid)"),
+            std::string::npos)
+      << m.err;
+  EXPECT_EQ(csv_rows(merged / "results.csv"), 4u);
+  EXPECT_EQ(statuses(merged / "sweep.json"),
+            (std::vector<std::string>{"ok", "failed", "invalid", "invalid"}));
 }
 
 TEST(CliSweep, BadSweepFilesExitWithStatusTwo) {

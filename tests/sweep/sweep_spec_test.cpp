@@ -238,5 +238,14 @@ TEST(SweepSpec, Shards) {
   }
 }
 
+TEST(SweepSpec, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
+  const std::string message = error_of(kHead + "axes:\n  - material: [lego, cardbord]\n");
+  EXPECT_NE(message.find("\"cardbord\" is not a material of the paper's Table I; the paper's "
+                         "materials are lego, paper, "),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("did you mean 'cardboard'?"), std::string::npos) << message;
+}
+
 }  // namespace
 }  // namespace fl

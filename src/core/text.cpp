@@ -1,0 +1,11 @@
+#include "core/text.hpp"
+
+namespace fl {
+
+std::string_view trim(std::string_view s, std::string_view strip) {
+  const std::size_t first = s.find_first_not_of(strip);
+  if (first == std::string_view::npos) return {};
+  return s.substr(first, s.find_last_not_of(strip) - first + 1);
+}
+
+}  // namespace fl

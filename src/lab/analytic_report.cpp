@@ -1,0 +1,106 @@
+#include "lab/analytic_report.hpp"
+
+#include <fmt/format.h>
+
+#include "io/json_value.hpp"
+
+namespace fl {
+namespace {
+
+// Everything that follows from mu_k.
+void complete(AnalyticReport& r) {
+  const AnalyticSetUp& s = r.set_up;
+  r.restoring_force = has_restoring_force(s.spacing, r.mu_k, s.h_c);
+  r.period_thin = period_thin(s.spacing, r.mu_k, s.gravity);
+  if (!r.restoring_force) return;
+  r.period_thick = period_thick(s.spacing, r.mu_k, s.h_c, s.gravity);
+  r.tipping_amplitude = tipping_amplitude(s.spacing, r.mu_k, s.h_c);
+  r.roller_speed_for_full_slip = fl::roller_speed_for_full_slip(
+      s.amplitude, s.roller_radius, s.spacing, r.mu_k, s.h_c, s.gravity);
+  r.slip_margin = fl::slip_margin(s.roller_speed, s.roller_radius, s.amplitude, s.spacing, r.mu_k,
+                                  s.h_c, s.gravity);
+}
+
+// mu_k from a measured period, through both formulas; the thick one's is the report's.
+void from_period(AnalyticReport& r, double period, double period_err) {
+  const AnalyticSetUp& s = r.set_up;
+  r.period_measured = period;
+  r.period_measured_err = period_err;
+  r.mu_k_thin = mu_k_with_uncertainty(period, period_err, s.spacing, s.spacing_err, 0.0, s.gravity);
+  r.mu_k_thick =
+      mu_k_with_uncertainty(period, period_err, s.spacing, s.spacing_err, s.h_c, s.gravity);
+  r.mu_k = r.mu_k_thick.mu_k;
+  complete(r);
+}
+
+}  // namespace
+
+AnalyticReport analytic_for_mu_k(const AnalyticSetUp& set_up, double mu_k) {
+  AnalyticReport r;
+  r.set_up = set_up;
+  r.source = "given mu_k";
+  r.mu_k = mu_k;
+  complete(r);
+  return r;
+}
+
+AnalyticReport analytic_for_period(const AnalyticSetUp& set_up, double period, double period_err) {
+  AnalyticReport r;
+  r.set_up = set_up;
+  r.source = "given period";
+  from_period(r, period, period_err);
+  return r;
+}
+
+AnalyticReport analytic_for_material(const AnalyticSetUp& set_up, const PaperMaterial& material,
+                                     const PaperMeasurement& row) {
+  AnalyticReport r;
+  r.set_up = set_up;
+  r.source = fmt::format("the paper's {} at {:.0f} K", material.name, row.temperature);
+  r.material = material.key;
+  r.temperature = row.temperature;
+  r.paper_mu_k = row.mu_k;
+  from_period(r, row.period.value, row.period.uncertainty);
+  return r;
+}
+
+nlohmann::json analytic_json(const AnalyticReport& r) {
+  const AnalyticSetUp& s = r.set_up;
+  nlohmann::json out;
+  out["spacing_m"] = s.spacing;
+  out["spacing_err_m"] = s.spacing_err;
+  out["h_c_m"] = s.h_c;
+  out["gravity_m_s2"] = s.gravity;
+  out["source"] = r.source;
+  if (r.material) {
+    out["material"] = *r.material;
+    out["temperature_k"] = r.temperature;
+    out["mu_k_paper"] = r.paper_mu_k.value;
+    out["mu_k_paper_err"] = r.paper_mu_k.uncertainty;
+  }
+  if (r.period_measured) {
+    out["period_measured_s"] = *r.period_measured;
+    out["period_measured_err_s"] = r.period_measured_err;
+    out["mu_k_thin"] = r.mu_k_thin.mu_k;
+    out["mu_k_thin_err_worst"] = r.mu_k_thin.worst;
+    out["mu_k_thin_err_quadrature"] = r.mu_k_thin.quadrature;
+    out["mu_k_thick"] = r.mu_k_thick.mu_k;
+    out["mu_k_thick_err_worst"] = r.mu_k_thick.worst;
+    out["mu_k_thick_err_quadrature"] = r.mu_k_thick.quadrature;
+    out["condition_period"] = r.mu_k_thick.condition_period;
+    out["condition_spacing"] = r.mu_k_thick.condition_spacing;
+  }
+  out["mu_k"] = r.mu_k;
+  out["restoring_force"] = r.restoring_force;
+  out["period_thin_s"] = json_or_null(r.period_thin);
+  out["period_thick_s"] = json_or_null(r.period_thick);
+  out["tipping_amplitude_m"] = json_or_null(r.tipping_amplitude);
+  out["amplitude_m"] = s.amplitude;
+  out["roller_radius_m"] = s.roller_radius;
+  out["roller_speed_rad_s"] = s.roller_speed;
+  out["roller_speed_for_full_slip_rad_s"] = json_or_null(r.roller_speed_for_full_slip);
+  out["slip_margin"] = json_or_null(r.slip_margin);
+  return out;
+}
+
+}  // namespace fl

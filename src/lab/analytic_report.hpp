@@ -1,0 +1,61 @@
+// The analytic model for one set-up, as `frictionlab analytic` reports it: from a given mu_k, a
+// measured period T +- dT, or a material of the paper's Table I (its measured period), the thin
+// and thick periods, mu_k +- d mu_k through both formulas, the tipping amplitude and the rollers'
+// slip.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "core/analytic_model.hpp"
+#include "core/paper_table.hpp"
+
+namespace fl {
+
+struct AnalyticSetUp {
+  double spacing = 0.089;      // l [m]
+  double spacing_err = 0.002;  // dl [m]
+  double h_c = 0.0;            // centre of mass above the contact line [m]
+  double gravity = kDefaultGravity;
+  double roller_radius = 0.010;  // [m]
+  double roller_speed = 0.0;     // [rad/s]
+  double amplitude = 0.020;      // A, for the slip margin [m]
+};
+
+struct AnalyticReport {
+  AnalyticSetUp set_up;
+  std::string source;  // "given mu_k", "given period" or "the paper's LEGO blocks at 300 K"
+
+  // With a material of Table I: its key, the temperature and what the paper printed for mu_k.
+  std::optional<std::string> material;
+  double temperature = 0.0;  // [K]
+  Measured paper_mu_k;
+
+  // With a period (given, or the paper's for the material): T +- dT [s] and mu_k from it.
+  std::optional<double> period_measured;
+  double period_measured_err = 0.0;
+  MuKUncertainty mu_k_thin;   // thin formula (the paper's)
+  MuKUncertainty mu_k_thick;  // thick formula, for h_c
+
+  double mu_k = 0.0;  // given, or the thick formula's from the period
+  bool restoring_force = false;
+  double period_thin = 0.0;  // [s]
+  // Only with a restoring force (l > 2 mu_k h_c).
+  std::optional<double> period_thick;                // [s]
+  std::optional<double> tipping_amplitude;           // [m]
+  std::optional<double> roller_speed_for_full_slip;  // [rad/s] at the amplitude
+  std::optional<double> slip_margin;                 // at the roller speed
+};
+
+AnalyticReport analytic_for_mu_k(const AnalyticSetUp& set_up, double mu_k);
+AnalyticReport analytic_for_period(const AnalyticSetUp& set_up, double period, double period_err);
+AnalyticReport analytic_for_material(const AnalyticSetUp& set_up, const PaperMaterial& material,
+                                     const PaperMeasurement& row);
+
+// The report as `frictionlab analytic --json` prints it (docs/cli.md; SI, null where there is
+// none).
+nlohmann::json analytic_json(const AnalyticReport& report);
+
+}  // namespace fl

@@ -27,6 +27,7 @@
 #include "io/paper_table_yaml.hpp"
 #include "render/components.hpp"
 #include "render/renderer.hpp"
+#include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render/video.hpp"

@@ -13,6 +13,7 @@
 #include "render/gl_context.hpp"
 #include "render/png.hpp"
 #include "render/renderer.hpp"
+#include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render/video.hpp"

@@ -11,8 +11,9 @@
 
 #include "io/input_error.hpp"
 #include "lab/video_recorder.hpp"
+#include "render/rig_camera.hpp"
+#include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"
-#include "render/rig_view.hpp"
 #include "rig_test_support.hpp"
 #include "scene/drive_layout.hpp"
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "render/renderer.hpp"
+#include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render_test_support.hpp"

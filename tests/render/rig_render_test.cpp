@@ -75,7 +75,7 @@ Centroid difference_centroid(const ImageView& a, const ImageView& b) {
 class RigRender : public ::testing::Test {
  protected:
   void SetUp() override {
-    FL_REQUIRE_RENDER();
+    FL_REQUIRE_GL();
     if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)";
   }
 };

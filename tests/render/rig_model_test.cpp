@@ -10,7 +10,7 @@
 #include <string>
 
 #include "io/input_error.hpp"
-#include "lab/video_recorder.hpp"
+#include "lab/video_settings.hpp"
 #include "render/rig_camera.hpp"
 #include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"

@@ -37,8 +37,12 @@ std::string without_rendering() {
 // reason in *error when neither can be had.
 fs::path module_path(std::string* error) {
   const char* env = std::getenv(kVideoModuleVariable);
-  if (env != nullptr && *env != '\0') return fs::path(env);
+  // Absolute: dlopen would look up a bare file name in the library path, not here.
   std::error_code ec;
+  if (env != nullptr && *env != '\0') {
+    const fs::path absolute = fs::absolute(fs::path(env), ec);
+    return ec ? fs::path(env) : absolute;
+  }
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) {
     *error = "video, frames and stills need the video module " +

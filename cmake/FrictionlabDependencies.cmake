@@ -14,10 +14,48 @@ find_package(nlohmann_json 3 REQUIRED)
 find_package(Threads REQUIRED)
 
 # Optional components: ON by default when found; each one's absence leaves a working headless build.
+
+# The drawing layer (FRICTIONLAB_WITH_RENDER): the renderer, overlays and text, PNG frames, the
+# rig view. It draws through a GL back end, each a switch of its own below.
+find_package(PNG QUIET)
+find_path(FRICTIONLAB_STB_INCLUDE_DIR stb/stb_truetype.h)
+find_path(FRICTIONLAB_GL_INCLUDE_DIR GL/glcorearb.h)
+find_file(FRICTIONLAB_DEFAULT_FONT DejaVuSans.ttf PATHS /usr/share/fonts/truetype/dejavu
+          NO_DEFAULT_PATH)
+set(render_found OFF)
+if(PNG_FOUND AND FRICTIONLAB_STB_INCLUDE_DIR AND FRICTIONLAB_GL_INCLUDE_DIR AND FRICTIONLAB_DEFAULT_FONT)
+  set(render_found ON)
+endif()
+option(FRICTIONLAB_WITH_RENDER "The drawing layer: renderer, overlays, text, PNG, the rig view"
+       ${render_found})
+if(FRICTIONLAB_WITH_RENDER AND NOT PNG_FOUND)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON needs libpng (apt-get install libpng-dev)")
+endif()
+if(FRICTIONLAB_WITH_RENDER AND NOT FRICTIONLAB_STB_INCLUDE_DIR)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON needs stb_truetype (apt-get install libstb-dev)")
+endif()
+if(FRICTIONLAB_WITH_RENDER AND NOT FRICTIONLAB_GL_INCLUDE_DIR)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON needs GL/glcorearb.h (apt-get install libgl-dev)")
+endif()
+if(FRICTIONLAB_WITH_RENDER AND NOT FRICTIONLAB_DEFAULT_FONT)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON needs DejaVu Sans (apt-get install fonts-dejavu-core)")
+endif()
+
+# GL back ends. OSMesa renders in software (llvmpipe) with no display or GPU. An EGL back end
+# (a GPU without a display) is not written yet; it will be a switch beside this one.
 pkg_check_modules(OSMESA QUIET IMPORTED_TARGET osmesa)
-option(FRICTIONLAB_WITH_RENDER "Off-screen rendering through OSMesa" ${OSMESA_FOUND})
-if(FRICTIONLAB_WITH_RENDER AND NOT OSMESA_FOUND)
-  message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON but osmesa.pc was not found (apt-get install libosmesa6-dev)")
+set(osmesa_default OFF)
+if(OSMESA_FOUND AND FRICTIONLAB_WITH_RENDER)
+  set(osmesa_default ON)
+endif()
+option(FRICTIONLAB_WITH_OSMESA "The OSMesa GL back end (needs FRICTIONLAB_WITH_RENDER)"
+       ${osmesa_default})
+if(FRICTIONLAB_WITH_OSMESA AND NOT FRICTIONLAB_WITH_RENDER)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_OSMESA=ON needs FRICTIONLAB_WITH_RENDER=ON (a back end "
+                      "without the drawing layer draws nothing)")
+endif()
+if(FRICTIONLAB_WITH_OSMESA AND NOT OSMESA_FOUND)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_OSMESA=ON but osmesa.pc was not found (apt-get install libosmesa6-dev)")
 endif()
 
 pkg_check_modules(LIBAV QUIET IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
@@ -38,7 +76,6 @@ if(FRICTIONLAB_WITH_MPI AND NOT MPI_C_FOUND)
   message(FATAL_ERROR "FRICTIONLAB_WITH_MPI=ON but MPI was not found (apt-get install libopenmpi-dev openmpi-bin)")
 endif()
 
-find_package(PNG QUIET)
 find_package(Python3 QUIET COMPONENTS Interpreter)
 
 if(FRICTIONLAB_BUILD_TESTS)

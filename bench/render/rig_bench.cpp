@@ -5,7 +5,8 @@
 // The rig moves as in a run: the plate oscillates (T = 0.794 s, 30 mm), the rollers turn at
 // 1600 rpm and the gear train at its speeds, blurred as the video draws them.
 //
-//   rig_bench [--benchmark_filter=...]    (scene: <source>/scenes/paper-rig.yaml)
+//   rig_bench [--benchmark_filter=...]    (scene: <source>/scenes/paper-rig.yaml, loaded by the
+//                                          render tests' fixture, tests/support/rig_fixture.hpp)
 //
 // BM_RigFrame reports wall ms per frame, fps, the CPU time of all the process's threads per
 // frame (llvmpipe renders on LP_NUM_THREADS threads; unset: one per core) and the triangles of
@@ -22,15 +23,13 @@
 #include <string>
 #include <vector>
 
-#include "assets/mesh_library.hpp"
-#include "assets/part_catalog.hpp"
-#include "io/paper_table_yaml.hpp"
+#include "../../tests/support/rig_fixture.hpp"
 #include "render/components.hpp"
 #include "render/renderer.hpp"
+#include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render/video.hpp"
-#include "scene/scene_yaml.hpp"
 
 namespace {
 
@@ -40,26 +39,6 @@ double process_cpu_seconds() {
   timespec t{};
   clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-const fl::Scene& paper_rig() {
-  static const fl::Scene scene = [] {
-    const std::string assets = FRICTIONLAB_BENCH_ASSET_DIR;
-    std::optional<fl::PaperTable> table;
-    std::optional<fl::assets::PartCatalog> catalog;
-    return fl::load_scene_file(
-        std::string(FRICTIONLAB_BENCH_SOURCE_DIR) + "/scenes/paper-rig.yaml", {},
-        [&]() -> const fl::PaperTable& {
-          if (!table) table = fl::load_paper_table(fl::paper_table_path(assets));
-          return *table;
-        },
-        [&]() -> const fl::assets::PartCatalog& {
-          if (!catalog)
-            catalog = fl::assets::load_part_catalog(fl::assets::part_catalog_path(assets));
-          return *catalog;
-        });
-  }();
-  return scene;
 }
 
 // The rig, its renderer and a synthetic run: T = 0.794 s, 30 mm, 1600 rpm, a Hall trace.
@@ -76,7 +55,6 @@ struct RigFrames {
   RigFrames(int width, int height, int samples, bool shadows, bool with_overlay,
             int shadow_map = 2048)
       : overlay(with_overlay) {
-    const fl::Scene& scene = paper_rig();
     video.width = width;
     video.height = height;
     GlContextOptions options;
@@ -88,10 +66,7 @@ struct RigFrames {
     renderer_options.shadows = shadows;
     renderer_options.shadow_map_size = shadow_map;
     renderer = std::make_unique<Renderer>(*context, renderer_options);
-    const auto catalog =
-        fl::assets::load_part_catalog(fl::assets::part_catalog_path(FRICTIONLAB_BENCH_ASSET_DIR));
-    fl::assets::MeshLibrary meshes;
-    RigModel model = build_rig_model(scene, &catalog, &meshes);
+    RigModel model = fl::test::paper_rig_model();
     camera = rig_camera(model, video);
     cull_back_faces(model, camera.position);  // as the video recorder does without an orbit
     view = std::make_unique<RigView>(*renderer, std::move(model));
@@ -100,7 +75,7 @@ struct RigFrames {
   ImageView frame(int i) {
     const double t = i / 30.0;
     const double w = 2.0 * std::numbers::pi / 0.794;
-    RigPose pose = rest_pose(paper_rig());
+    RigPose pose = rest_pose(fl::test::paper_rig());
     pose.plate_x = 0.03 * std::cos(w * t);
     const auto& shafts = view->model().shafts;
     for (std::size_t s = 0; s < pose.shaft_angles.size(); ++s) {
@@ -141,8 +116,8 @@ struct RigFrames {
       state.estimator.period_std = 0.006;
       state.estimator.mu_k = 0.285;
       state.estimator.mu_k_err = 0.008;
-      state.paper_period = paper_rig().friction.paper_period;
-      state.paper_mu_k = paper_rig().friction.paper_mu_k;
+      state.paper_period = fl::test::paper_rig().friction.paper_period;
+      state.paper_mu_k = fl::test::paper_rig().friction.paper_mu_k;
       draw_rig_overlay(renderer->overlay(), video.width, video.height, state);
     }
     return renderer->end_frame();
@@ -159,8 +134,8 @@ void report(benchmark::State& state, double cpu, const FrameStats& stats, std::s
 
 // Args: width, height, shadows, samples, overlay, shadow map size.
 void BM_RigFrame(benchmark::State& state) {
-  if (!kHasRender) {
-    state.SkipWithError("built without rendering");
+  if (!kHasRender || !kHasOsmesa) {
+    state.SkipWithError("built without rendering or without a GL back end");
     return;
   }
   RigFrames rig(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)),
@@ -196,8 +171,8 @@ BENCHMARK(BM_RigFrame)
 // the closed file. Reports both in ms per frame and the overhead in %. Args: width, height, x264
 // threads (0: x264 decides).
 void BM_RigFrameEncoded(benchmark::State& state) {
-  if (!kHasRender || !kHasVideo) {
-    state.SkipWithError("built without rendering or video");
+  if (!kHasRender || !kHasOsmesa || !kHasVideo) {
+    state.SkipWithError("built without rendering, a GL back end or video");
     return;
   }
   const int width = static_cast<int>(state.range(0));

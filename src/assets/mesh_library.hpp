@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <stdexcept>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -20,6 +19,7 @@
 #include <Eigen/Core>
 
 #include "assets/part_catalog.hpp"
+#include "io/missing_component.hpp"
 
 #ifndef FRICTIONLAB_HAS_ASSETS
 #error "FRICTIONLAB_HAS_ASSETS is set by the fl_assets target; link fl_assets"
@@ -30,12 +30,9 @@ namespace fl::assets {
 // True when this build reads meshes (assimp); false when it has the stub.
 inline constexpr bool kHasAssets = FRICTIONLAB_HAS_ASSETS != 0;
 
-// A component this build was configured without. what(): "<what> needs <component>, which this
-// build of frictionlab does not have (<how to get it>)".
-class MissingComponent : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+// A component this build was configured without: the one error type of every layer
+// (io/missing_component.hpp).
+using MissingComponent = fl::MissingComponent;
 
 struct PartMesh {
   std::string file;                          // as it was asked for

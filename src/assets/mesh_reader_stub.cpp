@@ -6,10 +6,8 @@
 namespace fl::assets {
 
 PartMesh read_part_mesh(const std::string& file) {
-  throw MissingComponent("loading the mesh " + file +
-                         " needs mesh import (assimp), which this build of frictionlab does not "
-                         "have (apt-get install libassimp-dev, then configure with "
-                         "-DFRICTIONLAB_WITH_ASSETS=ON)");
+  throw_missing("loading the mesh " + file, "mesh import (assimp)",
+                "apt-get install libassimp-dev, then configure with -DFRICTIONLAB_WITH_ASSETS=ON");
 }
 
 }  // namespace fl::assets

@@ -1,309 +1,76 @@
+// The recorder in the executable: it checks the request, opens the video module and hands it
+// each step as plain values. No renderer here (src/lab/CMakeLists.txt keeps fl_lab off
+// fl_render).
 #include "lab/video_recorder.hpp"
 
-#include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <vector>
-
-#include "assets/mesh_library.hpp"
-#include "assets/part_catalog.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "lab/hall_estimator.hpp"
-#include "render/components.hpp"
-#include "render/gl_context.hpp"
-#include "render/png.hpp"
-#include "render/renderer.hpp"
-#include "render/rig_overlay.hpp"
-#include "render/rig_view.hpp"
-#include "render/video.hpp"
+#include "lab/video_module.hpp"
 
 namespace fl {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-// The rig's moving parts as a step left them.
-render::RigPose pose_of(const StepView& view) {
-  render::RigPose pose;
-  pose.plate_x = view.plate.x;
-  pose.plate_y = view.plate.y;
-  pose.plate_z = view.plate.z;
-  pose.pitch = view.plate.pitch;
-  pose.yaw = view.plate.yaw;
+// The step as the module takes it. `out`'s vectors are reused from step to step.
+void copy_step(const StepView& view, VideoStep& out) {
+  out.t = view.t;
+  out.plate_x = view.plate.x;
+  out.plate_y = view.plate.y;
+  out.plate_z = view.plate.z;
+  out.pitch = view.plate.pitch;
+  out.yaw = view.plate.yaw;
+  out.shaft_angles.clear();
+  out.shaft_speeds.clear();
   if (!view.shafts.empty()) {
     for (const ShaftState& s : view.shafts) {
-      pose.shaft_angles.push_back(s.angle);
-      pose.shaft_speeds.push_back(s.speed);
+      out.shaft_angles.push_back(s.angle);
+      out.shaft_speeds.push_back(s.speed);
     }
   } else {
-    pose.shaft_angles = {view.roller_angles[0], view.roller_angles[1]};
-    pose.shaft_speeds = {view.roller_speeds[0], view.roller_speeds[1]};
+    out.shaft_angles.assign(view.roller_angles.begin(), view.roller_angles.end());
+    out.shaft_speeds.assign(view.roller_speeds.begin(), view.roller_speeds.end());
   }
-  return pose;
-}
-
-int shadow_map_size(int height) {
-  int size = 512;
-  while (size < 2048 && size < 1.4 * height) size *= 2;
-  return size;
-}
-
-// How the material is called in the paper's table ("LEGO blocks"), else its key.
-std::string material_name(const Scene& scene, const std::string& asset_dir) {
-  if (!scene.friction.from_paper) return scene.plate.material;
-  const PaperTable table = load_paper_table(paper_table_path(asset_dir));
-  const PaperMaterial* row = table.find(scene.friction.paper_material);
-  return row != nullptr ? row->name : scene.plate.material;
+  out.motor_speed.reset();
+  if (view.drive) out.motor_speed = view.drive->motor_speed;
+  out.roller_speed = view.roller_speeds[0];
+  out.new_samples.clear();
+  for (const HallSample& sample : view.new_samples)
+    out.new_samples.push_back({sample.t_us * 1e-6, static_cast<double>(sample.adc)});
+  if (view.estimator == nullptr) {
+    out.estimate.reset();
+    return;
+  }
+  const EstimatorReport r = view.estimator->report();
+  VideoEstimate& e = out.estimate ? *out.estimate : out.estimate.emplace();
+  e.pulses = r.pulses;
+  e.periods_used = r.periods_used;
+  e.period = r.period;
+  e.period_std = r.period_std;
+  e.mu_k = r.mu_k;
+  e.mu_k_err_worst = r.mu_k_err_worst;
+  e.pulse_times = view.estimator->pulse_times();
 }
 
 }  // namespace
 
 struct VideoRecorder::Impl {
-  Scene scene;
-  VideoRequest request;
-  VideoDesc video;
-  std::size_t run_frames = 0;
-  std::size_t title_frames = 0;
-  double frame_interval = 0.0;  // s of simulated time between frames
-  double exposure = 0.0;        // s of simulated time a shutter stays open
-
-  std::unique_ptr<render::GlContext> context;
-  std::unique_ptr<render::Renderer> renderer;
-  std::unique_ptr<render::RigView> view;
-  render::Camera camera;  // the preset, framed once; the orbit turns it
-  std::unique_ptr<render::FrameSink> mp4;
-  std::unique_ptr<render::FrameSink> png;
-  render::TitleCard title;
-  std::string heading;
-  std::string material;
-
-  // The run so far.
-  bool started = false;
-  render::RigPose previous;
-  double previous_t = 0.0;
-  std::size_t next_frame = 0;   // of the run (title frames not counted)
-  std::size_t video_frame = 0;  // every frame written, title included
-  std::vector<render::HallPoint> hall;
-  std::optional<std::array<double, 2>> hall_seen;  // lowest and highest ADC value so far
-  std::vector<double> pulses;
-  render::EstimatorValues estimator;
-  std::optional<double> motor_speed;
-  double roller_speed = 0.0;
-  bool has_sensor = false;
-
-  VideoReport report;
-
-  Impl(const Scene& s, const VideoRequest& r);
-  void take_samples(const StepView& step);
-  void take_estimator(const StepView& step);
-  void draw(const render::RigPose& pose, double t, double video_time, float title_opacity);
-  void emit();
-  render::RigOverlayState overlay_state(double t) const;
+  std::unique_ptr<VideoEngine> engine;
+  VideoStep step;
 };
 
-VideoRecorder::Impl::Impl(const Scene& s, const VideoRequest& r)
-    : scene(s), request(r), video(effective_video(s, r)) {
-  const auto start = Clock::now();
-  run_frames = run_frame_count(video, scene.world.duration);
-  title_frames = title_frame_count(video);
-  frame_interval = 1.0 / (video.fps * video.slow_motion);
-  // A quarter of the frame interval (a 90 degree shutter): at 1600 rpm and 30 fps the rollers'
-  // mark smears over 80 degrees, a streak that still shows where it is.
-  exposure = 0.25 * frame_interval;
-  has_sensor = scene.sensor.has_value() && !scene.magnets.empty();
-  try {
-    // The encoder first: a build without libav says so before anything is drawn.
-    if (!request.video.empty()) {
-      render::VideoOptions options;
-      options.path = request.video;
-      options.fps = video.fps;
-      mp4 = render::make_mp4_sink(options);
-    }
-    render::GlContextOptions gl;
-    gl.width = video.width;
-    gl.height = video.height;
-    gl.samples = 4;
-    gl.backend = request.gl;
-    gl.source = request.gl.empty() ? "" : "--gl";
-    context = render::make_gl_context(gl);
-    report.backend = context->description();
-    // The shadow map's texels about as fine as the frame's pixels over the rig: 512 at 360p,
-    // 1024 at 720p, 2048 at 1080p (a 2048 map at 360p costs a third of the frame).
-    render::RendererOptions look;
-    look.shadow_map_size = shadow_map_size(video.height);
-    renderer = std::make_unique<render::Renderer>(*context, look);
-
-    // LEGO parts only when the scene names some: the part index and their meshes.
-    std::optional<assets::PartCatalog> catalog;
-    assets::MeshLibrary meshes;
-    if (render::scene_uses_parts(scene))
-      catalog = assets::load_part_catalog(assets::part_catalog_path(request.asset_dir));
-    render::RigModel model = render::build_rig_model(scene, catalog ? &*catalog : nullptr, &meshes);
-    report.frame_triangles = model.stats.frame_triangles_drawn;
-    report.frame_triangles_full = model.stats.frame_triangles_full;
-    camera = render::rig_camera(model, video);
-    // A camera that stays put never sees the frame's back faces: leave them out.
-    if (video.orbit == 0.0) render::cull_back_faces(model, camera.position);
-    view = std::make_unique<render::RigView>(*renderer, std::move(model));
-
-    if (!request.frames.empty()) {
-      render::PngSinkOptions options;
-      options.directory = request.frames;
-      options.replace_existing = true;
-      png = std::make_unique<render::ThreadedSink>(render::make_png_sink(options), 4);
-    }
-  } catch (const render::RenderError& e) {
-    throw VideoUnavailable(e.what());
-  } catch (const assets::MissingComponent& e) {
-    throw VideoUnavailable(e.what());
-  } catch (const std::invalid_argument& e) {
-    throw VideoUnavailable(std::string("the rig cannot be drawn: ") + e.what());
-  }
-  material = material_name(scene, request.asset_dir);
-  title = render::make_title_card(scene, material, video.slow_motion, video.fps);
-  heading = material + " on PVC rollers  \xc2\xb7  l = " +
-            std::to_string(static_cast<int>(std::lround(scene.rollers.spacing * 1e3))) + " mm";
-  report.width = video.width;
-  report.height = video.height;
-  report.fps = video.fps;
-  report.slow_motion = video.slow_motion;
-  report.camera = video.placed ? "placed" : video.camera;
-  report.setup_seconds = seconds_since(start);
-}
-
-void VideoRecorder::Impl::take_samples(const StepView& step) {
-  for (const HallSample& sample : step.new_samples) {
-    const double adc = sample.adc;
-    hall.push_back({sample.t_us * 1e-6, adc});
-    if (!hall_seen) hall_seen = std::array<double, 2>{adc, adc};
-    (*hall_seen)[0] = std::min((*hall_seen)[0], adc);
-    (*hall_seen)[1] = std::max((*hall_seen)[1], adc);
-  }
-  // Keep what the plot shows (and a little more), dropping old samples in blocks.
-  const double keep_from = step.t - 2.5 - 0.5;
-  if (!hall.empty() && hall.front().t < keep_from - 1.0) {
-    const auto first = std::find_if(hall.begin(), hall.end(),
-                                    [&](const render::HallPoint& p) { return p.t >= keep_from; });
-    hall.erase(hall.begin(), first);
-  }
-}
-
-void VideoRecorder::Impl::take_estimator(const StepView& step) {
-  if (step.drive) motor_speed = step.drive->motor_speed;
-  roller_speed = step.roller_speeds[0];
-  if (step.estimator == nullptr) return;
-  const EstimatorReport r = step.estimator->report();
-  estimator.pulses = r.pulses;
-  estimator.periods = r.periods_used;
-  if (r.periods_used > 0) {
-    estimator.period = r.period;
-    estimator.period_std = r.period_std;
-    estimator.mu_k = r.mu_k;
-    estimator.mu_k_err = r.mu_k_err_worst;
-  }
-  pulses = step.estimator->pulse_times();
-}
-
-render::RigOverlayState VideoRecorder::Impl::overlay_state(double t) const {
-  render::RigOverlayState o;
-  o.heading = heading;
-  o.t = t;
-  o.slow_motion = video.slow_motion;
-  o.motor_speed = motor_speed;
-  o.roller_speed = roller_speed;
-  o.hall = hall;
-  o.hall_window = 2.5;
-  if (hall_seen) {
-    // The range seen so far, padded, at least 40 counts tall.
-    const double mid = 0.5 * ((*hall_seen)[0] + (*hall_seen)[1]);
-    const double half = std::max(20.0, 0.56 * ((*hall_seen)[1] - (*hall_seen)[0]));
-    o.hall_range = std::array<double, 2>{mid - half, mid + half};
-  }
-  o.pulses = pulses;
-  o.has_sensor = has_sensor;
-  o.estimator = estimator;
-  o.material = material;
-  o.paper_period = scene.friction.paper_period;
-  o.paper_mu_k = scene.friction.paper_mu_k;
-  return o;
-}
-
-void VideoRecorder::Impl::draw(const render::RigPose& pose, double t, double video_time,
-                               float title_opacity) {
-  renderer->begin_frame(render::orbit_camera(camera, video.orbit * video_time),
-                        render::rig_light());
-  view->draw(pose, exposure);
-  render::draw_rig_overlay(renderer->overlay(), video.width, video.height, overlay_state(t));
-  if (title_opacity > 0.0f)
-    render::draw_title_card(renderer->overlay(), video.width, video.height, title, title_opacity);
-}
-
-void VideoRecorder::Impl::emit() {
-  const render::ImageView frame = renderer->end_frame();
-  if (mp4) mp4->write(frame);
-  if (png) png->write(frame);
-  report.triangles = renderer->last_frame_stats().triangles;
-  ++video_frame;
-}
-
 VideoRecorder::VideoRecorder(const Scene& scene, const VideoRequest& request)
-    : impl_(std::make_unique<Impl>(scene, request)) {}
+    : impl_(std::make_unique<Impl>()) {
+  effective_video(scene, request);  // bad options are bad input, with or without the module
+  impl_->engine = load_video_module().make_engine(scene, request);
+}
 
 VideoRecorder::~VideoRecorder() = default;
 
-void VideoRecorder::observe(const StepView& step) {
-  Impl& r = *impl_;
-  const auto start = Clock::now();
-  r.take_samples(step);
-  r.take_estimator(step);
-  const render::RigPose current = pose_of(step);
-  const bool sinks = r.mp4 || r.png;
-  if (!r.started) {
-    r.started = true;
-    r.previous = current;
-    r.previous_t = step.t;
-    // The title card: the rig at rest, the card fading out over its last 0.4 s.
-    for (std::size_t i = 0; sinks && i < r.title_frames; ++i) {
-      const double video_time = static_cast<double>(i) / r.video.fps;
-      const double left = kTitleSeconds - video_time;
-      r.draw(current, step.t, video_time, static_cast<float>(std::clamp(left / 0.4, 0.0, 1.0)));
-      r.emit();
-    }
-  }
-  // Every frame whose instant this step has reached, interpolated between the two steps.
-  while (sinks && r.next_frame < r.run_frames) {
-    const double t = static_cast<double>(r.next_frame) * r.frame_interval;
-    if (t > step.t + 1e-9) break;
-    const double span = step.t - r.previous_t;
-    const double f = span > 0.0 ? std::clamp((t - r.previous_t) / span, 0.0, 1.0) : 1.0;
-    const double video_time = static_cast<double>(r.video_frame) / r.video.fps;
-    r.draw(render::interpolate(r.previous, current, f), t, video_time, 0.0f);
-    r.emit();
-    ++r.next_frame;
-  }
-  r.previous = current;
-  r.previous_t = step.t;
-  r.report.render_seconds += seconds_since(start);
+void VideoRecorder::observe(const StepView& view) {
+  copy_step(view, impl_->step);
+  impl_->engine->observe(impl_->step);
 }
 
 VideoReport VideoRecorder::finish() {
-  Impl& r = *impl_;
-  if (!r.request.still.empty() && r.started) {
-    r.draw(r.previous, r.previous_t, static_cast<double>(r.video_frame) / r.video.fps, 0.0f);
-    render::write_png(r.request.still, r.renderer->end_frame());
-    r.report.triangles = r.renderer->last_frame_stats().triangles;
-  }
-  const auto start = Clock::now();
-  if (r.mp4) r.mp4->finish();
-  if (r.png) r.png->finish();
-  r.report.finish_seconds = seconds_since(start);
-  r.report.frames = r.video_frame;
-  r.report.title_frames = std::min(r.title_frames, r.video_frame);
-  return r.report;
+  return impl_->engine->finish();
 }
 
 }  // namespace fl

@@ -1,9 +1,10 @@
-// The video's settings and frame clock: built in every configuration (the command line checks
-// its options with them even in a build without rendering).
+// The video's settings and frame clock (fl_video_settings): linked into the executable, which
+// checks a request with them before it loads the video module, even in a build without
+// rendering, and into the module.
 #include <cmath>
 
 #include "io/input_error.hpp"
-#include "lab/video_recorder.hpp"
+#include "lab/video_settings.hpp"
 
 namespace fl {
 namespace {

@@ -1,14 +1,19 @@
 // Which optional rendering components this build has, and the errors the render layer throws.
-// Rendering (OSMesa, fonts, PNG) and video (libav) are optional: a build without them compiles
-// stubs whose functions throw MissingComponent naming what is missing. Tests skip on kHas*.
+// The drawing layer (renderer, text, PNG: FRICTIONLAB_WITH_RENDER), the OSMesa GL back end
+// (FRICTIONLAB_WITH_OSMESA) and video (libav: FRICTIONLAB_WITH_VIDEO) are optional: a build
+// without one compiles stubs whose functions throw MissingComponent naming what is missing.
+// Tests skip on kHas*.
 #pragma once
 
 #include <stdexcept>
-#include <string>
-#include <string_view>
+
+#include "io/missing_component.hpp"
 
 #ifndef FRICTIONLAB_HAS_RENDER
 #error "FRICTIONLAB_HAS_RENDER is set by the fl_render target; link fl_render"
+#endif
+#ifndef FRICTIONLAB_HAS_OSMESA
+#error "FRICTIONLAB_HAS_OSMESA is set by the fl_render target; link fl_render"
 #endif
 #ifndef FRICTIONLAB_HAS_VIDEO
 #error "FRICTIONLAB_HAS_VIDEO is set by the fl_render target; link fl_render"
@@ -16,8 +21,11 @@
 
 namespace fl::render {
 
-// Off-screen rendering through OSMesa, text through stb_truetype, PNG through libpng.
+// The drawing layer: the renderer, text through stb_truetype, PNG through libpng, the rig view.
 inline constexpr bool kHasRender = FRICTIONLAB_HAS_RENDER != 0;
+// The OSMesa GL back end (software rendering on llvmpipe). Drawing frames needs kHasRender and a
+// back end; EGL is not written yet, so today that back end is OSMesa.
+inline constexpr bool kHasOsmesa = FRICTIONLAB_HAS_OSMESA != 0;
 // MP4 through libavcodec/libavformat/libswscale (H.264 by libx264).
 inline constexpr bool kHasVideo = FRICTIONLAB_HAS_VIDEO != 0;
 
@@ -27,15 +35,9 @@ class RenderError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// A component this build was configured without (or a back end not compiled in).
-class MissingComponent : public RenderError {
- public:
-  using RenderError::RenderError;
-};
-
-// Throws MissingComponent: "<what> needs <component>, which this build of frictionlab does not
-// have (<how to get it>)".
-[[noreturn]] void throw_missing(std::string_view what, std::string_view component,
-                                std::string_view how);
+// A component this build was configured without (or a back end not compiled in): the one error
+// type of every layer (io/missing_component.hpp, with throw_missing). Not a RenderError: catch
+// both where both can come.
+using MissingComponent = fl::MissingComponent;
 
 }  // namespace fl::render

@@ -9,7 +9,10 @@ namespace fl::render {
 
 std::unique_ptr<GlContext> make_egl_context(const GlContextOptions& /*options*/) {
   throw_missing("the GL back end 'egl'", "an EGL back end",
-                "it is not implemented yet; use FRICTIONLAB_GL=osmesa");
+                kHasOsmesa ? "it is not implemented yet; use FRICTIONLAB_GL=osmesa"
+                           : "it is not implemented yet, and FRICTIONLAB_GL=osmesa needs a build "
+                             "with -DFRICTIONLAB_WITH_OSMESA=ON; GL back ends in this build: " +
+                                 compiled_gl_backends());
 }
 
 }  // namespace fl::render

@@ -34,10 +34,12 @@ std::unique_ptr<GlContext> make_backend(GlBackend backend, const GlContextOption
 
 }  // namespace
 
-void throw_missing(std::string_view what, std::string_view component, std::string_view how) {
-  throw MissingComponent(std::string(what) + " needs " + std::string(component) +
-                         ", which this build of frictionlab does not have (" + std::string(how) +
-                         ")");
+void throw_without_osmesa(std::string_view what, std::string_view component) {
+  std::string how = "GL back ends in this build: " + compiled_gl_backends() + "; configure with ";
+  if (!kHasRender) how += "-DFRICTIONLAB_WITH_RENDER=ON ";
+  how += "-DFRICTIONLAB_WITH_OSMESA=ON after apt-get install libosmesa6-dev";
+  if (!kHasRender) how += " libpng-dev libstb-dev libgl-dev fonts-dejavu-core";
+  throw_missing(what, component, how);
 }
 
 std::string_view gl_backend_name(GlBackend backend) {
@@ -51,11 +53,21 @@ std::span<const std::string_view> gl_backend_names() {
 bool gl_backend_compiled(GlBackend backend) {
   switch (backend) {
     case GlBackend::kOsmesa:
-      return kHasRender;
+      return kHasOsmesa;
     case GlBackend::kEgl:
       return false;
   }
   return false;
+}
+
+std::string compiled_gl_backends() {
+  std::string out;
+  for (const GlBackend backend : kAutoOrder) {
+    if (!gl_backend_compiled(backend)) continue;
+    if (!out.empty()) out += ", ";
+    out += gl_backend_name(backend);
+  }
+  return out.empty() ? "none" : out;
 }
 
 GlBackendRequest gl_backend_request(std::string_view requested) {
@@ -88,10 +100,8 @@ std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options) {
         failures += "\n  " + std::string(gl_backend_name(backend)) + ": " + e.what();
       }
     }
-    if (failures.empty())
-      throw_missing("rendering", "a GL back end (OSMesa)",
-                    "configure with -DFRICTIONLAB_WITH_RENDER=ON after apt-get install "
-                    "libosmesa6-dev");
+    // No back end compiled in: say so, never hand out a context that draws nothing.
+    if (failures.empty()) throw_without_osmesa("rendering", "a GL back end (OSMesa)");
     throw RenderError("no GL back end could start:" + failures);
   }
   const std::string from =

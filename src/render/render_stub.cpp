@@ -1,10 +1,9 @@
-// Built instead of the OSMesa back end, the renderer, the font rasteriser and the PNG code when
-// FRICTIONLAB_WITH_RENDER is OFF: every entry point throws MissingComponent naming OSMesa.
-// Only make_osmesa_context, Font's constructor and the PNG functions can be reached first; the
-// other members exist so that code using them still links.
+// Built instead of the drawing layer (the renderer, the font rasteriser and the PNG code) when
+// FRICTIONLAB_WITH_RENDER is OFF: every entry point throws MissingComponent naming it. Only
+// Font's constructor, the renderer's and the PNG functions can be reached first; the other
+// members exist so that code using them still links.
 #include "render/components.hpp"
 #include "render/font.hpp"
-#include "render/gl_backends.hpp"
 #include "render/png.hpp"
 #include "render/renderer.hpp"
 
@@ -12,16 +11,12 @@ namespace fl::render {
 namespace {
 
 [[noreturn]] void missing(std::string_view what) {
-  throw_missing(what, "off-screen rendering (OSMesa, libpng, stb_truetype)",
+  throw_missing(what, "the drawing layer (libpng, stb_truetype, DejaVu Sans)",
                 "configure with -DFRICTIONLAB_WITH_RENDER=ON after apt-get install "
-                "libosmesa6-dev libpng-dev libstb-dev fonts-dejavu-core");
+                "libpng-dev libstb-dev libgl-dev fonts-dejavu-core");
 }
 
 }  // namespace
-
-std::unique_ptr<GlContext> make_osmesa_context(const GlContextOptions&) {
-  missing("the GL back end 'osmesa'");
-}
 
 struct Renderer::Impl {};
 Renderer::Renderer(GlContext&, RendererOptions) {

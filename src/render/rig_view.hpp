@@ -1,119 +1,14 @@
-// The paper's rig drawn from the scene the physics uses: the LEGO frame (every static part merged
-// into one mesh, with the faces no camera can see left out), the rollers (PVC tubes with a mark
-// that smears into motion blur at speed), the gear train posed on its shafts, the plate with its
-// blocks and magnets, the Hall sensor's board, and a ground. RigModel is the geometry on the CPU
-// (built once; no GL, testable anywhere); RigView uploads it and draws it at a RigPose.
-//
-// Coordinates are the scene's: x along the plate's motion, z up, metres.
+// The rig model (rig_model.hpp) uploaded to a renderer and drawn at a pose: the GL side of the
+// rig renderer. Its cameras and light are in rig_camera.hpp.
 #pragma once
 
-#include <array>
-#include <cstddef>
-#include <string>
 #include <vector>
 
-#include "assets/mesh_library.hpp"
-#include "assets/part_catalog.hpp"
-#include "render/camera.hpp"
-#include "render/mesh_data.hpp"
 #include "render/renderer.hpp"
-#include "scene/scene.hpp"
-#include "scene/video_yaml.hpp"
+#include "render/rig_model.hpp"
+#include "render/rig_pose.hpp"
 
 namespace fl::render {
-
-// The moving parts at one instant (the physics' state, interpolated to a frame's time).
-struct RigPose {
-  double plate_x = 0.0;  // m, the plate's centre of mass
-  double plate_y = 0.0;  // m
-  double plate_z = 0.0;  // m
-  double pitch = 0.0;    // rad about +y
-  double yaw = 0.0;      // rad about +z
-  // Every shaft's angle and speed about +y, in drive_layout order (rollers first). For a scene
-  // without a drive: the two rollers.
-  std::vector<double> shaft_angles;  // rad, unwrapped
-  std::vector<double> shaft_speeds;  // rad/s
-};
-
-// The rig at the start of a run: the plate at its offset, resting on the rollers, every angle 0.
-RigPose rest_pose(const Scene& scene);
-// (1 - f) a + f b, part by part (angles unwrapped, so linear is right).
-RigPose interpolate(const RigPose& a, const RigPose& b, double f);
-
-// One placement of a mesh: `local` in the frame of `body`.
-struct RigPart {
-  enum class Body { kWorld, kPlate, kShaft };
-  std::size_t mesh = 0;  // index into RigModel::meshes
-  Body body = Body::kWorld;
-  int shaft = 0;       // Body::kShaft: which shaft
-  double phase = 0.0;  // rad added to the shaft's angle (gears' teeth interleave)
-  // Body::kShaft: the mesh drawn at each of kBlurSweeps (empty: `mesh` at every speed).
-  std::vector<std::size_t> blur_variants;
-  Eigen::Affine3f local = Eigen::Affine3f::Identity();
-  bool casts_shadow = true;
-};
-
-struct RigShaft {
-  std::string role;  // "roller 0", "idler 1", "motor", ...
-  double x = 0.0;    // m, of its axis (along y)
-  double z = 0.0;    // m
-};
-
-// Sweeps (rad turned during one exposure) the blurred variants of a turning part are made for;
-// a frame picks the nearest. Index 0 is the still part.
-inline constexpr std::array<double, 8> kBlurSweeps = {0.0,  0.26, 0.52, 0.87,
-                                                      1.31, 2.09, 3.14, 6.28};
-
-struct RigModelStats {
-  std::size_t frame_parts = 0;            // LEGO parts of the frame
-  std::size_t frame_triangles_full = 0;   // their meshes' triangles, all of them
-  std::size_t frame_triangles_drawn = 0;  // after leaving out what no camera can see
-  std::size_t moving_triangles = 0;       // plate, rollers, gears, axles (at rest)
-  std::size_t meshes_read = 0;            // LEGO mesh files opened
-};
-
-struct RigModel {
-  std::vector<MeshData> meshes;
-  std::vector<RigPart> parts;
-  std::vector<RigShaft> shafts;          // 0 and 1 are the rollers
-  std::size_t ground = 0;                // the ground's mesh (drawn without casting shadows)
-  float ground_z = 0.0f;                 // m
-  Eigen::AlignedBox3f bounds;            // everything but the ground, over the plate's travel
-  std::vector<Eigen::Vector3f> outline;  // points of everything but the ground (camera framing)
-  ShadowBounds shadow;                   // fixed: the static parts' shadows never move
-  Eigen::Vector3f sensor = Eigen::Vector3f::Zero();  // the Hall sensor (or where it would be)
-  Eigen::Vector3f magnet = Eigen::Vector3f::Zero();  // the magnet nearest the sensor, at rest
-  RigModelStats stats;
-
-  // Triangles drawn in the camera pass at `pose` (with blur: proxies replace fast gears).
-  std::size_t triangles(const RigPose& pose, double exposure) const;
-};
-
-// Builds the rig. LEGO meshes (frame parts, plate blocks, gears, axles) come from `meshes`
-// through `catalog`; a scene that names no LEGO part needs neither (pass nullptr) and opens no
-// file. Throws std::invalid_argument if a part is missing from the catalogue, and whatever
-// MeshLibrary throws for a mesh file it cannot read.
-RigModel build_rig_model(const Scene& scene, const assets::PartCatalog* catalog,
-                         assets::MeshLibrary* meshes);
-
-// For a camera that does not move (no orbit): leaves out of the static parts drawn without
-// casting shadows (the frame; their shadows come from hidden casters) every triangle that
-// faces away from `eye`, which the camera pass would only cull. Returns how many went.
-std::size_t cull_back_faces(RigModel& model, const Eigen::Vector3f& eye);
-
-// Whether the scene names LEGO parts (a frame, blocks on the plate, a gear train).
-bool scene_uses_parts(const Scene& scene);
-
-// The plate's colour for its material (sRGB); grey for a material not in the table.
-Color material_color(const std::string& material);
-
-// The camera of a video: its preset framed around the rig (the parts the overlay leaves free),
-// or the placed camera. Fitting a preset projects a few thousand points: call it once a video.
-Camera rig_camera(const RigModel& model, const VideoDesc& video);
-// The camera turned by `radians` about the vertical through its target (the slow orbit).
-Camera orbit_camera(const Camera& camera, double radians);
-// The light of every frame.
-DirectionalLight rig_light();
 
 // The model uploaded to a renderer, drawn at a pose.
 class RigView {
@@ -131,17 +26,5 @@ class RigView {
   RigModel model_;
   std::vector<MeshId> ids_;
 };
-
-// The world transform of a part at a pose, and the mesh drawn for it (the blurred variant when
-// its shaft turns fast enough over `exposure`).
-struct PlacedPart {
-  std::size_t mesh = 0;
-  Eigen::Affine3f pose = Eigen::Affine3f::Identity();
-};
-PlacedPart place_part(const RigModel& model, const RigPart& part, const RigPose& pose,
-                      double exposure);
-
-// The plate's body frame (centre of mass) in the world at a pose.
-Eigen::Affine3f plate_transform(const RigPose& pose);
 
 }  // namespace fl::render

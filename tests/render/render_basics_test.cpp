@@ -204,6 +204,24 @@ TEST(RenderBackend, WithoutRenderEveryBackEndFailsNamingOsmesa) {
   }
 }
 
+TEST(RenderBackend, WithoutOsmesaEveryBackEndFailsListingTheBuildsBackEnds) {
+  if (kHasOsmesa) GTEST_SKIP() << "this build has OSMesa";
+  EXPECT_EQ(compiled_gl_backends(), "none");
+  for (const char* name : {"osmesa", "auto"}) {
+    GlContextOptions options;
+    options.backend = name;
+    try {
+      make_gl_context(options);
+      FAIL() << name << " started without a GL back end";
+    } catch (const MissingComponent& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("OSMesa"), std::string::npos) << message;
+      EXPECT_NE(message.find("GL back ends in this build: none"), std::string::npos) << message;
+      EXPECT_NE(message.find("-DFRICTIONLAB_WITH_OSMESA=ON"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(RenderBackend, WithoutVideoAnMp4FailsNamingLibav) {
   if (kHasVideo) GTEST_SKIP() << "this build has libav";
   try {

@@ -23,7 +23,7 @@ std::unique_ptr<GlContext> osmesa(int width, int height, int samples) {
 class RenderContext : public ::testing::TestWithParam<int> {};
 
 TEST_P(RenderContext, AClearedColourReadsBackExactly) {
-  FL_REQUIRE_RENDER();
+  FL_REQUIRE_GL();
   const auto context = osmesa(64, 48, GetParam());
   EXPECT_EQ(context->backend_name(), "osmesa");
   EXPECT_EQ(context->width(), 64);
@@ -43,7 +43,7 @@ TEST_P(RenderContext, AClearedColourReadsBackExactly) {
 }
 
 TEST_P(RenderContext, RowsAreTopDown) {
-  FL_REQUIRE_RENDER();
+  FL_REQUIRE_GL();
   const auto context = osmesa(32, 32, GetParam());
   const GlApi& gl = context->gl();
   gl.BindFramebuffer(GL_FRAMEBUFFER, context->frame_framebuffer());
@@ -68,7 +68,7 @@ INSTANTIATE_TEST_SUITE_P(Samples, RenderContext, ::testing::Values(1, 4),
                          });
 
 TEST(RenderContextInfo, IsOpenGl45CoreOnLlvmpipe) {
-  FL_REQUIRE_RENDER();
+  FL_REQUIRE_GL();
   const auto context = osmesa(16, 16, 4);
   const std::string text = context->description();
   EXPECT_NE(text.find("Core Profile"), std::string::npos) << text;
@@ -76,7 +76,7 @@ TEST(RenderContextInfo, IsOpenGl45CoreOnLlvmpipe) {
 }
 
 TEST(RenderContextInfo, RefusesSizesAndSampleCountsItCannotDo) {
-  FL_REQUIRE_RENDER();
+  FL_REQUIRE_GL();
   EXPECT_THROW(osmesa(0, 10, 4), RenderError);
   EXPECT_THROW(osmesa(10, 10, 8), RenderError);
 }

@@ -63,7 +63,7 @@ Centroid foreground_centroid(const ImageView& frame) {
 class RenderScene : public ::testing::Test {
  protected:
   void SetUp() override {
-    FL_REQUIRE_RENDER();
+    FL_REQUIRE_GL();
     context_ = osmesa(kWidth, kHeight);
     renderer_ = std::make_unique<Renderer>(*context_);
     camera_.position = Eigen::Vector3f(0.05f, -0.45f, 0.20f);
@@ -220,7 +220,7 @@ TEST_F(RenderScene, ABrokenShaderNamesItsStage) {
 // golden image on purpose (after a deliberate change of the look), run this test with
 // FRICTIONLAB_UPDATE_GOLDEN=1 and look at the new PNG before committing it.
 TEST(RenderGolden, DemoSceneMatchesTheGoldenImage) {
-  FL_REQUIRE_RENDER();
+  FL_REQUIRE_GL();
   const auto context = osmesa(160, 90);
   Renderer renderer(*context);
   DemoScene scene = make_demo_scene();

@@ -1,4 +1,5 @@
-// Helpers of the render tests: skipping when a component is not built, and keeping frames
+// Helpers of the render tests: skipping when a component is not built (FL_REQUIRE_RENDER for
+// the drawing layer alone, FL_REQUIRE_GL to draw frames, FL_REQUIRE_VIDEO), and keeping frames
 // under the build folder for a person to look at.
 #pragma once
 
@@ -14,6 +15,13 @@
 #define FL_REQUIRE_RENDER()                                                               \
   do {                                                                                    \
     if (!fl::render::kHasRender) GTEST_SKIP() << "built without FRICTIONLAB_WITH_RENDER"; \
+  } while (0)
+
+// Drawing frames needs the drawing layer and a GL back end (today OSMesa).
+#define FL_REQUIRE_GL()                                                                   \
+  do {                                                                                    \
+    FL_REQUIRE_RENDER();                                                                  \
+    if (!fl::render::kHasOsmesa) GTEST_SKIP() << "built without FRICTIONLAB_WITH_OSMESA"; \
   } while (0)
 
 #define FL_REQUIRE_VIDEO()                                                              \

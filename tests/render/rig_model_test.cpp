@@ -9,11 +9,12 @@
 #include <numbers>
 #include <string>
 
+#include "../support/rig_fixture.hpp"
 #include "io/input_error.hpp"
-#include "lab/video_recorder.hpp"
+#include "lab/video_settings.hpp"
+#include "render/rig_camera.hpp"
+#include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"
-#include "render/rig_view.hpp"
-#include "rig_test_support.hpp"
 #include "scene/drive_layout.hpp"
 
 namespace fl::render {
@@ -26,10 +27,7 @@ constexpr double kPi = std::numbers::pi;
     if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)"; \
   } while (0)
 
-RigModel paper_rig_model() {
-  assets::MeshLibrary meshes;
-  return build_rig_model(test::paper_rig(), &test::part_catalog(), &meshes);
-}
+using test::paper_rig_model;
 
 // A scene with a frame of the given parts (YAML list items) and nothing else special.
 Scene frame_scene(const std::string& parts) {

@@ -8,11 +8,12 @@
 #include <filesystem>
 #include <string>
 
+#include "../support/rig_fixture.hpp"
 #include "render/renderer.hpp"
+#include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render_test_support.hpp"
-#include "rig_test_support.hpp"
 
 namespace fl::render {
 namespace {
@@ -25,10 +26,7 @@ std::unique_ptr<GlContext> osmesa(int width, int height) {
   return make_gl_context(options);
 }
 
-RigModel paper_rig_model() {
-  assets::MeshLibrary meshes;
-  return build_rig_model(test::paper_rig(), &test::part_catalog(), &meshes);
-}
+using test::paper_rig_model;
 
 // The rig at a pose: the plate at x, the rollers turned.
 RigPose pose_at(double plate_x, double roller_angle) {
@@ -74,7 +72,7 @@ Centroid difference_centroid(const ImageView& a, const ImageView& b) {
 class RigRender : public ::testing::Test {
  protected:
   void SetUp() override {
-    FL_REQUIRE_RENDER();
+    FL_REQUIRE_GL();
     if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)";
   }
 };

@@ -1,7 +1,8 @@
 // frictionlab run --video/--frames/--still: an MP4 that ffprobe reports as H.264 in yuv420p with
 // duration x fps x slow-motion frames (plus the title card's), exactly the expected PNG files,
-// a still; a run that asks for no frames never starts GL or opens a mesh; missing components and
-// bad options fail with status 2 and a message that names them.
+// a still; a run that asks for no frames never starts GL, opens a mesh or loads the renderer (the
+// video module and what it links); missing components, a missing or foreign video module and bad
+// options fail with status 2 and a message that names them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -23,6 +24,8 @@ namespace fs = std::filesystem;
 const std::string kExe = FRICTIONLAB_EXE;
 const std::string kScenes = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/";
 const std::string kRig = kScenes + "paper-rig.yaml";
+// Whether this build draws frames: the drawing layer and a GL back end (today OSMesa).
+constexpr bool kDraws = render::kHasRender && render::kHasOsmesa;
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::path(FRICTIONLAB_TEST_BINARY_DIR) / "rig-video-test" / name;
@@ -56,8 +59,7 @@ nlohmann::json probe(const fs::path& file) {
 
 #define FL_REQUIRE_VIDEO_RUN()                                                                \
   do {                                                                                        \
-    if (!render::kHasRender || !render::kHasVideo)                                            \
-      GTEST_SKIP() << "built without rendering or video";                                     \
+    if (!kDraws || !render::kHasVideo) GTEST_SKIP() << "built without rendering or video";    \
     if (!have_ffprobe()) GTEST_SKIP() << "ffprobe is not installed (apt-get install ffmpeg)"; \
   } while (0)
 
@@ -98,7 +100,7 @@ TEST(RigVideo, TheMp4HasTheFramesOfTheVideosClock) {
 }
 
 TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
-  if (!render::kHasRender) GTEST_SKIP() << "built without rendering";
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
   const fs::path dir = fresh_dir("frames");
   const fs::path frames = dir / "frames";
   const fs::path still = dir / "still.png";
@@ -160,7 +162,7 @@ TEST(RigVideo, ARunWithoutFramesOpensNoMesh) {
   // The paper's rig (frame, gears, blocks) runs without its meshes ...
   auto r = lab(with + "run " + kRig + " --duration 0.2s --json");
   EXPECT_EQ(r.status, 0) << r.err;
-  if (!render::kHasRender) return;
+  if (!kDraws) return;
   // ... and drawing it needs them: the missing file is named.
   r = lab(with + "run " + kRig + " --duration 0.2s --size 160x90 --still " +
           (assets / "x.png").string());
@@ -173,11 +175,68 @@ TEST(RigVideo, ARunWithoutFramesOpensNoMesh) {
   EXPECT_TRUE(fs::exists(assets / "minimal.png"));
 }
 
+// The shared objects the dynamic loader initialised in a run (LD_DEBUG=libs: "calling init: ...").
+std::string loaded_objects(const std::string& args) {
+  const auto r = lab(args, "LD_DEBUG=libs");
+  EXPECT_EQ(r.status, 0) << args << "\n" << r.err;
+  std::string out;
+  std::size_t at = 0;
+  while ((at = r.err.find("calling init: ", at)) != std::string::npos) {
+    const std::size_t end = r.err.find('\n', at);
+    out += r.err.substr(at + 14, end - at - 14) + "\n";
+    at = end;
+  }
+  return out;
+}
+
+TEST(RigVideo, ARunWithoutFramesLoadsNoRenderer) {
+  for (const std::string& args :
+       {std::string("table"), "run " + kScenes + "minimal.yaml --duration 0.2s",
+        "run " + kRig + " --duration 0.2s"}) {
+    const std::string objects = loaded_objects(args);
+    EXPECT_NE(objects.find("libyaml-cpp"), std::string::npos) << args << ":\n" << objects;
+    for (const char* name : {"frictionlab-video", "libOSMesa", "libLLVM", "libavcodec",
+                             "libavformat", "libswscale", "libassimp", "libpng"})
+      EXPECT_EQ(objects.find(name), std::string::npos) << args << " loaded " << name;
+  }
+  if (!kDraws) return;
+  // A still loads the module, and the module the back end.
+  const fs::path dir = fresh_dir("loads");
+  const std::string objects = loaded_objects("run " + kScenes + "minimal.yaml --duration 0.1s " +
+                                             "--size 160x90 --still " + (dir / "x.png").string());
+  EXPECT_NE(objects.find("frictionlab-video.so"), std::string::npos) << objects;
+  EXPECT_NE(objects.find("libOSMesa"), std::string::npos) << objects;
+}
+
+TEST(RigVideo, AMissingOrForeignVideoModuleIsNamedWithStatusTwo) {
+  const std::string still =
+      " --duration 0.1s --size 160x90 --still " + (fresh_dir("module") / "x.png").string();
+  struct Case {
+    std::string module;
+    std::string message;
+  };
+  for (const Case& c : {
+           Case{"/nonexistent/frictionlab-video.so",
+                "video module /nonexistent/frictionlab-video.so (from FRICTIONLAB_VIDEO_MODULE), "
+                "which does not exist"},
+           Case{kRig, "cannot be loaded"},
+           Case{"/lib/x86_64-linux-gnu/libm.so.6", "is not a frictionlab video module"},
+       }) {
+    const auto r =
+        lab("run " + kScenes + "minimal.yaml" + still, "FRICTIONLAB_VIDEO_MODULE=" + c.module);
+    EXPECT_EQ(r.status, 2) << c.module << "\n" << r.err;
+    // A build without rendering never looks for the module: it says what it lacks.
+    EXPECT_NE(r.err.find(render::kHasRender ? c.message : "OSMesa"), std::string::npos)
+        << c.module << "\n"
+        << r.err;
+  }
+}
+
 TEST(RigVideo, MissingComponentsAndBadOptionsExitWithStatusTwo) {
   const fs::path dir = fresh_dir("bad");
   const std::string video = " --video " + (dir / "x.mp4").string();
   auto r = lab("run " + kRig + " --duration 0.2s" + video);
-  if (!render::kHasRender) {
+  if (!kDraws) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("OSMesa"), std::string::npos) << r.err;
   } else if (!render::kHasVideo) {

@@ -1,12 +1,15 @@
-// The paper's rig for the rig-renderer tests: its scene (scenes/paper-rig.yaml) and part index,
-// loaded once.
+// The paper's rig as the render tests and the render benchmarks use it: its scene
+// (scenes/paper-rig.yaml), the paper's table and the LEGO part index, each loaded once, and the
+// rig model built from them. Folders: FRICTIONLAB_TEST_ASSET_DIR and FRICTIONLAB_TEST_SOURCE_DIR
+// (set for every test by fl_add_gtest, and for the benchmarks that include this file).
 #pragma once
 
-#include <optional>
 #include <string>
 
+#include "assets/mesh_library.hpp"
 #include "assets/part_catalog.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "render/rig_model.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace fl::test {
@@ -33,6 +36,12 @@ inline Scene scene_file(const std::string& name) {
 inline const Scene& paper_rig() {
   static const Scene scene = scene_file("paper-rig.yaml");
   return scene;
+}
+
+// The paper's rig's model, its meshes read through a library of its own.
+inline render::RigModel paper_rig_model() {
+  assets::MeshLibrary meshes;
+  return render::build_rig_model(paper_rig(), &part_catalog(), &meshes);
 }
 
 }  // namespace fl::test

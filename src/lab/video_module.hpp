@@ -1,0 +1,110 @@
+// The seam between the frictionlab executable and the video module, frictionlab-video.so: the
+// shared object that holds the renderer (and through it OSMesa, libav and assimp), opened with
+// dlopen only when a run asks for frames. Sweeps, MPI and the plain commands never load it.
+//
+// Only plain values cross: the scene, the request, each step as a VideoStep (copied from the
+// run's StepView by the recorder, video_recorder.cpp) and the report, so the module does not
+// depend on the experiment's types. The module exports one C function, kVideoModuleEntry,
+// returning its VideoModule; the executable refuses a module whose VideoModuleAbi differs from
+// its own (built from other sources: a coarse check of the interface's version and the sizes of
+// what crosses).
+//
+// Where the executable looks: $FRICTIONLAB_VIDEO_MODULE if set, else frictionlab-video.so in the
+// folder of the running executable (/proc/self/exe), where the build puts it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "lab/video_settings.hpp"
+#include "scene/scene.hpp"
+
+namespace fl {
+
+// The rig's estimator as a frame shows it.
+struct VideoEstimate {
+  int pulses = 0;
+  int periods_used = 0;
+  double period = 0.0;              // s, mean (when periods_used > 0)
+  double period_std = 0.0;          // s
+  double mu_k = 0.0;                // from the mean period, thin formula
+  double mu_k_err_worst = 0.0;      // the paper's d mu/mu = dl/l + 2 dT/T
+  std::vector<double> pulse_times;  // s, every pulse detected so far
+};
+
+// One Hall sample: time and ADC counts.
+struct VideoHallSample {
+  double t = 0.0;    // s
+  double adc = 0.0;  // counts
+};
+
+// What a frame needs of one physics step.
+struct VideoStep {
+  double t = 0.0;        // s
+  double plate_x = 0.0;  // m, the plate's centre of mass
+  double plate_y = 0.0;  // m
+  double plate_z = 0.0;  // m
+  double pitch = 0.0;    // rad about +y
+  double yaw = 0.0;      // rad about +z
+  // Every shaft's angle (unwrapped) and speed about +y, in drive_layout order (rollers first);
+  // for a scene without a drive the two rollers.
+  std::vector<double> shaft_angles;          // rad
+  std::vector<double> shaft_speeds;          // rad/s
+  std::optional<double> motor_speed;         // rad/s (scenes with a drive)
+  double roller_speed = 0.0;                 // rad/s about +y, roller 0
+  std::vector<VideoHallSample> new_samples;  // the Hall samples taken during this step
+  std::optional<VideoEstimate> estimate;     // the rig's estimator (scenes with a sensor)
+};
+
+// The frames of one run: what VideoRecorder forwards to.
+class VideoEngine {
+ public:
+  VideoEngine() = default;
+  VideoEngine(const VideoEngine&) = delete;
+  VideoEngine& operator=(const VideoEngine&) = delete;
+  virtual ~VideoEngine() = default;
+
+  // Takes each step (and the one at t = 0) and draws every frame whose time it has passed.
+  virtual void observe(const VideoStep& step) = 0;
+  // Writes the still, flushes and closes the video and the frames. Called once, after the run.
+  virtual VideoReport finish() = 0;
+};
+
+// Makes the engine: creates the GL context, builds and uploads the rig, opens the sinks. Throws
+// VideoUnavailable, InputError. Defined in the video library (rig_video.cpp), which the module
+// and the tests link.
+std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request);
+
+// Raise when anything that crosses the seam changes.
+inline constexpr int kVideoModuleVersion = 1;
+
+struct VideoModuleAbi {
+  int version = kVideoModuleVersion;
+  std::size_t scene_size = sizeof(Scene);
+  std::size_t request_size = sizeof(VideoRequest);
+  std::size_t step_size = sizeof(VideoStep);
+  std::size_t report_size = sizeof(VideoReport);
+
+  bool operator==(const VideoModuleAbi&) const = default;
+};
+
+struct VideoModule {
+  VideoModuleAbi abi;
+  std::unique_ptr<VideoEngine> (*make_engine)(const Scene& scene, const VideoRequest& request);
+};
+
+// The name of the module's entry: extern "C" const VideoModule* frictionlab_video_module().
+inline constexpr const char* kVideoModuleEntry = "frictionlab_video_module";
+// The variable that names the module's file instead of the one next to the executable.
+inline constexpr const char* kVideoModuleVariable = "FRICTIONLAB_VIDEO_MODULE";
+
+// The executable's side (video_module_loader.cpp): the module, opened once and kept for the
+// process's life. Throws VideoUnavailable when this build has no rendering, or the module is
+// missing, cannot be opened, or was built from other sources.
+const VideoModule& load_video_module();
+
+}  // namespace fl

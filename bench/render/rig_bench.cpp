@@ -75,7 +75,7 @@ struct RigFrames {
   ImageView frame(int i) {
     const double t = i / 30.0;
     const double w = 2.0 * std::numbers::pi / 0.794;
-    RigPose pose = rest_pose(fl::test::paper_rig());
+    RigPose pose = rest_pose(compile_rig(fl::test::paper_rig()));
     pose.plate_x = 0.03 * std::cos(w * t);
     const auto& shafts = view->model().shafts;
     for (std::size_t s = 0; s < pose.shaft_angles.size(); ++s) {

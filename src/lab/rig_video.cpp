@@ -63,7 +63,8 @@ struct RigVideo final : public VideoEngine {
   void observe(const VideoStep& step) override;
   VideoReport finish() override;
 
-  Scene scene;
+  const CompiledRig rig;  // the scene compiled once, for the model, the pose and the title
+  const Scene& scene;
   VideoRequest request;
   VideoDesc video;
   std::size_t run_frames = 0;
@@ -105,7 +106,7 @@ struct RigVideo final : public VideoEngine {
 };
 
 RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
-    : scene(s), request(r), video(effective_video(s, r)) {
+    : rig(compile_rig(s)), scene(rig.scene), request(r), video(effective_video(s, r)) {
   const auto start = Clock::now();
   run_frames = run_frame_count(video, scene.world.duration);
   title_frames = title_frame_count(video);
@@ -141,7 +142,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     assets::MeshLibrary meshes;
     if (render::scene_uses_parts(scene))
       catalog = assets::load_part_catalog(assets::part_catalog_path(request.asset_dir));
-    render::RigModel model = render::build_rig_model(scene, catalog ? &*catalog : nullptr, &meshes);
+    render::RigModel model = render::build_rig_model(rig, catalog ? &*catalog : nullptr, &meshes);
     report.frame_triangles = model.stats.frame_triangles_drawn;
     report.frame_triangles_full = model.stats.frame_triangles_full;
     camera = render::rig_camera(model, video);
@@ -163,7 +164,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     throw VideoUnavailable(std::string("the rig cannot be drawn: ") + e.what());
   }
   material = material_name(scene, request.asset_dir);
-  title = render::make_title_card(scene, material, video.slow_motion, video.fps);
+  title = render::make_title_card(rig, material, video.slow_motion, video.fps);
   heading = material + " on PVC rollers  \xc2\xb7  l = " +
             std::to_string(static_cast<int>(std::lround(scene.rollers.spacing * 1e3))) + " mm";
   report.width = video.width;

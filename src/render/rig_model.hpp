@@ -19,7 +19,7 @@
 #include "render/mesh_data.hpp"
 #include "render/renderer.hpp"
 #include "render/rig_pose.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl::render {
 
@@ -76,7 +76,7 @@ struct RigModel {
 // come from `meshes` through `catalog`; a scene that names no LEGO part needs neither (pass
 // nullptr) and opens no file. Throws std::invalid_argument if a part is missing from the
 // catalogue, and whatever MeshLibrary throws for a mesh file it cannot read.
-RigModel build_rig_model(const Scene& scene, const assets::PartCatalog* catalog,
+RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
                          assets::MeshLibrary* meshes);
 
 // Whether the scene names LEGO parts (a frame, blocks on the plate, a gear train).

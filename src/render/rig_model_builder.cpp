@@ -1,8 +1,6 @@
-// Builds the rig model from the scene (rig_model.hpp). What it asks of the scene layer, as calls
-// that a compiled rig may answer later: drive_layout(scene) for the shafts and gears,
-// plate_mass(scene) for where the slab lies about the plate's centre of mass, and
-// initial_amplitude(scene, mu_k) for the plate's travel (rest_pose, rig_pose.cpp, asks for
-// plate_mass and drive_layout as well).
+// Builds the rig model from the compiled rig (rig_model.hpp): its drive layout for the shafts and
+// gears, its plate's mass properties for where the slab lies about the centre of mass, and its
+// initial amplitude for the plate's travel.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -57,8 +55,9 @@ double direction_about_y(double x0, double z0, double x1, double z1) {
 
 class ModelBuilder {
  public:
-  ModelBuilder(const Scene& scene, const assets::PartCatalog* catalog, assets::MeshLibrary* meshes)
-      : scene_(scene), catalog_(catalog), meshes_(meshes) {}
+  ModelBuilder(const CompiledRig& rig, const assets::PartCatalog* catalog,
+               assets::MeshLibrary* meshes)
+      : rig_(rig), scene_(rig.scene), catalog_(catalog), meshes_(meshes) {}
 
   RigModel build();
 
@@ -79,11 +78,12 @@ class ModelBuilder {
   void add_gears();
   void finish_bounds();
 
+  const CompiledRig& rig_;
   const Scene& scene_;
   const assets::PartCatalog* catalog_;
   assets::MeshLibrary* meshes_;
   RigModel model_;
-  std::optional<DriveLayout> layout_;
+  const DriveLayout* layout_ = nullptr;
   MeshData static_extra_;  // the sensor's board, stands, the motor: merged with the frame
 };
 
@@ -91,7 +91,7 @@ void ModelBuilder::add_shafts() {
   const double l = scene_.rollers.spacing;
   const double a = scene_.rollers.radius;
   if (scene_.drive) {
-    layout_ = drive_layout(scene_);  // the scene layer's drive layout
+    layout_ = &rig_.drive->layout;
     for (const ShaftPlacement& s : layout_->shafts) model_.shafts.push_back({s.role, s.x, s.z});
   } else {
     model_.shafts.push_back({"roller 0", -0.5 * l, -a});
@@ -173,7 +173,7 @@ void ModelBuilder::add_static() {
 
 void ModelBuilder::add_plate() {
   const PlateDesc& p = scene_.plate;
-  const PlateMass mass = plate_mass(scene_);  // the scene layer's mass properties
+  const PlateMass& mass = rig_.plate;
   const float x_c = static_cast<float>(mass.x_c);
   const float bottom = static_cast<float>(-mass.h_c);
   const float top = bottom + static_cast<float>(p.thickness);
@@ -218,7 +218,7 @@ void ModelBuilder::add_plate() {
   model_.parts.push_back(make_part(add_mesh(std::move(plate)), RigPart::Body::kPlate));
 
   // The magnet nearest the sensor, at rest (the sensor camera looks at it).
-  const RigPose rest = rest_pose(scene_);
+  const RigPose rest = rest_pose(rig_);
   double best = std::numeric_limits<double>::infinity();
   for (const MagnetDesc& m : scene_.magnets) {
     const Eigen::Vector3f at =
@@ -324,14 +324,9 @@ void ModelBuilder::add_gears() {
 }
 
 void ModelBuilder::finish_bounds() {
-  RigPose pose = rest_pose(scene_);
-  double amplitude = std::fabs(scene_.plate.offset);
-  try {
-    // The scene layer's amplitude for the scene's mu_k.
-    amplitude = std::max(amplitude, initial_amplitude(scene_, scene_.friction.mu_k));
-  } catch (const std::exception&) {
-    // No harmonic motion: the offset is the best guess of the plate's travel.
-  }
+  RigPose pose = rest_pose(rig_);
+  // The harmonic amplitude (the offset when there is no harmonic motion).
+  const double amplitude = std::max(std::fabs(scene_.plate.offset), rig_.amplitude_initial);
   Eigen::AlignedBox3f box;
   for (const double x : {-amplitude, amplitude}) {
     pose.plate_x = x;
@@ -378,9 +373,9 @@ bool scene_uses_parts(const Scene& scene) {
   return scene.frame.has_value() || scene.drive.has_value() || !scene.plate.blocks.empty();
 }
 
-RigModel build_rig_model(const Scene& scene, const assets::PartCatalog* catalog,
+RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
                          assets::MeshLibrary* meshes) {
-  return ModelBuilder(scene, catalog, meshes).build();
+  return ModelBuilder(rig, catalog, meshes).build();
 }
 
 }  // namespace fl::render

@@ -168,14 +168,15 @@ std::string format_plus_minus(double value, double uncertainty) {
   return fmt::format("{:.{}f} \xc2\xb1 {:.{}f}", value, decimals, uncertainty, decimals);
 }
 
-TitleCard make_title_card(const Scene& scene, const std::string& material, double slow_motion,
+TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
                           int fps) {
+  const Scene& scene = rig.scene;
   TitleCard card;
   card.title = "The friction (Timoshenko) oscillator";
   card.subtitle = fmt::format("{} on {} rollers, {:.0f} K", material,
                               scene.rollers.material == "pvc" ? "PVC" : scene.rollers.material,
                               scene.friction.temperature);
-  const double rpm = nominal_roller_speed(scene) * kRpm;
+  const double rpm = rig.roller_speed_nominal * kRpm;
   card.lines.push_back(fmt::format(
       "roller spacing l = {:.0f} mm, rollers {:.0f} mm across, {} at {:.0f} rpm",
       scene.rollers.spacing * 1e3, scene.rollers.radius * 2e3,
@@ -186,7 +187,7 @@ TitleCard make_title_card(const Scene& scene, const std::string& material, doubl
     card.lines.push_back(fmt::format(
         "{:.0f} V motor at {:.0f} % duty ({:.0f} rpm), {:g}:1 gearbox, idlers couple the rollers",
         d.motor.rated_voltage, d.motor.duty * 100.0, d.motor.duty * d.motor.no_load_speed * kRpm,
-        gearbox_ratio(d)));
+        rig.drive->gearbox_ratio));
   }
   std::string payload =
       fmt::format("plate {:.0f} \xc3\x97 {:.0f} \xc3\x97 {:g} mm", scene.plate.length * 1e3,
@@ -201,7 +202,7 @@ TitleCard make_title_card(const Scene& scene, const std::string& material, doubl
     payload += fmt::format("; Hall sensor at x = {:.0f} mm", scene.sensor->position[0] * 1e3);
   card.lines.push_back(payload);
   card.lines.push_back(fmt::format("released {:.0f} mm off centre; \xce\xbc\xe2\x82\x96 = {:.3g}{}",
-                                   scene.plate.offset * 1e3, scene.friction.mu_k,
+                                   scene.plate.offset * 1e3, rig.mu_k,
                                    scene.friction.from_paper ? " (the paper's value)" : ""));
   if (scene.friction.paper_period && scene.friction.paper_mu_k)
     card.lines.push_back("the paper measured T = " + measured_text(*scene.friction.paper_period) +

@@ -12,7 +12,7 @@
 
 #include "core/units.hpp"
 #include "render/overlay.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl::render {
 
@@ -61,7 +61,7 @@ struct TitleCard {
 
 // The title card of a scene: the material, the rig's set-up and the video's settings.
 // `material` is the material's name as the paper writes it ("LEGO blocks").
-TitleCard make_title_card(const Scene& scene, const std::string& material, double slow_motion,
+TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
                           int fps);
 
 // Draws the running overlay (time, speeds, Hall plot, T and mu_k) into a width x height frame.

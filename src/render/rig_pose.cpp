@@ -3,16 +3,14 @@
 #include <algorithm>
 
 #include "render/rig_geometry.hpp"
-#include "scene/drive_layout.hpp"
 
 namespace fl::render {
 
-RigPose rest_pose(const Scene& scene) {
+RigPose rest_pose(const CompiledRig& rig) {
   RigPose pose;
-  pose.plate_x = scene.plate.offset;
-  // Asked of the scene layer: the plate's mass properties (h_c) and the drive's shafts.
-  pose.plate_z = plate_mass(scene).h_c;
-  const std::size_t shafts = scene.drive ? drive_layout(scene).shafts.size() : 2;
+  pose.plate_x = rig.scene.plate.offset;
+  pose.plate_z = rig.plate.h_c;
+  const std::size_t shafts = rig.drive ? rig.drive->layout.shafts.size() : 2;
   pose.shaft_angles.assign(shafts, 0.0);
   pose.shaft_speeds.assign(shafts, 0.0);
   return pose;

@@ -7,7 +7,7 @@
 
 #include <Eigen/Geometry>
 
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl::render {
 
@@ -25,7 +25,7 @@ struct RigPose {
 };
 
 // The rig at the start of a run: the plate at its offset, resting on the rollers, every angle 0.
-RigPose rest_pose(const Scene& scene);
+RigPose rest_pose(const CompiledRig& rig);
 // (1 - f) a + f b, part by part (angles unwrapped, so linear is right).
 RigPose interpolate(const RigPose& a, const RigPose& b, double f);
 

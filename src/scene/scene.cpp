@@ -84,10 +84,4 @@ double nominal_roller_speed(const Scene& scene) {
   return scene.drive->motor.duty * scene.drive->motor.no_load_speed * gearbox_ratio(*scene.drive);
 }
 
-double initial_amplitude(const Scene& scene, double mu_k) {
-  const PlateMass pm = plate_mass(scene);
-  const double omega = angular_frequency(scene.rollers.spacing, mu_k, pm.h_c, scene.world.gravity);
-  return amplitude_from_start(scene.plate.offset, scene.plate.velocity, omega);
-}
-
 }  // namespace fl

@@ -218,7 +218,4 @@ double nominal_roller_speed(const Scene& scene);
 // The gearbox's speed-up from the motor to the rollers (product of driver / driven teeth).
 double gearbox_ratio(const DriveDesc& drive);
 
-// The largest |x| the plate's centre reaches for a harmonic oscillation from (offset, velocity).
-double initial_amplitude(const Scene& scene, double mu_k);
-
 }  // namespace fl

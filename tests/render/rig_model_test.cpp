@@ -53,12 +53,12 @@ TEST(RigModel, TheFrameLeavesOutOnlyWhatNoCameraSees) {
   EXPECT_GT(rig.stats.frame_triangles_drawn, rig.stats.frame_triangles_full * 3 / 10);
   std::cout << "paper rig: LEGO frame " << rig.stats.frame_triangles_drawn << " of "
             << rig.stats.frame_triangles_full << " triangles drawn; "
-            << rig.triangles(rest_pose(test::paper_rig()), 0.0) << " in all at rest\n";
+            << rig.triangles(rest_pose(compile_rig(test::paper_rig())), 0.0) << " in all at rest\n";
 
   // One brick on the table keeps everything but its underside (cavity and rim) ...
   const Scene one = frame_scene("    - {part: brick-2x4, at: [0, 0, 0]}\n");
   assets::MeshLibrary library;
-  const RigModel single = build_rig_model(one, &test::part_catalog(), &library);
+  const RigModel single = build_rig_model(compile_rig(one), &test::part_catalog(), &library);
   const std::size_t brick = test::part_catalog().at("brick-2x4").triangles;
   EXPECT_EQ(single.stats.frame_triangles_full, brick);
   EXPECT_LT(single.stats.frame_triangles_drawn, brick);
@@ -71,7 +71,7 @@ TEST(RigModel, TheFrameLeavesOutOnlyWhatNoCameraSees) {
   const Scene two = frame_scene(
       "    - {part: brick-2x4, at: [0, 0, 0]}\n    - {part: brick-2x4, at: [0, 0, 3]}\n");
   assets::MeshLibrary meshes;
-  const RigModel stack = build_rig_model(two, &test::part_catalog(), &meshes);
+  const RigModel stack = build_rig_model(compile_rig(two), &test::part_catalog(), &meshes);
   EXPECT_EQ(stack.stats.frame_triangles_full, 2 * brick);
   EXPECT_LT(stack.stats.frame_triangles_drawn, 2 * single.stats.frame_triangles_drawn - 8 * 40);
   std::size_t studs_between = 0;
@@ -88,14 +88,15 @@ TEST(RigModel, ASceneWithoutLegoPartsNeedsNoIndexAndNoMesh) {
   const Scene scene = test::scene_file("minimal.yaml");
   ASSERT_FALSE(scene_uses_parts(scene));
   // No catalogue, no mesh library: built from boxes and cylinders alone.
-  const RigModel rig = build_rig_model(scene, nullptr, nullptr);
+  const RigModel rig = build_rig_model(compile_rig(scene), nullptr, nullptr);
   EXPECT_EQ(rig.stats.meshes_read, 0u);
   EXPECT_EQ(rig.stats.frame_parts, 0u);
   EXPECT_EQ(rig.shafts.size(), 2u);
-  EXPECT_GT(rig.triangles(rest_pose(scene), 0.0), 500u);
+  EXPECT_GT(rig.triangles(rest_pose(compile_rig(scene)), 0.0), 500u);
   // The paper's rig does need them.
   EXPECT_TRUE(scene_uses_parts(test::paper_rig()));
-  EXPECT_THROW(build_rig_model(test::paper_rig(), nullptr, nullptr), std::invalid_argument);
+  EXPECT_THROW(build_rig_model(compile_rig(test::paper_rig()), nullptr, nullptr),
+               std::invalid_argument);
 }
 
 // The gear drawn for `placement` turned to its angle at `pose`: the angle about +y of its tooth 0.
@@ -111,7 +112,7 @@ TEST(RigModel, MeshingGearsPutATeethIntoTheOthersGaps) {
   const RigModel rig = paper_rig_model();
   // The gear parts, in the layout's order, are the last parts of the model.
   const std::size_t first_gear = rig.parts.size() - layout.gears.size();
-  RigPose pose = rest_pose(scene);
+  RigPose pose = rest_pose(compile_rig(scene));
   for (const double turn : {0.0, 0.37, 2.9}) {
     // The train turned from rest: each shaft by the tooth-count ratio, in alternate senses.
     std::vector<double> angle(layout.shafts.size(), 0.0);
@@ -154,7 +155,7 @@ TEST(RigModel, MeshingGearsPutATeethIntoTheOthersGaps) {
 TEST(RigModel, FastPartsAreDrawnBlurred) {
   FL_REQUIRE_ASSETS();
   const RigModel rig = paper_rig_model();
-  RigPose pose = rest_pose(test::paper_rig());
+  RigPose pose = rest_pose(compile_rig(test::paper_rig()));
   const std::size_t still = rig.triangles(pose, 1.0 / 120.0);
   // 1600 rpm at the rollers, 960 rpm at the idlers, 200 rpm at the motor.
   const auto& shafts = rig.shafts;
@@ -179,7 +180,8 @@ TEST(RigModel, FastPartsAreDrawnBlurred) {
       EXPECT_EQ(placed.mesh, part.mesh);
     }
     // Standing still, everything is sharp.
-    EXPECT_EQ(place_part(rig, part, rest_pose(test::paper_rig()), 1.0 / 120.0).mesh, part.mesh);
+    EXPECT_EQ(place_part(rig, part, rest_pose(compile_rig(test::paper_rig())), 1.0 / 120.0).mesh,
+              part.mesh);
   }
 }
 
@@ -247,7 +249,7 @@ TEST(RigOverlay, ValuesCarryTheirUncertaintysDigits) {
 }
 
 TEST(RigOverlay, TheTitleCardNamesTheMaterialAndTheSetUp) {
-  const TitleCard card = make_title_card(test::paper_rig(), "LEGO blocks", 4.0, 30);
+  const TitleCard card = make_title_card(compile_rig(test::paper_rig()), "LEGO blocks", 4.0, 30);
   EXPECT_EQ(card.subtitle, "LEGO blocks on PVC rollers, 300 K");
   std::string all;
   for (const std::string& line : card.lines) all += line + "\n";

@@ -30,7 +30,7 @@ using test::paper_rig_model;
 
 // The rig at a pose: the plate at x, the rollers turned.
 RigPose pose_at(double plate_x, double roller_angle) {
-  RigPose pose = rest_pose(test::paper_rig());
+  RigPose pose = rest_pose(compile_rig(test::paper_rig()));
   pose.plate_x = plate_x;
   pose.shaft_angles[0] = roller_angle;
   pose.shaft_angles[1] = -roller_angle;

@@ -41,7 +41,7 @@ inline const Scene& paper_rig() {
 // The paper's rig's model, its meshes read through a library of its own.
 inline render::RigModel paper_rig_model() {
   assets::MeshLibrary meshes;
-  return render::build_rig_model(paper_rig(), &part_catalog(), &meshes);
+  return render::build_rig_model(compile_rig(paper_rig()), &part_catalog(), &meshes);
 }
 
 }  // namespace fl::test

@@ -29,9 +29,10 @@ void check_non_negative(double value, const char* name, const char* unit) {
 // Omega^2 = 2 g mu / (l - 2 mu h_c), or a refusal when there is no restoring force.
 double omega_at(const PlateOnRollers& plate, double mu) {
   const double arm = plate.spacing - 2.0 * mu * plate.h_c;
-  require(arm > 0.0, describe("no restoring force: l = ", plate.spacing, " m <= 2 mu h_c = ",
-                              2.0 * mu * plate.h_c, " m (mu = ", mu, ", h_c = ", plate.h_c,
-                              " m); the plate drifts off instead of oscillating"));
+  if (!(arm > 0.0))
+    throw DomainError(describe("no restoring force: l = ", plate.spacing, " m <= 2 mu h_c = ",
+                               2.0 * mu * plate.h_c, " m (mu = ", mu, ", h_c = ", plate.h_c,
+                               " m); the plate drifts off instead of oscillating"));
   return std::sqrt(2.0 * plate.gravity * mu / arm);
 }
 
@@ -125,10 +126,11 @@ double full_slip_surface_speed(const FrictionLaw& law, const PlateOnRollers& pla
     double step = 0.01 * std::max(lo, scale);
     if (stribeck && lo < 6.0 * law.v_s) step = std::min(step, 0.25 * law.v_s);
     hi = lo + step;
-    require(usable_at(law, plate, hi),
-            describe("the plate keeps up with rollers at every surface speed up to ", hi,
-                     " m/s, where the law (mu = ", law.kinetic(hi), " at v_r, ",
-                     law.kinetic(2.0 * hi), " at 2 v_r) stops meaning anything"));
+    if (!usable_at(law, plate, hi))
+      throw DomainError(describe(
+          "the plate keeps up with the rollers at every surface speed up to ", hi,
+          " m/s, where the law (mu = ", law.kinetic(hi), " at v_r, ", law.kinetic(2.0 * hi),
+          " at 2 v_r) stops giving a restoring force or a positive mu"));
     if (f(hi) >= 0.0) break;
     lo = hi;
   }

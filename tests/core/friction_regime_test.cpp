@@ -110,7 +110,7 @@ TEST(FrictionRegime, PredictionsForThePapersRigMatchTheReferenceModel) {
       }
     }
   }
-  EXPECT_EQ(compared, 140);  // and 20 laws refused at 1600 rpm (negative at 2 v_r)
+  EXPECT_EQ(compared, 140);  // and 16 refused at 1600 rpm (negative at 2 v_r)
 }
 
 TEST(FrictionRegime, CoulombAt200RpmSticksAndCarriesItsCycle) {

@@ -71,24 +71,26 @@ struct Rig {
   }
 };
 
-// After a stick, a slip-dependent law: the stick-slip cycle persists if the slip arc between two
-// sticks arrives at the other roller's speed, i.e. its energy gain outweighs the loss of the kick
-// the stick gave: Omega^2 x_b^2 + 2 dE >= 0 (x_b > 0). With x_b <= 0 (mu(2 v_r) >= mu_s) the
-// stick ends at a speed maximum and the arc brings the plate back to a roller's speed if gamma
-// at v_r / Omega is >= 0. Otherwise the slip motion shrinks to the largest slip cycle below
-// v_r / Omega, or to rest.
+// After a stick, a slip-dependent law. The stick ends at +-x_b with the plate at the roller's
+// speed; the slip arc that follows (harmonic at first order, its energy changed by dE) reaches the
+// other roller's speed if Omega^2 x_b^2 + 2 dE >= 0 (x_b > 0): then the stick-slip cycle
+// persists. Otherwise the plate goes on slipping at the amplitude the arc left it,
+// A = sqrt((v_r / Omega)^2 + (Omega^2 x_b^2 + 2 dE) / Omega^2) (v_r / Omega when x_b <= 0, where
+// the stick ends at a speed maximum): if gamma(A) >= 0 it grows back to a roller's speed (the
+// stick-slip persists), else it shrinks to the largest slip cycle below A, or to rest.
 void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
+  const double omega2 = rig.omega * rig.omega;
   bool persists = false;
+  double after = rig.reach;               // the slipping amplitude after a failed arc
   double swing2 = rig.reach * rig.reach;  // the arc's amplitude squared at its turning point
   if (rig.x_b > 0.0) {
     const double gain = slip_arc_energy_gain(rig.law, rig.plate, rig.surface_speed);
-    const double kick = rig.omega * rig.omega * rig.x_b * rig.x_b;
+    const double kick = omega2 * rig.x_b * rig.x_b;
     persists = kick + 2.0 * gain >= 0.0;
-    swing2 = rig.x_b * rig.x_b + rig.reach * rig.reach + gain / (rig.omega * rig.omega);
+    swing2 = rig.x_b * rig.x_b + rig.reach * rig.reach + gain / omega2;
+    after = std::sqrt(std::max(rig.reach * rig.reach + (kick + 2.0 * gain) / omega2, 0.0));
   }
-  // A slip motion that grows just below v_r / Omega comes back to a roller's speed whatever the
-  // arc did.
-  persists = persists || rig.rate(rig.reach) >= 0.0;
+  if (!persists && after > 0.0) persists = rig.rate(after) >= 0.0;
   if (persists) {
     if (std::sqrt(std::max(swing2, 0.0)) >= rig.tipping) {
       out.regime = FrictionRegime::kTips;
@@ -98,7 +100,8 @@ void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
     out.regime = FrictionRegime::kStickSlip;
     return;
   }
-  const std::optional<double> root = rig.first_root(rig.reach, 1e-4 * rig.reach);
+  const std::optional<double> root =
+      after > 0.0 ? rig.first_root(after, 1e-4 * after) : std::nullopt;
   if (root && rig.rate(*root * 0.999) > 0.0) {
     out.settled_amplitude = root;
     out.regime = FrictionRegime::kFullSlip;

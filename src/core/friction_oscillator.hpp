@@ -28,8 +28,8 @@ struct PlateOnRollers {
 };
 
 // Refuses a law that means nothing at slip speeds in [0, max_slip]: a non-finite parameter,
-// mu_k <= 0 (coulomb) or < 0 (stribeck), mu_s < mu_k, v_s <= 0 (stribeck), or a kinetic
-// coefficient <= 0 somewhere in [0, max_slip] (a falling linear slope beta < 0 reaches zero).
+// mu_k <= 0, mu_s < mu_k, v_s <= 0 (stribeck), or a kinetic coefficient <= 0 somewhere in
+// [0, max_slip] (a falling linear slope beta < 0 reaches zero at mu_k / |beta| and beyond).
 void check_friction_law(const FrictionLaw& law, double max_slip);
 
 // Refuses a plate that means nothing: l <= 0, h_c < 0, g <= 0, or a non-finite value.
@@ -55,11 +55,12 @@ double stick_break_offset(const FrictionLaw& law, const PlateOnRollers& plate,
 bool stick_holds(const FrictionLaw& law, const PlateOnRollers& plate, double surface_speed,
                  int roller, double offset);
 
-// The roller surface speed [m/s] above which an oscillation of amplitude A never reaches a
-// roller's speed: the first root of v = A Omega(mu(v)) (for coulomb, A Omega). The static limit
-// mu_s does not enter (a plate that reaches v_r always sticks); a slip-dependent law enters
-// through mu(v) in Omega and, at the linear order, not otherwise: but a growing oscillation
-// (gamma > 0) reaches the roller's speed later at any v_r, a decaying one never.
+// The roller surface speed [m/s] above which an oscillation of amplitude A does not reach a
+// roller's speed within its cycle: the first root of v = A Omega(mu(v)) (for coulomb, A Omega),
+// found on a scan finer than the law's features and refined by bisection. The static limit mu_s
+// does not enter (a plate that reaches v_r always sticks, whatever mu_s); a slip-dependent law
+// enters through mu(v) in Omega, and through the growth rate: a growing oscillation (gamma > 0)
+// reaches the roller's speed later at any v_r, a decaying one that starts below never does.
 double full_slip_surface_speed(const FrictionLaw& law, const PlateOnRollers& plate,
                                double amplitude);
 

@@ -1,6 +1,9 @@
 #include "core/friction_regime.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
 #include "core/analytic_model.hpp"

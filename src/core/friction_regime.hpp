@@ -50,7 +50,9 @@ struct FrictionRegimePrediction {
   // When the plate first reaches a roller's speed [s]: from a turning point, asin(margin) /
   // Omega within the first cycle; the averaged growth time Int dA / (A gamma(A)) otherwise.
   std::optional<double> stick_time;
-  // When the plate tips [s] (0: at once, or in the cycle it settles into).
+  // When the plate tips [s]: 0 when it starts beyond the tipping offset; the averaged growth
+  // time when a growing amplitude reaches it while slipping; the first stick's time when the
+  // slip arc after that stick swings beyond it (it tips within that arc).
   std::optional<double> tip_time;
   // The cycle after the first stick, for a law without slip dependence.
   std::optional<StickSlipCycle> cycle;

@@ -5,35 +5,22 @@
 #include <string>
 
 #include "core/describe.hpp"
+#include "core/domain_check.hpp"
 
 namespace fl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw DomainError(message);
-}
-
-void check_positive(double value, const char* name, const char* unit) {
-  require(std::isfinite(value) && value > 0.0,
-          describe(name, " must be a finite positive number, got ", value, " ", unit));
-}
-
-void check_non_negative(double value, const char* name, const char* unit) {
-  require(std::isfinite(value) && value >= 0.0,
-          describe(name, " must be a finite number >= 0, got ", value, " ", unit));
-}
-
 void check_oscillator(double spacing, double mu_k, double h_c, double gravity) {
   check_positive(spacing, "the roller spacing l", "m");
   check_positive(mu_k, "mu_k", "");
   check_non_negative(h_c, "the centre-of-mass height h_c", "m");
   check_positive(gravity, "gravity g", "m/s^2");
-  require(spacing > 2.0 * mu_k * h_c,
-          describe("no restoring force: l = ", spacing, " m <= 2 mu_k h_c = ", 2.0 * mu_k * h_c,
-                   " m (mu_k = ", mu_k, ", h_c = ", h_c,
-                   " m); the plate drifts off instead of oscillating"));
+  require_domain(spacing > 2.0 * mu_k * h_c,
+                 describe("no restoring force: l = ", spacing,
+                          " m <= 2 mu_k h_c = ", 2.0 * mu_k * h_c, " m (mu_k = ", mu_k,
+                          ", h_c = ", h_c, " m); the plate drifts off instead of oscillating"));
 }
 
 }  // namespace

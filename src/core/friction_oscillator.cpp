@@ -6,25 +6,12 @@
 #include <string>
 
 #include "core/describe.hpp"
+#include "core/domain_check.hpp"
 
 namespace fl {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-void require(bool ok, const std::string& message) {
-  if (!ok) throw DomainError(message);
-}
-
-void check_positive(double value, const char* name, const char* unit) {
-  require(std::isfinite(value) && value > 0.0,
-          describe(name, " must be a finite positive number, got ", value, " ", unit));
-}
-
-void check_non_negative(double value, const char* name, const char* unit) {
-  require(std::isfinite(value) && value >= 0.0,
-          describe(name, " must be a finite number >= 0, got ", value, " ", unit));
-}
 
 // Omega^2 = 2 g mu / (l - 2 mu h_c), or a refusal when there is no restoring force.
 double omega_at(const PlateOnRollers& plate, double mu) {
@@ -48,20 +35,20 @@ bool usable_at(const FrictionLaw& law, const PlateOnRollers& plate, double v) {
 void check_friction_law(const FrictionLaw& law, double max_slip) {
   check_non_negative(max_slip, "the largest slip speed", "m/s");
   check_positive(law.mu_k, "mu_k", "");
-  require(std::isfinite(law.mu_s) && law.mu_s >= law.mu_k,
-          describe("the static limit mu_s must be finite and >= mu_k = ", law.mu_k, ", got ",
-                   law.mu_s));
+  require_domain(std::isfinite(law.mu_s) && law.mu_s >= law.mu_k,
+                 describe("the static limit mu_s must be finite and >= mu_k = ", law.mu_k, ", got ",
+                          law.mu_s));
   if (law.kind == FrictionLawKind::kCoulomb) return;
   check_positive(law.v_s, "the Stribeck speed v_s", "m/s");
-  require(std::isfinite(law.beta),
-          describe("the linear slope beta must be finite, got ", law.beta, " s/m"));
+  require_domain(std::isfinite(law.beta),
+                 describe("the linear slope beta must be finite, got ", law.beta, " s/m"));
   // With beta >= 0, mu(s) >= mu_k > 0. With beta < 0 both terms fall, so the least mu on
   // [0, max_slip] is at max_slip.
   if (law.beta < 0.0) {
     const double mu_end = law.kinetic(max_slip);
-    require(mu_end > 0.0,
-            describe("the friction law is not positive at slip speeds up to ", max_slip,
-                     " m/s: mu = ", mu_end, " there (beta = ", law.beta, " s/m)"));
+    require_domain(mu_end > 0.0,
+                   describe("the friction law is not positive at slip speeds up to ", max_slip,
+                            " m/s: mu = ", mu_end, " there (beta = ", law.beta, " s/m)"));
   }
 }
 
@@ -97,11 +84,11 @@ bool stick_holds(const FrictionLaw& law, const PlateOnRollers& plate, double sur
   check_plate(plate);
   check_positive(surface_speed, "the rollers' surface speed v_r", "m/s");
   check_friction_law(law, 2.0 * surface_speed);
-  require(roller == 0 || roller == 1, describe("a roller is 0 or 1, got ", roller));
+  require_domain(roller == 0 || roller == 1, describe("a roller is 0 or 1, got ", roller));
   const double half = 0.5 * plate.spacing;
-  require(std::isfinite(offset) && std::abs(offset) < half,
-          describe("the offset x must lie between the rollers, |x| < l/2 = ", half, " m, got ",
-                   offset, " m"));
+  require_domain(std::isfinite(offset) && std::abs(offset) < half,
+                 describe("the offset x must lie between the rollers, |x| < l/2 = ", half,
+                          " m, got ", offset, " m"));
   const double mu_far = law.kinetic(2.0 * surface_speed);
   // Loads per unit weight with no net friction force: N_0 = 1/2 - x/l, N_1 = 1/2 + x/l.
   const double n_near = roller == 0 ? half - offset : half + offset;
@@ -161,10 +148,10 @@ LinearisedMotion linearised_motion(const FrictionLaw& law, const PlateOnRollers&
   out.slope = law.slope(surface_speed);
   const double arm = plate.spacing - 2.0 * out.mu * plate.h_c;
   out.gamma = -plate.gravity * plate.spacing * out.slope / (2.0 * arm);
-  require(std::abs(out.gamma) < out.omega,
-          describe("no oscillation: the law's slope mu'(v_r) = ", out.slope,
-                   " s/m gives |gamma| = ", std::abs(out.gamma), " 1/s >= Omega = ", out.omega,
-                   " rad/s (the plate creeps instead)"));
+  require_domain(std::abs(out.gamma) < out.omega,
+                 describe("no oscillation: the law's slope mu'(v_r) = ", out.slope,
+                          " s/m gives |gamma| = ", std::abs(out.gamma),
+                          " 1/s >= Omega = ", out.omega, " rad/s (the plate creeps instead)"));
   out.period_0 = 2.0 * kPi / out.omega;
   out.period = 2.0 * kPi / std::sqrt((out.omega - out.gamma) * (out.omega + out.gamma));
   return out;

@@ -9,15 +9,12 @@
 #include "core/analytic_model.hpp"
 #include "core/averaged_motion.hpp"
 #include "core/describe.hpp"
+#include "core/domain_check.hpp"
 
 namespace fl {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-
-void require(bool ok, const std::string& message) {
-  if (!ok) throw DomainError(message);
-}
 
 // What the slip-dependent cases need, computed once.
 struct Rig {
@@ -182,12 +179,14 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
                                                  double amplitude, double horizon,
                                                  double steady_tolerance) {
   check_plate(plate);
-  require(std::isfinite(amplitude) && amplitude > 0.0,
-          describe("the amplitude A must be a finite positive number, got ", amplitude, " m"));
-  require(!std::isnan(horizon) && horizon > 0.0,
-          describe("the horizon must be positive (or infinite), got ", horizon, " s"));
-  require(std::isfinite(steady_tolerance) && steady_tolerance > 0.0 && steady_tolerance < 1.0,
-          describe("the steady tolerance must be a fraction in (0, 1), got ", steady_tolerance));
+  require_domain(
+      std::isfinite(amplitude) && amplitude > 0.0,
+      describe("the amplitude A must be a finite positive number, got ", amplitude, " m"));
+  require_domain(!std::isnan(horizon) && horizon > 0.0,
+                 describe("the horizon must be positive (or infinite), got ", horizon, " s"));
+  require_domain(
+      std::isfinite(steady_tolerance) && steady_tolerance > 0.0 && steady_tolerance < 1.0,
+      describe("the steady tolerance must be a fraction in (0, 1), got ", steady_tolerance));
   FrictionRegimePrediction out;
   const double mu = effective_mu(law, surface_speed);
   out.break_offset = stick_break_offset(law, plate, surface_speed);

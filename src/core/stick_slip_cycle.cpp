@@ -5,18 +5,16 @@
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
+#include "core/domain_check.hpp"
 
 namespace fl {
 namespace {
 
-void require(bool ok, const std::string& message) {
-  if (!ok) throw DomainError(message);
-}
-
 void require_no_slip_dependence(const FrictionLaw& law) {
-  require(!law.depends_on_slip(),
-          "no closed-form stick-slip cycle for a slip-dependent law (stribeck with mu_s > mu_k "
-          "or beta != 0); use a coulomb law");
+  require_domain(
+      !law.depends_on_slip(),
+      "no closed-form stick-slip cycle for a slip-dependent law (stribeck with mu_s > mu_k "
+      "or beta != 0); use a coulomb law");
 }
 
 }  // namespace
@@ -30,9 +28,9 @@ StickSlipCycle stick_slip_cycle(const FrictionLaw& law, const PlateOnRollers& pl
   const double reach = surface_speed / out.omega;
   out.amplitude = std::hypot(out.break_offset, reach);
   const double tipping = tipping_amplitude(plate.spacing, law.mu_k, plate.h_c);
-  require(out.amplitude < tipping,
-          describe("the stick-slip cycle's amplitude ", out.amplitude,
-                   " m reaches the tipping offset l/2 - mu_k h_c = ", tipping, " m"));
+  require_domain(out.amplitude < tipping,
+                 describe("the stick-slip cycle's amplitude ", out.amplitude,
+                          " m reaches the tipping offset l/2 - mu_k h_c = ", tipping, " m"));
   out.stick_duration = 2.0 * out.break_offset / surface_speed;
   out.slip_duration = 2.0 / out.omega * std::atan2(surface_speed, out.omega * out.break_offset);
   out.period = 2.0 * (out.stick_duration + out.slip_duration);
@@ -45,14 +43,14 @@ FirstStick first_stick(const FrictionLaw& law, const PlateOnRollers& plate, doub
   require_no_slip_dependence(law);
   const double omega = sliding_angular_frequency(law, plate, surface_speed);
   const double reach = surface_speed / omega;
-  require(std::isfinite(amplitude) && amplitude > reach,
-          describe("an oscillation of amplitude ", amplitude,
-                   " m never reaches the rollers' speed (it needs more than v_r / Omega = ", reach,
-                   " m)"));
+  require_domain(std::isfinite(amplitude) && amplitude > reach,
+                 describe("an oscillation of amplitude ", amplitude,
+                          " m never reaches the rollers' speed (it needs more than v_r / Omega = ",
+                          reach, " m)"));
   const double tipping = tipping_amplitude(plate.spacing, law.mu_k, plate.h_c);
-  require(amplitude < tipping,
-          describe("the amplitude ", amplitude,
-                   " m reaches the tipping offset l/2 - mu_k h_c = ", tipping, " m"));
+  require_domain(amplitude < tipping,
+                 describe("the amplitude ", amplitude,
+                          " m reaches the tipping offset l/2 - mu_k h_c = ", tipping, " m"));
   FirstStick out;
   out.time_to_stick = std::asin(reach / amplitude) / omega;
   out.entry_offset = -std::sqrt((amplitude - reach) * (amplitude + reach));

@@ -17,17 +17,12 @@ class MissingComponent : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The message above.
-inline std::string missing_component_message(std::string_view what, std::string_view component,
-                                             std::string_view how) {
-  return std::string(what) + " needs " + std::string(component) +
-         ", which this build of frictionlab does not have (" + std::string(how) + ")";
-}
-
 // Throws MissingComponent with the message above.
 [[noreturn]] inline void throw_missing(std::string_view what, std::string_view component,
                                        std::string_view how) {
-  throw MissingComponent(missing_component_message(what, component, how));
+  throw MissingComponent(std::string(what) + " needs " + std::string(component) +
+                         ", which this build of frictionlab does not have (" + std::string(how) +
+                         ")");
 }
 
 }  // namespace fl

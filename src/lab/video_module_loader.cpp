@@ -9,7 +9,6 @@
 #include <string>
 #include <system_error>
 
-#include "io/missing_component.hpp"
 #include "lab/video_module.hpp"
 
 #ifndef FRICTIONLAB_VIDEO_MODULE_BUILT
@@ -25,13 +24,11 @@ namespace {
 namespace fs = std::filesystem;
 
 // What a build without rendering says, as the recorder always has.
-std::string without_rendering() {
-  return missing_component_message(
-      "video, frames and stills",
-      "off-screen rendering (the drawing layer and a GL back end: OSMesa, libpng, stb_truetype)",
-      "configure with -DFRICTIONLAB_WITH_RENDER=ON -DFRICTIONLAB_WITH_OSMESA=ON after apt-get "
-      "install libosmesa6-dev libpng-dev libstb-dev libgl-dev fonts-dejavu-core");
-}
+constexpr const char* kWithoutRendering =
+    "video, frames and stills need off-screen rendering (the drawing layer and a GL back end: "
+    "OSMesa, libpng, stb_truetype), which this build of frictionlab does not have (configure "
+    "with -DFRICTIONLAB_WITH_RENDER=ON -DFRICTIONLAB_WITH_OSMESA=ON after apt-get install "
+    "libosmesa6-dev libpng-dev libstb-dev libgl-dev fonts-dejavu-core)";
 
 // $FRICTIONLAB_VIDEO_MODULE, else the module beside the running executable. Empty with the
 // reason in *error when neither can be had.
@@ -58,7 +55,7 @@ fs::path module_path(std::string* error) {
 // Opens the module; on failure returns null with the reason in *error.
 const VideoModule* open_module(std::string* error) {
   if (!FRICTIONLAB_VIDEO_MODULE_BUILT) {
-    *error = without_rendering();
+    *error = kWithoutRendering;
     return nullptr;
   }
   const fs::path path = module_path(error);

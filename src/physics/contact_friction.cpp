@@ -53,15 +53,7 @@ void ContactFriction::before_solve(btDispatcher& dispatcher) {
         continue;
       }
       const auto i = static_cast<std::size_t>(who);
-      const btRigidBody& roller = *rollers_[i];
-      // The plate's velocity relative to the roller's surface at the point, in the contact plane.
-      const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
-      const btVector3 relative =
-          plate_->getVelocityInLocalPoint(at - plate_->getCenterOfMassPosition()) -
-          roller.getVelocityInLocalPoint(at - roller.getCenterOfMassPosition());
       const btVector3& n = pt.m_normalWorldOnB;
-      const btVector3 slip = relative - n * n.dot(relative);
-
       if (stuck_[i]) {
         double limit = law_.mu_s;
         // The ratio |F|/N extrapolated to the step's end: if it crosses mu_s inside the step,
@@ -80,15 +72,21 @@ void ContactFriction::before_solve(btDispatcher& dispatcher) {
         pt.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
       } else {
         pt.m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
-        double mu = law_.mu_k;
-        if (slip_dependent_) {
-          // The slip at mid-step, extrapolated from this step's start and the last one's.
-          const btVector3 mid = has_slip_before_[i] ? 1.5 * slip - 0.5 * slip_now_[i] : slip;
-          mu = law_.kinetic(mid.length());
-        }
-        pt.m_combinedFriction = mu;
+        pt.m_combinedFriction = law_.mu_k;
       }
-      slip_before_[i] = slip_now_[i];
+      if (!slip_dependent_) continue;
+      // The plate's velocity relative to the roller's surface at the point, in the contact plane.
+      const btRigidBody& roller = *rollers_[i];
+      const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
+      const btVector3 relative =
+          plate_->getVelocityInLocalPoint(at - plate_->getCenterOfMassPosition()) -
+          roller.getVelocityInLocalPoint(at - roller.getCenterOfMassPosition());
+      const btVector3 slip = relative - n * n.dot(relative);
+      if (!stuck_[i]) {
+        // The slip at mid-step, extrapolated from this step's start and the last one's.
+        const btVector3 mid = has_slip_before_[i] ? 1.5 * slip - 0.5 * slip_now_[i] : slip;
+        pt.m_combinedFriction = law_.kinetic(mid.length());
+      }
       slip_now_[i] = slip;
       has_slip_before_[i] = true;
     }

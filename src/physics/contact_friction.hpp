@@ -52,10 +52,9 @@ class ContactFriction {
 
   std::array<bool, 2> stuck_{};
   // Per roller contact: the slip velocity (plate relative to the roller's surface, in the
-  // contact plane) at the start of the last two steps, and the friction ratio |F|/N of the last
-  // two stuck steps.
+  // contact plane) at the start of the last step (slip-dependent laws only), and the friction
+  // ratio |F|/N of the last two stuck steps.
   std::array<btVector3, 2> slip_now_{};
-  std::array<btVector3, 2> slip_before_{};
   std::array<bool, 2> has_slip_before_{};
   std::array<double, 2> ratio_now_{};
   std::array<double, 2> ratio_before_{};

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <map>
-#include <numbers>
 
 #include "core/analytic_model.hpp"
 #include "core/integrator_error.hpp"

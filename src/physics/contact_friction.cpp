@@ -93,31 +93,22 @@ void ContactFriction::before_solve(btDispatcher& dispatcher) {
   }
 }
 
-void ContactFriction::after_step(btDispatcher& dispatcher) {
-  std::array<bool, 2> pressed{}, saturated{};
-  std::array<double, 2> ratio{};
-  const int manifolds = dispatcher.getNumManifolds();
-  for (int m = 0; m < manifolds; ++m) {
-    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-    bool plate_first = false;
-    const int who = classify(*manifold, plate_first);
-    if (who < 0) continue;
-    const auto i = static_cast<std::size_t>(who);
-    for (int k = 0; k < manifold->getNumContacts(); ++k) {
-      const btManifoldPoint& pt = manifold->getContactPoint(k);
-      const double normal = pt.getAppliedImpulse();
-      if (!(normal > 0.0)) continue;
-      const double friction = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2);
-      pressed[i] = true;
-      saturated[i] = saturated[i] || !(friction < kSaturation * pt.m_combinedFriction * normal);
-      ratio[i] = std::max(ratio[i], friction / normal);
-    }
-  }
+void ContactFriction::RollerImpulses::add(const btManifoldPoint& pt) {
+  const double normal = pt.getAppliedImpulse();
+  if (!(normal > 0.0)) return;
+  const double friction = std::hypot(pt.m_appliedImpulseLateral1, pt.m_appliedImpulseLateral2);
+  pressed = true;
+  saturated = saturated || !(friction < kSaturation * pt.m_combinedFriction * normal);
+  ratio = std::max(ratio, friction / normal);
+}
+
+void ContactFriction::after_step(const std::array<RollerImpulses, 2>& impulses) {
   for (std::size_t i = 0; i < 2; ++i) {
-    const bool stuck = pressed[i] && !saturated[i];
+    const RollerImpulses& r = impulses[i];
+    const bool stuck = r.pressed && !r.saturated;
     if (stuck) {
-      ratio_before_[i] = stuck_[i] ? ratio_now_[i] : ratio[i];
-      ratio_now_[i] = ratio[i];
+      ratio_before_[i] = stuck_[i] ? ratio_now_[i] : r.ratio;
+      ratio_now_[i] = r.ratio;
       ++stuck_steps_[i];
     } else {
       stuck_steps_[i] = 0;

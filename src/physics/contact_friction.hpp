@@ -34,8 +34,16 @@ class ContactFriction {
   // Before the solver: sets every plate-roller and plate-guide point's combined friction (and a
   // stuck contact's friction directions).
   void before_solve(btDispatcher& dispatcher);
+  // What the solver did at one roller's contact in the last step, gathered point by point (by the
+  // world's one read of the contact manifolds after each step).
+  struct RollerImpulses {
+    bool pressed = false;    // a point with a positive normal impulse
+    bool saturated = false;  // a pressed point whose friction impulse reached its limit
+    double ratio = 0.0;      // the largest |friction impulse| / normal impulse
+    void add(const btManifoldPoint& point);
+  };
   // After the step: decides from the solver's impulses which roller contacts are stuck.
-  void after_step(btDispatcher& dispatcher);
+  void after_step(const std::array<RollerImpulses, 2>& impulses);
 
   // Whether the plate is stuck to each roller after the last step.
   const std::array<bool, 2>& stuck() const { return stuck_; }

@@ -55,6 +55,11 @@ struct RigWorld::Impl {
   std::unique_ptr<btRigidBody> plate;
 
   Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep);
+
+  // Reads the contact manifolds once per step, after it: the rollers' forces on the plate, and
+  // each roller contact's impulses for the friction's stick test.
+  std::array<RollerContact, 2> measure_contacts(
+      std::array<ContactFriction::RollerImpulses, 2>& impulses) const;
   ~Impl();
 
   // Before each internal step: kinematic rollers keep a fixed transform and a forced angular
@@ -179,6 +184,39 @@ RigWorld::Impl::~Impl() {
   for (auto& r : rollers) world.removeRigidBody(r.get());
 }
 
+std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
+    std::array<ContactFriction::RollerImpulses, 2>& impulses) const {
+  std::array<RollerContact, 2> out{};
+  const int n = dispatcher.getNumManifolds();
+  for (int m = 0; m < n; ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    for (int i = 0; i < 2; ++i) {
+      const btCollisionObject* roller = rollers[i].get();
+      const bool plate_first = manifold->getBody0() == plate.get();
+      if (!((plate_first && manifold->getBody1() == roller) ||
+            (!plate_first && manifold->getBody0() == roller &&
+             manifold->getBody1() == plate.get())))
+        continue;
+      for (int k = 0; k < manifold->getNumContacts(); ++k) {
+        const btManifoldPoint& pt = manifold->getContactPoint(k);
+        // The normal points from body1 to body0; we want forces on the plate.
+        const double sign = plate_first ? 1.0 : -1.0;
+        const btVector3 normal = sign * pt.m_normalWorldOnB;
+        const btVector3 impulse = normal * pt.getAppliedImpulse() +
+                                  sign * pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                                  sign * pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+        out[i].touching =
+            out[i].touching || pt.getDistance() <= 0.0 || pt.getAppliedImpulse() > 0.0;
+        out[i].normal_force += impulse.z() / dt;
+        out[i].friction_force += impulse.x() / dt;
+        out[i].penetration = std::max(out[i].penetration, -static_cast<double>(pt.getDistance()));
+        impulses[static_cast<std::size_t>(i)].add(pt);
+      }
+    }
+  }
+  return out;
+}
+
 RigWorld::RigWorld(const CompiledRig& rig) : impl_(std::make_unique<Impl>(rig, nullptr)) {}
 RigWorld::RigWorld(const Scene& scene) {
   auto rig = compile_rig_shared(scene);
@@ -197,9 +235,10 @@ void RigWorld::step() {
     impl_->roller_omega = impl_->drivetrain->roller_speeds();
   }
   impl_->world.stepSimulation(impl_->dt, 0);
-  impl_->friction->after_step(impl_->dispatcher);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
-  impl_->contacts = measure_contacts();
+  std::array<ContactFriction::RollerImpulses, 2> impulses{};
+  impl_->contacts = impl_->measure_contacts(impulses);
+  impl_->friction->after_step(impulses);
   ++impl_->steps;
 }
 
@@ -229,37 +268,6 @@ PlateState RigWorld::plate() const {
 
 std::array<RollerContact, 2> RigWorld::contacts() const {
   return impl_->contacts;
-}
-
-std::array<RollerContact, 2> RigWorld::measure_contacts() const {
-  std::array<RollerContact, 2> out{};
-  const int n = impl_->dispatcher.getNumManifolds();
-  for (int m = 0; m < n; ++m) {
-    const btPersistentManifold* manifold = impl_->dispatcher.getManifoldByIndexInternal(m);
-    for (int i = 0; i < 2; ++i) {
-      const btCollisionObject* roller = impl_->rollers[i].get();
-      const bool plate_first = manifold->getBody0() == impl_->plate.get();
-      if (!((plate_first && manifold->getBody1() == roller) ||
-            (!plate_first && manifold->getBody0() == roller &&
-             manifold->getBody1() == impl_->plate.get())))
-        continue;
-      for (int k = 0; k < manifold->getNumContacts(); ++k) {
-        const btManifoldPoint& pt = manifold->getContactPoint(k);
-        // The normal points from body1 to body0; we want forces on the plate.
-        const double sign = plate_first ? 1.0 : -1.0;
-        const btVector3 normal = sign * pt.m_normalWorldOnB;
-        const btVector3 impulse = normal * pt.getAppliedImpulse() +
-                                  sign * pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
-                                  sign * pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
-        out[i].touching =
-            out[i].touching || pt.getDistance() <= 0.0 || pt.getAppliedImpulse() > 0.0;
-        out[i].normal_force += impulse.z() / impl_->dt;
-        out[i].friction_force += impulse.x() / impl_->dt;
-        out[i].penetration = std::max(out[i].penetration, -static_cast<double>(pt.getDistance()));
-      }
-    }
-  }
-  return out;
 }
 
 std::array<double, 2> RigWorld::roller_speeds() const {

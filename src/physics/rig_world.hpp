@@ -85,9 +85,6 @@ class RigWorld {
   const CompiledRig& rig() const;
 
  private:
-  // Reads the contact manifolds (once per step, in step()).
-  std::array<RollerContact, 2> measure_contacts() const;
-
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

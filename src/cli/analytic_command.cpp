@@ -29,6 +29,10 @@ struct AnalyticOptions {
   std::string roller_radius = "10 mm";
   std::string roller_speed = "1600 rpm";
   std::string amplitude = "20 mm";
+  std::string law = "coulomb";
+  std::string mu_s;
+  std::string v_s;
+  std::string beta;
   bool json = false;
 };
 
@@ -90,6 +94,53 @@ void print_report(const AnalyticReport& r) {
       s.amplitude * 1e3, *r.roller_speed_for_full_slip * kRpm, s.roller_speed * kRpm,
       *r.slip_margin,
       *r.slip_margin > 1.0 ? "" : " (< 1: the plate sticks to a roller for part of each cycle)");
+  if (r.friction_law_refused)
+    fmt::print("  friction law                 no closed forms here: {}\n",
+               *r.friction_law_refused);
+  if (!r.friction_law) return;
+  const AnalyticLaw& a = *r.friction_law;
+  fmt::print(
+      "  friction law                 {}, mu_k {:.4g}, mu_s {:.4g}{}\n",
+      friction_law_kind_name(a.law.kind), a.law.mu_k, a.law.mu_s,
+      a.law.kind == FrictionLawKind::kStribeck
+          ? fmt::format("{}, beta {:+.4g} s/m",
+                        a.law.mu_s != a.law.mu_k ? fmt::format(", v_s {:.4g} mm/s", a.law.v_s * 1e3)
+                                                 : std::string(),
+                        a.law.beta)
+          : std::string());
+  fmt::print("  mu at the rollers' speed     {:.4f} (v_r = {:.4g} m/s)\n", a.mu_at_surface_speed,
+             a.surface_speed);
+  fmt::print("  slip threshold (this law)    {:.1f} rpm for A = {:.0f} mm\n",
+             a.full_slip_roller_speed * kRpm, s.amplitude * 1e3);
+  fmt::print(
+      "  stick condition              a plate stuck to a roller breaks free at |x| = x_b = "
+      "{:.3f} mm\n",
+      a.break_offset * 1e3);
+  if (a.cycle) {
+    if (a.cycle->clipped)
+      fmt::print(
+          "  clipped cycle                amplitude v_r / Omega = {:.3f} mm, period {:.5f} s\n",
+          a.cycle->amplitude * 1e3, a.cycle->period);
+    else
+      fmt::print(
+          "  stick-slip cycle             period {:.5f} s, amplitude {:.3f} mm, sticks of {:.5f} "
+          "s, slip arcs of {:.5f} s\n",
+          a.cycle->period, a.cycle->amplitude * 1e3, a.cycle->stick_duration,
+          a.cycle->slip_duration);
+  }
+  if (a.linearised)
+    fmt::print(
+        "  growth rate (linearised)     {:+.5g} /s ({}), period {:.5f} s\n", a.linearised->gamma,
+        a.linearised->gamma > 0.0 ? fmt::format("e-folds every {:.4g} s", 1.0 / a.linearised->gamma)
+        : a.linearised->gamma < 0.0
+            ? fmt::format("decays by e every {:.4g} s", -1.0 / a.linearised->gamma)
+            : std::string("steady"),
+        a.linearised->period);
+  fmt::print("  motion from A = {:.0f} mm       {}{}\n", s.amplitude * 1e3,
+             regime_name(a.prediction.regime),
+             a.prediction.settled_amplitude
+                 ? fmt::format(", settling at {:.3f} mm", *a.prediction.settled_amplitude * 1e3)
+                 : std::string());
 }
 
 int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
@@ -101,6 +152,14 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
   set_up.roller_radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
   set_up.roller_speed = option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
   set_up.amplitude = option_quantity(o.amplitude, Dimension::kLength, "--amplitude");
+  const std::optional<FrictionLawKind> law = friction_law_kind_from_name(o.law);
+  if (!law) throw InputError({}, "--law: expected coulomb or stribeck, found \"" + o.law + "\"");
+  set_up.law = *law;
+  if (!o.mu_s.empty()) set_up.mu_s = option_quantity(o.mu_s, Dimension::kDimensionless, "--mu-s");
+  if (!o.v_s.empty()) set_up.v_s = option_quantity(o.v_s, Dimension::kSpeed, "--v-s");
+  if (!o.beta.empty()) set_up.beta = option_quantity(o.beta, Dimension::kInverseSpeed, "--beta");
+  if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || !o.beta.empty()))
+    throw InputError({}, "--v-s and --beta belong to the stribeck law; add --law stribeck");
   const int given =
       (o.mu_k.empty() ? 0 : 1) + (o.period.empty() ? 0 : 1) + (o.material.empty() ? 0 : 1);
   if (given != 1)
@@ -156,6 +215,11 @@ Command add_analytic_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--amplitude", options->amplitude,
                   "Oscillation amplitude A (for the slip margin)")
       ->capture_default_str();
+  sub->add_option("--law", options->law, "Friction law: coulomb or stribeck")
+      ->capture_default_str();
+  sub->add_option("--mu-s", options->mu_s, "Static limit mu_s (default mu_k)");
+  sub->add_option("--v-s", options->v_s, "Stribeck speed v_s, e.g. 1mm/s (stribeck)");
+  sub->add_option("--beta", options->beta, "Slope of mu with slip speed, e.g. -0.01s/m (stribeck)");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
   return Command{sub, [options, &global] { return run_analytic(*options, global); }};
 }

@@ -4,6 +4,16 @@
 
 namespace fl {
 
+const char* friction_law_kind_name(FrictionLawKind kind) {
+  return kind == FrictionLawKind::kStribeck ? "stribeck" : "coulomb";
+}
+
+std::optional<FrictionLawKind> friction_law_kind_from_name(std::string_view name) {
+  for (const FrictionLawKind k : {FrictionLawKind::kCoulomb, FrictionLawKind::kStribeck})
+    if (name == friction_law_kind_name(k)) return k;
+  return std::nullopt;
+}
+
 double FrictionLaw::kinetic(double slip_speed) const {
   if (kind == FrictionLawKind::kCoulomb) return mu_k;
   double mu = mu_k + beta * slip_speed;

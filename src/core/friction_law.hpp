@@ -8,9 +8,16 @@
 // linear law). Standard library only.
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 namespace fl {
 
 enum class FrictionLawKind { kCoulomb, kStribeck };
+
+// "coulomb", "stribeck"; and the kind a name stands for, or nullopt.
+const char* friction_law_kind_name(FrictionLawKind kind);
+std::optional<FrictionLawKind> friction_law_kind_from_name(std::string_view name);
 
 struct FrictionLaw {
   FrictionLawKind kind = FrictionLawKind::kCoulomb;

@@ -39,7 +39,8 @@ void check_friction_law(const FrictionLaw& law, double max_slip) {
                  describe("the static limit mu_s must be finite and >= mu_k = ", law.mu_k, ", got ",
                           law.mu_s));
   if (law.kind == FrictionLawKind::kCoulomb) return;
-  check_positive(law.v_s, "the Stribeck speed v_s", "m/s");
+  // Without a static excess the Stribeck term is zero and v_s is not used (a linear law).
+  if (law.mu_s != law.mu_k) check_positive(law.v_s, "the Stribeck speed v_s", "m/s");
   require_domain(std::isfinite(law.beta),
                  describe("the linear slope beta must be finite, got ", law.beta, " s/m"));
   // With beta >= 0, mu(s) >= mu_k > 0. With beta < 0 both terms fall, so the least mu on

@@ -28,8 +28,9 @@ struct PlateOnRollers {
 };
 
 // Refuses a law that means nothing at slip speeds in [0, max_slip]: a non-finite parameter,
-// mu_k <= 0, mu_s < mu_k, v_s <= 0 (stribeck), or a kinetic coefficient <= 0 somewhere in
-// [0, max_slip] (a falling linear slope beta < 0 reaches zero at mu_k / |beta| and beyond).
+// mu_k <= 0, mu_s < mu_k, v_s <= 0 (stribeck with mu_s > mu_k), or a kinetic coefficient <= 0
+// somewhere in [0, max_slip] (a falling linear slope beta < 0 reaches zero at mu_k / |beta| and
+// beyond).
 void check_friction_law(const FrictionLaw& law, double max_slip);
 
 // Refuses a plate that means nothing: l <= 0, h_c < 0, g <= 0, or a non-finite value.

@@ -93,21 +93,21 @@ void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
   if (!persists && after > 0.0) persists = rig.rate(after) >= 0.0;
   if (persists) {
     if (std::sqrt(std::max(swing2, 0.0)) >= rig.tipping) {
-      out.regime = FrictionRegime::kTips;
+      out.regime = Regime::kTips;
       out.tip_time = out.stick_time;
       return;
     }
-    out.regime = FrictionRegime::kStickSlip;
+    out.regime = Regime::kStickSlip;
     return;
   }
   const std::optional<double> root =
       after > 0.0 ? rig.first_root(after, 1e-4 * after) : std::nullopt;
   if (root && rig.rate(*root * 0.999) > 0.0) {
     out.settled_amplitude = root;
-    out.regime = FrictionRegime::kFullSlip;
+    out.regime = Regime::kOscillates;
     return;
   }
-  out.regime = FrictionRegime::kDecays;
+  out.regime = Regime::kDecays;
 }
 
 // A slip-dependent law, the plate slipping throughout its first cycle (A < v_r / Omega).
@@ -115,7 +115,7 @@ void slipping_start(const Rig& rig, double amplitude, double horizon, double tol
                     FrictionRegimePrediction& out) {
   const double g = out.growth_rate;
   if (g == 0.0) {
-    out.regime = FrictionRegime::kFullSlip;
+    out.regime = Regime::kOscillates;
     return;
   }
   const double ceiling = std::min(rig.reach, rig.tipping);
@@ -127,19 +127,18 @@ void slipping_start(const Rig& rig, double amplitude, double horizon, double tol
   if (root) {
     out.settled_amplitude = root;
     const bool moving = std::isfinite(horizon) && changes_in_horizon;
-    out.regime = moving ? (g > 0.0 ? FrictionRegime::kGrows : FrictionRegime::kDecays)
-                        : FrictionRegime::kFullSlip;
+    out.regime = moving ? (g > 0.0 ? Regime::kGrows : Regime::kDecays) : Regime::kOscillates;
     return;
   }
   if (g < 0.0) {
-    out.regime = changes_in_horizon ? FrictionRegime::kDecays : FrictionRegime::kFullSlip;
+    out.regime = changes_in_horizon ? Regime::kDecays : Regime::kOscillates;
     return;
   }
   const double time = rig.travel_time(amplitude, ceiling);
   if (rig.tipping <= rig.reach) {
     out.tip_time = time;
     if (time <= horizon) {
-      out.regime = FrictionRegime::kTips;
+      out.regime = Regime::kTips;
       return;
     }
   } else {
@@ -149,30 +148,10 @@ void slipping_start(const Rig& rig, double amplitude, double horizon, double tol
       return;
     }
   }
-  out.regime = changes_in_horizon ? FrictionRegime::kGrows : FrictionRegime::kFullSlip;
+  out.regime = changes_in_horizon ? Regime::kGrows : Regime::kOscillates;
 }
 
 }  // namespace
-
-const char* friction_regime_name(FrictionRegime regime) {
-  switch (regime) {
-    case FrictionRegime::kFullSlip:
-      return "full slip";
-    case FrictionRegime::kGrows:
-      return "grows";
-    case FrictionRegime::kDecays:
-      return "decays";
-    case FrictionRegime::kClipped:
-      return "clipped";
-    case FrictionRegime::kStickSlip:
-      return "stick-slip";
-    case FrictionRegime::kTips:
-      return "tips";
-    case FrictionRegime::kNoRestoringForce:
-      return "no restoring force";
-  }
-  return "unknown";
-}
 
 FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
                                                  const PlateOnRollers& plate, double surface_speed,
@@ -192,7 +171,7 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
   out.break_offset = stick_break_offset(law, plate, surface_speed);
   out.tipping_offset = 0.5 * plate.spacing - mu * plate.h_c;
   if (!has_restoring_force(plate.spacing, mu, plate.h_c)) {
-    out.regime = FrictionRegime::kNoRestoringForce;
+    out.regime = Regime::kNoRestoringForce;
     return out;
   }
   out.motion = linearised_motion(law, plate, surface_speed);
@@ -205,7 +184,7 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
                 out.break_offset};
   out.margin = rig.reach / amplitude;
   if (amplitude >= out.tipping_offset) {
-    out.regime = FrictionRegime::kTips;
+    out.regime = Regime::kTips;
     out.tip_time = 0.0;
     return out;
   }
@@ -214,17 +193,17 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
     // Coulomb: the amplitude is conserved while slipping; a plate that reaches v_r sticks once
     // and then runs the stick-slip (or clipped) cycle.
     if (out.margin > 1.0) {
-      out.regime = FrictionRegime::kFullSlip;
+      out.regime = Regime::kOscillates;
       return out;
     }
     out.stick_time = std::asin(out.margin) / out.motion.omega;
     if (std::hypot(out.break_offset, rig.reach) >= out.tipping_offset) {
-      out.regime = FrictionRegime::kTips;
+      out.regime = Regime::kTips;
       out.tip_time = out.stick_time;
       return out;
     }
     out.cycle = stick_slip_cycle(law, plate, surface_speed);
-    out.regime = out.cycle->clipped ? FrictionRegime::kClipped : FrictionRegime::kStickSlip;
+    out.regime = out.cycle->clipped ? Regime::kClipped : Regime::kStickSlip;
     return out;
   }
 

@@ -15,29 +15,16 @@
 
 #include "core/friction_law.hpp"
 #include "core/friction_oscillator.hpp"
+#include "core/regime.hpp"
 #include "core/stick_slip_cycle.hpp"
 
 namespace fl {
 
-enum class FrictionRegime {
-  kFullSlip,          // both rollers slip throughout, at a steady amplitude (the start's, or
-                      // settled_amplitude: a slip cycle where gamma(A) = 0)
-  kGrows,             // both rollers slip; the amplitude grows by more than the tolerance within
-                      // the horizon, but neither reaches a roller's speed nor tips in it
-  kDecays,            // the amplitude decays: the plate comes to rest at the centre (after a
-                      // stick if it started above v_r / Omega), or within the horizon it shrinks
-                      // by more than the tolerance
-  kClipped,           // one stick, then the amplitude v_r / Omega with the period unchanged
-  kStickSlip,         // stick phases at +-v_r and slip arcs alternate for good
-  kTips,              // a normal force reaches zero
-  kNoRestoringForce,  // l <= 2 mu(v_r) h_c
-};
-
-// "full slip", "grows", "decays", "clipped", "stick-slip", "tips", "no restoring force".
-const char* friction_regime_name(FrictionRegime regime);
-
 struct FrictionRegimePrediction {
-  FrictionRegime regime = FrictionRegime::kFullSlip;
+  // oscillates (full slip at a steady amplitude: the start's, or settled_amplitude, a slip
+  // cycle where gamma(A) = 0), grows, decays (to a smaller cycle, or to rest at the centre after a
+  // stick if it started above v_r / Omega), clipped, stick-slip, tips or no restoring force.
+  Regime regime = Regime::kOscillates;
   LinearisedMotion motion;      // mu(v_r), mu'(v_r), Omega, gamma at A -> 0, periods (not set
                                 // without a restoring force)
   double margin = 0.0;          // v_r / (A Omega)

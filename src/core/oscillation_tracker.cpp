@@ -105,11 +105,14 @@ void OscillationTracker::add(double t, double x, double v) {
   have_previous_ = true;
 }
 
-std::optional<LinearFit> OscillationTracker::period() const {
-  if (crossings_.size() < 3) return std::nullopt;
-  std::vector<double> index(crossings_.size());
+std::optional<LinearFit> OscillationTracker::period(double since) const {
+  std::vector<double> times;
+  for (const double t : crossings_)
+    if (t >= since) times.push_back(t);
+  if (times.size() < 3) return std::nullopt;
+  std::vector<double> index(times.size());
   for (std::size_t i = 0; i < index.size(); ++i) index[i] = 0.5 * static_cast<double>(i);
-  return fit_line(index, crossings_);
+  return fit_line(index, times);
 }
 
 std::optional<double> OscillationTracker::amplitude_drift_per_period() const {

@@ -34,8 +34,9 @@ class OscillationTracker {
   const std::vector<double>& turning_times() const { return turning_times_; }
 
   // Period from a straight-line fit of crossing time against half-period index (needs at least
-  // three crossings), with its standard error. nullopt before that.
-  std::optional<LinearFit> period() const;
+  // three crossings), with its standard error. nullopt before that. Only the crossings at or
+  // after `since` [s] count (the oscillation after a stick clipped it).
+  std::optional<LinearFit> period(double since = 0.0) const;
 
   // Relative change of the amplitude per period: slope of amplitude(t) times T over the first
   // amplitude (needs at least two turning points and a period).

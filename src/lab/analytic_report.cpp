@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "core/friction_oscillator.hpp"
+#include "core/stick_slip_cycle.hpp"
 #include "io/json_value.hpp"
 
 namespace fl {
@@ -19,6 +21,30 @@ void complete(AnalyticReport& r) {
       s.amplitude, s.roller_radius, s.spacing, r.mu_k, s.h_c, s.gravity);
   r.slip_margin = fl::slip_margin(s.roller_speed, s.roller_radius, s.amplitude, s.spacing, r.mu_k,
                                   s.h_c, s.gravity);
+  // The law's closed forms; a law they refuse here is said, not guessed.
+  AnalyticLaw a;
+  a.law.kind = s.law;
+  a.law.mu_k = r.mu_k;
+  a.law.mu_s = s.mu_s.value_or(r.mu_k);
+  a.law.v_s = s.v_s.value_or(0.0);
+  a.law.beta = s.beta;
+  a.surface_speed = s.roller_speed * s.roller_radius;
+  const PlateOnRollers plate{s.spacing, s.h_c, s.gravity};
+  try {
+    a.mu_at_surface_speed = effective_mu(a.law, a.surface_speed);
+    a.full_slip_roller_speed =
+        fl::full_slip_roller_speed(a.law, plate, s.amplitude, s.roller_radius);
+    a.break_offset = stick_break_offset(a.law, plate, a.surface_speed);
+    if (a.law.depends_on_slip())
+      a.linearised = linearised_motion(a.law, plate, a.surface_speed);
+    else if (a.surface_speed <
+             s.amplitude * sliding_angular_frequency(a.law, plate, a.surface_speed))
+      a.cycle = stick_slip_cycle(a.law, plate, a.surface_speed);
+    a.prediction = predict_friction_regime(a.law, plate, a.surface_speed, s.amplitude);
+    r.friction_law = a;
+  } catch (const DomainError& e) {
+    r.friction_law_refused = e.what();
+  }
 }
 
 // mu_k from a measured period, through both formulas; the thick one's is the report's.
@@ -100,6 +126,40 @@ nlohmann::json analytic_json(const AnalyticReport& r) {
   out["roller_speed_rad_s"] = s.roller_speed;
   out["roller_speed_for_full_slip_rad_s"] = json_or_null(r.roller_speed_for_full_slip);
   out["slip_margin"] = json_or_null(r.slip_margin);
+  if (r.friction_law) {
+    const AnalyticLaw& a = *r.friction_law;
+    nlohmann::json law{
+        {"law", friction_law_kind_name(a.law.kind)},
+        {"mu_k", a.law.mu_k},
+        {"mu_s", a.law.mu_s},
+        {"v_s_m_s", a.law.kind == FrictionLawKind::kStribeck && a.law.mu_s != a.law.mu_k
+                        ? nlohmann::json(a.law.v_s)
+                        : nlohmann::json(nullptr)},
+        {"beta_s_m", a.law.beta},
+        {"surface_speed_m_s", a.surface_speed},
+        {"mu_at_surface_speed", a.mu_at_surface_speed},
+        {"full_slip_roller_speed_rad_s", a.full_slip_roller_speed},
+        {"stick_break_offset_m", a.break_offset},
+        {"regime", regime_name(a.prediction.regime)},
+        {"stick_time_s", json_or_null(a.prediction.stick_time)},
+        {"tip_time_s", json_or_null(a.prediction.tip_time)},
+        {"settled_amplitude_m", json_or_null(a.prediction.settled_amplitude)}};
+    law["stick_slip_cycle"] = a.cycle
+                                  ? nlohmann::json{{"clipped", a.cycle->clipped},
+                                                   {"period_s", a.cycle->period},
+                                                   {"amplitude_m", a.cycle->amplitude},
+                                                   {"stick_duration_s", a.cycle->stick_duration},
+                                                   {"slip_duration_s", a.cycle->slip_duration}}
+                                  : nlohmann::json(nullptr);
+    law["growth_rate_per_s"] =
+        a.linearised ? nlohmann::json(a.linearised->gamma) : nlohmann::json(nullptr);
+    law["linearised_period_s"] =
+        a.linearised ? nlohmann::json(a.linearised->period) : nlohmann::json(nullptr);
+    out["friction_law"] = law;
+  } else {
+    out["friction_law"] = nullptr;
+  }
+  out["friction_law_refused"] = json_or_null(r.friction_law_refused);
   return out;
 }
 

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/analytic_model.hpp"
+#include "core/friction_law.hpp"
+#include "core/friction_regime.hpp"
 #include "core/paper_table.hpp"
 
 namespace fl {
@@ -22,6 +24,24 @@ struct AnalyticSetUp {
   double roller_radius = 0.010;  // [m]
   double roller_speed = 0.0;     // [rad/s]
   double amplitude = 0.020;      // A, for the slip margin [m]
+  // The friction law beyond mu_k (its mu_k is the report's): coulomb with a static limit mu_s
+  // (default mu_k), or stribeck with mu_s, v_s and beta (core/friction_law.hpp).
+  FrictionLawKind law = FrictionLawKind::kCoulomb;
+  std::optional<double> mu_s;
+  std::optional<double> v_s;  // [m/s]
+  double beta = 0.0;          // [s/m]
+};
+
+// The friction law's closed forms at the rollers' surface speed (docs/friction-laws.md).
+struct AnalyticLaw {
+  FrictionLaw law;
+  double surface_speed = 0.0;                  // v_r [m/s]
+  double mu_at_surface_speed = 0.0;            // mu(v_r), the effective mu_k
+  double full_slip_roller_speed = 0.0;         // [rad/s], the slip threshold for A with this law
+  double break_offset = 0.0;                   // x_b: a stuck plate breaks free there [m]
+  std::optional<StickSlipCycle> cycle;         // a law without slip dependence, below threshold
+  std::optional<LinearisedMotion> linearised;  // growth rate and period about v_r
+  FrictionRegimePrediction prediction;         // where the motion from amplitude A ends up
 };
 
 struct AnalyticReport {
@@ -47,6 +67,9 @@ struct AnalyticReport {
   std::optional<double> tipping_amplitude;           // [m]
   std::optional<double> roller_speed_for_full_slip;  // [rad/s] at the amplitude
   std::optional<double> slip_margin;                 // at the roller speed
+  // With a restoring force, and a law whose closed forms have a meaning here.
+  std::optional<AnalyticLaw> friction_law;
+  std::optional<std::string> friction_law_refused;  // why not, when they have none
 };
 
 AnalyticReport analytic_for_mu_k(const AnalyticSetUp& set_up, double mu_k);

@@ -85,12 +85,12 @@ Scene with_mu_k(const Scene& row_scene, double mu_k, std::optional<double> spaci
 }
 
 bool oscillates(const Simulation& s) {
-  return !s.failure && s.regime == Regime::kOscillates && s.period && *s.period > 0.0;
+  return !s.failure && s.regime && regime_is_harmonic(*s.regime) && s.period && *s.period > 0.0;
 }
 
 std::string no_oscillation_reason(const Simulation& s) {
   if (s.failure) return "the run failed: " + *s.failure;
-  if (s.regime != Regime::kOscillates)
+  if (!s.regime || !regime_is_harmonic(*s.regime))
     return "the simulated plate " +
            (!s.regime ? std::string("did not oscillate")
                       : "'" + std::string(regime_name(*s.regime)) + "'") +

@@ -11,6 +11,7 @@
 #include "core/oscillation_tracker.hpp"
 #include "lab/hall_estimator.hpp"
 #include "lab/regime_monitor.hpp"
+#include "lab/regime_theory.hpp"
 
 namespace fl {
 namespace {
@@ -32,6 +33,26 @@ std::optional<std::string> cross_check(const EstimatorReport& e, double trajecto
       "{:+.4f} %, more than its uncertainty allows ({:.4f} %)",
       e.period, trajectory_period, 100.0 * difference / trajectory_period,
       100.0 * bound / trajectory_period);
+}
+
+// The friction law's closed forms for a regime that has numbers (a clip, a stick-slip cycle, a
+// growth rate), to be held against the run's.
+void theory_numbers(const CompiledRig& rig, RunSummary& out) {
+  const TheoryRegime theory = regime_from_theory(rig);
+  out.regime_theory = theory.regime;
+  if (!theory.prediction) return;
+  const FrictionRegimePrediction& p = *theory.prediction;
+  if (p.cycle) {
+    if (p.cycle->clipped) {
+      out.amplitude_clipped_theory = p.cycle->amplitude;
+    } else {
+      out.stick_slip_period_theory = p.cycle->period;
+      out.stick_slip_amplitude_theory = p.cycle->amplitude;
+      out.stick_duration_theory = p.cycle->stick_duration;
+    }
+  }
+  if (p.regime == Regime::kGrows || p.regime == Regime::kDecays)
+    out.growth_rate_theory = p.growth_rate;
 }
 
 // Running means and extremes of the drive's state.
@@ -189,10 +210,6 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
     out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
   }
 
-  if (const auto p = tracker.period()) {
-    out.period_trajectory = p->slope;
-    out.period_trajectory_err = p->slope_std_error;
-  }
   if (!tracker.turning_amplitudes().empty()) {
     out.amplitude_start = tracker.turning_amplitudes().front();
     out.amplitude_end = tracker.turning_amplitudes().back();
@@ -208,6 +225,33 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
   out.regime = finding.regime;
   out.regime_since = finding.since;
   out.regime_evidence = finding.evidence;
+  // A clipped oscillation's period is read after its last stick.
+  double harmonic_since = 0.0;
+  if (finding.motion) {
+    const MotionFinding& m = *finding.motion;
+    if (m.regime == Regime::kClipped) {
+      out.clip_time = m.clip_time;
+      out.amplitude_before_clip = m.amplitude_before;
+      out.amplitude_clipped = m.amplitude_after;
+      harmonic_since = m.slipping_since.value_or(0.0);
+    } else if (m.regime == Regime::kStickSlip) {
+      out.stick_slip_period = m.cycle_period;
+      out.stick_slip_amplitude = m.cycle_amplitude;
+      out.stick_duration = m.stick_duration;
+    } else if (m.regime == Regime::kGrows || m.regime == Regime::kDecays) {
+      out.growth_rate = m.growth_rate;
+      if (m.growth_rate && *m.growth_rate != 0.0)
+        out.e_folding_time = 1.0 / std::fabs(*m.growth_rate);
+      harmonic_since = m.since;
+    }
+    if (m.regime == Regime::kClipped || m.regime == Regime::kStickSlip ||
+        m.regime == Regime::kGrows || m.regime == Regime::kDecays)
+      theory_numbers(rig, out);
+  }
+  if (const auto p = tracker.period(harmonic_since)) {
+    out.period_trajectory = p->slope;
+    out.period_trajectory_err = p->slope_std_error;
+  }
   if (out.estimator && out.period_trajectory)
     out.estimator_disagreement = cross_check(*out.estimator, *out.period_trajectory);
 

@@ -12,6 +12,9 @@ namespace {
 constexpr double kStickRatio = 5e-3;
 // A normal force below this fraction of the plate's weight means the plate has lifted off.
 constexpr double kLiftOffFraction = 1e-3;
+// Rollers whose surfaces move on average at less than this fraction of the speed set, over the
+// last quarter of the run, have stalled.
+constexpr double kStallFraction = 0.1;
 // The first steps settle the resting contact.
 constexpr int kSettleSteps = 3;
 
@@ -26,7 +29,8 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
     : scene_(rig.scene),
       mass_(rig.plate.mass),
       inertia_(rig.plate.inertia_pitch),
-      h_c_(rig.plate.h_c) {
+      h_c_(rig.plate.h_c),
+      slip_dependent_(rig.friction.depends_on_slip()) {
   const Scene& scene = rig.scene;
   const double plate_mass = mass_;
   surface_speed_ = rig.roller_speed_nominal * scene.rollers.radius;
@@ -41,6 +45,7 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   start_abs_x_ = std::fabs(scene.plate.offset);
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
+  tracker_.add(0.0, scene.plate.offset, scene.plate.velocity);
 }
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
@@ -103,6 +108,8 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   }
 
   // Diagnosis.
+  tracker_.add(t, s.x, s.vx);
+  last_t_ = t;
   if (!first_ && ((previous_x_ < 0.0 && s.x >= 0.0) || (previous_x_ > 0.0 && s.x <= 0.0)))
     ++crossings_;
   if (std::fabs(s.x) > max_abs_x_) {
@@ -122,14 +129,16 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
       std::fabs(s.x) > 1e-6) {
     const double friction = contacts[0].friction_force + contacts[1].friction_force;
-    if (friction * s.x > 0.0) {
+    // A plate held at rest feels no net friction but the solver's round-off: not a direction.
+    const bool held = contacts[0].stuck && contacts[1].stuck;
+    if (!held && friction * s.x > 0.0) {
       if (friction_away_ == 0) {
         away_first_t_ = t;
         away_first_x_ = s.x;
         away_first_force_ = friction;
       }
       ++friction_away_;
-    } else if (friction * s.x < 0.0) {
+    } else if (!held && friction * s.x < 0.0) {
       ++friction_toward_;
     }
   }
@@ -140,17 +149,29 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     const double speed = std::fabs(surface[i]);
     const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
     slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
-    if (ratio < kStickRatio && !stick_since_ && contacts[i].touching) {
-      stick_since_ = t;
-      stick_roller_ = i;
-      stick_speed_ = s.vx;
-      stick_surface_ = surface[i];
-    }
     if (contacts[i].normal_force < kLiftOffFraction * weight && !tip_since_) {
       tip_since_ = t;
       tip_roller_ = i;
       tip_force_ = contacts[i].normal_force;
     }
+  }
+  const double surface_mean = 0.5 * (std::fabs(surface[0]) + std::fabs(surface[1]));
+  if (surface_mean > kStallFraction * surface_speed_) turning_until_ = t;
+  if (t >= 0.75 * scene_.world.duration) {
+    late_surface_sum_ += surface_mean;
+    ++late_steps_;
+  }
+  // Stick episodes: a stretch of steps in which the plate is held to one roller's surface.
+  const int stuck_roller = contacts[0].stuck ? 0 : (contacts[1].stuck ? 1 : -1);
+  StickEpisode* open = !sticks_.empty() && sticks_.back().open ? &sticks_.back() : nullptr;
+  if (open && open->roller != stuck_roller) {
+    open->open = false;
+    open = nullptr;
+  }
+  if (stuck_roller >= 0) {
+    if (!open) sticks_.push_back({stuck_roller, t, t, 0, true});
+    sticks_.back().end = t;
+    ++sticks_.back().steps;
   }
   return std::nullopt;
 }
@@ -243,20 +264,40 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = "the rollers do not turn: friction holds the plate";
     return f;
   }
-  if (stick_since_) {
+  // Rollers that barely turn over the last quarter of the run (a motor stalled by the plate's
+  // friction): friction holds the plate to them.
+  if (late_steps_ > 0 && late_surface_sum_ / late_steps_ < kStallFraction * surface_speed_) {
     f.regime = Regime::kSticks;
-    f.since = *stick_since_;
+    f.since = turning_until_;
     f.evidence = fmt::format(
-        "the plate's speed {:.4f} m/s reached roller {}'s surface speed {:.4f} "
-        "m/s at t = {:.4f} s: the plate stuck to it",
-        stick_speed_, stick_roller_, stick_surface_, *stick_since_);
+        "the rollers stalled at t = {:.4f} s: over the last quarter of the run their surfaces "
+        "moved at {:.3g} m/s "
+        "on average, {:.1f} % of the {:.3g} m/s set; friction holds the plate to them (it rests "
+        "at x = {:+.2f} mm)",
+        turning_until_, late_surface_sum_ / late_steps_,
+        100.0 * late_surface_sum_ / late_steps_ / surface_speed_, surface_speed_,
+        previous_x_ * 1e3);
     return f;
   }
-  f.regime = Regime::kOscillates;
-  f.evidence = fmt::format(
-      "both rollers slipped throughout (the plate's speed stayed at least "
-      "{:.1f} % of the surface speed away from each roller's)",
-      100.0 * slip_ratio_min_);
+  MotionEvidence evidence;
+  evidence.sticks = sticks_;
+  evidence.crossings = tracker_.crossings();
+  evidence.turning_times = tracker_.turning_times();
+  evidence.turning_amplitudes = tracker_.turning_amplitudes();
+  evidence.amplitude_start = start_abs_x_;
+  evidence.duration = last_t_;
+  evidence.time_step = scene_.world.time_step;
+  evidence.slip_dependent = slip_dependent_;
+  MotionFinding motion = diagnose_motion(evidence);
+  f.regime = motion.regime;
+  f.since = motion.since;
+  f.evidence = motion.evidence;
+  if (motion.regime == Regime::kOscillates && sticks_.empty())
+    f.evidence = fmt::format(
+        "both rollers slipped throughout (the plate's speed stayed at least "
+        "{:.1f} % of the surface speed away from each roller's)",
+        100.0 * slip_ratio_min_);
+  f.motion = std::move(motion);
   return f;
 }
 

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "core/oscillation_tracker.hpp"
 #include "core/regime.hpp"
+#include "lab/motion_diagnosis.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
 
@@ -18,6 +20,9 @@ struct RegimeFinding {
   Regime regime = Regime::kOscillates;
   double since = 0.0;    // s, when the evidence first appeared (0 for a clean oscillation)
   std::string evidence;  // which force, which speed, which quantity
+  // The trajectory's numbers (clip, stick-slip cycle, growth rate), when the plate stayed on both
+  // rollers with a restoring force and the motion itself was read (lab/motion_diagnosis.hpp).
+  std::optional<MotionFinding> motion;
 };
 
 // A guard that fired: the run stops here.
@@ -50,6 +55,7 @@ class RegimeMonitor {
  private:
   const Scene& scene_;
   double mass_, inertia_, h_c_;
+  bool slip_dependent_;
   double surface_speed_;  // m/s, the rollers' top without load (for the bounds)
   double energy_bound_;   // J
   double penetration_bound_;
@@ -66,10 +72,14 @@ class RegimeMonitor {
   double x_at_max_ = 0.0;
 
   double slip_ratio_min_ = 1e300;
-  std::optional<double> stick_since_;
-  int stick_roller_ = -1;
-  double stick_speed_ = 0.0;
-  double stick_surface_ = 0.0;
+  // The stick episodes the contacts reported, and the oscillation's crossings and turning points.
+  std::vector<StickEpisode> sticks_;
+  OscillationTracker tracker_;
+  double last_t_ = 0.0;
+  // The rollers' mean surface speed over the last quarter of the run.
+  double late_surface_sum_ = 0.0;
+  long long late_steps_ = 0;
+  double turning_until_ = 0.0;  // s, the last step the rollers turned above the stall bound
   // Steps on both rollers whose net friction pushed the plate away from / toward the centre.
   long long friction_away_ = 0;
   long long friction_toward_ = 0;

@@ -24,6 +24,27 @@ std::string summary_text(const RunSummary& s) {
                    s.regime_since > 0.0 ? fmt::format(" since t = {:.4f} s", s.regime_since) : "",
                    s.regime_evidence));
   if (s.failure) line(fmt::format("  STOPPED                {}", *s.failure));
+  // The regime's own numbers, beside the closed forms' (null where a number was not measured).
+  const auto value = [](const std::optional<double>& v, double scale, const char* unit) {
+    return v ? fmt::format("{:.5g} {}", *v * scale, unit) : std::string("not measured");
+  };
+  const auto theory = [](const std::optional<double>& v, double scale, const char* unit) {
+    return v ? fmt::format(" (theory {:.5g} {})", *v * scale, unit) : std::string();
+  };
+  if (s.clip_time)
+    line(fmt::format("  clipped                at t = {:.4f} s: amplitude {} -> {}{}", *s.clip_time,
+                     value(s.amplitude_before_clip, 1e3, "mm"),
+                     value(s.amplitude_clipped, 1e3, "mm"),
+                     theory(s.amplitude_clipped_theory, 1e3, "mm")));
+  if (s.regime == Regime::kStickSlip)
+    line(fmt::format(
+        "  stick-slip cycle       T = {}{}, amplitude {}{}, sticks of {}{}",
+        value(s.stick_slip_period, 1.0, "s"), theory(s.stick_slip_period_theory, 1.0, "s"),
+        value(s.stick_slip_amplitude, 1e3, "mm"), theory(s.stick_slip_amplitude_theory, 1e3, "mm"),
+        value(s.stick_duration, 1.0, "s"), theory(s.stick_duration_theory, 1.0, "s")));
+  if (s.growth_rate)
+    line(fmt::format("  amplitude e-folding    {:+.5g} /s{}, every {:.4g} s", *s.growth_rate,
+                     theory(s.growth_rate_theory, 1.0, "/s"), s.e_folding_time.value_or(0.0)));
   if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));

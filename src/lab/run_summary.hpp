@@ -71,6 +71,24 @@ struct RunSummary {
   Regime regime = Regime::kOscillates;
   double regime_since = 0.0;  // s
   std::string regime_evidence;
+  // What the trajectory showed in numbers (lab/motion_diagnosis.hpp); null where the regime has
+  // none (a full-slip oscillation has none of them).
+  std::optional<double> clip_time;              // s, clipped: when the first stick began
+  std::optional<double> amplitude_before_clip;  // m, clipped
+  std::optional<double> amplitude_clipped;      // m, clipped: the steady amplitude after it
+  std::optional<double> stick_slip_period;      // s, stick-slip: the cycle's period
+  std::optional<double> stick_slip_amplitude;   // m, stick-slip
+  std::optional<double> stick_duration;         // s, stick-slip: one stick phase
+  std::optional<double> growth_rate;            // 1/s, grows or decays: d ln A / dt, measured
+  std::optional<double> e_folding_time;         // s, grows or decays: 1 / |growth_rate|
+  // The same numbers from the friction law's closed forms (lab/regime_theory.hpp), where the run
+  // has them to be held against.
+  std::optional<Regime> regime_theory;                // when the regime has numbers above
+  std::optional<double> amplitude_clipped_theory;     // m, v_r / Omega
+  std::optional<double> stick_slip_period_theory;     // s
+  std::optional<double> stick_slip_amplitude_theory;  // m
+  std::optional<double> stick_duration_theory;        // s
+  std::optional<double> growth_rate_theory;           // 1/s, averaged over the start's cycle
 
   // The headline, decided by the run: a period only for a harmonic oscillation. `period` is the
   // rig's estimator's mean period from the Hall signal; mu_k comes from it, or from the
@@ -114,7 +132,8 @@ struct RunSummary {
   double real_time_factor = 0.0;
   double steps_per_second = 0.0;
 
-  bool harmonic() const { return regime == Regime::kOscillates; }
+  // An oscillation whose period the paper's formula reads (core/regime.hpp).
+  bool harmonic() const { return regime_is_harmonic(regime); }
 };
 
 }  // namespace fl

@@ -1,5 +1,7 @@
 #include "physics/drivetrain.hpp"
 
+#include <cmath>
+
 namespace fl {
 
 Drivetrain::Drivetrain(const CompiledRig& rig)
@@ -8,7 +10,8 @@ Drivetrain::Drivetrain(const CompiledRig& rig)
   omega_ = drive_.motor_sense * motor_.duty * motor_.no_load_speed;
 }
 
-void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques) {
+void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques,
+                         double holding_torque) {
   const double c = motor_.stall_torque / motor_.no_load_speed;
   // The load, seen at the motor (power balance: tau_motor omega_m = tau_roller omega_roller).
   const std::vector<double>& u = drive_.shaft_ratios;
@@ -17,7 +20,14 @@ void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques)
   const double sign = drive_.motor_sense;
   const double inertia = drive_.inertia_at_motor;
   const double drive = sign * motor_.duty * motor_.stall_torque;
-  const double next = (inertia * omega_ + dt * (drive + load)) / (inertia + dt * c);
+  if (omega_ == 0.0 && std::fabs(drive) <= holding_torque) {
+    // Held at rest by the plate's static friction: the motor stalls.
+    motor_torque_ = sign * drive;
+    return;
+  }
+  double next = (inertia * omega_ + dt * (drive + load)) / (inertia + dt * c);
+  // Friction that brings the train to rest within the step stops it there.
+  if (omega_ != 0.0 && next * omega_ < 0.0) next = 0.0;
   motor_torque_ = sign * (drive - c * next);
   omega_ = next;
   theta_ += omega_ * dt;

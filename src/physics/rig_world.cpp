@@ -228,10 +228,15 @@ void RigWorld::step() {
   if (impl_->drivetrain) {
     // The train advances under the torques the plate's friction put on the rollers in the last
     // step: -a F_i about y for a friction force F_i (along x) on the plate at roller i's top.
+    // The most the plate's static friction holds the rollers with, seen at the motor.
     const std::array<RollerContact, 2>& last = impl_->contacts;
     const double a = impl_->scene.rollers.radius;
+    const std::vector<double>& u = impl_->rig.drive->shaft_ratios;
+    const double holding = impl_->rig.friction.mu_s * a *
+                           (std::fabs(u[0]) * std::max(last[0].normal_force, 0.0) +
+                            std::fabs(u[1]) * std::max(last[1].normal_force, 0.0));
     impl_->drivetrain->advance(impl_->dt,
-                               {-a * last[0].friction_force, -a * last[1].friction_force});
+                               {-a * last[0].friction_force, -a * last[1].friction_force}, holding);
     impl_->roller_omega = impl_->drivetrain->roller_speeds();
   }
   impl_->world.stepSimulation(impl_->dt, 0);
@@ -239,6 +244,7 @@ void RigWorld::step() {
   std::array<ContactFriction::RollerImpulses, 2> impulses{};
   impl_->contacts = impl_->measure_contacts(impulses);
   impl_->friction->after_step(impulses);
+  for (std::size_t i = 0; i < 2; ++i) impl_->contacts[i].stuck = impl_->friction->stuck()[i];
   ++impl_->steps;
 }
 

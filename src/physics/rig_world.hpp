@@ -30,6 +30,9 @@ struct RollerContact {
   double normal_force = 0.0;    // N, pushing the plate up
   double friction_force = 0.0;  // N, along +x on the plate
   double penetration = 0.0;     // m, deepest, >= 0
+  // The plate held to this roller's surface in the step: pressed, and its friction below the
+  // limit (decided by saturation, physics/contact_friction.hpp).
+  bool stuck = false;
 };
 
 // The motor drive's state (scenes with a `drive`).

@@ -108,12 +108,9 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   n.allow_keys({"law", "mu_k", "mu_s", "v_s", "beta", "temperature"});
   if (auto v = n.find("law")) {
     const std::string law = v->text();
-    if (law == "coulomb")
-      f.law = FrictionLawKind::kCoulomb;
-    else if (law == "stribeck")
-      f.law = FrictionLawKind::kStribeck;
-    else
-      v->fail("expected coulomb or stribeck, found \"" + law + "\"");
+    const std::optional<FrictionLawKind> kind = friction_law_kind_from_name(law);
+    if (!kind) v->fail("expected coulomb or stribeck, found \"" + law + "\"");
+    f.law = *kind;
   }
   for (const char* key : {"v_s", "beta"}) {
     if (auto v = n.find(key); v && f.law != FrictionLawKind::kStribeck)

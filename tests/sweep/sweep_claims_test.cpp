@@ -75,8 +75,10 @@ TEST(SweepClaims, RollerSpeedSweepFindsTheSlipThresholdWithinOneStep) {
       << "found " << found * 30 / std::numbers::pi << " rpm, predicted "
       << predicted * 30 / std::numbers::pi << " rpm, step " << step * 30 / std::numbers::pi
       << " rpm";
-  // Below it the plate sticks; above it the period does not depend on the speed.
-  EXPECT_EQ(rows[first - 1]["regime"], "sticks");
+  // Below it a stick clips the amplitude to v_r / Omega; above it the period does not depend on the
+  // speed.
+  EXPECT_EQ(rows[first - 1]["regime"], "clipped");
+
   for (std::size_t i = first; i < rows.size(); ++i)
     EXPECT_NEAR(rows[i]["period_s"].get<double>() / rows[first]["period_s"].get<double>(), 1.0,
                 1e-4);

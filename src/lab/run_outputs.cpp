@@ -24,6 +24,9 @@ std::string summary_text(const RunSummary& s) {
                    s.regime_since > 0.0 ? fmt::format(" since t = {:.4f} s", s.regime_since) : "",
                    s.regime_evidence));
   if (s.failure) line(fmt::format("  STOPPED                {}", *s.failure));
+  if (s.solver_iterations_raised)
+    line(fmt::format("  solver iterations      {}, raised {}", s.solver_iterations,
+                     *s.solver_iterations_raised));
   if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));

@@ -30,6 +30,14 @@ struct RollerContact {
   double normal_force = 0.0;    // N, pushing the plate up
   double friction_force = 0.0;  // N, along +x on the plate
   double penetration = 0.0;     // m, deepest, >= 0
+  // For judging whether the solver converged (lab/solver_convergence.hpp), at the deepest point:
+  double point_x = 0.0;  // m, where the roller touches the plate, world x
+  double point_z = 0.0;  // m, world z
+  // The speed along the contact normal (out of the roller, > 0) the solver aims the plate's
+  // point at by the step's end [m/s]: its position correction pushes a penetrating point out at
+  // erp depth / dt; a point still apart may close its gap within the step (a negative target).
+  double normal_speed_target = 0.0;
+  bool stuck = false;  // the friction held the plate to the roller (below its limit)
 };
 
 // The motor drive's state (scenes with a `drive`).

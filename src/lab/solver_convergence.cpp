@@ -31,7 +31,9 @@ std::optional<SolverResidual> SolverConvergence::observe(
   // Judged only while the plate rests on both rollers: the load split is what the oscillator
   // needs and what Gauss-Seidel finds slowly. On one roller the plate is lifting off or
   // tumbling, which the monitor reports and which does not converge with the step anyway.
-  if (!contacts[0].touching || !contacts[1].touching) return std::nullopt;
+  // Resting on a roller: a normal force above 1e-3 of the weight (the monitor's lift-off bound).
+  for (const RollerContact& c : contacts)
+    if (!c.touching || !(c.normal_force > 1e-3 * weight_)) return std::nullopt;
   // The contact normal is the plate's bottom face's (its body z axis), the tangent its body x
   // axis, both as they were when the solver ran: at the step's start.
   const double nx = std::sin(before.pitch), nz = std::cos(before.pitch);

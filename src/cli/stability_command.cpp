@@ -38,6 +38,8 @@ nlohmann::json row_json(const StabilityRow& r) {
           {"declared", r.declared ? regime_name(*r.declared) : ""},
           {"found", regime_name(r.found)},
           {"evidence", r.evidence},
+          {"solver_iterations", r.solver_iterations},
+          {"solver_iterations_raised", json_or_null(r.solver_iterations_raised)},
           {"as_expected", r.as_expected},
           {"largest_step_s", json_or_null(r.largest_step)},
           {"step_note", r.step_note},

@@ -12,6 +12,7 @@
 #include "lab/hall_estimator.hpp"
 #include "lab/regime_monitor.hpp"
 #include "lab/regime_theory.hpp"
+#include "lab/solver_convergence.hpp"
 
 namespace fl {
 namespace {
@@ -106,8 +107,10 @@ class DriveStats {
 
 }  // namespace
 
-RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
-                          RunRecording* recording) {
+// One run at the scene's own solver iterations. `unconverged` is set when the convergence check
+// stopped it (the run's failure then says so).
+static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
+                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
   const auto wall_start = std::chrono::steady_clock::now();
   const Scene& scene = rig.scene;
   RunSummary out;
@@ -154,6 +157,7 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
   };
 
   RegimeMonitor monitor(rig);
+  SolverConvergence convergence(rig);
   OscillationTracker tracker;
   PlateState state = world.plate();
   tracker.add(0.0, state.x, state.vx);
@@ -186,6 +190,14 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
     state = world.plate();
     const auto contacts = world.contacts();
     failure = monitor.observe(t, state, contacts, world.roller_surface_speeds());
+    if (!failure) {
+      unconverged = convergence.observe(t, previous, state, contacts);
+      if (unconverged)
+        failure = RunFailure{Regime::kNumericallyFailed, t,
+                             fmt::format("roller {}", unconverged->roller), "normal force",
+                             fmt::format("the contact solver did not converge at {} iterations: {}",
+                                         scene.world.solver_iterations, unconverged->describe())};
+    }
     // What a guard stopped is not recorded: the outputs hold every trustworthy step.
     if (failure) break;
     tracker.add(t, state.x, state.vx);
@@ -277,7 +289,15 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
       out.period = out.estimator->period;
       period_for_mu = out.period;
       out.mu_k_source = PeriodSource::kHallEstimator;
-    } else if (out.estimator || !out.period_trajectory) {
+    } else if (out.estimator) {
+      out.period_withheld = fmt::format(
+          "no period: the rig's estimator accepted none from {} Hall pulse(s) (the magnets may not "
+          "pass the sensor at this amplitude, or the run is too short){}",
+          out.estimator->pulses,
+          out.period_trajectory ? fmt::format("; mu_k comes from the trajectory's period {:.6f} s",
+                                              *out.period_trajectory)
+                                : std::string());
+    } else if (!out.period_trajectory) {
       out.period_withheld =
           "no period: fewer than two turning points were measured; simulate longer";
     }
@@ -289,6 +309,63 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
     }
   }
 
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  out.real_time_factor = out.duration / out.wall_s;
+  out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;
+  return out;
+}
+
+RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
+                          RunRecording* recording) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::optional<SolverResidual> unconverged;
+  RunSummary out = run_once(rig, options, recording, unconverged);
+  if (!unconverged) return out;
+  // The solver did not converge: run again from the start at twice the iterations, up to the cap,
+  // so that the result is exactly a run of the scene at the iterations it ends with. A run that
+  // hands its steps to an observer (a video) has already shown them, and stops instead.
+  const int asked = rig.scene.world.solver_iterations;
+  std::string history;
+  int iterations = asked;
+  double previous_error = 0.0;
+  while (unconverged) {
+    history += fmt::format("{}{} (t = {:.6f} s, a normal force {:.3g} % of the weight off)",
+                           history.empty() ? "" : ", ", iterations, unconverged->time,
+                           100.0 * unconverged->relative());
+    const bool helps = previous_error == 0.0 || unconverged->error < previous_error;
+    previous_error = unconverged->error;
+    if (options.observer || iterations >= kMaxSolverIterations || !helps) {
+      std::string advice;
+      if (options.observer)
+        advice = fmt::format(
+            "this run hands its steps to a video and does not start again: set "
+            "world.solver_iterations to {} or more (a run without video raises it itself)",
+            2 * iterations);
+      else if (!helps)
+        advice = fmt::format(
+            "doubling the iterations did not reduce the error ({}): the step, not the solver, is "
+            "the limit; set a smaller world.time_step (now {:.3g} ms)",
+            history, rig.scene.world.time_step * 1e3);
+      else
+        advice = fmt::format(
+            "raised by doubling up to {} iterations ({}); set world.solver_iterations above {} "
+            "or a smaller world.time_step (now {:.3g} ms)",
+            iterations, history, iterations, rig.scene.world.time_step * 1e3);
+      out.failure = *out.failure + "; " + advice;
+      out.regime_evidence = *out.failure;
+      if (iterations != asked) out.solver_iterations_raised = "from " + history;
+      break;
+    }
+    iterations = std::min(2 * iterations, kMaxSolverIterations);
+    Scene scene = rig.scene;
+    scene.world.solver_iterations = iterations;
+    if (recording != nullptr) *recording = RunRecording{};
+    unconverged.reset();
+    out = run_once(compile_rig(scene), options, recording, unconverged);
+    if (!unconverged)
+      out.solver_iterations_raised = fmt::format(
+          "from {} to {}: the contact solver had not converged at {}", asked, iterations, history);
+  }
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   out.real_time_factor = out.duration / out.wall_s;
   out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;

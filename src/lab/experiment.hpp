@@ -50,6 +50,10 @@ struct RunOptions {
   std::function<void(const StepView&)> observer;
 };
 
+// A run whose contact solver does not converge (lab/solver_convergence.hpp) starts again at twice
+// the solver iterations, up to this; beyond it, it stops with a numerical failure.
+inline constexpr int kMaxSolverIterations = 1280;  // 10 doubled seven times
+
 // Runs a compiled rig for its scene's duration. Never throws for the physics' own trouble: a
 // guard that stops the run is RunSummary::failure.
 RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,

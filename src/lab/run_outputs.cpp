@@ -45,6 +45,9 @@ std::string summary_text(const RunSummary& s) {
   if (s.growth_rate)
     line(fmt::format("  amplitude e-folding    {:+.5g} /s{}, every {:.4g} s", *s.growth_rate,
                      theory(s.growth_rate_theory, 1.0, "/s"), s.e_folding_time.value_or(0.0)));
+  if (s.solver_iterations_raised)
+    line(fmt::format("  solver iterations      {}, raised {}", s.solver_iterations,
+                     *s.solver_iterations_raised));
   if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));

@@ -49,12 +49,14 @@ struct RunSummary {
   std::uint64_t seed = 0;
   double spacing = 0.0;  // m
   double mu_k_set = 0.0;
-  double h_c = 0.0;          // m
-  double plate_mass = 0.0;   // kg
-  double gravity = 0.0;      // m/s^2
-  double temperature = 0.0;  // K, of the rollers (friction.temperature)
-  double time_step = 0.0;    // s
-  int solver_iterations = 0;
+  double h_c = 0.0;           // m
+  double plate_mass = 0.0;    // kg
+  double gravity = 0.0;       // m/s^2
+  double temperature = 0.0;   // K, of the rollers (friction.temperature)
+  double time_step = 0.0;     // s
+  int solver_iterations = 0;  // the iterations the run ended with
+  // When the run raised them (the scene's did not converge): from what, to what, and why.
+  std::optional<std::string> solver_iterations_raised;
   double duration = 0.0;  // s simulated
   long long steps = 0;
   std::string paper_material;            // Table I key, when the scene took mu_k from the paper

@@ -65,6 +65,11 @@ StabilityRow run_stability_case(const Scene& scene) {
   const Trial own = try_step(scene, scene.world.time_step, row.expected);
   row.found = own.summary.regime;
   row.evidence = own.summary.regime_evidence;
+  row.solver_iterations = own.summary.solver_iterations;
+  row.solver_iterations_raised = own.summary.solver_iterations_raised;
+  row.parameters += fmt::format(", {} solver iterations", scene.world.solver_iterations);
+  if (row.solver_iterations != scene.world.solver_iterations)
+    row.parameters += fmt::format(" (raised to {})", row.solver_iterations);
   row.as_expected = row.found == row.expected && (!row.declared || *row.declared == row.expected);
   if (own.summary.period_trajectory && own.summary.period_thick)
     row.period_error = *own.summary.period_trajectory / *own.summary.period_thick - 1.0;

@@ -19,6 +19,9 @@ struct StabilityRow {
   std::optional<Regime> declared;      // the scene's expect.regime
   Regime found = Regime::kOscillates;  // diagnosed by the run at the scene's step
   std::string evidence;
+  int solver_iterations = 0;  // what the run at the scene's step ended with (the scene's, or
+                              // raised when its solver did not converge)
+  std::optional<std::string> solver_iterations_raised;  // from what, to what, why
   bool as_expected = false;  // found == expected (and == declared, if any)
   // Largest step in [1e-5 s, 1/60 s] at which the run is trustworthy: no numerical failure, the
   // expected regime, and (for an oscillation) the period within 0.1 % of the thick formula.

@@ -153,6 +153,8 @@ const std::vector<SummaryField>& summary_fields() {
       {"max_penetration_m", nullptr, [](S s) { return json_or_null(s.max_penetration); }},
       {"time_step_s", "time_step_s", [](S s) { return json_or_null(s.time_step); }},
       {"solver_iterations", nullptr, [](S s) { return json(s.solver_iterations); }},
+      {"solver_iterations_raised", nullptr,
+       [](S s) { return json_or_null(s.solver_iterations_raised); }, true},
       {"duration_s", "duration_s", [](S s) { return json_or_null(s.duration); }},
       {"steps", "steps", [](S s) { return json(s.steps); }},
       {"regime_evidence", "regime_detail", [](S s) { return json(s.regime_evidence); }},

@@ -33,6 +33,7 @@ struct RigWorld::Impl {
   const CompiledRig& rig;
   const Scene& scene;
   double dt = 0.0;
+  double contact_erp = 0.0;  // Bullet's position correction per step (m_erp2)
   long long steps = 0;
   std::array<double, 2> roller_omega{};
   std::array<double, 2> roller_angle{};
@@ -85,6 +86,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   world.setGravity(btVector3(0, 0, -s.world.gravity));
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
+  contact_erp = info.m_erp2;
   // A stuck contact's friction directions are set per point (physics/contact_friction.hpp).
   info.m_solverMode |= SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
 
@@ -187,6 +189,8 @@ RigWorld::Impl::~Impl() {
 std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
     std::array<ContactFriction::RollerImpulses, 2>& impulses) const {
   std::array<RollerContact, 2> out{};
+  std::array<double, 2> deepest{};
+  std::array<bool, 2> seen{};
   const int n = dispatcher.getNumManifolds();
   for (int m = 0; m < n; ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
@@ -209,7 +213,18 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
             out[i].touching || pt.getDistance() <= 0.0 || pt.getAppliedImpulse() > 0.0;
         out[i].normal_force += impulse.z() / dt;
         out[i].friction_force += impulse.x() / dt;
-        out[i].penetration = std::max(out[i].penetration, -static_cast<double>(pt.getDistance()));
+        const double distance = pt.getDistance();
+        if (!seen[i] || -distance > deepest[i]) {
+          seen[i] = true;
+          // Bullet's normal row aims at -distance / dt for a point still apart, and pushes a
+          // penetrating one out at erp2 depth / dt (btSequentialImpulseConstraintSolver).
+          deepest[i] = -distance;
+          const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
+          out[i].point_x = at.x();
+          out[i].point_z = at.z();
+          out[i].normal_speed_target = -distance / dt * (distance > 0.0 ? 1.0 : contact_erp);
+        }
+        out[i].penetration = std::max(out[i].penetration, -distance);
         impulses[static_cast<std::size_t>(i)].add(pt);
       }
     }

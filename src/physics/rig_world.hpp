@@ -33,6 +33,13 @@ struct RollerContact {
   // The plate held to this roller's surface in the step: pressed, and its friction below the
   // limit (decided by saturation, physics/contact_friction.hpp).
   bool stuck = false;
+  // For judging whether the solver converged (lab/solver_convergence.hpp), at the deepest point:
+  double point_x = 0.0;  // m, where the roller touches the plate, world x
+  double point_z = 0.0;  // m, world z
+  // The speed along the contact normal (out of the roller, > 0) the solver aims the plate's
+  // point at by the step's end [m/s]: its position correction pushes a penetrating point out at
+  // erp depth / dt; a point still apart may close its gap within the step (a negative target).
+  double normal_speed_target = 0.0;
 };
 
 // The motor drive's state (scenes with a `drive`).

@@ -1,0 +1,144 @@
+// The contact solver's convergence check (lab/solver_convergence.hpp): against a plate at rest on
+// two rollers whose forces are known in closed form; silent on converged scenes; firing on a
+// starved solver; and the 200 mm plate on rollers 10 mm apart, which at the default iterations
+// used to be diagnosed "tips", now oscillates with the thick-plate period.
+#include "lab/solver_convergence.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/integrator_error.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/experiment.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+Scene scene_file(const std::string& name) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  static const assets::PartCatalog parts =
+      assets::load_part_catalog(assets::part_catalog_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return load_scene_file(
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/" + name, {},
+      []() -> const PaperTable& { return table; },
+      []() -> const assets::PartCatalog& { return parts; });
+}
+
+// The minimal plate on rollers 10 mm apart, released 2 mm off centre (T_thick = 0.243 s).
+Scene close_rollers() {
+  Scene s;
+  s.friction.mu_k = 0.29;
+  s.rollers.spacing = 0.010;
+  s.rollers.radius = 0.004;
+  s.plate.offset = 0.002;
+  s.world.duration = 3.0;
+  return s;
+}
+
+// A plate at rest at the centre on both rollers, level: the balance needs m g / 2 on each. A
+// recorded split of m g / 2 +- d (with the velocities that split gives it through m and I) is
+// off by exactly d; the even split is not off at all.
+TEST(SolverConvergence, FindsTheSplitTheBalanceNeeds) {
+  const CompiledRig rig = compile_rig(close_rollers());
+  const double m = rig.plate.mass, I = rig.plate.inertia_pitch, g = rig.gravity;
+  const double dt = rig.scene.world.time_step, l = rig.spacing, h = rig.plate.h_c;
+  PlateState rest;
+  rest.z = h;
+  std::array<RollerContact, 2> contacts{};
+  for (int i = 0; i < 2; ++i) {
+    contacts[i].touching = true;
+    contacts[i].point_x = (i == 0 ? -0.5 : 0.5) * l;
+    contacts[i].point_z = 0.0;
+  }
+  for (const double d : {0.0, 1e-3 * m * g, 0.05 * m * g}) {
+    contacts[0].normal_force = 0.5 * m * g + d;
+    contacts[1].normal_force = 0.5 * m * g - d;
+    // Under these forces: no vertical acceleration, a pitch torque (l/2)(N0 - N1) = l d.
+    PlateState after = rest;
+    after.pitch_rate = l * d * dt / I;
+    SolverConvergence check(rig);
+    const auto r = check.observe(dt, rest, after, contacts);
+    EXPECT_NEAR(check.worst_relative(), d / (m * g), 1e-9) << "d = " << d;
+    ASSERT_EQ(r.has_value(), d / (m * g) > SolverConvergence::kTolerance);
+    if (r) {
+      EXPECT_NEAR(r->balanced[0], 0.5 * m * g, 1e-9 * m * g);
+      EXPECT_NEAR(r->balanced[1], 0.5 * m * g, 1e-9 * m * g);
+    }
+  }
+}
+
+// Converged scenes: the check never fires, every step (the run keeps its iterations).
+TEST(SolverConvergence, SilentOnTheShippedScenes) {
+  for (const char* name : {"scenes/minimal.yaml", "scenes/paper-rig.yaml"}) {
+    Scene scene = scene_file(name);
+    scene.world.duration = 3.0;
+    const RunSummary r = run_experiment(scene, {});
+    EXPECT_FALSE(r.solver_iterations_raised.has_value())
+        << name << ": " << *r.solver_iterations_raised;
+    EXPECT_EQ(r.solver_iterations, scene.world.solver_iterations) << name;
+    EXPECT_FALSE(r.failure.has_value()) << name;
+  }
+}
+
+// A solver starved of iterations is caught at once: 1 iteration on the close rollers.
+TEST(SolverConvergence, CatchesAStarvedSolver) {
+  Scene scene = close_rollers();
+  scene.world.solver_iterations = 1;
+  const CompiledRig rig = compile_rig(scene);
+  RigWorld world(rig);
+  SolverConvergence check(rig);
+  PlateState before = world.plate();
+  std::optional<SolverResidual> fault;
+  for (int i = 0; i < 100 && !fault; ++i) {
+    world.step();
+    fault = check.observe(world.time(), before, world.plate(), world.contacts());
+    before = world.plate();
+  }
+  ASSERT_TRUE(fault.has_value());
+  EXPECT_GT(fault->relative(), SolverConvergence::kTolerance);
+}
+
+// A run that shows its steps to an observer cannot start again: it stops with the numerical
+// diagnosis, naming the setting to change.
+TEST(SolverConvergence, StopsWithTheSettingToChangeWhenItCannotRestart) {
+  Scene scene = close_rollers();
+  RunOptions options;
+  options.observer = [](const StepView&) {};
+  const RunSummary r = run_experiment(scene, options);
+  EXPECT_EQ(r.regime, Regime::kNumericallyFailed);
+  ASSERT_TRUE(r.failure.has_value());
+  EXPECT_NE(r.failure->find("world.solver_iterations"), std::string::npos) << *r.failure;
+}
+
+// The 200 mm plate on rollers 10 mm apart at the default 10 iterations: the run raises them and
+// oscillates with the thick-plate period, within the integrator's predicted bias (plus the
+// trajectory fit's own standard error, three of them).
+TEST(SolverConvergence, CloseRollersOscillateWithTheThickPeriod) {
+  const Scene scene = close_rollers();
+  ASSERT_EQ(scene.world.solver_iterations, 10);
+  const RunSummary r = run_experiment(scene, {});
+  ASSERT_EQ(r.regime, Regime::kOscillates) << r.regime_evidence;
+  EXPECT_GT(r.solver_iterations, 10);
+  ASSERT_TRUE(r.solver_iterations_raised.has_value());
+  ASSERT_TRUE(r.period_trajectory && r.period_thick && r.predicted_integrator_bias);
+  // The thick formula, written out: T = pi sqrt(2 (l - 2 mu_k h_c) / (mu_k g)).
+  const double l = r.spacing, mu = r.mu_k_set, g = r.gravity;
+  EXPECT_NEAR(*r.period_thick,
+              std::numbers::pi * std::sqrt(2.0 * (l - 2.0 * mu * r.h_c) / (mu * g)), 1e-12);
+  const double error = *r.period_trajectory / *r.period_thick - 1.0;
+  EXPECT_NEAR(error, *r.predicted_integrator_bias,
+              std::fabs(*r.predicted_integrator_bias) +
+                  3.0 * *r.period_trajectory_err / *r.period_trajectory);
+  // Exactly a run of the scene at the iterations it ended with.
+  Scene raised = scene;
+  raised.world.solver_iterations = r.solver_iterations;
+  const RunSummary again = run_experiment(raised, {});
+  EXPECT_EQ(*again.period_trajectory, *r.period_trajectory);
+}
+
+}  // namespace
+}  // namespace fl

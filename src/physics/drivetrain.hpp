@@ -20,13 +20,13 @@ namespace fl {
 
 class Drivetrain {
  public:
-  // The train of the compiled rig's drive (its layout, ratios and inertia); the rig must outlive
-  // the train.
+  // The train of the compiled rig's drive (its layout, ratios and inertia), started at its
+  // no-load speed for the duty at t = 0; the rig must outlive the train.
   explicit Drivetrain(const CompiledRig& rig);
 
   // Advances the train by dt under the torques [N m, about +y] the plate's friction put on the
-  // two rollers during the last step.
-  void advance(double dt, const std::array<double, 2>& roller_torques);
+  // two rollers during the last step, the motor at PWM duty `duty` (0 to 1) over the step.
+  void advance(double dt, const std::array<double, 2>& roller_torques, double duty);
 
   double motor_speed() const { return omega_; }          // rad/s about +y
   double motor_torque() const { return motor_torque_; }  // N m, in the driving sense

@@ -180,6 +180,7 @@ def plot_cycles(rows, meta, out):
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 8.5), sharex=True)
     styles = {"down": dict(marker="o", mfc=None), "up": dict(marker="^", mfc="none"),
               "hold": dict(marker="x", mfc=None)}
+    drew_limit = False
     for n, r in enumerate(rows):
         cycles = read_cycles(out, r["index"])
         if not cycles:
@@ -202,14 +203,20 @@ def plot_cycles(rows, meta, out):
         by_speed = sorted(cycles, key=lambda c: number(c, "roller_speed_rpm"))
         limit = [(number(c, "roller_speed_rpm"), number(c, "slip_limit_amplitude_m")) for c in by_speed
                  if number(c, "slip_limit_amplitude_m") is not None]
-        if limit:
-            bottom.plot([p[0] for p in limit], [1e3 * p[1] for p in limit], "--", color=colour, lw=1)
+        # Theory is drawn over the measured cycles (it lies on them where it holds).
+        if limit and not drew_limit:
+            bottom.plot([p[0] for p in limit], [1e3 * p[1] for p in limit], "k--", lw=1, zorder=5)
+            drew_limit = True
         stick = [(number(c, "roller_speed_rpm"), number(c, "stick_slip_amplitude_m"),
                   number(c, "stick_slip_period_s")) for c in by_speed
                  if number(c, "stick_slip_amplitude_m") is not None]
-        if stick and any(p[1] is not None and abs(p[1] - l[1]) > 1e-9 for p, l in zip(stick, limit)):
-            bottom.plot([p[0] for p in stick], [1e3 * p[1] for p in stick], ":", color=colour, lw=1.2)
-            top.plot([p[0] for p in stick], [p[2] for p in stick], ":", color=colour, lw=1.2)
+        clipped = all(abs(p[1] - number(c, "slip_limit_amplitude_m")) < 1e-9 * p[1]
+                      for p, c in zip(stick, [c for c in by_speed
+                                              if number(c, "stick_slip_amplitude_m") is not None]))
+        if stick and not clipped:
+            bottom.plot([p[0] for p in stick], [1e3 * p[1] for p in stick], ":", color="k", lw=1.3,
+                        zorder=5)
+            top.plot([p[0] for p in stick], [p[2] for p in stick], ":", color="k", lw=1.3, zorder=5)
     thick = sorted(t for t in (number(r, "period_thick_s") for r in rows) if t)
     if thick:
         top.axhline(thick[len(thick) // 2], color="k", lw=0.8, alpha=0.6,

@@ -30,7 +30,8 @@ void CycleTracker::add(double t, double x, double v, const std::array<double, 2>
     const double sa = speed0_ + a * (speed - speed0_);
     const double sb = speed0_ + b * (speed - speed0_);
     speed_integral_ += 0.5 * (sa + sb) * (b - a) * dt;
-    current_.stick_duration += 0.5 * ((stuck0_ ? 1.0 : 0.0) + (is_stuck ? 1.0 : 0.0)) * (b - a) * dt;
+    current_.stick_duration +=
+        0.5 * ((stuck0_ ? 1.0 : 0.0) + (is_stuck ? 1.0 : 0.0)) * (b - a) * dt;
   };
   const bool upward = x0_ - centre_ < 0.0 && x - centre_ >= 0.0;
   if (upward) {

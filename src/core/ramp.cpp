@@ -13,15 +13,15 @@ Ramp::Ramp(std::vector<RampPoint> points) : points_(std::move(points)) {
   require_domain(!points_.empty(), "a ramp needs at least one point (time, value)");
   for (std::size_t i = 0; i < points_.size(); ++i) {
     const RampPoint& p = points_[i];
-    require_domain(std::isfinite(p.at) && p.at >= 0.0,
-                   describe("ramp point ", i, ": its time must be finite and >= 0, got ", p.at,
-                            " s"));
+    require_domain(
+        std::isfinite(p.at) && p.at >= 0.0,
+        describe("ramp point ", i, ": its time must be finite and >= 0, got ", p.at, " s"));
     require_domain(std::isfinite(p.value),
                    describe("ramp point ", i, ": its value must be finite, got ", p.value));
     if (i > 0)
       require_domain(p.at > points_[i - 1].at,
-                     describe("ramp point ", i, ": times must increase, got ", p.at,
-                              " s after ", points_[i - 1].at, " s"));
+                     describe("ramp point ", i, ": times must increase, got ", p.at, " s after ",
+                              points_[i - 1].at, " s"));
   }
 }
 

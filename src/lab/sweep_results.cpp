@@ -156,7 +156,8 @@ std::optional<PointResult> parse_point_file(const std::string& text,
   r.index = j["index"].get<std::size_t>();
   r.row = j["row"];
   r.wall_s = j.value("wall_s", 0.0);
-  if (j.contains("cycles") && j["cycles"].is_string()) r.cycles_csv = j["cycles"].get<std::string>();
+  if (j.contains("cycles") && j["cycles"].is_string())
+    r.cycles_csv = j["cycles"].get<std::string>();
   return r;
 }
 

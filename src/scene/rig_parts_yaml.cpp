@@ -127,8 +127,8 @@ DriveDesc read_drive(const YamlNode& node, const CatalogGetter& catalog) {
     if (d.motor.duty < 0.0 || d.motor.duty > 1.0)
       m->at("duty").fail("must lie between 0 % and 100 %");
     if (m->has("duty") && m->has("duty_ramp"))
-      m->at("duty_ramp").fail(
-          "give duty (constant) or duty_ramp (over time), not both; remove one of the keys");
+      m->at("duty_ramp")
+          .fail("give duty (constant) or duty_ramp (over time), not both; remove one of the keys");
     if (auto v = m->find("duty_ramp"))
       d.motor.duty_ramp =
           read_ramp(*v, {"duty", Dimension::kDimensionless, 0.0, 1.0, "{at: 0 s, duty: 20 %}"});

@@ -40,8 +40,8 @@ struct RollersDesc {
   // The speed over time instead (ideal drive only; values in rad/s, times in s): piecewise
   // linear, held after its last point. Empty: the constant `speed`.
   std::vector<RampPoint> speed_ramp;
-  double wall = 0.0015;               // m, the PVC tube's wall (its mass and inertia, when driven)
-  double density = 1400.0;            // kg/m^3 (PVC)
+  double wall = 0.0015;     // m, the PVC tube's wall (its mass and inertia, when driven)
+  double density = 1400.0;  // kg/m^3 (PVC)
   RollerSense sense = RollerSense::kInward;
   std::string material = "pvc";
 };

@@ -45,7 +45,8 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const RampPoint& p = points[i];
       need(std::isfinite(p.at) && p.at >= 0.0 && (i == 0 || p.at > points[i - 1].at), key,
-           describe("point ", i, ": its time ", p.at, " s must be >= 0 and after the previous "
+           describe("point ", i, ": its time ", p.at,
+                    " s must be >= 0 and after the previous "
                     "point's"));
       need(std::isfinite(p.value) && p.value >= least && p.value <= most, key,
            describe("point ", i, ": its value ", p.value, unit, " must lie from ", least, " to ",

@@ -44,11 +44,11 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
   if (auto v = n.find("density")) r.density = v->quantity(Dimension::kDensity);
   if (auto v = n.find("speed")) r.speed = v->quantity(Dimension::kAngularSpeed);
   if (n.has("speed") && n.has("speed_ramp"))
-    n.at("speed_ramp").fail(
-        "give speed (constant) or speed_ramp (over time), not both; remove one of the keys");
+    n.at("speed_ramp")
+        .fail("give speed (constant) or speed_ramp (over time), not both; remove one of the keys");
   if (auto v = n.find("speed_ramp"))
-    r.speed_ramp = read_ramp(*v, {"speed", Dimension::kAngularSpeed, 0.0, std::nullopt,
-                                  "{at: 0 s, speed: 100 rpm}"});
+    r.speed_ramp = read_ramp(
+        *v, {"speed", Dimension::kAngularSpeed, 0.0, std::nullopt, "{at: 0 s, speed: 100 rpm}"});
   if (auto v = n.find("sense")) {
     const std::string sense = v->text();
     if (sense == "inward")

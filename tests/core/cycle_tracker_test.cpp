@@ -30,17 +30,18 @@ TEST(CycleTracker, SineGivesItsPeriodAndAmplitudeAndNoStick) {
   const auto& cycles = tracker.cycles();
   ASSERT_GE(cycles.size(), 20u);
   for (const CycleRecord& c : cycles) {
-    // The crossing is placed linearly where x'' = 0: the error is third order in w dt.
-    EXPECT_NEAR(c.period / period, 1.0, 1e-7);
+    // The crossing is placed linearly where x'' = 0: each crossing's phase is off by at most
+    // (w dt)^3 / 24, the period by twice that.
+    EXPECT_NEAR(c.period / period, 1.0, std::pow(w * dt, 3) / 12.0 / (2.0 * kPi));
     // Samples w dt = 2 pi / 200 apart miss the peak by at most A (1 - cos(w dt / 2)).
     EXPECT_NEAR(c.amplitude / amplitude, 1.0, 1.3e-4);
-    EXPECT_NEAR(c.x_max + c.x_min, 0.0, 1e-9);
-    EXPECT_DOUBLE_EQ(c.surface_speed_mean, surface);
+    EXPECT_NEAR(c.x_max + c.x_min, 0.0, 2.0 * amplitude * (1.0 - std::cos(0.5 * w * dt)));
+    EXPECT_NEAR(c.surface_speed_mean, surface, 1e-12);
     EXPECT_EQ(c.stick_duration, 0.0);
     EXPECT_FALSE(c.stuck());
   }
   // The first cycle opens at the first upward crossing: w t + 0.4 = 2 pi.
-  EXPECT_NEAR(cycles.front().start, (2.0 * kPi - 0.4) / w, 1e-8);
+  EXPECT_NEAR(cycles.front().start, (2.0 * kPi - 0.4) / w, std::pow(w * dt, 3) / 24.0 / w);
 }
 
 TEST(CycleTracker, ChirpGivesEachCycleItsOwnPeriodAndMeanSpeed) {

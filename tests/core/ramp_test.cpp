@@ -2,6 +2,8 @@
 // the last, its extremes over an interval, and its refusals.
 #include "core/ramp.hpp"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "core/analytic_model.hpp"
@@ -42,10 +44,10 @@ TEST(Ramp, ExtremesOverAnInterval) {
 
 TEST(Ramp, RefusesPointsThatMakeNoSchedule) {
   EXPECT_THROW(Ramp({}), DomainError);
-  EXPECT_THROW(Ramp({{0.0, 1.0}, {0.0, 2.0}}), DomainError);   // times must increase
-  EXPECT_THROW(Ramp({{5.0, 1.0}, {2.0, 2.0}}), DomainError);   // backwards
-  EXPECT_THROW(Ramp({{-1.0, 1.0}}), DomainError);              // before the start
-  EXPECT_THROW(Ramp({{0.0, std::nan("")}}), DomainError);      // not a number
+  EXPECT_THROW(Ramp({{0.0, 1.0}, {0.0, 2.0}}), DomainError);  // times must increase
+  EXPECT_THROW(Ramp({{5.0, 1.0}, {2.0, 2.0}}), DomainError);  // backwards
+  EXPECT_THROW(Ramp({{-1.0, 1.0}}), DomainError);             // before the start
+  EXPECT_THROW(Ramp({{0.0, std::nan("")}}), DomainError);     // not a number
 }
 
 }  // namespace

@@ -49,9 +49,11 @@ TEST(RampedRun, IdealCoulombPeriodStaysThickAndAmplitudeIsClippedBelowTheThresho
     const double v_start = ramp.at(c.start) * a, v_end = ramp.at(c.start + c.period) * a;
     const std::string where = "cycle at " + std::to_string(c.start) + " s, " +
                               std::to_string(c.surface_speed_mean / a / kRpm) + " rpm";
-    // The period of the thick plate, full slip or clipped (0.05 %: the lab's period claim for
-    // runs, scenes/sweeps/spacing.yaml).
-    EXPECT_NEAR(c.period / period, 1.0, 5e-4) << where;
+    // The period of the thick plate: within 0.05 % in full slip (the lab's period claim for runs,
+    // scenes/sweeps/spacing.yaml); a clipped cycle touches the rollers' speed twice, and the
+    // world resolves each touch to a step: within two steps more.
+    const double dt = scene.world.time_step;
+    EXPECT_NEAR(c.period, period, 5e-4 * period + (c.stuck() ? 2.0 * dt : 0.0)) << where;
     if (std::max(v_start, v_end) < a0 * omega) {
       // Below the threshold: clipped at the speeds met within the cycle, v_end <= v_r <= v_start,
       // to within 0.3 % (the trajectory's own drift and the step's resolution of the touch).

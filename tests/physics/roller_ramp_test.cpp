@@ -46,6 +46,14 @@ TEST(RollerRamp, MeasuredSpeedIsTheScheduleAtEveryStep) {
   }
 }
 
+// The paper's rig's motor (scenes/paper-rig.yaml) with a duty ramp instead of its duty.
+SceneOverride motor_with(const std::string& duty) {
+  return {"drive.motor",
+          "{rated_voltage: 12 V, no_load_speed: 200 rpm, stall_torque: 0.8 N m, inertia: 5e-4 kg "
+          "m^2, " +
+              duty + "}"};
+}
+
 Scene paper_rig(const std::vector<SceneOverride>& overrides) {
   static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
   static const assets::PartCatalog parts =
@@ -57,9 +65,9 @@ Scene paper_rig(const std::vector<SceneOverride>& overrides) {
 }
 
 TEST(DutyRamp, AHeldRampIsTheConstantDutyBitForBit) {
-  const Scene constant = paper_rig({{"drive.motor.duty", "60 %"}});
-  const Scene ramped = paper_rig(
-      {{"drive.motor.duty_ramp", "[{at: 0 s, duty: 60 %}, {at: 1 s, duty: 60 %}]"}});
+  const Scene constant = paper_rig({motor_with("duty: 60 %")});
+  const Scene ramped =
+      paper_rig({motor_with("duty_ramp: [{at: 0 s, duty: 60 %}, {at: 1 s, duty: 60 %}]")});
   RigWorld a(constant), b(ramped);
   for (int i = 0; i < 2000; ++i) {
     a.step();
@@ -74,9 +82,8 @@ TEST(DutyRamp, TheDriveReachesEachHeldDutysLoadedSpeed) {
   // 30 % for 1 s, then up to 100 % over 1 s, held. On the motor's linear curve with the plate
   // sliding on both rollers (friction torque mu_k m g a at the rollers), the rollers settle at
   // G omega_0 (duty - load / stall): the compiled rig's loaded speed at that duty.
-  const Scene scene = paper_rig(
-      {{"drive.motor.duty_ramp",
-        "[{at: 0 s, duty: 30 %}, {at: 1 s, duty: 30 %}, {at: 2 s, duty: 100 %}]"}});
+  const Scene scene = paper_rig({motor_with(
+      "duty_ramp: [{at: 0 s, duty: 30 %}, {at: 1 s, duty: 30 %}, {at: 2 s, duty: 100 %}]")});
   RigWorld world(scene);
   const CompiledRig& rig = world.rig();
   const MotorDesc& motor = scene.drive->motor;

@@ -257,9 +257,9 @@ std::string with_rollers(const std::string& rollers) {
 }
 
 TEST(SceneYaml, RampKeysLoadInSiAndTheirErrorsAreLocated) {
-  const Scene s = load(with_rollers(
-      "  speed_ramp: [{at: 0 s, speed: 100 rpm}, {at: 1 min, speed: 1600 rpm}, "
-      "{at: 120 s, speed: 100 rpm}]\n"));
+  const Scene s =
+      load(with_rollers("  speed_ramp: [{at: 0 s, speed: 100 rpm}, {at: 1 min, speed: 1600 rpm}, "
+                        "{at: 120 s, speed: 100 rpm}]\n"));
   ASSERT_EQ(s.rollers.speed_ramp.size(), 3u);
   EXPECT_DOUBLE_EQ(s.rollers.speed_ramp[1].at, 60.0);
   EXPECT_NEAR(s.rollers.speed_ramp[1].value, 1600.0 * 2.0 * std::numbers::pi / 60.0, 1e-12);
@@ -267,12 +267,12 @@ TEST(SceneYaml, RampKeysLoadInSiAndTheirErrorsAreLocated) {
   EXPECT_NEAR(nominal_roller_speed(s), 1600.0 * 2.0 * std::numbers::pi / 60.0, 1e-12);
   EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: 0 s, speed: 100 rpm}, {at: 0 s, speed: "
                                   "200 rpm}]\n")),
-            "t.yaml:3:51: error: rollers.speed_ramp[1].at: expected a time after the previous "
+            "t.yaml:3:48: error: rollers.speed_ramp[1].at: expected a time after the previous "
             "point's 0 s (times must increase), found 0 s");
   EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: 0 s, speed: -5 rpm}]\n")),
             "t.yaml:3:33: error: rollers.speed_ramp[0].speed: expected a value >= 0, found -5 rpm");
   EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: -1 s, speed: 5 rpm}]\n")),
-            "t.yaml:3:22: error: rollers.speed_ramp[0].at: expected a time >= 0 s (from the run's "
+            "t.yaml:3:21: error: rollers.speed_ramp[0].at: expected a time >= 0 s (from the run's "
             "start), found -1 s");
   EXPECT_NE(error_of(with_rollers("  speed_ramp: [{at: 0 s, sped: 5 rpm}]\n")).find("unknown key"),
             std::string::npos);

@@ -215,11 +215,10 @@ TEST(SweepSpec, RollerSpeedRampSweepRunsOneRampPerLawAndRecordsCycles) {
   EXPECT_TRUE(spec.cycles);
   EXPECT_EQ(sweep_plan(spec).value("cycles", false), true);
   // Each point is the ramp's scene with one law, and the scene loads with it.
-  const std::vector<std::pair<FrictionLawKind, double>> laws{
-      {FrictionLawKind::kCoulomb, 0.29},
-      {FrictionLawKind::kCoulomb, 0.348},
-      {FrictionLawKind::kStribeck, 0.348},
-      {FrictionLawKind::kStribeck, 0.29}};
+  const std::vector<std::pair<FrictionLawKind, double>> laws{{FrictionLawKind::kCoulomb, 0.29},
+                                                             {FrictionLawKind::kCoulomb, 0.348},
+                                                             {FrictionLawKind::kStribeck, 0.348},
+                                                             {FrictionLawKind::kStribeck, 0.29}};
   for (std::size_t i = 0; i < spec.point_count(); ++i) {
     const SweepPoint point = sweep_point(spec, i);
     const Scene scene =

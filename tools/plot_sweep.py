@@ -5,7 +5,10 @@
                          over it, and the error against the thick curve below (when l varies)
   mu-recovered.png       mu_k recovered (thin and thick formulas) against mu_k set (when mu_k varies)
   roller-speed.png       amplitude and period against the rollers' speed, by regime, with the
-                         analytic slip threshold (when the roller speed varies)
+                         analytic slip threshold (when the roller speed varies across points)
+  cycles.png             each cycle's period and amplitude against the rollers' speed during it,
+                         the ramp's way down and way up apart, with theory's slip threshold
+                         (when the sweep recorded cycles: OUTDIR/cycles/*.csv)
   map.png                the error against the thick curve over the first two axes, regimes marked
                          (when two axes have more than one value)
   axis.png               the period against the only axis (when none of the above applies)
@@ -161,6 +164,91 @@ def plot_roller_speed(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "roller-speed.png"))
 
 
+def read_cycles(out, index):
+    path = os.path.join(out, "cycles", f"{int(index):08d}.csv")
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def plot_cycles(rows, meta, out):
+    """Period and amplitude of every cycle against the rollers' speed during it; the ramp's way
+    down (filled) and way up (open) apart; theory's slip threshold A = v_r / Omega (dashed), the
+    stick-slip cycle where it has a closed form (dotted), the thick-plate period."""
+    label_axis = meta["axes"][0]["name"] if meta["axes"] else None
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(9, 8.5), sharex=True)
+    styles = {"down": dict(marker="o", mfc=None), "up": dict(marker="^", mfc="none"),
+              "hold": dict(marker="x", mfc=None)}
+    drew_limit = False
+    for n, r in enumerate(rows):
+        cycles = read_cycles(out, r["index"])
+        if not cycles:
+            continue
+        colour = f"C{n % 10}"
+        name = r.get(label_axis, "") if label_axis else meta["sweep"]
+        name = name.strip("{}")
+        for direction, style in styles.items():
+            members = [c for c in cycles if c["ramp"] == direction]
+            if not members:
+                continue
+            rpm = [number(c, "roller_speed_rpm") for c in members]
+            kw = dict(ls="none", ms=3.2, color=colour, marker=style["marker"], alpha=0.8)
+            if style["mfc"] is not None:
+                kw["mfc"] = style["mfc"]
+            top.plot(rpm, [number(c, "period_s") for c in members], **kw)
+            bottom.plot(rpm, [1e3 * number(c, "amplitude_m") for c in members], **kw)
+        bottom.plot([], [], "s", color=colour, label=f"{name} ({r['regime'] or r['status']})")
+        # Theory at each cycle's speed, along the speeds the ramp went through.
+        by_speed = sorted(cycles, key=lambda c: number(c, "roller_speed_rpm"))
+        limit = [(number(c, "roller_speed_rpm"), number(c, "slip_limit_amplitude_m")) for c in by_speed
+                 if number(c, "slip_limit_amplitude_m") is not None]
+        # Theory is drawn over the measured cycles (it lies on them where it holds).
+        if limit and not drew_limit:
+            bottom.plot([p[0] for p in limit], [1e3 * p[1] for p in limit], "k--", lw=1, zorder=5)
+            drew_limit = True
+        stick = [(number(c, "roller_speed_rpm"), number(c, "stick_slip_amplitude_m"),
+                  number(c, "stick_slip_period_s")) for c in by_speed
+                 if number(c, "stick_slip_amplitude_m") is not None]
+        clipped = all(abs(p[1] - number(c, "slip_limit_amplitude_m")) < 1e-9 * p[1]
+                      for p, c in zip(stick, [c for c in by_speed
+                                              if number(c, "stick_slip_amplitude_m") is not None]))
+        if stick and not clipped:
+            bottom.plot([p[0] for p in stick], [1e3 * p[1] for p in stick], ":", color="k", lw=1.3,
+                        zorder=5)
+            top.plot([p[0] for p in stick], [p[2] for p in stick], ":", color="k", lw=1.3, zorder=5)
+    thick = sorted(t for t in (number(r, "period_thick_s") for r in rows) if t)
+    if thick:
+        top.axhline(thick[len(thick) // 2], color="k", lw=0.8, alpha=0.6,
+                    label=f"thick-plate period {thick[len(thick) // 2]:.4f} s")
+    thresholds = sorted(t for t in (number(r, "slip_threshold_rad_s") for r in rows) if t)
+    amplitudes = sorted(a for a in (number(r, "amplitude_start_m") for r in rows) if a)
+    if thresholds:
+        t = thresholds[len(thresholds) // 2] * 60 / (2 * math.pi)
+        for ax in (top, bottom):
+            ax.axvline(t, color="grey", ls="-.", lw=0.8)
+        start = f" for A = {1e3 * amplitudes[len(amplitudes) // 2]:.1f} mm" if amplitudes else ""
+        top.plot([], [], "-.", color="grey", lw=0.8, label=f"slip threshold{start}: {t:.0f} rpm")
+    bottom.plot([], [], "k--", lw=1, label="slip threshold: A Ω = a ω_r (above: the plate reaches "
+                "a roller's speed)")
+    bottom.plot([], [], "k:", lw=1.2, label="stick-slip cycle (closed form, μ_s > μ_k)")
+    top.plot([], [], "ko", ms=3.2, ls="none", label="ramp going down")
+    top.plot([], [], "k^", ms=3.2, mfc="none", ls="none", label="ramp going up")
+    top.plot([], [], "k:", lw=1.2, label="stick-slip period (closed form)")
+    for ax in (top, bottom):
+        ax.set_xscale("log")
+        ax.grid(True, which="both", alpha=0.3)
+    top.set_ylabel("period of the cycle [s]")
+    top.set_title(f"{meta['sweep']}: each cycle against the rollers' speed during it")
+    top.legend(fontsize=7.5, loc="upper right")
+    bottom.set_xlabel("roller speed, mean over the cycle [rpm]")
+    bottom.set_ylabel("amplitude of the cycle [mm]")
+    bottom.set_yscale("log")
+    bottom.legend(fontsize=7.5, loc="upper left")
+    fig.tight_layout()
+    atomic_png.save(fig, os.path.join(out, "cycles.png"))
+
+
 def axis_positions(axis):
     numbers = axis.get("numbers") or []
     if numbers and all(n is not None for n in numbers):
@@ -233,13 +321,18 @@ def main(csv_path, json_path, out):
     with open(json_path) as f:
         meta = json.load(f)
     drawn = 0
+    has_cycles = os.path.isdir(os.path.join(out, "cycles")) and any(
+        read_cycles(out, r["index"]) for r in rows)
+    if has_cycles:
+        plot_cycles(rows, meta, out)
+        drawn += 1
     if len(distinct(rows, "spacing_m")) > 1:
         plot_spacing(rows, meta, out)
         drawn += 1
     if len(distinct(rows, "mu_k_set")) > 1:
         plot_mu(rows, meta, out)
         drawn += 1
-    if len(distinct(rows, "roller_speed_rad_s")) > 1:
+    if len(distinct(rows, "roller_speed_rad_s")) > 1 and not has_cycles:
         plot_roller_speed(rows, meta, out)
         drawn += 1
     varied = [a for a in meta["axes"] if len(a["values"]) > 1]

@@ -86,11 +86,13 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     }
     options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
   }
+  options.record_cycles = !o.out.empty() && scene.output.cycles;
   RunRecording recording;
-  const RunSummary summary = run_experiment(scene, options, &recording);
+  const CompiledRig rig = compile_rig(scene);
+  const RunSummary summary = run_experiment(rig, options, &recording);
   std::optional<VideoReport> video;
   if (recorder) video = recorder->finish();
-  if (!o.out.empty()) write_run_outputs(o.out, scene, summary, recording);
+  if (!o.out.empty()) write_run_outputs(o.out, rig, summary, recording);
   if (o.json) {
     nlohmann::json j = summary_json(summary);
     j.update(timing_json(summary));

@@ -159,8 +159,14 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   RegimeMonitor monitor(rig);
   SolverConvergence convergence(rig);
   OscillationTracker tracker;
+  CycleTracker cycles;
+  const bool record_cycles = options.record_cycles && recording != nullptr;
+  // The ramped rollers' speed, averaged over the run's steps.
+  double ramp_speed_sum = 0.0;
+  long long ramp_steps = 0;
   PlateState state = world.plate();
   tracker.add(0.0, state.x, state.vx);
+  if (record_cycles) cycles.add(0.0, state.x, state.vx, world.roller_surface_speeds());
   if (options.record_trajectory && recording != nullptr)
     recording->trajectory.push_back({0.0, state, world.contacts()});
   // The observer sees the world after each step.
@@ -189,7 +195,8 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     const double t = world.time();
     state = world.plate();
     const auto contacts = world.contacts();
-    failure = monitor.observe(t, state, contacts, world.roller_surface_speeds());
+    const std::array<double, 2> surface = world.roller_surface_speeds();
+    failure = monitor.observe(t, state, contacts, surface);
     if (!failure) {
       unconverged = convergence.observe(t, previous, state, contacts);
       if (unconverged)
@@ -201,6 +208,11 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     // What a guard stopped is not recorded: the outputs hold every trustworthy step.
     if (failure) break;
     tracker.add(t, state.x, state.vx);
+    if (record_cycles) cycles.add(t, state.x, state.vx, surface);
+    if (rig.roller_speed_ramp) {
+      ramp_speed_sum += std::fabs(world.roller_speeds()[0]);
+      ++ramp_steps;
+    }
     if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
     if (options.record_trajectory && recording != nullptr)
       recording->trajectory.push_back({t, state, contacts});
@@ -216,6 +228,11 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   }
   out.steps = world.steps();
   out.duration = world.time();
+  if (record_cycles) recording->cycles = cycles.cycles();
+  if (rig.roller_speed_ramp) {
+    out.roller_speed = ramp_steps > 0 ? ramp_speed_sum / static_cast<double>(ramp_steps)
+                                      : rig.roller_speed_ramp->at(0.0);
+  }
   if (failure) out.failure = failure->message;
   if (scene.drive) {
     out.drive = drive_stats.report();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cycle_tracker.hpp"
 #include "lab/run_summary.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
@@ -26,6 +27,7 @@ struct TrajectoryRow {
 struct RunRecording {
   std::vector<TrajectoryRow> trajectory;  // every step, when asked for
   std::vector<HallSample> hall;           // every sample, when asked for
+  std::vector<CycleRecord> cycles;        // every complete cycle of the plate, when asked for
 };
 
 class HallEstimator;
@@ -46,6 +48,7 @@ struct StepView {
 struct RunOptions {
   bool record_trajectory = false;
   bool record_hall = false;
+  bool record_cycles = false;
   // Called after every step (and once at t = 0) when set.
   std::function<void(const StepView&)> observer;
 };

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "io/atomic_file.hpp"
+#include "lab/cycle_report.hpp"
 #include "lab/summary_fields.hpp"
 
 namespace fl {
@@ -156,8 +157,11 @@ std::string hall_csv(const RunRecording& r) {
   return out;
 }
 
-void write_run_outputs(const std::string& folder, const Scene& scene, const RunSummary& summary,
+void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
                        const RunRecording& recording) {
+  const Scene& scene = rig.scene;
+  if (scene.output.cycles)
+    write_file_atomic(folder + "/cycles.csv", cycles_csv(rig, recording.cycles));
   if (scene.output.trajectory)
     write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
   if (scene.output.hall && scene.sensor)

@@ -19,9 +19,10 @@ std::string summary_text(const RunSummary& summary);
 std::string trajectory_csv(const RunRecording& recording);
 std::string hall_csv(const RunRecording& recording);
 
-// Writes summary.json, timing.json, trajectory.csv and hall.csv (as the scene's output part
-// asks) into `folder`, each file atomically. All but timing.json are bit-identical between runs.
-void write_run_outputs(const std::string& folder, const Scene& scene, const RunSummary& summary,
+// Writes summary.json, timing.json, trajectory.csv, hall.csv and cycles.csv (as the scene's
+// output part asks) into `folder`, each file atomically. All but timing.json are bit-identical
+// between runs.
+void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
                        const RunRecording& recording);
 
 }  // namespace fl

@@ -117,7 +117,7 @@ struct RunSummary {
   double amplitude_start = 0.0;                      // m, first turning point
   double amplitude_end = 0.0;                        // m, last turning point
   std::optional<double> amplitude_drift_per_period;  // relative
-  double roller_speed = 0.0;                         // rad/s (mean |roller 0| when driven)
+  double roller_speed = 0.0;  // rad/s (mean |roller 0| when driven or ramped)
   std::optional<DriveReport> drive;
   double plate_speed_max = 0.0;   // m/s
   double slip_margin = 0.0;       // roller surface speed / plate's largest speed

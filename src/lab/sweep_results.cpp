@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "lab/cycle_report.hpp"
 #include "lab/experiment.hpp"
 #include "lab/summary_fields.hpp"
 
@@ -73,8 +74,13 @@ PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
   if (scene) {
     out.row["seed"] = scene->world.seed;
     try {
-      const RunSummary summary = run_experiment(*scene, RunOptions{});
+      const CompiledRig rig = compile_rig(*scene);
+      RunOptions options;
+      options.record_cycles = spec.cycles;
+      RunRecording recording;
+      const RunSummary summary = run_experiment(rig, options, &recording);
       fill_sweep_columns(out.row, summary);
+      if (spec.cycles) out.cycles_csv = cycles_csv(rig, recording.cycles);
     } catch (const std::exception& e) {
       out.row["status"] = "failed";
       out.row["error"] = std::string("the run stopped: ") + e.what();
@@ -131,10 +137,11 @@ nlohmann::json sweep_results_json(const nlohmann::json& plan,
 }
 
 std::string point_file_text(const PointResult& result, const std::string& plan_digest) {
-  const nlohmann::json j{{"plan", plan_digest},
-                         {"index", result.index},
-                         {"row", result.row},
-                         {"wall_s", result.wall_s}};
+  nlohmann::json j{{"plan", plan_digest},
+                   {"index", result.index},
+                   {"row", result.row},
+                   {"wall_s", result.wall_s}};
+  if (!result.cycles_csv.empty()) j["cycles"] = result.cycles_csv;
   return j.dump() + "\n";
 }
 
@@ -149,6 +156,8 @@ std::optional<PointResult> parse_point_file(const std::string& text,
   r.index = j["index"].get<std::size_t>();
   r.row = j["row"];
   r.wall_s = j.value("wall_s", 0.0);
+  if (j.contains("cycles") && j["cycles"].is_string())
+    r.cycles_csv = j["cycles"].get<std::string>();
   return r;
 }
 

@@ -19,6 +19,9 @@ struct PointResult {
   std::size_t index = 0;
   nlohmann::json row;  // deterministic; keys as in sweep_result_columns
   double wall_s = 0.0;
+  // The point's cycles (lab/cycle_report.hpp) when the sweep asks for them (`cycles: true`) and
+  // the point ran; empty otherwise. Deterministic.
+  std::string cycles_csv;
 };
 
 // Runs one point: loads the base scene with the point's overrides and simulates it. Never throws

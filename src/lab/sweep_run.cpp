@@ -77,6 +77,7 @@ SweepStore SweepStore::create(const std::string& dir, const nlohmann::json& plan
     for (const char* name : {"plan.json", "results.csv", "sweep.json", "timing.json"})
       fs::remove(root / name, ec);
     fs::remove_all(root / "points", ec);
+    fs::remove_all(root / "cycles", ec);
   }
   SweepStore store(dir, plan);
   if (fs::exists(plan_file, ec)) {
@@ -124,6 +125,14 @@ std::map<std::size_t, PointResult> SweepStore::load_points() const {
 }
 
 void SweepStore::save_point(const PointResult& result) const {
+  // The cycles first: a point file says the point is done, cycles included.
+  if (!result.cycles_csv.empty()) {
+    const fs::path cycles = fs::path(dir_) / "cycles";
+    fs::create_directories(cycles);
+    write_file_atomic((cycles / fmt::format("{:08d}.csv", result.index)).string(),
+                      result.cycles_csv);
+    sync_dir(cycles);
+  }
   const fs::path points = fs::path(dir_) / "points";
   write_file_atomic((points / point_file_name(result.index)).string(),
                     point_file_text(result, digest_));

@@ -320,7 +320,7 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
                      const SceneInputs& inputs) {
   const PaperTableSource& paper = inputs.paper;
   root.expect_map();
-  root.allow_keys({"format", "name", "description", "scene", "set", "axes"});
+  root.allow_keys({"format", "name", "description", "scene", "set", "cycles", "axes"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads sweep format 1, found " + format.text());
   SweepSpec spec;
@@ -328,6 +328,7 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
   spec.name = std::filesystem::path(name).stem().string();
   if (auto v = root.find("name")) spec.name = v->text();
   if (auto v = root.find("description")) v->text();
+  if (auto v = root.find("cycles")) spec.cycles = v->boolean();
 
   const YamlNode scene = root.at("scene");
   std::filesystem::path scene_path(scene.text());
@@ -514,12 +515,15 @@ nlohmann::json sweep_plan(const SweepSpec& spec) {
       set.push_back(o.path + "=" + o.value);
     points.push_back(std::move(set));
   }
-  return nlohmann::json{{"format", 1},
-                        {"sweep", spec.name},
-                        {"scene", std::filesystem::path(spec.scene_file).stem().string()},
-                        {"scene_digest", text_digest(spec.scene_text)},
-                        {"axes", axes},
-                        {"points", points}};
+  nlohmann::json plan{{"format", 1},
+                      {"sweep", spec.name},
+                      {"scene", std::filesystem::path(spec.scene_file).stem().string()},
+                      {"scene_digest", text_digest(spec.scene_text)},
+                      {"axes", axes},
+                      {"points", points}};
+  // Only a sweep that records cycles says so: other plans keep their bytes.
+  if (spec.cycles) plan["cycles"] = true;
+  return plan;
 }
 
 Shard parse_shard(std::string_view text) {

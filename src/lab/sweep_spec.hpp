@@ -68,6 +68,7 @@ struct SweepSpec {
   std::string scene_file;          // the base scene, resolved against the sweep file's folder
   std::string scene_text;          // its content when loaded (resuming checks it did not change)
   std::vector<SceneOverride> set;  // `set:`, applied to every point before its axes
+  bool cycles = false;             // `cycles:`: each point's cycles to cycles/NNNNNNNN.csv
   std::vector<SweepGroup> groups;
 
   std::size_t point_count() const;

@@ -7,10 +7,11 @@ namespace fl {
 Drivetrain::Drivetrain(const CompiledRig& rig)
     : drive_(rig.drive.value()), motor_(rig.scene.drive.value().motor) {
   // The train starts at its no-load speed for the duty.
-  omega_ = drive_.motor_sense * motor_.duty * motor_.no_load_speed;
+  const double duty = rig.duty_ramp ? rig.duty_ramp->at(0.0) : motor_.duty;
+  omega_ = drive_.motor_sense * duty * motor_.no_load_speed;
 }
 
-void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques,
+void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques, double duty,
                          double holding_torque) {
   const double c = motor_.stall_torque / motor_.no_load_speed;
   // The load, seen at the motor (power balance: tau_motor omega_m = tau_roller omega_roller).
@@ -19,7 +20,7 @@ void Drivetrain::advance(double dt, const std::array<double, 2>& roller_torques,
   // J (omega' - omega) / dt = s duty tau_stall - c omega' + load   (the damper at the new speed)
   const double sign = drive_.motor_sense;
   const double inertia = drive_.inertia_at_motor;
-  const double drive = sign * motor_.duty * motor_.stall_torque;
+  const double drive = sign * duty * motor_.stall_torque;
   if (omega_ == 0.0 && std::fabs(drive) <= holding_torque) {
     // Held at rest by the plate's static friction: the motor stalls.
     motor_torque_ = sign * drive;

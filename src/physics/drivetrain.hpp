@@ -20,19 +20,21 @@ namespace fl {
 
 class Drivetrain {
  public:
-  // The train of the compiled rig's drive (its layout, ratios and inertia); the rig must outlive
-  // the train.
+  // The train of the compiled rig's drive (its layout, ratios and inertia), started at its
+  // no-load speed for the duty at t = 0; the rig must outlive the train.
   explicit Drivetrain(const CompiledRig& rig);
 
   // Advances the train by dt under the torques [N m, about +y] the plate's friction put on the
-  // two rollers during the last step. `holding_torque` [N m, >= 0] is the most the plate's static
-  // friction can hold the rollers with (mu_s N_i a at each, seen at the motor). A train that the
-  // friction brings to rest stops there (its speed does not cross zero within a step: friction
-  // cannot reverse it), and stays at rest while the motor's torque at rest is at most the holding
-  // torque: the plate's friction holds the stalled train, as it holds a stuck contact. Without
-  // this the explicit coupling (the load is the last step's) makes a stalled train chatter
-  // between rest and a step's worth of motor acceleration (docs/physics.md).
-  void advance(double dt, const std::array<double, 2>& roller_torques, double holding_torque);
+  // two rollers during the last step, the motor at PWM duty `duty` (0 to 1) over the step.
+  // `holding_torque` [N m, >= 0] is the most the plate's static friction can hold the rollers with
+  // (mu_s N_i a at each, seen at the motor). A train that the friction brings to rest stops there
+  // (its speed does not cross zero within a step: friction cannot reverse it), and stays at rest
+  // while the motor's torque at rest is at most the holding torque: the plate's friction holds the
+  // stalled train, as it holds a stuck contact. Without this the explicit coupling (the load is
+  // the last step's) makes a stalled train chatter between rest and a step's worth of motor
+  // acceleration (docs/physics.md).
+  void advance(double dt, const std::array<double, 2>& roller_torques, double duty,
+               double holding_torque);
 
   double motor_speed() const { return omega_; }          // rad/s about +y
   double motor_torque() const { return motor_torque_; }  // N m, in the driving sense

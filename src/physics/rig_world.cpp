@@ -99,7 +99,8 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   const double sense = s.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
   // The ideal drive: the set speed. Roller 0 at -l/2 turns about +y so its top moves toward +x
   // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
-  roller_omega = {sense * s.rollers.speed, -sense * s.rollers.speed};
+  const double speed = rig.roller_speed_ramp ? rig.roller_speed_ramp->at(0.0) : s.rollers.speed;
+  roller_omega = {sense * speed, -sense * speed};
   if (s.drive) {
     drivetrain = std::make_unique<Drivetrain>(rig);
     roller_omega = drivetrain->roller_speeds();
@@ -240,19 +241,28 @@ RigWorld::RigWorld(const Scene& scene) {
 RigWorld::~RigWorld() = default;
 
 void RigWorld::step() {
+  const CompiledRig& rig = impl_->rig;
+  const double t_next = static_cast<double>(impl_->steps + 1) * impl_->dt;
   if (impl_->drivetrain) {
     // The train advances under the torques the plate's friction put on the rollers in the last
     // step: -a F_i about y for a friction force F_i (along x) on the plate at roller i's top.
     // The most the plate's static friction holds the rollers with, seen at the motor.
     const std::array<RollerContact, 2>& last = impl_->contacts;
     const double a = impl_->scene.rollers.radius;
-    const std::vector<double>& u = impl_->rig.drive->shaft_ratios;
-    const double holding = impl_->rig.friction.mu_s * a *
+    const double duty = rig.duty_ramp ? rig.duty_ramp->at(t_next) : impl_->scene.drive->motor.duty;
+    const std::vector<double>& u = rig.drive->shaft_ratios;
+    const double holding = rig.friction.mu_s * a *
                            (std::fabs(u[0]) * std::max(last[0].normal_force, 0.0) +
                             std::fabs(u[1]) * std::max(last[1].normal_force, 0.0));
-    impl_->drivetrain->advance(impl_->dt,
-                               {-a * last[0].friction_force, -a * last[1].friction_force}, holding);
+    impl_->drivetrain->advance(
+        impl_->dt, {-a * last[0].friction_force, -a * last[1].friction_force}, duty, holding);
     impl_->roller_omega = impl_->drivetrain->roller_speeds();
+  } else if (rig.roller_speed_ramp) {
+    // The ideal drive's scheduled speed at the step's end (the speed the solver holds the
+    // rollers at over the step; what roller_speeds() reads after it).
+    const double sense = impl_->scene.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
+    const double speed = rig.roller_speed_ramp->at(t_next);
+    impl_->roller_omega = {sense * speed, -sense * speed};
   }
   impl_->world.stepSimulation(impl_->dt, 0);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;

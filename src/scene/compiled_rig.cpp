@@ -46,7 +46,9 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   // motor; on the linear curve the motor keeps duty - load / stall of its no-load speed.
   const MotorDesc& motor = drive.motor;
   out.stall_load_torque = mu_k * plate.mass * scene.world.gravity * r.radius * out.gearbox_ratio;
-  const double share = motor.duty - out.stall_load_torque / motor.stall_torque;
+  const auto ramp = duty_ramp(scene);
+  const double duty = ramp ? ramp->smallest() : motor.duty;
+  const double share = duty - out.stall_load_torque / motor.stall_torque;
   if (share > 0.0) out.roller_speed_loaded = out.gearbox_ratio * motor.no_load_speed * share;
   return out;
 }
@@ -61,6 +63,8 @@ CompiledRig compile_rig(Scene scene) {
   rig.spacing = scene.rollers.spacing;
   rig.gravity = scene.world.gravity;
   rig.roller_speed_nominal = nominal_roller_speed(scene);
+  rig.roller_speed_ramp = roller_speed_ramp(scene);
+  rig.duty_ramp = duty_ramp(scene);
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.mu_k);
 
   const double l = rig.spacing, mu = rig.mu_k, h_c = rig.plate.h_c, g = rig.gravity;

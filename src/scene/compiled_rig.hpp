@@ -26,7 +26,8 @@ struct CompiledDrive {
   double motor_sense = 1.0;          // +1 or -1: the motor's turning that gives the rollers' sense
   // The rollers' steady speed [rad/s] with the plate sliding on both (its friction torque
   // mu_k m g a at the rollers, G times that at the motor), on the motor's linear curve; nullopt
-  // when that load stalls the motor.
+  // when that load stalls the motor. With a duty ramp, at its smallest duty (the ramp stalls
+  // the motor somewhere when this is nullopt).
   std::optional<double> roller_speed_loaded;
   double stall_load_torque = 0.0;  // N m at the motor, of that load
 };
@@ -42,8 +43,14 @@ struct CompiledRig {
   double gravity = 0.0;  // m/s^2
 
   // The rollers' speed without load [rad/s]: rollers.speed for the ideal drive, the duty's
-  // share of the motor's no-load speed times the gearbox's speed-up for the motor drive.
+  // share of the motor's no-load speed times the gearbox's speed-up for the motor drive; for a
+  // scene that ramps the speed or the duty, the largest the ramp reaches (the bounds of the run
+  // rest on it).
   double roller_speed_nominal = 0.0;
+  // What the scene schedules over time, when it does: the rollers' speed [rad/s] (ideal drive,
+  // rollers.speed_ramp) or the motor's duty (drive.motor.duty_ramp).
+  std::optional<Ramp> roller_speed_ramp;
+  std::optional<Ramp> duty_ramp;
   std::optional<CompiledDrive> drive;
 
   // The analytic oscillator for this plate. `restoring` is false when the rollers turn outward

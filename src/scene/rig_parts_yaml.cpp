@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/input_error.hpp"
+#include "scene/ramp_yaml.hpp"
 
 namespace fl {
 namespace {
@@ -112,7 +113,8 @@ DriveDesc read_drive(const YamlNode& node, const CatalogGetter& catalog) {
   node.allow_keys({"motor", "gearbox", "coupling"});
   DriveDesc d;
   if (auto m = node.find("motor")) {
-    m->allow_keys({"rated_voltage", "no_load_speed", "stall_torque", "duty", "inertia"});
+    m->allow_keys(
+        {"rated_voltage", "no_load_speed", "stall_torque", "duty", "duty_ramp", "inertia"});
     if (auto v = m->find("rated_voltage")) d.motor.rated_voltage = v->quantity(Dimension::kVoltage);
     if (auto v = m->find("no_load_speed"))
       d.motor.no_load_speed = v->quantity(Dimension::kAngularSpeed);
@@ -124,6 +126,12 @@ DriveDesc read_drive(const YamlNode& node, const CatalogGetter& catalog) {
     if (!(d.motor.inertia > 0.0)) m->at("inertia").fail("must be positive");
     if (d.motor.duty < 0.0 || d.motor.duty > 1.0)
       m->at("duty").fail("must lie between 0 % and 100 %");
+    if (m->has("duty") && m->has("duty_ramp"))
+      m->at("duty_ramp")
+          .fail("give duty (constant) or duty_ramp (over time), not both; remove one of the keys");
+    if (auto v = m->find("duty_ramp"))
+      d.motor.duty_ramp =
+          read_ramp(*v, {"duty", Dimension::kDimensionless, 0.0, 1.0, "{at: 0 s, duty: 20 %}"});
   }
   const auto teeth = [](const YamlNode& v) {
     const std::int64_t n = v.integer();

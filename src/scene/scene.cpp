@@ -80,8 +80,23 @@ double gearbox_ratio(const DriveDesc& drive) {
 }
 
 double nominal_roller_speed(const Scene& scene) {
-  if (!scene.drive) return scene.rollers.speed;
-  return scene.drive->motor.duty * scene.drive->motor.no_load_speed * gearbox_ratio(*scene.drive);
+  if (!scene.drive) {
+    if (const auto ramp = roller_speed_ramp(scene)) return ramp->largest();
+    return scene.rollers.speed;
+  }
+  const auto ramp = duty_ramp(scene);
+  const double duty = ramp ? ramp->largest() : scene.drive->motor.duty;
+  return duty * scene.drive->motor.no_load_speed * gearbox_ratio(*scene.drive);
+}
+
+std::optional<Ramp> roller_speed_ramp(const Scene& scene) {
+  if (scene.drive || scene.rollers.speed_ramp.empty()) return std::nullopt;
+  return Ramp(scene.rollers.speed_ramp);
+}
+
+std::optional<Ramp> duty_ramp(const Scene& scene) {
+  if (!scene.drive || scene.drive->motor.duty_ramp.empty()) return std::nullopt;
+  return Ramp(scene.drive->motor.duty_ramp);
 }
 
 }  // namespace fl

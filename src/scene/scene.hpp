@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/friction_law.hpp"
+#include "core/ramp.hpp"
 #include "core/regime.hpp"
 #include "core/units.hpp"
 #include "scene/video_yaml.hpp"
@@ -36,8 +37,11 @@ struct RollersDesc {
   double radius = 0.010;              // a, m
   double length = 0.100;              // m, along y
   double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller (ideal drive only)
-  double wall = 0.0015;               // m, the PVC tube's wall (its mass and inertia, when driven)
-  double density = 1400.0;            // kg/m^3 (PVC)
+  // The speed over time instead (ideal drive only; values in rad/s, times in s): piecewise
+  // linear, held after its last point. Empty: the constant `speed`.
+  std::vector<RampPoint> speed_ramp;
+  double wall = 0.0015;     // m, the PVC tube's wall (its mass and inertia, when driven)
+  double density = 1400.0;  // kg/m^3 (PVC)
   RollerSense sense = RollerSense::kInward;
   std::string material = "pvc";
 };
@@ -121,6 +125,9 @@ struct MotorDesc {
   double no_load_speed = 20.943951023931955;  // rad/s at the rated voltage (200 rpm)
   double stall_torque = 0.8;                  // N m at the rated voltage
   double duty = 1.0;                          // PWM duty, 0 to 1
+  // The duty over time instead (values 0 to 1, times in s): piecewise linear, held after its
+  // last point. Empty: the constant `duty`.
+  std::vector<RampPoint> duty_ramp;
   double inertia = 5e-4;  // kg m^2, rotor (~5e-7) through a ~30:1 gearhead, seen at the output
 };
 
@@ -174,6 +181,7 @@ struct OutputDesc {
   bool trajectory = true;  // trajectory.csv with --out
   bool hall = true;        // hall.csv with --out (when the scene has a sensor)
   bool summary = true;     // summary.json with --out
+  bool cycles = true;      // cycles.csv with --out (the plate's cycles, lab/cycle_report.hpp)
 };
 
 struct Scene {
@@ -212,8 +220,14 @@ struct PlateMass {
 PlateMass plate_mass(const Scene& scene);
 
 // The rollers' speed [rad/s] without load: rollers.speed for the ideal drive; for the motor
-// drive, the duty's share of the motor's no-load speed times the gearbox's speed-up.
+// drive, the duty's share of the motor's no-load speed times the gearbox's speed-up. For a scene
+// that ramps the speed or the duty, the largest the ramp reaches (what bounds the run).
 double nominal_roller_speed(const Scene& scene);
+
+// The ramp a scene schedules (rollers.speed_ramp in rad/s for the ideal drive, or
+// drive.motor.duty_ramp for the motor), or nullopt when its speed or duty is constant.
+std::optional<Ramp> roller_speed_ramp(const Scene& scene);
+std::optional<Ramp> duty_ramp(const Scene& scene);
 
 // The gearbox's speed-up from the motor to the rollers (product of driver / driven teeth).
 double gearbox_ratio(const DriveDesc& drive);

@@ -1,6 +1,7 @@
 #include "scene/scene_checks.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
@@ -38,6 +39,28 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   positive(s.rollers.length, "rollers.length");
   need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
        describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
+  // A ramp: times from 0 s, increasing; speeds >= 0, duties 0 to 1.
+  const auto ramp = [&](const std::vector<RampPoint>& points, const char* key, double least,
+                        double most, const char* unit) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const RampPoint& p = points[i];
+      need(std::isfinite(p.at) && p.at >= 0.0 && (i == 0 || p.at > points[i - 1].at), key,
+           describe("point ", i, ": its time ", p.at,
+                    " s must be >= 0 and after the previous "
+                    "point's"));
+      need(std::isfinite(p.value) && p.value >= least && p.value <= most, key,
+           describe("point ", i, ": its value ", p.value, unit, " must lie from ", least, " to ",
+                    most));
+    }
+  };
+  const std::size_t before_ramps = problems.size();
+  ramp(s.rollers.speed_ramp, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
+       " rad/s");
+  need(s.rollers.speed_ramp.empty() || !s.drive, "rollers.speed_ramp",
+       "the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead");
+  if (s.drive) ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");
+  // The largest speed a ramp reaches is read below only once the ramps hold.
+  const bool ramps_hold = problems.size() == before_ramps;
   if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius))
     need(s.rollers.spacing > 2.0 * s.rollers.radius, "rollers.spacing",
          describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
@@ -67,9 +90,9 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
          "from mu_s to mu_k (e.g. 10 mm/s)");
     need(std::isfinite(f.beta), "friction.beta", describe("beta must be finite, found ", f.beta));
     // mu(s) falls monotonically when beta < 0: its least value is at the largest slip speed.
-    const double s_max = largest_slip_speed(s);
+    const double s_max = ramps_hold ? largest_slip_speed(s) : 0.0;
     const double mu_min = friction_law(f).kinetic(s_max);
-    need(f.beta >= 0.0 || mu_min > 0.0, "friction.beta",
+    need(!ramps_hold || f.beta >= 0.0 || mu_min > 0.0, "friction.beta",
          describe("the law's mu(s) goes negative (", mu_min, " at the run's largest slip speed ",
                   s_max, " m/s); use a smaller |beta| or a larger mu_k"));
   }

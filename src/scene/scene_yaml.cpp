@@ -6,6 +6,7 @@
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
+#include "scene/ramp_yaml.hpp"
 #include "scene/rig_parts_yaml.hpp"
 #include "scene/scene_checks.hpp"
 
@@ -31,8 +32,8 @@ void read_world(const YamlNode& n, WorldDesc& w) {
 }
 
 void read_rollers(const YamlNode& n, RollersDesc& r) {
-  n.allow_keys(
-      {"spacing", "radius", "diameter", "length", "wall", "density", "speed", "sense", "material"});
+  n.allow_keys({"spacing", "radius", "diameter", "length", "wall", "density", "speed", "speed_ramp",
+                "sense", "material"});
   if (auto v = n.find("spacing")) r.spacing = v->quantity(Dimension::kLength);
   if (n.has("radius") && n.has("diameter"))
     n.at("diameter").fail("give radius or diameter, not both");
@@ -42,6 +43,12 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
   if (auto v = n.find("wall")) r.wall = v->quantity(Dimension::kLength);
   if (auto v = n.find("density")) r.density = v->quantity(Dimension::kDensity);
   if (auto v = n.find("speed")) r.speed = v->quantity(Dimension::kAngularSpeed);
+  if (n.has("speed") && n.has("speed_ramp"))
+    n.at("speed_ramp")
+        .fail("give speed (constant) or speed_ramp (over time), not both; remove one of the keys");
+  if (auto v = n.find("speed_ramp"))
+    r.speed_ramp = read_ramp(
+        *v, {"speed", Dimension::kAngularSpeed, 0.0, std::nullopt, "{at: 0 s, speed: 100 rpm}"});
   if (auto v = n.find("sense")) {
     const std::string sense = v->text();
     if (sense == "inward")
@@ -163,10 +170,11 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
 }
 
 void read_output(const YamlNode& n, OutputDesc& o) {
-  n.allow_keys({"trajectory", "hall", "summary"});
+  n.allow_keys({"trajectory", "hall", "summary", "cycles"});
   if (auto v = n.find("trajectory")) o.trajectory = v->boolean();
   if (auto v = n.find("hall")) o.hall = v->boolean();
   if (auto v = n.find("summary")) o.summary = v->boolean();
+  if (auto v = n.find("cycles")) o.cycles = v->boolean();
 }
 
 // The node of a dotted key (or its nearest existing parent), to locate a problem.
@@ -222,10 +230,12 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
     if (auto blocks = v->find("blocks")) scene.plate.blocks = read_plate_blocks(*blocks, catalog);
   }
   if (auto v = root.find("drive")) {
-    if (root.has("rollers") && root.at("rollers").has("speed"))
-      root.at("rollers").at("speed").fail(
-          "the drive sets the rollers' speed (motor, duty and gears); remove this key or the "
-          "drive");
+    for (const char* key : {"speed", "speed_ramp"}) {
+      if (root.has("rollers") && root.at("rollers").has(key))
+        root.at("rollers").at(key).fail(
+            "the drive sets the rollers' speed (motor, duty and gears); remove this key or the "
+            "drive (drive.motor.duty_ramp ramps the motor's duty)");
+    }
     scene.drive = read_drive(*v, catalog);
   }
   if (auto v = root.find("frame")) scene.frame = read_frame(*v, catalog);

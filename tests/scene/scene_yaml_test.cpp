@@ -247,3 +247,82 @@ TEST(SceneYaml, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
 
 }  // namespace
 }  // namespace fl
+
+namespace fl {
+namespace {
+
+// A ramp's scene: the small scene's rollers with a speed ramp instead of a speed.
+std::string with_rollers(const std::string& rollers) {
+  return "format: 1\nrollers:\n" + rollers + "friction:\n  mu_k: 0.3\n";
+}
+
+TEST(SceneYaml, RampKeysLoadInSiAndTheirErrorsAreLocated) {
+  const Scene s =
+      load(with_rollers("  speed_ramp: [{at: 0 s, speed: 100 rpm}, {at: 1 min, speed: 1600 rpm}, "
+                        "{at: 120 s, speed: 100 rpm}]\n"));
+  ASSERT_EQ(s.rollers.speed_ramp.size(), 3u);
+  EXPECT_DOUBLE_EQ(s.rollers.speed_ramp[1].at, 60.0);
+  EXPECT_NEAR(s.rollers.speed_ramp[1].value, 1600.0 * 2.0 * std::numbers::pi / 60.0, 1e-12);
+  // The run's bounds rest on the ramp's largest speed.
+  EXPECT_NEAR(nominal_roller_speed(s), 1600.0 * 2.0 * std::numbers::pi / 60.0, 1e-12);
+  EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: 0 s, speed: 100 rpm}, {at: 0 s, speed: "
+                                  "200 rpm}]\n")),
+            "t.yaml:3:48: error: rollers.speed_ramp[1].at: expected a time after the previous "
+            "point's 0 s (times must increase), found 0 s");
+  EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: 0 s, speed: -5 rpm}]\n")),
+            "t.yaml:3:33: error: rollers.speed_ramp[0].speed: expected a value >= 0, found -5 rpm");
+  EXPECT_EQ(error_of(with_rollers("  speed_ramp: [{at: -1 s, speed: 5 rpm}]\n")),
+            "t.yaml:3:21: error: rollers.speed_ramp[0].at: expected a time >= 0 s (from the run's "
+            "start), found -1 s");
+  EXPECT_NE(error_of(with_rollers("  speed_ramp: [{at: 0 s, sped: 5 rpm}]\n")).find("unknown key"),
+            std::string::npos);
+  EXPECT_NE(error_of(with_rollers("  speed_ramp: []\n")).find("expected a list of points"),
+            std::string::npos);
+  EXPECT_EQ(error_of(with_rollers("  speed: 100 rpm\n  speed_ramp: [{at: 0 s, speed: 5 rpm}]\n")),
+            "t.yaml:4:15: error: rollers.speed_ramp: give speed (constant) or speed_ramp (over "
+            "time), not both; remove one of the keys");
+}
+
+TEST(SceneYaml, DutyRampBelongsToTheDriveAndStaysWithinZeroAndOne) {
+  const std::string drive =
+      "format: 1\nfriction: {mu_k: 0.3}\ndrive:\n  motor: {duty_ramp: [{at: 0 s, duty: 20 %}, "
+      "{at: 10 s, duty: 100 %}]}\n";
+  const Scene s = load_scene_text(drive, "t.yaml", {}, kPaper, kParts);
+  ASSERT_EQ(s.drive->motor.duty_ramp.size(), 2u);
+  EXPECT_DOUBLE_EQ(s.drive->motor.duty_ramp[0].value, 0.2);
+  const auto error = [&](const std::string& text) {
+    try {
+      load_scene_text(text, "t.yaml", {}, kPaper, kParts);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("format: 1\nfriction: {mu_k: 0.3}\ndrive:\n  motor: {duty_ramp: [{at: 0 s, "
+                  "duty: 120 %}]}\n")
+                .find("drive.motor.duty_ramp[0].duty: expected a value from 0 to 1, found 120 %"),
+            std::string::npos);
+  EXPECT_NE(error("format: 1\nfriction: {mu_k: 0.3}\ndrive:\n  motor: {duty: 50 %, duty_ramp: "
+                  "[{at: 0 s, duty: 20 %}]}\n")
+                .find("give duty (constant) or duty_ramp (over time), not both"),
+            std::string::npos);
+  // The ideal drive's ramp with a drive is refused: the motor sets the speed.
+  EXPECT_NE(error("format: 1\nfriction: {mu_k: 0.3}\nrollers: {speed_ramp: [{at: 0 s, speed: 5 "
+                  "rpm}]}\ndrive: {}\n")
+                .find("rollers.speed_ramp: the drive sets the rollers' speed"),
+            std::string::npos);
+}
+
+TEST(SceneChecks, RampsBuiltByHandAreChecked) {
+  Scene s;
+  s.rollers.speed_ramp = {{0.0, 10.0}, {5.0, -1.0}};
+  const auto problems = check_scene(s);
+  ASSERT_FALSE(problems.empty());
+  EXPECT_EQ(problems.front().key, "rollers.speed_ramp");
+  s.rollers.speed_ramp = {{2.0, 10.0}, {1.0, 20.0}};
+  ASSERT_FALSE(check_scene(s).empty());
+  EXPECT_EQ(check_scene(s).front().key, "rollers.speed_ramp");
+}
+
+}  // namespace
+}  // namespace fl

@@ -207,6 +207,41 @@ TEST(CliSweep, PlotsAreDrawn) {
   }
 }
 
+TEST(CliSweep, CyclesAreCollectedAndPlottedAgainstTheRollersSpeed) {
+  // The ramp's scene, shortened to 30 s: 400 rpm down to 100 rpm and back, two laws.
+  const fs::path base = folder("");
+  fs::create_directories(base);
+  const std::string file = (base / "ramp.yaml").string();
+  std::ofstream(file)
+      << "format: 1\nname: ramp\nscene: " << kSource << "/scenes/roller-ramp.yaml\n"
+      << "cycles: true\nset:\n  world.duration: 30 s\n  rollers.speed_ramp: [{at: 0 s, speed: "
+         "400 rpm}, {at: 15 s, speed: 100 rpm}, {at: 30 s, speed: 400 rpm}]\n"
+      << "axes:\n  - key: friction\n    name: law\n    values: [{mu_k: 0.29}, {mu_k: 0.29, "
+         "mu_s: 0.348}]\n";
+  const fs::path out = base / "out";
+  const auto r = lab("sweep " + file + " -j 2 --plot --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  for (const char* name : {"00000000.csv", "00000001.csv"}) {
+    const std::string csv = test::read_text(out / "cycles" / name);
+    EXPECT_EQ(csv.rfind("start_s,period_s,amplitude_m,", 0), 0u) << name;
+    // A 30 s run of 0.79 s periods: about 37 cycles, some going down, some up.
+    const auto rows = std::count(csv.begin(), csv.end(), '\n') - 1;
+    EXPECT_GT(rows, 30) << name;
+    EXPECT_NE(csv.find(",down,"), std::string::npos) << name;
+    EXPECT_NE(csv.find(",up,"), std::string::npos) << name;
+  }
+  EXPECT_TRUE(fs::exists(out / "cycles.png"));
+  EXPECT_NE(r.out.find("cycles.png"), std::string::npos) << r.out;
+  // A run writes the same cycles to cycles.csv as its sweep point.
+  const fs::path run = base / "run";
+  const auto single = lab("run " + kSource + "/scenes/roller-ramp.yaml --set world.duration=30s " +
+                          "--set \"rollers.speed_ramp=[{at: 0 s, speed: 400 rpm}, {at: 15 s, "
+                          "speed: 100 rpm}, {at: 30 s, speed: 400 rpm}]\" --set " +
+                          "\"friction={mu_k: 0.29}\" --out " + run.string());
+  ASSERT_EQ(single.status, 0) << single.err;
+  EXPECT_EQ(test::read_text(run / "cycles.csv"), test::read_text(out / "cycles" / "00000000.csv"));
+}
+
 // Four points: one that runs, one whose 0.3 s step blows up (failed: a guard stops the run) and
 // two whose spacing is not a length (invalid).
 const std::string kFailing =

@@ -199,13 +199,48 @@ TEST(SweepSpec, AKeyPathTheSceneDoesNotHaveIsLocatedInTheSweepFile) {
 }
 
 TEST(SweepSpec, SweepFilesInTheRepositoryLoad) {
-  for (const char* name : {"materials.yaml", "spacing.yaml", "roller-speed.yaml"}) {
+  for (const char* name :
+       {"materials.yaml", "spacing.yaml", "roller-speed.yaml", "roller-speed-ramp.yaml"}) {
     const SweepSpec spec = load_sweep_file(kSweeps + "/" + name, kInputs);
     EXPECT_GT(spec.point_count(), 1u) << name;
   }
   EXPECT_EQ(load_sweep_file(kSweeps + "/spacing.yaml", kInputs).point_count(), 120u);
   EXPECT_EQ(load_sweep_file(kSweeps + "/materials.yaml", kInputs).point_count(), 15u);
   EXPECT_EQ(load_sweep_file(kSweeps + "/roller-speed.yaml", kInputs).point_count(), 40u);
+}
+
+TEST(SweepSpec, RollerSpeedRampSweepRunsOneRampPerLawAndRecordsCycles) {
+  const SweepSpec spec = load_sweep_file(kSweeps + "/roller-speed-ramp.yaml", kInputs);
+  EXPECT_EQ(spec.point_count(), 4u);
+  EXPECT_TRUE(spec.cycles);
+  EXPECT_EQ(sweep_plan(spec).value("cycles", false), true);
+  // Each point is the ramp's scene with one law, and the scene loads with it.
+  const std::vector<std::pair<FrictionLawKind, double>> laws{{FrictionLawKind::kCoulomb, 0.29},
+                                                             {FrictionLawKind::kCoulomb, 0.348},
+                                                             {FrictionLawKind::kStribeck, 0.348},
+                                                             {FrictionLawKind::kStribeck, 0.29}};
+  for (std::size_t i = 0; i < spec.point_count(); ++i) {
+    const SweepPoint point = sweep_point(spec, i);
+    const Scene scene =
+        load_scene_text(spec.scene_text, spec.scene_file, point.overrides, kInputs.paper);
+    const FrictionLaw law = friction_law(scene.friction);
+    EXPECT_EQ(law.kind, laws[i].first) << i;
+    EXPECT_DOUBLE_EQ(law.mu_k, 0.29) << i;
+    EXPECT_DOUBLE_EQ(law.mu_s, laws[i].second) << i;
+    ASSERT_FALSE(scene.rollers.speed_ramp.empty()) << i;
+  }
+  EXPECT_DOUBLE_EQ(friction_law(load_scene_text(spec.scene_text, spec.scene_file,
+                                                sweep_point(spec, 2).overrides, kInputs.paper)
+                                    .friction)
+                       .v_s,
+                   0.001);
+  EXPECT_DOUBLE_EQ(load_scene_text(spec.scene_text, spec.scene_file, sweep_point(spec, 3).overrides,
+                                   kInputs.paper)
+                       .friction.beta,
+                   -0.0002);
+  // Without `cycles:` a plan says nothing of them (its bytes are as before).
+  EXPECT_FALSE(sweep_plan(load(kHead + "axes:\n  - {key: rollers.spacing, values: [60 mm]}\n"))
+                   .contains("cycles"));
 }
 
 TEST(SweepSpec, PlanNamesEveryPointAndChangesWithIt) {

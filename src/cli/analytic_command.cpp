@@ -136,8 +136,8 @@ void print_report(const AnalyticReport& r) {
             ? fmt::format("decays by e every {:.4g} s", -1.0 / a.linearised->gamma)
             : std::string("steady"),
         a.linearised->period);
-  fmt::print("  motion from A = {:.0f} mm       {}{}\n", s.amplitude * 1e3,
-             regime_name(a.prediction.regime),
+  fmt::print("  where the motion goes        {} (from A = {:.0f} mm){}\n",
+             regime_name(a.prediction.regime), s.amplitude * 1e3,
              a.prediction.settled_amplitude
                  ? fmt::format(", settling at {:.3f} mm", *a.prediction.settled_amplitude * 1e3)
                  : std::string());

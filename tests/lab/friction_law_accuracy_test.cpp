@@ -1,0 +1,102 @@
+// The Bullet world against the friction laws' closed forms (docs/friction-laws.md) at the lab's
+// default 1 ms step: the stick-slip cycle's period, a slip-dependent law's growth and decay rates,
+// and the clipped cycle's amplitude with the half-step lag docs/physics.md derives. The closed
+// forms are called here directly (core/), not through the run's own theory numbers.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/friction_oscillator.hpp"
+#include "core/stick_slip_cycle.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/experiment.hpp"
+#include "scene/compiled_rig.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+Scene minimal(std::vector<SceneOverride> overrides) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  Scene s = load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
+                            overrides, [&]() -> const PaperTable& { return table; });
+  s.sensor.reset();  // the trajectory is what is compared
+  return s;
+}
+
+PlateOnRollers plate_of(const CompiledRig& rig) {
+  return {rig.spacing, rig.plate.h_c, rig.gravity};
+}
+
+double surface_speed(const Scene& s) {
+  return s.rollers.speed * s.rollers.radius;
+}
+
+// mu_s = 1.2 mu_k at 200 rpm from 30 mm: a stick-slip cycle with sticks of 2 x_b / v_r.
+TEST(FrictionLawAccuracy, StickSlipCycleWithinOneTenThousandthOfItsClosedForm) {
+  const Scene s = minimal({{"rollers.speed", "200 rpm"},
+                           {"plate.offset", "30 mm"},
+                           {"friction.mu_s", "0.348"},
+                           {"world.duration", "6 s"}});
+  const CompiledRig rig = compile_rig(s);
+  const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate_of(rig), surface_speed(s));
+  const RunSummary r = run_experiment(rig, {});
+  ASSERT_EQ(r.regime, Regime::kStickSlip) << r.regime_evidence;
+  ASSERT_TRUE(r.stick_slip_period && r.stick_slip_amplitude && r.stick_duration);
+  EXPECT_NEAR(*r.stick_slip_period / cycle.period, 1.0, 1e-4);
+  // The amplitude and the stick's length carry the step in which the stick is found: at most
+  // v_r dt of travel, one step of time.
+  EXPECT_NEAR(*r.stick_slip_amplitude, cycle.amplitude, surface_speed(s) * s.world.time_step);
+  EXPECT_NEAR(*r.stick_duration, cycle.stick_duration, 1.5 * s.world.time_step);
+}
+
+// A linear law: x'' - 2 gamma x' + Omega^2 x = 0 exactly while both rollers slip, with
+// gamma = -g l beta / (2 (l - 2 mu(v_r) h_c)).
+TEST(FrictionLawAccuracy, GrowthAndDecayRatesWithinOneThousandthOfTheLinearisedRate) {
+  for (const char* beta : {"-0.01 s/m", "0.02 s/m"}) {
+    const Scene s = minimal(
+        {{"friction.law", "stribeck"}, {"friction.beta", beta}, {"world.duration", "10 s"}});
+    const CompiledRig rig = compile_rig(s);
+    const LinearisedMotion motion =
+        linearised_motion(rig.friction, plate_of(rig), surface_speed(s));
+    const RunSummary r = run_experiment(rig, {});
+    ASSERT_EQ(r.regime, motion.gamma > 0.0 ? Regime::kGrows : Regime::kDecays)
+        << beta << ": " << r.regime_evidence;
+    ASSERT_TRUE(r.growth_rate.has_value());
+    EXPECT_NEAR(*r.growth_rate / motion.gamma, 1.0, 1e-3) << beta;
+    // The period of a growing or decaying oscillation: 2 pi / sqrt(Omega^2 - gamma^2).
+    ASSERT_TRUE(r.period_trajectory.has_value());
+    EXPECT_NEAR(*r.period_trajectory / motion.period, 1.0, 1e-4) << beta;
+  }
+}
+
+// mu_s = mu_k at 200 rpm: one stick clips the amplitude to v_r / Omega, and each later graze
+// trims it until the cycle's largest speed stays mu_k g dt / 2 below v_r: the amplitude settles
+// at (v_r - mu_k g dt / 2) / Omega, first order in dt (docs/physics.md).
+TEST(FrictionLawAccuracy, ClippedAmplitudeLagsByHalfAStepsKineticSpeedChange) {
+  std::vector<double> deficits;
+  for (const char* step : {"1 ms", "0.5 ms"}) {
+    const Scene s = minimal({{"rollers.speed", "200 rpm"},
+                             {"plate.offset", "30 mm"},
+                             {"world.time_step", step},
+                             {"world.duration", "40 s"}});
+    const CompiledRig rig = compile_rig(s);
+    const double omega = sliding_angular_frequency(rig.friction, plate_of(rig), surface_speed(s));
+    const RunSummary r = run_experiment(rig, {});
+    ASSERT_EQ(r.regime, Regime::kClipped) << step << ": " << r.regime_evidence;
+    ASSERT_TRUE(r.amplitude_clipped.has_value());
+    const double predicted = rig.mu_k * rig.gravity * s.world.time_step / (2.0 * omega);
+    const double deficit = surface_speed(s) / omega - *r.amplitude_clipped;
+    EXPECT_NEAR(deficit / predicted, 1.0, 0.1) << step;
+    deficits.push_back(deficit);
+    // The period is the thick formula's: the clip does not change it.
+    ASSERT_TRUE(r.period_trajectory.has_value());
+    EXPECT_NEAR(*r.period_trajectory / (2.0 * std::acos(-1.0) / omega), 1.0, 1e-4) << step;
+  }
+  EXPECT_NEAR(deficits[0] / deficits[1], 2.0, 0.2);
+}
+
+}  // namespace
+}  // namespace fl

@@ -103,7 +103,7 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     if (video) print_video(*video, o.video);
   }
   // A guard stopped the run: the outputs up to that point are written, and the status says so.
-  return summary.failure ? 3 : 0;
+  return summary.failure || summary.regime == Regime::kNumericallyFailed ? 3 : 0;
 }
 
 }  // namespace

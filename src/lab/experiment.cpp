@@ -256,7 +256,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   out.regime_evidence = finding.evidence;
   // A clipped oscillation's period is read after its last stick.
   double harmonic_since = 0.0;
-  if (finding.motion) {
+  if (finding.motion && finding.motion->regime == finding.regime) {
     const MotionFinding& m = *finding.motion;
     if (m.regime == Regime::kClipped) {
       out.clip_time = m.clip_time;

@@ -5,6 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "core/friction_oscillator.hpp"
+#include "lab/law_resolution.hpp"
+
 namespace fl {
 namespace {
 
@@ -30,7 +33,8 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
       mass_(rig.plate.mass),
       inertia_(rig.plate.inertia_pitch),
       h_c_(rig.plate.h_c),
-      slip_dependent_(rig.friction.depends_on_slip()) {
+      slip_dependent_(rig.friction.depends_on_slip()),
+      law_(rig.friction) {
   const Scene& scene = rig.scene;
   const double plate_mass = mass_;
   surface_speed_ = rig.roller_speed_nominal * scene.rollers.radius;
@@ -46,6 +50,15 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
   tracker_.add(0.0, scene.plate.offset, scene.plate.velocity);
+  // The law's growth rate linearised about the rollers' speed (none where it has no meaning).
+  if (slip_dependent_ && rig.restoring) {
+    try {
+      linearised_growth_ =
+          linearised_motion(rig.friction, {rig.spacing, h_c_, rig.gravity}, surface_speed_).gamma;
+    } catch (const DomainError&) {
+      linearised_growth_.reset();
+    }
+  }
 }
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
@@ -292,6 +305,22 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
   f.regime = motion.regime;
   f.since = motion.since;
   f.evidence = motion.evidence;
+  // A law the step does not resolve where the plate used it: what the run shows is the step's.
+  std::optional<double> growth;  // the larger of the measured and the law's linearised rate
+  if (slip_dependent_) {
+    growth = linearised_growth_;
+    if (motion.growth_rate && (!growth || std::fabs(*motion.growth_rate) > std::fabs(*growth)))
+      growth = motion.growth_rate;
+  }
+  if (const std::optional<UnresolvedLaw> unresolved = unresolved_law(
+          law_, scene_.world.gravity, scene_.world.time_step, !sticks_.empty(), growth)) {
+    f.regime = Regime::kNumericallyFailed;
+    f.since = 0.0;
+    f.evidence = unresolved->reason + " (the run looked " + regime_name(motion.regime) + ": " +
+                 motion.evidence + ")";
+    f.motion = std::move(motion);
+    return f;
+  }
   if (motion.regime == Regime::kOscillates && sticks_.empty())
     f.evidence = fmt::format(
         "both rollers slipped throughout (the plate's speed stayed at least "

@@ -56,8 +56,10 @@ class RegimeMonitor {
   const Scene& scene_;
   double mass_, inertia_, h_c_;
   bool slip_dependent_;
-  double surface_speed_;  // m/s, the rollers' top without load (for the bounds)
-  double energy_bound_;   // J
+  FrictionLaw law_;
+  std::optional<double> linearised_growth_;  // 1/s, a slip-dependent law's at the rollers' speed
+  double surface_speed_;                     // m/s, the rollers' top without load (for the bounds)
+  double energy_bound_;                      // J
   double penetration_bound_;
   double speed_bound_;  // m/s
   double start_abs_x_ = 0.0;

@@ -29,6 +29,18 @@ Trial try_step(const Scene& base, double dt, Regime expected) {
   trial.summary = run_experiment(scene, {});
   const RunSummary& r = trial.summary;
   trial.trustworthy = r.regime == expected && r.regime != Regime::kNumericallyFailed;
+  // A stick-slip cycle's period against its closed form, where there is one.
+  if (trial.trustworthy && expected == Regime::kStickSlip && r.stick_slip_period_theory) {
+    trial.trustworthy = r.stick_slip_period &&
+                        std::fabs(*r.stick_slip_period / *r.stick_slip_period_theory - 1.0) <=
+                            kTrustworthyPeriodError;
+  }
+  // A clipped amplitude against v_r / Omega: the step's lag, mu_k g dt / (2 Omega), within 1 %.
+  if (trial.trustworthy && expected == Regime::kClipped && r.amplitude_clipped_theory) {
+    trial.trustworthy = r.amplitude_clipped &&
+                        std::fabs(*r.amplitude_clipped / *r.amplitude_clipped_theory - 1.0) <=
+                            kTrustworthyAmplitudeError;
+  }
   if (trial.trustworthy && expected == Regime::kOscillates) {
     trial.trustworthy =
         r.period_trajectory && r.period_thick &&

@@ -24,7 +24,8 @@ struct StabilityRow {
   std::optional<std::string> solver_iterations_raised;  // from what, to what, why
   bool as_expected = false;  // found == expected (and == declared, if any)
   // Largest step in [1e-5 s, 1/60 s] at which the run is trustworthy: no numerical failure, the
-  // expected regime, and (for an oscillation) the period within 0.1 % of the thick formula.
+  // expected regime, and (for an oscillation) the period within 0.1 % of the thick formula (for a
+  // stick-slip cycle, of its closed form; a clipped amplitude within 1 % of v_r / Omega).
   std::optional<double> largest_step;  // s
   std::string step_note;               // when there is none, or every step tried was fine
   std::optional<double> period_error;  // relative to the thick formula, at the scene's step
@@ -36,6 +37,8 @@ struct StabilityRow {
 
 // A step is trustworthy when the period is within this of the thick formula.
 inline constexpr double kTrustworthyPeriodError = 1e-3;
+// A clipped cycle's amplitude is trustworthy within this of v_r / Omega.
+inline constexpr double kTrustworthyAmplitudeError = 1e-2;
 
 StabilityRow run_stability_case(const Scene& scene);
 

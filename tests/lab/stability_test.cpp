@@ -83,3 +83,35 @@ TEST(StiffCases, OneGramAndTenKilogramPlatesHaveTheSamePeriod) {
 
 }  // namespace
 }  // namespace fl
+
+namespace fl {
+namespace {
+
+// The Stribeck drop (v_s = 1 mm/s) is crossed at each breakaway; at 1 ms one step changes the slip
+// speed by mu_s g dt = 3.4 mm/s: the run is diagnosed numerical and names the step that resolves
+// it, v_s / (mu_s g) = 0.29 ms, at which the same scene runs its stick-slip cycle.
+TEST(StiffCases, AStribeckDropNarrowerThanAStepIsDiagnosedNumerical) {
+  Scene scene = load_case("stribeck-drop");
+  scene.world.time_step = 1e-3;
+  const RunSummary coarse = run_experiment(scene, {});
+  EXPECT_EQ(coarse.regime, Regime::kNumericallyFailed) << coarse.regime_evidence;
+  EXPECT_NE(coarse.regime_evidence.find("world.time_step to 0.293 ms"), std::string::npos)
+      << coarse.regime_evidence;
+  EXPECT_FALSE(coarse.period.has_value());
+  scene.world.time_step = 0.25e-3;
+  const RunSummary fine = run_experiment(scene, {});
+  EXPECT_EQ(fine.regime, Regime::kStickSlip) << fine.regime_evidence;
+}
+
+// A steep falling law (beta = -1 s/m, gamma = 5 /s at 100 rpm) at a step where the amplitude
+// e-folds by more than 1 % per step is numerical too.
+TEST(StiffCases, AGrowthFasterThanOnePercentPerStepIsDiagnosedNumerical) {
+  Scene scene = load_case("beta-steep");
+  scene.world.time_step = 4e-3;
+  const RunSummary r = run_experiment(scene, {});
+  EXPECT_EQ(r.regime, Regime::kNumericallyFailed) << r.regime_evidence;
+  EXPECT_NE(r.regime_evidence.find("set world.time_step to"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace fl

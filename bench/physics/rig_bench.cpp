@@ -39,6 +39,22 @@ void BM_PaperRigTenSeconds(benchmark::State& state) {
 }
 BENCHMARK(BM_PaperRigTenSeconds)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// A whole run of the minimal scene (10 s at 1 ms, no sensor): the world's steps with what the run
+// does at each (the regime monitor, the solver's convergence check, the trajectory's tracker).
+void BM_MinimalSceneRunTenSeconds(benchmark::State& state) {
+  fl::Scene scene;
+  scene.friction.mu_k = 0.29;
+  long long steps = 0;
+  for (auto _ : state) {
+    const fl::RunSummary r = fl::run_experiment(scene, {});
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.period_trajectory);
+  }
+  state.counters["steps_per_second"] =
+      benchmark::Counter(static_cast<double>(steps), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MinimalSceneRunTenSeconds)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // A frame of 300 parts, loaded from YAML text with the part index read from its file each time
 // (the cost a user pays when a scene opens).
 void BM_LoadSceneWith300Parts(benchmark::State& state) {

@@ -24,6 +24,24 @@ void BM_MinimalSceneStep(benchmark::State& state) {
 }
 BENCHMARK(BM_MinimalSceneStep);
 
+// The same with a slip-dependent law (Stribeck drop and slope): the law's coefficient is computed
+// per contact point and step at the mid-step slip (target: at most 15 % below the coulomb step).
+void BM_MinimalSceneStepStribeck(benchmark::State& state) {
+  fl::Scene scene = minimal_scene();
+  scene.friction.law = fl::FrictionLawKind::kStribeck;
+  scene.friction.mu_s = 0.35;
+  scene.friction.v_s = 1e-3;
+  scene.friction.beta = -0.001;
+  fl::RigWorld world(scene);
+  for (auto _ : state) {
+    world.step();
+    benchmark::DoNotOptimize(world.plate().x);
+  }
+  state.counters["steps_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MinimalSceneStepStribeck);
+
 // Ten simulated seconds at 1 kHz, world construction included (target: under 0.05 s).
 void BM_MinimalSceneTenSecondsAt1kHz(benchmark::State& state) {
   fl::Scene scene = minimal_scene();

@@ -179,6 +179,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     view.drive = world.drive();
     view.shafts = world.shafts();
     view.estimator = estimator ? &*estimator : nullptr;
+    view.monitor = &monitor;
     options.observer(view);
     view.new_samples.clear();
   };

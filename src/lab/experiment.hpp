@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/cycle_tracker.hpp"
+#include "lab/regime_monitor.hpp"
 #include "lab/run_summary.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
@@ -43,6 +44,7 @@ struct StepView {
   std::vector<ShaftState> shafts;            // the drive layout's shafts (scene/drive_layout.hpp)
   std::vector<HallSample> new_samples;       // the Hall samples taken during this step
   const HallEstimator* estimator = nullptr;  // the rig's estimator, live (null without a sensor)
+  const RegimeMonitor* monitor = nullptr;    // the run's regime diagnosis, live
 };
 
 struct RunOptions {

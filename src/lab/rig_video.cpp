@@ -94,6 +94,7 @@ struct RigVideo final : public VideoEngine {
   render::EstimatorValues estimator;
   std::optional<double> motor_speed;
   double roller_speed = 0.0;
+  std::string regime;  // the run's diagnosis so far
   bool has_sensor = false;
 
   VideoReport report;
@@ -195,6 +196,7 @@ void RigVideo::take_samples(const VideoStep& step) {
 void RigVideo::take_estimator(const VideoStep& step) {
   if (step.motor_speed) motor_speed = step.motor_speed;
   roller_speed = step.roller_speed;
+  regime = step.regime;
   if (!step.estimate) return;
   const VideoEstimate& r = *step.estimate;
   estimator.pulses = r.pulses;
@@ -229,6 +231,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   o.material = material;
   o.paper_period = scene.friction.paper_period;
   o.paper_mu_k = scene.friction.paper_mu_k;
+  o.regime = regime;
   return o;
 }
 

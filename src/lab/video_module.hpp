@@ -58,6 +58,7 @@ struct VideoStep {
   double roller_speed = 0.0;                 // rad/s about +y, roller 0
   std::vector<VideoHallSample> new_samples;  // the Hall samples taken during this step
   std::optional<VideoEstimate> estimate;     // the rig's estimator (scenes with a sensor)
+  std::string regime;  // the regime diagnosed so far, with when it began (lab/regime_monitor.hpp)
 };
 
 // The frames of one run: what VideoRecorder forwards to.

@@ -3,6 +3,8 @@
 // fl_render).
 #include "lab/video_recorder.hpp"
 
+#include <fmt/format.h>
+
 #include "lab/hall_estimator.hpp"
 #include "lab/video_module.hpp"
 
@@ -10,7 +12,7 @@ namespace fl {
 namespace {
 
 // The step as the module takes it. `out`'s vectors are reused from step to step.
-void copy_step(const StepView& view, VideoStep& out) {
+void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   out.t = view.t;
   out.plate_x = view.plate.x;
   out.plate_y = view.plate.y;
@@ -31,6 +33,14 @@ void copy_step(const StepView& view, VideoStep& out) {
   out.motor_speed.reset();
   if (view.drive) out.motor_speed = view.drive->motor_speed;
   out.roller_speed = view.roller_speeds[0];
+  // The diagnosis so far, read every 10 ms of simulated time (a frame's worth at most).
+  if (view.monitor != nullptr && (out.regime.empty() || view.t >= next_regime_t)) {
+    const RegimeFinding f = view.monitor->finding(std::nullopt);
+    out.regime = f.since > 0.0
+                     ? fmt::format("{} since t = {:.3f} s", regime_name(f.regime), f.since)
+                     : std::string(regime_name(f.regime));
+    next_regime_t = view.t + 0.01;
+  }
   out.new_samples.clear();
   for (const HallSample& sample : view.new_samples)
     out.new_samples.push_back({sample.t_us * 1e-6, static_cast<double>(sample.adc)});
@@ -54,6 +64,7 @@ void copy_step(const StepView& view, VideoStep& out) {
 struct VideoRecorder::Impl {
   std::unique_ptr<VideoEngine> engine;
   VideoStep step;
+  double next_regime_t = 0.0;  // s, when the diagnosis is read again
 };
 
 VideoRecorder::VideoRecorder(const Scene& scene, const VideoRequest& request)
@@ -65,7 +76,7 @@ VideoRecorder::VideoRecorder(const Scene& scene, const VideoRequest& request)
 VideoRecorder::~VideoRecorder() = default;
 
 void VideoRecorder::observe(const StepView& view) {
-  copy_step(view, impl_->step);
+  copy_step(view, impl_->step, impl_->next_regime_t);
   impl_->engine->observe(impl_->step);
 }
 

@@ -237,6 +237,12 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
   o.text("rollers", Eigen::Vector2f(speeds.x + 6 * s, y), 13 * s, kSoft);
   o.text(fmt::format("{:.0f} rpm", std::fabs(state.roller_speed) * kRpm),
          Eigen::Vector2f(speeds.x + speeds.width - 6 * s, y), 13 * s, kWhite, TextAlign::kRight);
+  // What the plate does, as the run reads it so far.
+  if (!state.regime.empty()) {
+    const Rect regime{8 * s, speeds.y + speeds.height + 4 * s, 230 * s, 23 * s};
+    o.rect(regime, kPanel);
+    o.text(state.regime, Eigen::Vector2f(regime.x + 6 * s, regime.y + 4 * s), 13 * s, kWhite);
+  }
 
   draw_hall_plot(o, Rect{8 * s, h - 104 * s, 300 * s, 96 * s}, s, state);
   draw_results(o, Rect{w - 276 * s, h - 76 * s, 268 * s, 68 * s}, s, state);

@@ -50,6 +50,9 @@ struct RigOverlayState {
   std::string material;  // "LEGO blocks"
   std::optional<Measured> paper_period;
   std::optional<Measured> paper_mu_k;
+  // The regime the run has diagnosed so far, with when it began ("clipped since t = 0.130 s");
+  // empty: none drawn.
+  std::string regime;
 };
 
 struct TitleCard {

@@ -71,7 +71,10 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
                         tipping * 1e3),
             std::nullopt};
   // The rollers' speed: set (ideal drive), or the motor's under the plate's friction load.
-  double roller_speed = s.rollers.speed;
+  // A ramped ideal drive: its slowest speed over the run, where the plate is likeliest to stick.
+  double roller_speed = rig.roller_speed_ramp
+                            ? rig.roller_speed_ramp->smallest(0.0, s.world.duration)
+                            : s.rollers.speed;
   if (rig.drive) {
     const MotorDesc& motor = s.drive->motor;
     if (!rig.drive->roller_speed_loaded)

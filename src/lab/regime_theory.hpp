@@ -23,8 +23,8 @@ struct TheoryRegime {
 // In order: rollers turning outward or l <= 2 mu_k h_c: no restoring force; an initial amplitude
 // beyond l/2 - mu_k h_c: tips; a motor stalled by the plate's friction or rollers that stand
 // still: sticks; otherwise what the friction law predicts at the rollers' surface speed (under
-// load, for a driven rig) for the run's duration (predict_friction_regime): oscillates, clipped,
-// stick-slip, grows, decays or tips.
+// load, for a driven rig; the slowest of a speed ramp) for the run's duration
+// (predict_friction_regime): oscillates, clipped, stick-slip, grows, decays or tips.
 TheoryRegime regime_from_theory(const CompiledRig& rig);
 
 }  // namespace fl

@@ -20,7 +20,8 @@ struct Unit {
 constexpr double kPi = std::numbers::pi;
 
 // The first symbol of each list is the SI unit; every list is the complete set accepted.
-constexpr std::array kDimensionless{Unit{"", 1.0, 0.0}, Unit{"%", 0.01, 0.0}};
+constexpr std::array kDimensionless{Unit{"", 1.0, 0.0}, Unit{"%", 0.01, 0.0},
+                                    Unit{"ppm", 1e-6, 0.0}};
 constexpr std::array kLength{Unit{"m", 1.0, 0.0},   Unit{"cm", 1e-2, 0.0}, Unit{"mm", 1e-3, 0.0},
                              Unit{"um", 1e-6, 0.0}, Unit{"µm", 1e-6, 0.0}, Unit{"km", 1e3, 0.0}};
 constexpr std::array kTime{Unit{"s", 1.0, 0.0},   Unit{"ms", 1e-3, 0.0},  Unit{"us", 1e-6, 0.0},

@@ -123,6 +123,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   out.gravity = rig.gravity;
   out.temperature = scene.friction.temperature;
   out.time_step = scene.world.time_step;
+  if (scene.sensor && scene.sensor->clock_error != 0.0) out.clock_error = scene.sensor->clock_error;
   out.solver_iterations = scene.world.solver_iterations;
   out.roller_speed = scene.rollers.speed;
   if (scene.friction.from_paper) {

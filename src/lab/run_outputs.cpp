@@ -50,6 +50,12 @@ std::string summary_text(const RunSummary& s) {
     line(fmt::format("  solver iterations      {}, raised {}", s.solver_iterations,
                      *s.solver_iterations_raised));
   if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
+  if (s.clock_error)
+    line(fmt::format(
+        "  sensor clock           runs {:+.4g} % fast: every period reads {:+.4g} %, mu_k {:+.4g} "
+        "%; time a known interval on the board to calibrate it away (docs/estimator.md)",
+        100.0 * *s.clock_error, 100.0 * *s.clock_error,
+        100.0 * (1.0 / ((1.0 + *s.clock_error) * (1.0 + *s.clock_error)) - 1.0)));
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));
   line(fmt::format(

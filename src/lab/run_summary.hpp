@@ -49,10 +49,13 @@ struct RunSummary {
   std::uint64_t seed = 0;
   double spacing = 0.0;  // m
   double mu_k_set = 0.0;
-  double h_c = 0.0;           // m
-  double plate_mass = 0.0;    // kg
-  double gravity = 0.0;       // m/s^2
-  double temperature = 0.0;   // K, of the rollers (friction.temperature)
+  double h_c = 0.0;          // m
+  double plate_mass = 0.0;   // kg
+  double gravity = 0.0;      // m/s^2
+  double temperature = 0.0;  // K, of the rollers (friction.temperature)
+  // The sensor board's clock error e (sensor.clock_error), when the scene sets one: the estimator's
+  // periods read 1 + e times the true ones, its mu_k (1 + e)^-2 times.
+  std::optional<double> clock_error;
   double time_step = 0.0;     // s
   int solver_iterations = 0;  // the iterations the run ended with
   // When the run raised them (the scene's did not converge): from what, to what, and why.

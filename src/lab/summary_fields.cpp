@@ -96,6 +96,13 @@ const std::vector<SummaryField>& summary_fields() {
        [](S s) { return json_or_null(s.mu_k_err_quadrature); }, true},
       {"predicted_integrator_bias", nullptr,
        [](S s) { return json_or_null(s.predicted_integrator_bias); }},
+      {"sensor_clock_error", nullptr, [](S s) { return json_or_null(s.clock_error); }, true},
+      {"clock_mu_k_bias", nullptr,
+       [](S s) {
+         return s.clock_error ? json(1.0 / ((1.0 + *s.clock_error) * (1.0 + *s.clock_error)) - 1.0)
+                              : json(nullptr);
+       },
+       true},
       {"spacing_m", "spacing_m", [](S s) { return json_or_null(s.spacing); }},
       {"h_c_m", "h_c_m", [](S s) { return json_or_null(s.h_c); }},
       {"plate_mass_kg", nullptr, [](S s) { return json_or_null(s.plate_mass); }},

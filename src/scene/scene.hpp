@@ -99,6 +99,9 @@ struct SensorDesc {
   double sample_rate = 1000.0;  // Hz
   double noise = 0.002;         // V rms, white, added before the ADC
   double jitter = 10e-6;        // s rms, of each sample's time
+  // The board's clock runs fast by this fraction (slow if negative), as a ceramic resonator does
+  // (typically within +-0.5 %): its time stamps and its sampling both follow it.
+  double clock_error = 0.0;
 };
 
 struct FrictionDesc {

@@ -151,6 +151,10 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     need(std::isfinite(sensor.jitter) && sensor.jitter >= 0.0 &&
              sensor.jitter < 0.25 / sensor.sample_rate,
          "sensor.jitter", "must be >= 0 and below a quarter of the sample interval");
+    need(std::isfinite(sensor.clock_error) && std::fabs(sensor.clock_error) < 0.1,
+         "sensor.clock_error",
+         describe("must lie within +-10 % (a resonator is off by 0.5 % at most), found ",
+                  sensor.clock_error));
     if (sensor.offset)
       need(*sensor.offset >= 0.0 && *sensor.offset <= sensor.supply, "sensor.offset",
            "must lie between 0 V and the supply");

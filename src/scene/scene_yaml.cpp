@@ -96,7 +96,7 @@ MagnetDesc read_magnet(const YamlNode& n) {
 
 SensorDesc read_sensor(const YamlNode& n) {
   n.allow_keys({"position", "axis", "sensitivity", "supply", "offset", "adc_bits", "sample_rate",
-                "noise", "jitter"});
+                "noise", "jitter", "clock_error"});
   SensorDesc s;
   if (auto v = n.find("position")) s.position = read_vec3(*v, Dimension::kLength);
   if (auto v = n.find("axis")) s.axis = read_vec3(*v, Dimension::kDimensionless);
@@ -107,6 +107,7 @@ SensorDesc read_sensor(const YamlNode& n) {
   if (auto v = n.find("sample_rate")) s.sample_rate = v->quantity(Dimension::kFrequency);
   if (auto v = n.find("noise")) s.noise = v->quantity(Dimension::kVoltage);
   if (auto v = n.find("jitter")) s.jitter = v->quantity(Dimension::kTime);
+  if (auto v = n.find("clock_error")) s.clock_error = v->quantity(Dimension::kDimensionless);
   return s;
 }
 

@@ -62,8 +62,10 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
   if (!(h > 0.0)) return;
   const auto take = [&](long long index) {
     const double clock = static_cast<double>(index) * interval_;
-    // The ADC converts at the clock time plus jitter; the firmware stamps the clock time.
-    const double when = clock + (sensor_.jitter > 0.0 ? sensor_.jitter * unit_normal_(rng_) : 0.0);
+    // The ADC converts at the board's clock time (true time clock / (1 + e) for a clock running
+    // fast by e) plus jitter; the firmware stamps the clock's own time.
+    const double when =
+        true_time(index) + (sensor_.jitter > 0.0 ? sensor_.jitter * unit_normal_(rng_) : 0.0);
     const double s = (when - a.t) / h;
     PlatePose p;
     p.t = when;
@@ -81,7 +83,7 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
     first_ = false;
     if (a.t <= 0.0) take(0);
   }
-  while (static_cast<double>(next_index_) * interval_ <= b.t + 1e-12 * interval_) {
+  while (true_time(next_index_) <= b.t + 1e-12 * interval_) {
     take(next_index_);
     ++next_index_;
   }

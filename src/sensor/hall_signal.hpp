@@ -46,6 +46,11 @@ class HallSignal {
 
   double sample_interval() const { return interval_; }
 
+  // The true time [s] at which the board's clock reads sample `index`'s time.
+  double true_time(long long index) const {
+    return static_cast<double>(index) * interval_ / (1.0 + sensor_.clock_error);
+  }
+
  private:
   struct MagnetOnPlate {
     Vec3 offset;    // m, from the plate's centre of mass in the plate's frame

@@ -104,6 +104,31 @@ TEST(Experiment, HallCsvHasOneSamplePerClockTick) {
   EXPECT_EQ(hall_csv(rec).substr(0, 9), "t_us,adc\n");
 }
 
+// A board clock running 0.5 % fast (sensor.clock_error): it samples and stamps by its own time,
+// so the estimator's period reads 1.005 times the trajectory's (the true one) and its mu_k
+// 1.005^-2 times the unbiased one; over 2 s the board stamps 2.01 s of samples.
+TEST(Experiment, AFastBoardClockLengthensEveryPeriodByItsError) {
+  Scene s = minimal_scene({{"sensor.clock_error", "0.5 %"}});
+  s.world.duration = 10.0;
+  const RunSummary r = run_experiment(s, {});
+  ASSERT_TRUE(r.estimator && r.estimator->periods_used >= 8 && r.period_trajectory);
+  ASSERT_TRUE(r.clock_error.has_value());
+  EXPECT_NEAR(r.estimator->period / *r.period_trajectory, 1.005, kEstimatorTolerance);
+  const RunSummary exact = run_experiment(minimal_scene({{"world.duration", "10 s"}}), {});
+  ASSERT_TRUE(exact.estimator && exact.estimator->periods_used >= 8);
+  EXPECT_NEAR(r.estimator->mu_k / exact.estimator->mu_k, 1.0 / (1.005 * 1.005), 2e-3);
+  EXPECT_FALSE(exact.clock_error.has_value());
+
+  s.world.duration = 2.0;
+  RunRecording rec;
+  RunOptions hall_only;
+  hall_only.record_hall = true;
+  run_experiment(s, hall_only, &rec);
+  // Samples whose board time falls within 2 s of true time: up to 2.01 s by the board's clock.
+  ASSERT_EQ(rec.hall.size(), 2011u);
+  EXPECT_EQ(rec.hall.back().t_us, 2010000u);
+}
+
 TEST(StepChoice, TheChosenStepMeetsTheTargetAndTheNextLargerDoesNot) {
   const Scene s = minimal_scene();
   for (double target : {1e-3, 1e-4, 1e-5}) {

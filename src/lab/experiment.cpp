@@ -18,7 +18,7 @@ namespace fl {
 namespace {
 
 PlatePose pose_of(double t, const PlateState& s) {
-  return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate};
+  return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate, s.y, s.yaw};
 }
 
 // The estimator's mean period against the trajectory's: they measure the same motion, so they

@@ -34,12 +34,16 @@ HallSignal::HallSignal(const CompiledRig& rig)
 
 double HallSignal::field_along_axis(const PlatePose& pose) const {
   const double c = std::cos(pose.pitch), s = std::sin(pose.pitch);
+  const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
   double b = 0.0;
   for (const MagnetOnPlate& m : magnets_) {
-    // Rotation about +y by the pitch: x' = x c + z s, z' = -x s + z c.
-    const Vec3 at{pose.x + m.offset[0] * c + m.offset[2] * s, m.offset[1],
+    // The plate's frame turned by the pitch about +y (x' = x c + z s, z' = -x s + z c), then by
+    // the yaw about +z, and carried to the plate's centre of mass (x, y, z).
+    const double px = m.offset[0] * c + m.offset[2] * s;
+    const double py = m.offset[1];
+    const Vec3 at{pose.x + (px * cy - py * sy), pose.y + (px * sy + py * cy),
                   pose.z - m.offset[0] * s + m.offset[2] * c};
-    const Vec3 moment{m.moment * s, 0.0, m.moment * c};
+    const Vec3 moment{m.moment * s * cy, m.moment * s * sy, m.moment * c};
     const Vec3 field = dipole_field(moment, at, sensor_.position);
     b += field[0] * axis_[0] + field[1] * axis_[1] + field[2] * axis_[2];
   }
@@ -72,6 +76,9 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
     p.x = hermite(s, h, a.x, b.x, a.vx, b.vx);
     p.z = hermite(s, h, a.z, b.z, a.vz, b.vz);
     p.pitch = hermite(s, h, a.pitch, b.pitch, a.pitch_rate, b.pitch_rate);
+    // Sideways motion and yaw are slow (the guides' play): linear between the steps.
+    p.y = a.y + s * (b.y - a.y);
+    p.yaw = a.yaw + s * (b.yaw - a.yaw);
     const double noise = sensor_.noise > 0.0 ? sensor_.noise * unit_normal_(rng_) : 0.0;
     HallSample sample;
     sample.t_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(clock * 1e6)) &

@@ -25,6 +25,8 @@ struct PlatePose {
   double z = 0.0;      // m, centre of mass
   double pitch = 0.0;  // rad about +y
   double vx = 0.0, vz = 0.0, pitch_rate = 0.0;
+  double y = 0.0;    // m, sideways (a plate the guides let move)
+  double yaw = 0.0;  // rad about +z
 };
 
 class HallSignal {

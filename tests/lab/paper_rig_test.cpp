@@ -171,8 +171,24 @@ TEST(Guides, ThePlateStaysBetweenTheTowers) {
   }
   EXPECT_GT(y_max, 0.003);   // it reached the tower ...
   EXPECT_LT(y_max, 0.0045);  // ... and went no farther than the clearance (plus contact slop)
-  const RunSummary r = run_experiment(nudged, {});
+  RunRecording hall;
+  RunOptions record;
+  record.record_hall = true;
+  const RunSummary r = run_experiment(nudged, record, &hall);
   EXPECT_EQ(r.regime, Regime::kOscillates) << r.regime_evidence;
+  // The Hall sensor sees the plate 4 mm sideways: its pulses are smaller than a centred plate's.
+  RunRecording centred_hall;
+  run_experiment(rig({{"world.duration", "4 s"}}), record, &centred_hall);
+  const auto peak = [](const RunRecording& rec, std::size_t from) {
+    int lo = 1 << 16, hi = 0;
+    for (std::size_t i = from; i < rec.hall.size(); ++i) {
+      lo = std::min<int>(lo, rec.hall[i].adc);
+      hi = std::max<int>(hi, rec.hall[i].adc);
+    }
+    return hi - lo;
+  };
+  // After the first second, when the nudged plate rests against the tower.
+  EXPECT_LT(peak(hall, 1000), peak(centred_hall, 1000));
 }
 
 }  // namespace

@@ -67,6 +67,47 @@ TEST(HallSignal, FieldUnderTheMagnetAndTheAdcTransfer) {
   EXPECT_EQ(hall.adc_code(4.99999), 1023);
 }
 
+// The whole pose: a plate moved 4 mm sideways and turned 0.2 rad about z (and pitched) puts its
+// magnet where the plate's rotation carries it; the field there is the dipole formula's,
+// B = mu0 / (4 pi) (3 (m . r^) r^ - m) / r^3, evaluated here by hand at the sensor.
+TEST(HallSignal, FieldFollowsTheSidewaysPositionYawAndPitch) {
+  Scene s = sensed_scene();
+  s.sensor->axis = {0.3, -0.2, 1.0};
+  HallSignal hall(compile_rig(s));
+  const PlateMass pm = plate_mass(s);
+  PlatePose pose;
+  pose.x = pm.x_c + 0.002;
+  pose.y = 0.004;
+  pose.z = pm.h_c + 0.0005;
+  pose.yaw = 0.2;
+  pose.pitch = 0.01;
+  // The magnet's centre in the plate's frame (from the centre of mass), turned by the pitch about
+  // y and then the yaw about z.
+  const double ox = s.magnets[0].x - pm.x_c;
+  const double oz = s.plate.thickness + 0.5 * s.magnets[0].thickness - pm.h_c;
+  const double cp = std::cos(pose.pitch), sp = std::sin(pose.pitch);
+  const double cy = std::cos(pose.yaw), sy = std::sin(pose.yaw);
+  const double px = ox * cp + oz * sp;
+  const double magnet[3] = {pose.x + px * cy, pose.y + px * sy, pose.z - ox * sp + oz * cp};
+  const double moment = magnet_moment(s.magnets[0]);
+  const double m[3] = {moment * sp * cy, moment * sp * sy, moment * cp};
+  double r[3];
+  for (int i = 0; i < 3; ++i) r[i] = s.sensor->position[i] - magnet[i];
+  const double d = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  const double m_dot_r = (m[0] * r[0] + m[1] * r[1] + m[2] * r[2]) / d;
+  const double norm = std::sqrt(0.3 * 0.3 + 0.2 * 0.2 + 1.0);
+  const double axis[3] = {0.3 / norm, -0.2 / norm, 1.0 / norm};
+  double expected = 0.0;
+  for (int i = 0; i < 3; ++i)
+    expected += 1e-7 * (3.0 * m_dot_r * r[i] / d - m[i]) / (d * d * d) * axis[i];
+  EXPECT_NEAR(hall.field_along_axis(pose), expected, 1e-9 * std::fabs(expected));
+  // Sideways, the magnet is farther from the sensor: a weaker field than centred.
+  PlatePose centred = pose;
+  centred.y = 0.0;
+  centred.yaw = 0.0;
+  EXPECT_LT(std::fabs(hall.field_along_axis(pose)), std::fabs(hall.field_along_axis(centred)));
+}
+
 TEST(HallSignal, SamplesFollowTheAdcClockNotThePhysicsStep) {
   Scene s = sensed_scene();
   s.sensor->sample_rate = 1000.0;

@@ -63,6 +63,25 @@ struct RigWorld::Impl {
       std::array<ContactFriction::RollerImpulses, 2>& impulses) const;
   ~Impl();
 
+  // A roller with run-out: its tube's axis, e off the shaft, turns with the shaft, so the body sits
+  // at the shaft + R_y(phi + theta) (e, 0, 0) (phi its phase, theta the shaft's angle about +y
+  // since t = 0) and moves with omega x that offset. Set before each step from the angle at its
+  // start.
+  void place_off_centre(int i) {
+    const std::size_t k = static_cast<std::size_t>(i);
+    const double e = scene.rollers.runout;
+    const double angle = scene.rollers.runout_phase[k] + roller_angle[k];
+    // R_y(theta) (e, 0, 0) = (e cos theta, 0, -e sin theta).
+    const double ox = e * std::cos(angle);
+    const double oz = -e * std::sin(angle);
+    const double shaft_x = (i == 0 ? -0.5 : 0.5) * scene.rollers.spacing;
+    btTransform t = rollers[k]->getWorldTransform();
+    t.setOrigin(btVector3(shaft_x + ox, 0, -scene.rollers.radius + oz));
+    rollers[k]->setWorldTransform(t);
+    const double w = roller_omega[k];
+    rollers[k]->setLinearVelocity(btVector3(w * oz, 0, -w * ox));
+  }
+
   // Before each internal step: kinematic rollers keep a fixed transform and a forced angular
   // velocity (Bullet would otherwise derive their velocity from a changing transform, which
   // aliases at large steps and leaves stale contact points; docs/physics.md). With a
@@ -72,6 +91,7 @@ struct RigWorld::Impl {
     for (int i = 0; i < 2; ++i) {
       impl->rollers[i]->setAngularVelocity(btVector3(0, impl->roller_omega[i], 0));
       impl->rollers[i]->setLinearVelocity(btVector3(0, 0, 0));
+      if (impl->scene.rollers.runout > 0.0) impl->place_off_centre(i);
     }
   }
 };
@@ -118,6 +138,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
                                   btCollisionObject::CF_KINEMATIC_OBJECT);
     rollers[i]->setActivationState(DISABLE_DEACTIVATION);
     world.addRigidBody(rollers[i].get());
+    if (s.rollers.runout > 0.0) place_off_centre(i);
   }
 
   // Guide towers: only the frame's parts marked as guides collide, each through its boxes
@@ -223,7 +244,10 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
           const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
           out[i].point_x = at.x();
           out[i].point_z = at.z();
-          out[i].normal_speed_target = -distance / dt * (distance > 0.0 ? 1.0 : contact_erp);
+          // Relative to the roller's surface: a roller off its shaft moves its axis (run-out),
+          // and the surface's normal speed is the axis's (omega x r is along the surface).
+          out[i].normal_speed_target = -distance / dt * (distance > 0.0 ? 1.0 : contact_erp) +
+                                       normal.dot(rollers[i]->getLinearVelocity());
         }
         out[i].penetration = std::max(out[i].penetration, -distance);
         impulses[static_cast<std::size_t>(i)].add(pt);

@@ -43,6 +43,10 @@ struct RollersDesc {
   double wall = 0.0015;     // m, the PVC tube's wall (its mass and inertia, when driven)
   double density = 1400.0;  // kg/m^3 (PVC)
   RollerSense sense = RollerSense::kInward;
+  // Run-out: each tube's axis sits this far off its shaft (a hand-cut tube on a cardboard cap),
+  // so its top moves up and down (and along x) at the roller's frequency; 0 for true rollers.
+  double runout = 0.0;                           // m, both rollers
+  std::array<double, 2> runout_phase{0.0, 0.0};  // rad, where each tube's axis sits at t = 0
   std::string material = "pvc";
 };
 

@@ -36,6 +36,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
                   " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
   positive(s.rollers.spacing, "rollers.spacing");
   positive(s.rollers.radius, "rollers.radius");
+  need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
+           s.rollers.runout < 0.5 * s.rollers.radius,
+       "rollers.runout",
+       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * s.rollers.radius,
+                " mm), found ", 1e3 * s.rollers.runout, " mm"));
+  for (const double phase : s.rollers.runout_phase)
+    need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
   positive(s.rollers.length, "rollers.length");
   need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
        describe("must be >= 0, found ", s.rollers.speed, " rad/s"));

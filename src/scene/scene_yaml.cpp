@@ -33,7 +33,13 @@ void read_world(const YamlNode& n, WorldDesc& w) {
 
 void read_rollers(const YamlNode& n, RollersDesc& r) {
   n.allow_keys({"spacing", "radius", "diameter", "length", "wall", "density", "speed", "speed_ramp",
-                "sense", "material"});
+                "sense", "material", "runout", "runout_phase"});
+  if (auto v = n.find("runout")) r.runout = v->quantity(Dimension::kLength);
+  if (auto v = n.find("runout_phase")) {
+    if (v->size() != 2)
+      v->fail("expected a list of 2 angles [roller 0, roller 1], e.g. [0 deg, 90 deg]");
+    r.runout_phase = {(*v)[0].quantity(Dimension::kAngle), (*v)[1].quantity(Dimension::kAngle)};
+  }
   if (auto v = n.find("spacing")) r.spacing = v->quantity(Dimension::kLength);
   if (n.has("radius") && n.has("diameter"))
     n.at("diameter").fail("give radius or diameter, not both");

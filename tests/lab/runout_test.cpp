@@ -1,0 +1,82 @@
+// Rollers off their shafts: the plate loses a roller once a turn exactly when the roller's top
+// drops faster than gravity brings the plate's end down (core/runout.hpp), on both sides of the
+// threshold, at 1600 rpm.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/runout.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/experiment.hpp"
+#include "physics/rig_world.hpp"
+#include "scene/compiled_rig.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+Scene minimal(std::vector<SceneOverride> overrides) {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  Scene s = load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
+                            overrides, [&]() -> const PaperTable& { return table; });
+  s.sensor.reset();
+  return s;
+}
+
+// The smallest normal force either roller gave over a run, after the first 0.25 s (the plate
+// settling onto rollers whose tops started off the contact line), as a fraction of the weight.
+double least_support(const Scene& s) {
+  const CompiledRig rig = compile_rig(s);
+  RigWorld world(rig);
+  double least = 1e300;
+  const long long steps = std::llround(s.world.duration / s.world.time_step);
+  for (long long i = 0; i < steps; ++i) {
+    world.step();
+    if (world.time() < 0.25) continue;
+    for (const RollerContact& c : world.contacts()) least = std::min(least, c.normal_force);
+  }
+  return least / (rig.plate.mass * rig.gravity);
+}
+
+// The run-out at which the plate first hops: at the middle (amplitude 0), or at the turning
+// points of its oscillation (the lightest load on a roller).
+double threshold(const Scene& s, double amplitude) {
+  const CompiledRig rig = compile_rig(s);
+  const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
+  return runout_hop_threshold(rig.spacing, k, rig.gravity, s.rollers.speed, amplitude);
+}
+
+TEST(Runout, TheThresholdIsTheEndsFreeFallOverOmegaSquared) {
+  // A 200 mm plate (k^2 = L^2 / 12) on rollers 89 mm apart: a_free = 0.745 g.
+  const double k = 0.2 / std::sqrt(12.0);
+  EXPECT_NEAR(runout_free_fall_acceleration(0.089, k, 9.81) / 9.81, 0.7454, 1e-3);
+  // All the mass at the centre (k = 0): the lever doubles gravity at the far end.
+  EXPECT_NEAR(runout_free_fall_acceleration(0.089, 0.0, 9.81), 2.0 * 9.81, 1e-12);
+  // The centre of mass 20 mm toward the pivot: a lighter end, a slower fall (0.555 g).
+  EXPECT_NEAR(runout_free_fall_acceleration(0.089, k, 9.81, 0.020) / 9.81, 0.5553, 1e-3);
+}
+
+TEST(Runout, BelowTheThresholdThePlateKeepsBothRollersAboveItHops) {
+  const Scene base =
+      minimal({{"world.duration", "2 s"}, {"rollers.runout_phase", "[0 deg, 90 deg]"}});
+  // 0.26 mm at 1600 rpm for a plate resting in the middle; 0.19 mm at its 20 mm turning points.
+  EXPECT_NEAR(threshold(base, 0.0), 0.26e-3, 0.01e-3);
+  const double e = threshold(base, 0.020);
+  EXPECT_NEAR(e, 0.194e-3, 0.01e-3);
+  Scene below = base;
+  below.rollers.runout = 0.5 * e;
+  Scene above = base;
+  above.rollers.runout = 2.0 * e;
+  // Half the threshold: each roller still carries a good share of the weight at every step.
+  EXPECT_GT(least_support(below), 0.05);
+  // Twice: a roller drops away from the plate once a turn.
+  EXPECT_LT(least_support(above), 1e-3);
+  // A true roller (no run-out) carries the same plate steadily: at least its static share,
+  // 1/2 - A/l = 0.275 of the weight at the 20 mm turning points.
+  EXPECT_GT(least_support(base), 0.25);
+}
+
+}  // namespace
+}  // namespace fl

@@ -159,14 +159,14 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
 
   RegimeMonitor monitor(rig);
   SolverConvergence convergence(rig);
-  OscillationTracker tracker;
   CycleTracker cycles;
   const bool record_cycles = options.record_cycles && recording != nullptr;
   // The ramped rollers' speed, averaged over the run's steps.
   double ramp_speed_sum = 0.0;
   long long ramp_steps = 0;
   PlateState state = world.plate();
-  tracker.add(0.0, state.x, state.vx);
+  monitor.start(state);
+  const OscillationTracker& tracker = monitor.tracker();
   if (record_cycles) cycles.add(0.0, state.x, state.vx, world.roller_surface_speeds());
   if (options.record_trajectory && recording != nullptr)
     recording->trajectory.push_back({0.0, state, world.contacts()});
@@ -209,7 +209,6 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     }
     // What a guard stopped is not recorded: the outputs hold every trustworthy step.
     if (failure) break;
-    tracker.add(t, state.x, state.vx);
     if (record_cycles) cycles.add(t, state.x, state.vx, surface);
     if (rig.roller_speed_ramp) {
       ramp_speed_sum += std::fabs(world.roller_speeds()[0]);

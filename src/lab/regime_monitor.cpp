@@ -49,7 +49,6 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   start_abs_x_ = std::fabs(scene.plate.offset);
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
-  tracker_.add(0.0, scene.plate.offset, scene.plate.velocity);
   // The law's growth rate linearised about the rollers' speed (none where it has no meaning).
   if (slip_dependent_ && rig.restoring) {
     try {
@@ -59,6 +58,10 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
       linearised_growth_.reset();
     }
   }
+}
+
+void RegimeMonitor::start(const PlateState& s) {
+  tracker_.add(0.0, s.x, s.vx);
 }
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,

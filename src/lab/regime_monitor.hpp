@@ -39,6 +39,9 @@ class RegimeMonitor {
   // The rig must outlive the monitor.
   explicit RegimeMonitor(const CompiledRig& rig);
 
+  // The plate at t = 0, before the first step.
+  void start(const PlateState& plate);
+
   // One step's state. Returns a failure when a guard fires; the run must stop then.
   // `surface` is each roller's top's velocity along +x [m/s] this step.
   std::optional<RunFailure> observe(double t, const PlateState& plate,
@@ -51,6 +54,9 @@ class RegimeMonitor {
   // The smallest slip speed seen at each roller relative to its surface speed (1 = the plate at
   // rest against the roller's surface, 0 = the plate moving with it).
   double slip_margin_observed() const { return slip_ratio_min_; }
+
+  // The trajectory's crossings and turning points over the steps the guards let through.
+  const OscillationTracker& tracker() const { return tracker_; }
 
  private:
   const Scene& scene_;

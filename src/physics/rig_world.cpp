@@ -63,6 +63,33 @@ struct RigWorld::Impl {
       std::array<ContactFriction::RollerImpulses, 2>& impulses) const;
   ~Impl();
 
+  // With run-out the tubes' tops start off the contact line and moving up or down: the plate
+  // starts resting on them (its bottom through both tops, moving with them), not dropped onto
+  // them.
+  void rest_on_off_centre_rollers() {
+    const double l = scene.rollers.spacing;
+    const double e = scene.rollers.runout;
+    std::array<double, 2> top{}, top_speed{};  // each top's height and vertical speed at t = 0
+    for (std::size_t i = 0; i < 2; ++i) {
+      const double angle = scene.rollers.runout_phase[i];
+      top[i] = -e * std::sin(angle);
+      top_speed[i] = -roller_omega[i] * e * std::cos(angle);
+    }
+    const double x = scene.plate.offset;
+    const double slope = (top[1] - top[0]) / l;
+    const double bottom = 0.5 * (top[0] + top[1]) + slope * x;
+    const double pitch = -std::atan(slope);  // the body's x axis is (cos p, 0, -sin p)
+    btTransform t = plate->getWorldTransform();
+    t.setOrigin(t.getOrigin() + btVector3(0, 0, bottom));
+    t.setRotation(btQuaternion(btVector3(0, 1, 0), pitch));
+    plate->setWorldTransform(t);
+    const double slope_rate = (top_speed[1] - top_speed[0]) / l;
+    btVector3 v = plate->getLinearVelocity();
+    v.setZ(0.5 * (top_speed[0] + top_speed[1]) + slope_rate * x);
+    plate->setLinearVelocity(v);
+    plate->setAngularVelocity(btVector3(0, -slope_rate, 0));
+  }
+
   // A roller with run-out: its tube's axis, e off the shaft, turns with the shaft, so the body sits
   // at the shaft + R_y(phi + theta) (e, 0, 0) (phi its phase, theta the shaft's angle about +y
   // since t = 0) and moves with omega x that offset. Set before each step from the angle at its
@@ -193,6 +220,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
     plate->setAngularFactor(btVector3(0, 1, 1));
   }
   plate->setLinearVelocity(btVector3(p.velocity, guides.empty() ? 0.0 : p.sideways_velocity, 0));
+  if (s.rollers.runout > 0.0) rest_on_off_centre_rollers();
   world.addRigidBody(plate.get());
 
   world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);

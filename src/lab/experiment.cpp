@@ -255,6 +255,11 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   out.regime = finding.regime;
   out.regime_since = finding.since;
   out.regime_evidence = finding.evidence;
+  if (finding.jumps > 0) {
+    out.jumps = finding.jumps;
+    out.first_jump_time = finding.first_jump;
+    out.longest_jump = finding.longest_jump;
+  }
   // A clipped oscillation's period is read after its last stick.
   double harmonic_since = 0.0;
   if (finding.motion && finding.motion->regime == finding.regime) {

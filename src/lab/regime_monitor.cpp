@@ -47,6 +47,8 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   penetration_bound_ = std::min(0.5e-3, 0.1 * scene.rollers.radius);
   speed_bound_ = 2.0 * v + 0.5;
   start_abs_x_ = std::fabs(scene.plate.offset);
+  turn_ = rig.roller_speed_nominal > 0.0 ? 2.0 * 3.14159265358979323846 / rig.roller_speed_nominal
+                                         : 0.0;
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
   // The law's growth rate linearised about the rollers' speed (none where it has no meaning).
@@ -165,11 +167,23 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     const double speed = std::fabs(surface[i]);
     const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
     slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
-    if (contacts[i].normal_force < kLiftOffFraction * weight && !tip_since_) {
+    const bool lifted = contacts[i].normal_force < kLiftOffFraction * weight;
+    if (lifted && !tip_since_) {
       tip_since_ = t;
       tip_roller_ = i;
       tip_force_ = contacts[i].normal_force;
     }
+    const std::size_t k = static_cast<std::size_t>(i);
+    if (lifted && !lifted_[k] && lift_offs_.size() < 100000) lift_offs_.push_back({i, t, t, true});
+    if (lifted_[k] && !lifted) {
+      for (auto it = lift_offs_.rbegin(); it != lift_offs_.rend(); ++it)
+        if (it->roller == i && it->open) {
+          it->open = false;
+          it->end = t;
+          break;
+        }
+    }
+    lifted_[k] = lifted;
   }
   const double surface_mean = 0.5 * (std::fabs(surface[0]) + std::fabs(surface[1]));
   if (surface_mean > kStallFraction * surface_speed_) turning_until_ = t;
@@ -249,8 +263,18 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
         failure ? "; " + failure->message : std::string());
     return f;
   }
+  // Brief lift-offs that keep coming and going are jumps, not a tip: the motion is read on, and
+  // the jumps are reported with it.
+  const bool jumps = lift_offs_are_jumps();
+  if (jumps) {
+    f.jumps = static_cast<int>(lift_offs_.size());
+    f.first_jump = lift_offs_.front().start;
+    double longest = 0.0;
+    for (const LiftOff& l : lift_offs_) longest = std::max(longest, l.end - l.start);
+    f.longest_jump = longest + scene_.world.time_step;
+  }
   // Lifting off a roller is the cause when it came first; the plate may have left the rig after.
-  if (tip_since_ && (!failure || *tip_since_ <= failure->time)) {
+  if (!jumps && tip_since_ && (!failure || *tip_since_ <= failure->time)) {
     f.regime = Regime::kTips;
     f.since = *tip_since_;
     f.evidence = fmt::format(
@@ -266,7 +290,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = failure->message;
     return f;
   }
-  if (tip_since_) {
+  if (!jumps && tip_since_) {
     f.regime = Regime::kTips;
     f.since = *tip_since_;
     f.evidence = fmt::format(
@@ -329,8 +353,32 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
         "both rollers slipped throughout (the plate's speed stayed at least "
         "{:.1f} % of the surface speed away from each roller's)",
         100.0 * slip_ratio_min_);
+  if (jumps)
+    f.evidence += fmt::format(
+        "; the plate jumped off a roller {} times from t = {:.4f} s (about once a roller turn), "
+        "each time back within {:.1f} ms",
+        f.jumps, *f.first_jump, *f.longest_jump * 1e3);
   f.motion = std::move(motion);
   return f;
+}
+
+bool RegimeMonitor::lift_offs_are_jumps() const {
+  // Jumps come back at the rollers' own frequency (a tube off its shaft drops once a turn), in
+  // most turns from the first to the last; a tipping plate lifts off (and may chatter) near its
+  // turning points only, or for good.
+  if (lift_offs_.size() < 3 || turn_ <= 0.0) return false;
+  // A lift-off still on at the end that has lasted a turn is the plate off a roller for good.
+  for (const LiftOff& l : lift_offs_)
+    if (l.open && last_t_ - l.start > turn_) return false;
+  const double first = lift_offs_.front().start;
+  const long long turns =
+      static_cast<long long>(std::floor((lift_offs_.back().start - first) / turn_)) + 1;
+  if (turns < 3) return false;
+  std::vector<bool> seen(static_cast<std::size_t>(turns), false);
+  for (const LiftOff& l : lift_offs_)
+    seen[static_cast<std::size_t>(std::floor((l.start - first) / turn_))] = true;
+  const auto with_jump = std::count(seen.begin(), seen.end(), true);
+  return 2 * with_jump >= turns;
 }
 
 }  // namespace fl

@@ -23,6 +23,11 @@ struct RegimeFinding {
   // The trajectory's numbers (clip, stick-slip cycle, growth rate), when the plate stayed on both
   // rollers with a restoring force and the motion itself was read (lab/motion_diagnosis.hpp).
   std::optional<MotionFinding> motion;
+  // Jumps: the plate left a roller and came back, again and again at the rollers' own frequency (a
+  // roller off its shaft), rather than tipping. How many, when the first began, the longest.
+  int jumps = 0;
+  std::optional<double> first_jump;    // s
+  std::optional<double> longest_jump;  // s
 };
 
 // A guard that fired: the run stops here.
@@ -92,6 +97,18 @@ class RegimeMonitor {
   long long friction_away_ = 0;
   long long friction_toward_ = 0;
   double away_first_t_ = 0.0, away_first_x_ = 0.0, away_first_force_ = 0.0;
+  // Every stretch of steps in which a roller carried (almost) nothing of the plate.
+  struct LiftOff {
+    int roller = 0;
+    double start = 0.0, end = 0.0;
+    bool open = true;
+  };
+  std::vector<LiftOff> lift_offs_;
+  std::array<bool, 2> lifted_{};
+  double turn_ = 0.0;  // s, one turn of the rollers at the speed set
+  // Whether the lift-offs are jumps (over, and starting in at least half the roller turns from the
+  // first to the last), not a tip.
+  bool lift_offs_are_jumps() const;
   std::optional<double> tip_since_;
   int tip_roller_ = -1;
   double tip_force_ = 0.0;

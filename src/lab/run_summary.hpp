@@ -86,6 +86,11 @@ struct RunSummary {
   std::optional<double> stick_duration;         // s, stick-slip: one stick phase
   std::optional<double> growth_rate;            // 1/s, grows or decays: d ln A / dt, measured
   std::optional<double> e_folding_time;         // s, grows or decays: 1 / |growth_rate|
+  // Jumps: the plate left a roller and came back, about once a roller turn (rollers off their
+  // shafts); null when it never did.
+  std::optional<int> jumps;
+  std::optional<double> first_jump_time;  // s
+  std::optional<double> longest_jump;     // s
   // The same numbers from the friction law's closed forms (lab/regime_theory.hpp), where the run
   // has them to be held against.
   std::optional<Regime> regime_theory;                // when the regime has numbers above

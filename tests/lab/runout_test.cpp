@@ -95,5 +95,24 @@ TEST(Runout, TopsThatHeaveTogetherLeaveThePlateAtOneG) {
   EXPECT_LT(least_support(above), 1e-3);
 }
 
+// Above the heave threshold the plate jumps at the rollers' frequency but keeps oscillating: the
+// run reports the jumps and reads the motion on, instead of calling the first lift-off a tip;
+// below it there is no jump.
+TEST(Runout, TheRunCountsJumpsAndReadsTheMotionOn) {
+  Scene s = minimal({{"world.duration", "2 s"}, {"rollers.runout_phase", "[0 deg, 180 deg]"}});
+  const double e_g = s.world.gravity / (s.rollers.speed * s.rollers.speed);
+  s.rollers.runout = 1.25 * e_g;
+  const RunSummary hopping = run_experiment(s, {});
+  ASSERT_TRUE(hopping.jumps.has_value()) << hopping.regime_evidence;
+  EXPECT_GT(*hopping.jumps, 10);
+  // Each jump is over within a turn of the rollers.
+  EXPECT_LT(*hopping.longest_jump, 2.0 * std::acos(-1.0) / s.rollers.speed);
+  EXPECT_NE(hopping.regime, Regime::kTips) << hopping.regime_evidence;
+  s.rollers.runout = 0.8 * e_g;
+  const RunSummary steady = run_experiment(s, {});
+  EXPECT_FALSE(steady.jumps.has_value());
+  EXPECT_EQ(steady.regime, Regime::kOscillates) << steady.regime_evidence;
+}
+
 }  // namespace
 }  // namespace fl

@@ -378,7 +378,22 @@ bool RegimeMonitor::lift_offs_are_jumps() const {
   for (const LiftOff& l : lift_offs_)
     seen[static_cast<std::size_t>(std::floor((l.start - first) / turn_))] = true;
   const auto with_jump = std::count(seen.begin(), seen.end(), true);
-  return 2 * with_jump >= turns;
+  if (2 * with_jump < turns) return false;
+  // And locked to the rollers' angle: each roller's lift-offs start at the same point of its
+  // turn (the mean resultant length of their phases near 1), where a chattering plate's drift.
+  for (int roller = 0; roller < 2; ++roller) {
+    double c = 0.0, s = 0.0;
+    int n = 0;
+    for (const LiftOff& l : lift_offs_) {
+      if (l.roller != roller) continue;
+      const double phase = 2.0 * 3.14159265358979323846 * l.start / turn_;
+      c += std::cos(phase);
+      s += std::sin(phase);
+      ++n;
+    }
+    if (n >= 3 && std::hypot(c, s) < 0.8 * n) return false;
+  }
+  return true;
 }
 
 }  // namespace fl

@@ -106,8 +106,8 @@ class RegimeMonitor {
   std::vector<LiftOff> lift_offs_;
   std::array<bool, 2> lifted_{};
   double turn_ = 0.0;  // s, one turn of the rollers at the speed set
-  // Whether the lift-offs are jumps (over, and starting in at least half the roller turns from the
-  // first to the last), not a tip.
+  // Whether the lift-offs are jumps (over, starting in at least half the roller turns from the
+  // first to the last, and locked to the rollers' angle), not a tip.
   bool lift_offs_are_jumps() const;
   std::optional<double> tip_since_;
   int tip_roller_ = -1;

@@ -11,8 +11,6 @@
 namespace fl {
 namespace {
 
-// The plate moves with a roller's surface when their speeds differ by less than this fraction.
-constexpr double kStickRatio = 5e-3;
 // A normal force below this fraction of the plate's weight means the plate has lifted off.
 constexpr double kLiftOffFraction = 1e-3;
 // Rollers whose surfaces move on average at less than this fraction of the speed set, over the

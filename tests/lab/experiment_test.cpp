@@ -9,11 +9,10 @@
 #include <gtest/gtest.h>
 
 #include "core/analytic_model.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "lab/accuracy_study.hpp"
 #include "lab/run_outputs.hpp"
 #include "lab/step_choice.hpp"
-#include "scene/scene_yaml.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
@@ -21,9 +20,7 @@ namespace {
 constexpr double kEstimatorTolerance = 5e-4;  // 0.05 %
 
 Scene minimal_scene(std::vector<SceneOverride> overrides = {}) {
-  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  return load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
-                         overrides, []() -> const PaperTable& { return table; });
+  return test::scene_file("minimal.yaml", overrides);
 }
 
 struct MaterialCase {
@@ -92,13 +89,18 @@ TEST(Experiment, SameSceneAndSeedGiveBitIdenticalOutputs) {
   EXPECT_NE(hall_csv(a), hall_csv(c));
 }
 
-TEST(Experiment, HallCsvHasOneSamplePerClockTick) {
-  Scene s = minimal_scene();
+// A run of the scene for 2 s that records its Hall samples.
+RunRecording hall_for_two_seconds(Scene s) {
   s.world.duration = 2.0;
   RunRecording rec;
   RunOptions hall_only;
   hall_only.record_hall = true;
   run_experiment(s, hall_only, &rec);
+  return rec;
+}
+
+TEST(Experiment, HallCsvHasOneSamplePerClockTick) {
+  const RunRecording rec = hall_for_two_seconds(minimal_scene());
   ASSERT_EQ(rec.hall.size(), 2001u);
   EXPECT_EQ(rec.hall.back().t_us, 2000000u);
   EXPECT_EQ(hall_csv(rec).substr(0, 9), "t_us,adc\n");
@@ -119,11 +121,7 @@ TEST(Experiment, AFastBoardClockLengthensEveryPeriodByItsError) {
   EXPECT_NEAR(r.estimator->mu_k / exact.estimator->mu_k, 1.0 / (1.005 * 1.005), 2e-3);
   EXPECT_FALSE(exact.clock_error.has_value());
 
-  s.world.duration = 2.0;
-  RunRecording rec;
-  RunOptions hall_only;
-  hall_only.record_hall = true;
-  run_experiment(s, hall_only, &rec);
+  const RunRecording rec = hall_for_two_seconds(s);
   // Samples whose board time falls within 2 s of true time: up to 2.01 s by the board's clock.
   ASSERT_EQ(rec.hall.size(), 2011u);
   EXPECT_EQ(rec.hall.back().t_us, 2010000u);

@@ -10,19 +10,17 @@
 
 #include "core/friction_oscillator.hpp"
 #include "core/stick_slip_cycle.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "lab/experiment.hpp"
 #include "scene/compiled_rig.hpp"
-#include "scene/scene_yaml.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
 
+// The minimal scene without its sensor: the trajectory is what is compared.
 Scene minimal(std::vector<SceneOverride> overrides) {
-  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  Scene s = load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
-                            overrides, [&]() -> const PaperTable& { return table; });
-  s.sensor.reset();  // the trajectory is what is compared
+  Scene s = test::scene_file("minimal.yaml", overrides);
+  s.sensor.reset();
   return s;
 }
 

@@ -8,19 +8,17 @@
 #include <gtest/gtest.h>
 
 #include "core/runout.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "lab/experiment.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
-#include "scene/scene_yaml.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
 
+// The minimal scene without its sensor: the trajectory is what is compared.
 Scene minimal(std::vector<SceneOverride> overrides) {
-  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  Scene s = load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
-                            overrides, [&]() -> const PaperTable& { return table; });
+  Scene s = test::scene_file("minimal.yaml", overrides);
   s.sensor.reset();
   return s;
 }

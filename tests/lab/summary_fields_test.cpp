@@ -8,17 +8,14 @@
 
 #include <gtest/gtest.h>
 
-#include "io/paper_table_yaml.hpp"
 #include "lab/experiment.hpp"
-#include "scene/scene_yaml.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
 
 Scene minimal_scene(std::vector<SceneOverride> overrides = {}) {
-  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  return load_scene_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml",
-                         overrides, []() -> const PaperTable& { return table; });
+  return test::scene_file("minimal.yaml", overrides);
 }
 
 TEST(SummaryFields, NamesAreUniqueAndEveryFieldIsWrittenSomewhere) {

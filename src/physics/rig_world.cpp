@@ -282,6 +282,15 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
       }
     }
   }
+  // The plate's bottom face (h_c below its centre of mass along its own z axis) above each
+  // roller's surface: the distance from the tube's axis to that plane, less the radius.
+  const btTransform& body = plate->getCenterOfMassTransform();
+  const btVector3 up = body.getBasis().getColumn(2);
+  const btVector3 bottom = body.getOrigin() - up * rig.plate.h_c;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double above = (bottom - rollers[i]->getWorldTransform().getOrigin()).dot(up);
+    out[i].gap = std::max(above - scene.rollers.radius, 0.0);
+  }
   return out;
 }
 

@@ -177,11 +177,13 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
 }
 
 void read_output(const YamlNode& n, OutputDesc& o) {
-  n.allow_keys({"trajectory", "hall", "summary", "cycles"});
+  n.allow_keys({"trajectory", "hall", "summary", "cycles", "periods", "jumps"});
   if (auto v = n.find("trajectory")) o.trajectory = v->boolean();
   if (auto v = n.find("hall")) o.hall = v->boolean();
   if (auto v = n.find("summary")) o.summary = v->boolean();
   if (auto v = n.find("cycles")) o.cycles = v->boolean();
+  if (auto v = n.find("periods")) o.periods = v->boolean();
+  if (auto v = n.find("jumps")) o.jumps = v->boolean();
 }
 
 // The node of a dotted key (or its nearest existing parent), to locate a problem.

@@ -257,10 +257,10 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   if (scene.rollers.runout > 0.0) {
     out.runout = scene.rollers.runout;
     const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
-    out.runout_threshold = runout_hop_threshold(
-        rig.spacing, k, g, out.roller_speed,
-        scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1], std::fabs(scene.plate.offset),
-        rig.friction.mu_k * rig.plate.h_c);
+    out.runout_threshold =
+        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
+                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
+                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
   }
 
   const RegimeFinding finding = monitor.finding(failure);

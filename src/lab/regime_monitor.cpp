@@ -149,10 +149,12 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   first_ = false;
   static_assert(kSettleSteps > 0);
   // Which way friction pushes while the plate rests on both rollers: toward the centre is the
-  // restoring force of the oscillator; away from it, there is none.
+  // restoring force of the oscillator; away from it, there is none. A plate that left a roller
+  // within the last turn is landing, not resting: the impacts share its weight as they come.
   const double weight = mass_ * scene_.world.gravity;
+  const bool landing = last_lift_off_ && t - *last_lift_off_ <= turn_;
   if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
-      std::fabs(s.x) > 1e-6) {
+      std::fabs(s.x) > 1e-6 && !landing) {
     const double friction = contacts[0].friction_force + contacts[1].friction_force;
     // A plate held at rest feels no net friction but the solver's round-off: not a direction.
     const bool held = contacts[0].stuck && contacts[1].stuck;
@@ -175,6 +177,7 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
     slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
     const bool lifted = contacts[i].normal_force < kLiftOffFraction * weight;
+    if (lifted) last_lift_off_ = t;
     if (lifted && !tip_since_) {
       tip_since_ = t;
       tip_roller_ = i;
@@ -387,11 +390,11 @@ std::vector<PlateJump> RegimeMonitor::jumps() const {
 }
 
 bool RegimeMonitor::lift_offs_are_jumps() const {
-  // A tube off its shaft drops away under the plate at the same point of each turn (core/runout.hpp):
-  // the plate's jumps are locked to the roller's angle. A plate that tips lifts off (and may
-  // chatter) near its turning points, or stays off; on true rollers a roller's angle changes
-  // nothing, so nothing can be locked to it. Each roller's jumps are read against its own angle,
-  // which a drive under load turns a little slower than the speed set.
+  // A tube off its shaft drops away under the plate at the same point of each turn
+  // (core/runout.hpp): the plate's jumps are locked to the roller's angle. A plate that tips lifts
+  // off (and may chatter) near its turning points, or stays off; on true rollers a roller's angle
+  // changes nothing, so nothing can be locked to it. Each roller's jumps are read against its own
+  // angle, which a drive under load turns a little slower than the speed set.
   if (scene_.rollers.runout <= 0.0 || lift_offs_.empty() || turn_ <= 0.0) return false;
   // A lift-off still on at the end that has lasted a turn and a quarter of the run is the plate off
   // a roller for good.

@@ -115,7 +115,8 @@ class RegimeMonitor {
   // Every stretch of steps in which a roller carried (almost) nothing of the plate.
   std::vector<PlateJump> lift_offs_;
   std::array<bool, 2> lifted_{};
-  double turn_ = 0.0;  // s, one turn of the rollers at the speed set
+  std::optional<double> last_lift_off_;  // s, the last step a roller carried (almost) nothing
+  double turn_ = 0.0;                    // s, one turn of the rollers at the speed set
   // The lift-offs in which the plate rose above the roller.
   std::vector<PlateJump> jumps() const;
   // Whether the lift-offs are jumps (on rollers with run-out, over within a turn, and locked to

@@ -14,6 +14,7 @@
 #include "lab/regime_monitor.hpp"
 #include "lab/regime_theory.hpp"
 #include "lab/solver_convergence.hpp"
+#include "lab/warming_report.hpp"
 
 namespace fl {
 namespace {
@@ -249,6 +250,10 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   if (estimator) out.estimator = estimator->report();
   if (estimator && options.record_hall && recording != nullptr)
     recording->periods = estimator->periods();
+  if (rig.warming)
+    out.warming = warming_report(*rig.warming,
+                                 estimator ? estimator->periods() : std::vector<EstimatedPeriod>{},
+                                 rig.spacing, rig.plate.h_c, g, out.duration);
   // The rollers' surface speed: the set one, or the drive's mean under load.
   const double surface_speed = out.roller_speed * scene.rollers.radius;
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max

@@ -67,6 +67,25 @@ std::string summary_text(const RunSummary& s) {
                               s.highest_jump.value_or(0.0) * 1e3)
                 : std::string(": no jump")));
   }
+  if (s.warming) {
+    const WarmingReport& w = *s.warming;
+    line(
+        fmt::format("  rollers warming        {:.0f} K -> {:.0f} K at the end ({:.0f} K room, tau "
+                    "{:.3g} s after "
+                    "{:.3g} s cold): mu_k {:.4g} -> {:.4g} (linear in T between {:.4g} and {:.4g})",
+                    w.start_temperature, w.end_temperature, w.room_temperature, w.time_constant,
+                    w.hold, w.mu_k_start, w.mu_k_end, w.mu_k_start, w.mu_k_room));
+    const auto window = [&](const std::optional<WarmingWindow>& v) {
+      if (!v) return std::string("none");
+      return fmt::format("{:.4f} ({:+.1f} %, {} periods)", v->mu_k,
+                         100.0 * (v->mu_k / w.mu_k_cold_paper_formula - 1.0), v->periods);
+    };
+    line(
+        fmt::format("  mu_k a student gets    first 10 periods {}, first 30 s {}, whole run {}; "
+                    "{:.4f} from rollers that stay at {:.0f} K (the paper's formula)",
+                    window(w.first_10_periods), window(w.first_30_s), window(w.whole_run),
+                    w.mu_k_cold_paper_formula, w.start_temperature));
+  }
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));
   line(fmt::format(

@@ -12,6 +12,7 @@
 
 #include "core/regime.hpp"
 #include "core/units.hpp"
+#include "lab/warming_report.hpp"
 
 namespace fl {
 
@@ -61,6 +62,9 @@ struct RunSummary {
   // rollers' mean speed over the run (core/runout.hpp) [m].
   std::optional<double> runout;
   std::optional<double> runout_threshold;
+  // Rollers warming over the run (friction.warming): their temperature and mu_k, and the mu_k a
+  // student computes from the estimator's periods over the first 10, the first 30 s, the run.
+  std::optional<WarmingReport> warming;
   double time_step = 0.0;     // s
   int solver_iterations = 0;  // the iterations the run ended with
   // When the run raised them (the scene's did not converge): from what, to what, and why.

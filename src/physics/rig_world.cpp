@@ -325,6 +325,14 @@ void RigWorld::step() {
     const double speed = rig.roller_speed_ramp->at(t_next);
     impl_->roller_omega = {sense * speed, -sense * speed};
   }
+  if (rig.warming) {
+    // Warming rollers: the law's coefficients scaled with mu_k at the step's middle.
+    const double scale = rig.warming->mu_k(t_next - 0.5 * impl_->dt) / rig.warming->mu_k_start();
+    FrictionLaw law = rig.friction;
+    law.mu_k *= scale;
+    law.mu_s *= scale;
+    impl_->friction->set_law(law);
+  }
   impl_->world.stepSimulation(impl_->dt, 0);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
   std::array<ContactFriction::RollerImpulses, 2> impulses{};

@@ -56,6 +56,10 @@ const std::vector<double>& HallEstimator::pulse_times() const {
   return impl_->pulse_times;
 }
 
+const std::vector<EstimatedPeriod>& HallEstimator::judged_periods() const {
+  return impl_->estimator.periods();
+}
+
 std::vector<EstimatedPeriod> HallEstimator::periods() const {
   return impl_->estimator.periods_if_finished();
 }

@@ -26,6 +26,8 @@ class HallEstimator {
   // Every period judged so far, accepted or rejected, on the rig's clock [s], as report() counts
   // them (the data ending here).
   std::vector<EstimatedPeriod> periods() const;
+  // The periods judged so far, without the one the data's end would complete (for live overlays).
+  const std::vector<EstimatedPeriod>& judged_periods() const;
 
  private:
   struct Impl;

@@ -91,6 +91,7 @@ struct RigVideo final : public VideoEngine {
   std::vector<render::HallPoint> hall;
   std::optional<std::array<double, 2>> hall_seen;  // lowest and highest ADC value so far
   std::vector<double> pulses;
+  std::vector<std::array<double, 2>> discarded;  // s, the estimator's discarded periods
   render::EstimatorValues estimator;
   std::optional<double> motor_speed;
   double roller_speed = 0.0;
@@ -208,6 +209,8 @@ void RigVideo::take_estimator(const VideoStep& step) {
     estimator.mu_k_err = r.mu_k_err_worst;
   }
   pulses = r.pulse_times;
+  estimator.periods_discarded = r.periods_discarded;
+  discarded = r.discarded;
 }
 
 render::RigOverlayState RigVideo::overlay_state(double t) const {
@@ -226,6 +229,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
     o.hall_range = std::array<double, 2>{mid - half, mid + half};
   }
   o.pulses = pulses;
+  o.discarded = discarded;
   o.has_sensor = has_sensor;
   o.estimator = estimator;
   o.material = material;

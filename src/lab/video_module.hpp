@@ -34,6 +34,10 @@ struct VideoEstimate {
   double mu_k = 0.0;                // from the mean period, thin formula
   double mu_k_err_worst = 0.0;      // the paper's d mu/mu = dl/l + 2 dT/T
   std::vector<double> pulse_times;  // s, every pulse detected so far
+  int periods_discarded = 0;
+  // The periods the estimator discarded so far (a jump bent a pulse, a pulse went missing): from,
+  // to [s].
+  std::vector<std::array<double, 2>> discarded;
 };
 
 // One Hall sample: time and ADC counts.

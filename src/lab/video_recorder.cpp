@@ -39,6 +39,9 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
     out.regime = f.since > 0.0
                      ? fmt::format("{} since t = {:.3f} s", regime_name(f.regime), f.since)
                      : std::string(regime_name(f.regime));
+    if (f.jumps > 0)
+      out.regime += fmt::format("; {} jump{} off a roller, up to {:.1f} mm", f.jumps,
+                                f.jumps == 1 ? "" : "s", f.highest_jump.value_or(0.0) * 1e3);
     next_regime_t = view.t + 0.01;
   }
   out.new_samples.clear();
@@ -57,6 +60,10 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   e.mu_k = r.mu_k;
   e.mu_k_err_worst = r.mu_k_err_worst;
   e.pulse_times = view.estimator->pulse_times();
+  e.periods_discarded = r.periods_discarded;
+  e.discarded.clear();
+  for (const EstimatedPeriod& p : view.estimator->judged_periods())
+    if (p.status != fl_estimator::kAccepted) e.discarded.push_back({p.start, p.end});
 }
 
 }  // namespace

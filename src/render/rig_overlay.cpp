@@ -14,6 +14,7 @@ const Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
 const Color kSoft{0.80f, 0.85f, 0.92f, 1.0f};
 const Color kTrace{1.0f, 0.78f, 0.15f, 1.0f};
 const Color kPulse{0.35f, 0.92f, 0.45f, 1.0f};
+const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shaded
 const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
 
 constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
@@ -111,6 +112,17 @@ void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayStat
     }
     trace.push_back(samples.back());
   }
+  // The periods the estimator discarded, shaded behind the trace.
+  bool any_discarded = false;
+  for (const std::array<double, 2>& d : state.discarded) {
+    if (d[1] < t0 || d[0] > state.t) continue;
+    const float a = x_of(std::max(d[0], t0)), b = x_of(std::min(d[1], state.t));
+    o.rect(Rect{a, area.y + 1.0f, std::max(1.0f, b - a), area.height - 2.0f}, kDiscarded);
+    any_discarded = true;
+  }
+  if (any_discarded)
+    o.text("discarded period", Eigen::Vector2f(area.x + 4 * s, area.y + 3 * s), 11 * s,
+           Color{kDiscarded.r, kDiscarded.g, kDiscarded.b, 1.0f});
   o.polyline(trace, 1.5f * s, kTrace);
   for (const double pulse : state.pulses) {
     if (pulse < t0 || pulse > state.t) continue;
@@ -132,7 +144,9 @@ void draw_results(Overlay& o, const Rect& panel, float s, const RigOverlayState&
   } else if (e.period) {
     const Rect r = o.text("T = " + format_plus_minus(*e.period, e.period_std.value_or(0.0)) + " s",
                           Eigen::Vector2f(x, y), 17 * s, kWhite);
-    o.text(fmt::format("({} period{})", e.periods, e.periods == 1 ? "" : "s"),
+    o.text(e.periods_discarded > 0
+               ? fmt::format("(N = {}, {} discarded)", e.periods, e.periods_discarded)
+               : fmt::format("({} period{})", e.periods, e.periods == 1 ? "" : "s"),
            Eigen::Vector2f(r.x + r.width + 6 * s, y + 4 * s), 12 * s, kSoft);
     y += 22 * s;
     if (e.mu_k)
@@ -239,7 +253,10 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
          Eigen::Vector2f(speeds.x + speeds.width - 6 * s, y), 13 * s, kWhite, TextAlign::kRight);
   // What the plate does, as the run reads it so far.
   if (!state.regime.empty()) {
-    const Rect regime{8 * s, speeds.y + speeds.height + 4 * s, 230 * s, 23 * s};
+    // As wide as its text (at least the speeds' panel), up to the frame's half.
+    const Rect words = o.measure_text(state.regime, 13 * s);
+    const float wide = std::clamp(words.width + 12 * s, 230 * s, 0.5f * static_cast<float>(width));
+    const Rect regime{8 * s, speeds.y + speeds.height + 4 * s, wide, 23 * s};
     o.rect(regime, kPanel);
     o.text(state.regime, Eigen::Vector2f(regime.x + 6 * s, regime.y + 4 * s), 13 * s, kWhite);
   }

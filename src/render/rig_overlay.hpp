@@ -5,6 +5,7 @@
 // with the frame's height, so the smallest text is 12 px at 640x360.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <span>
 #include <string>
@@ -25,7 +26,8 @@ struct HallPoint {
 // The estimator's running values (the rig's estimator, as the Arduino computes them).
 struct EstimatorValues {
   int pulses = 0;
-  int periods = 0;                   // periods averaged
+  int periods = 0;  // periods averaged
+  int periods_discarded = 0;
   std::optional<double> period;      // s, mean
   std::optional<double> period_std;  // s, standard deviation of the periods
   std::optional<double> mu_k;
@@ -44,6 +46,8 @@ struct RigOverlayState {
   double hall_window = 2.5;                         // s of simulated time the plot spans
   std::optional<std::array<double, 2>> hall_range;  // ADC counts shown, bottom to top
   std::span<const double> pulses;                   // s
+  // The periods the estimator discarded, from, to [s]: shaded on the plot.
+  std::span<const std::array<double, 2>> discarded;
   bool has_sensor = true;
   EstimatorValues estimator;
   // What the paper measured for this material, if the scene took mu_k from its table.

@@ -5,6 +5,7 @@
 // options fail with status 2 and a message that names them.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -127,6 +128,33 @@ TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(names(),
             (std::set<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
+}
+
+// Rollers off their shafts (0.45 mm): the plate jumps and the estimator discards most periods;
+// the video's Hall plot shades them red, which true rollers never show.
+TEST(RigVideo, TheHallPlotShadesTheDiscardedPeriods) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("discarded");
+  const auto reddish = [&](const std::string& runout) {
+    const fs::path still = dir / ("still-" + runout + ".png");
+    const auto r = lab("run " + kScenes + "imperfect/runout.yaml --set rollers.runout=" + runout +
+                       " --duration 30s --size 640x360 --still " + still.string());
+    EXPECT_EQ(r.status, 0) << r.err;
+    const render::Image image = render::read_png(still.string());
+    // The Hall plot: the panel at the bottom left (8 to 308 px across, 256 to 352 px down).
+    int count = 0;
+    for (int y = 262; y < 350; ++y)
+      for (int x = 12; x < 304; ++x) {
+        const auto p = image.view().at(x, y);
+        // Red over the grey panel (green and blue alike), not the orange trace (blue far below
+        // green).
+        if (p[0] > p[1] + 30 && std::abs(p[1] - p[2]) < 20) ++count;
+      }
+    return count;
+  };
+  // Measured: about 4900 shaded pixels of the plot's 25 700 with the jumps, none without.
+  EXPECT_GT(reddish("0.45mm"), 1000);
+  EXPECT_EQ(reddish("0mm"), 0);
 }
 
 TEST(RigVideo, ARunWithoutFramesNeverStartsGl) {

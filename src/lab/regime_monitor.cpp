@@ -375,7 +375,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
         100.0 * slip_ratio_min_);
   if (jumps)
     f.evidence += fmt::format(
-        "; the plate jumped off a roller {} times from t = {:.4f} s (at the same point of the "
+        "; the plate jumped off a roller {} times from t = {:.4f} s (locked to the "
         "roller's turn), each time back within {:.1f} ms, at most {:.3f} mm high",
         f.jumps, *f.first_jump, *f.longest_jump * 1e3, *f.highest_jump * 1e3);
   f.motion = std::move(motion);

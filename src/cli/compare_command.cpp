@@ -13,9 +13,11 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "lab/compare.hpp"
 
@@ -73,10 +75,14 @@ void print_table(const CompareResult& r) {
             ? fmt::format("{:+.4f}%",
                           100.0 * (*row.period_at_refit / row.period_measured.value - 1))
             : std::string("-");
-    fmt::print("{} {:>10.5f} {:>7.2f} sd {:>+8.2f}%  {:>14}  {:>27} {:>9}{}\n", head,
+    const bool from_trajectory = row.period_simulated_source.starts_with("trajectory");
+    fmt::print("{} {:>10.5f} {:>7.2f} sd {:>+8.2f}%  {:>14}  {:>27} {:>9}{}{}\n", head,
                row.period_simulated.value_or(NAN), row.residual_sigma.value_or(NAN),
                100.0 * row.thin_bias_mu_k.value_or(NAN), measured_text(row.mu_k_paper), refit,
-               at_fit, row.refit_note.empty() ? "" : "  (" + row.refit_note + ")");
+               at_fit, row.refit_note.empty() ? "" : "  (" + row.refit_note + ")",
+               from_trajectory ? "  (T sim from the trajectory: the rig's estimator accepted no "
+                                 "period; simulate longer)"
+                               : "");
   }
 }
 
@@ -85,12 +91,28 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   CompareOptions options;
   options.scene_file = o.scene.empty() ? default_scene() : o.scene;
   options.parts = scene_sources(global).parts;
-  for (const std::string& text : o.overrides) options.overrides.push_back(parse_override(text));
+  for (const std::string& text : o.overrides) {
+    SceneOverride over = parse_override(text);
+    // What the comparison sets for each row of Table I would silently win over the option.
+    const bool duration = over.path == "world.duration";
+    if (duration || over.path == "friction.mu_k" || over.path == "plate.material" ||
+        over.path == "friction.temperature")
+      throw InputError(
+          SourceLocation{"--set " + text, 0, 0},
+          fmt::format("expected a key compare leaves to the scene, found {}, which compare sets "
+                      "for each row of Table I (the row's material, temperature and mu_k, and "
+                      "the run's length); {}",
+                      over.path,
+                      duration ? "use --duration instead"
+                               : "drop it, or simulate that set-up with frictionlab run"));
+    options.overrides.push_back(std::move(over));
+  }
   if (!o.duration.empty()) {
     option_quantity(o.duration, Dimension::kTime, "--duration");
     options.overrides.push_back({"world.duration", o.duration});
     options.min_periods = 0;
   }
+  prepare_output_folder(o.out, "--out");
   options.workers = o.workers;
   options.refit = !o.no_refit;
   const bool tty = isatty(2) == 1;

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/input_error.hpp"
@@ -57,11 +58,22 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   if (!o.accuracy.empty()) {
     const double target = option_quantity(o.accuracy, Dimension::kDimensionless, "--accuracy");
     scene.world.time_step = step_for_accuracy(scene, target);
-    if (!o.json)
+    if (!o.json && scene.world.duration / scene.world.time_step <= 1e9)
       fmt::print("--accuracy {}: time step {:.4g} ms (predicted integrator bias {:.2e})\n",
                  o.accuracy, scene.world.time_step * 1e3, predicted_integrator_bias(scene));
   }
-  // Checked before the run: a plot needs the folder and the periods it draws.
+  // Checked before the run: a step the run can take, places to write, and a plot's needs.
+  if (scene.world.duration / scene.world.time_step > 1e9)
+    throw InputError(SourceLocation{"--accuracy " + o.accuracy, 0, 0},
+                     fmt::format("expected a time step the run can take, found {:.3g} s: {:.3g} "
+                                 "s of simulated time would take {:.3g} steps, more than 1e9; ask "
+                                 "for a looser accuracy or a shorter --duration",
+                                 scene.world.time_step, scene.world.duration,
+                                 scene.world.duration / scene.world.time_step));
+  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
+  if (!o.video.video.empty()) prepare_output_file(o.video.video, "--video");
+  if (!o.video.still.empty()) prepare_output_file(o.video.still, "--still");
+  if (!o.video.frames.empty()) prepare_output_folder(o.video.frames, "--frames");
   if (o.plot && o.out.empty())
     throw InputError(SourceLocation{"--plot", 0, 0},
                      "expected --out DIR as well: the plot is drawn from DIR/periods.csv; add "
@@ -106,11 +118,6 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   std::optional<VideoReport> video;
   if (recorder) video = recorder->finish();
   if (!o.out.empty()) write_run_outputs(o.out, rig, summary, recording);
-  std::string plot;
-  if (o.plot) {
-    plot = o.out + "/periods.png";
-    run_plot_script("plot_periods.py", {o.out, plot});
-  }
   if (o.json) {
     nlohmann::json j = summary_json(summary);
     j.update(timing_json(summary));
@@ -118,8 +125,19 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   } else {
     fmt::print("{}", summary_text(summary));
     if (!o.out.empty()) fmt::print("  outputs                {}/\n", o.out);
-    if (!plot.empty()) fmt::print("  plot                   {}\n", plot);
     if (video) print_video(*video, o.video);
+  }
+  // The plot last, after the results it draws are printed and written: its failure loses none.
+  if (o.plot) {
+    const std::string plot = o.out + "/periods.png";
+    try {
+      run_plot_script("plot_periods.py", {o.out, plot});
+    } catch (const std::runtime_error& e) {
+      fmt::print(stderr, "error: no plot: {}; the results above and in {}/ are complete\n",
+                 e.what(), o.out);
+      return 1;
+    }
+    if (!o.json) fmt::print("  plot                   {}\n", plot);
   }
   // A guard stopped the run: the outputs up to that point are written, and the status says so.
   return summary.failure || summary.regime == Regime::kNumericallyFailed ? 3 : 0;

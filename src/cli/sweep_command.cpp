@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "lab/sweep_run.hpp"
@@ -165,6 +166,7 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
   const SweepSpec spec = load_sweep_file(o.file, inputs);
   SweepRunOptions options;
   options.out_dir = o.out.empty() ? "out/sweep/" + spec.name : o.out;
+  prepare_output_folder(options.out_dir, "--out");
   options.workers = o.workers;
   if (!o.shard.empty()) options.shard = parse_shard(o.shard);
   options.fresh = o.fresh;

@@ -20,6 +20,7 @@ namespace {
 struct Simulation {
   std::optional<double> period;  // s
   std::optional<double> period_std;
+  bool from_trajectory = false;  // the estimator accepted no period: the trajectory's instead
   std::optional<Regime> regime;
   std::string evidence;
   std::optional<std::string> failure;
@@ -48,8 +49,12 @@ class Rig {
     ++simulations_;
     const RunSummary summary = run_experiment(scene, RunOptions{});
     Simulation s;
+    // The rig's estimator's period; the trajectory's (without a spread) where it accepted none,
+    // and the row says so.
     s.period = summary.period ? summary.period : summary.period_trajectory;
-    if (summary.estimator) s.period_std = summary.estimator->period_std;
+    s.from_trajectory = !summary.period && summary.period_trajectory.has_value();
+    if (summary.estimator && summary.estimator->periods_used > 0)
+      s.period_std = summary.estimator->period_std;
     s.regime = summary.regime;
     s.evidence = summary.regime_evidence;
     s.failure = summary.failure;
@@ -212,6 +217,10 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
   row.status = "compared";
   row.period_simulated = s.period;
   row.period_simulated_std = s.period_std;
+  row.period_simulated_source =
+      s.period
+          ? (s.from_trajectory ? "trajectory (the estimator accepted no period)" : "hall estimator")
+          : "";
   if (row.period_measured.uncertainty > 0.0)
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;
@@ -311,6 +320,7 @@ nlohmann::json compare_json(const CompareResult& r) {
                     {"period_measured_err_s", row.period_measured.uncertainty},
                     {"period_simulated_s", json_or_null(row.period_simulated)},
                     {"period_simulated_std_s", json_or_null(row.period_simulated_std)},
+                    {"period_simulated_source", row.period_simulated_source},
                     {"regime", name_or_empty(row.regime)},
                     {"residual_sigma", json_or_null(row.residual_sigma)},
                     {"period_thin_s", row.period_thin},
@@ -352,6 +362,7 @@ std::string compare_csv(const CompareResult& r) {
                                          "period_measured_err_s",
                                          "period_simulated_s",
                                          "period_simulated_std_s",
+                                         "period_simulated_source",
                                          "residual_sigma",
                                          "period_thin_s",
                                          "period_thick_s",

@@ -61,6 +61,9 @@ struct CompareRow {
   // The rig run with the paper's mu_k.
   std::optional<double> period_simulated;      // s, the rig's estimator
   std::optional<double> period_simulated_std;  // s, standard deviation of its periods
+  // "hall estimator", or "trajectory (the estimator accepted no period)" (then no spread); empty
+  // without a period.
+  std::string period_simulated_source;
   std::optional<Regime> regime;
   std::optional<double> residual_sigma;    // (T_sim - T_measured) / dT
   double period_thin = 0.0;                // s, thin formula at the paper's mu_k

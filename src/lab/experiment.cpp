@@ -325,7 +325,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   } else {
     // mu_k as the rig would report it: from the estimator's period; from the trajectory's when
     // the scene has no sensor or its estimator accepted no period.
-    if (out.estimator) {
+    if (out.estimator && out.estimator->periods_used > 0) {
       out.mu_k_estimator = out.estimator->mu_k;
       out.mu_k_err_worst = out.estimator->mu_k_err_worst;
       out.mu_k_err_quadrature = out.estimator->mu_k_err_quadrature;
@@ -338,9 +338,13 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
       out.mu_k_source = PeriodSource::kHallEstimator;
     } else if (out.estimator) {
       out.period_withheld = fmt::format(
-          "no period: the rig's estimator accepted none from {} Hall pulse(s) (the magnets may not "
-          "pass the sensor at this amplitude, or the run is too short){}",
-          out.estimator->pulses,
+          "no period: {}{}",
+          out.estimator->pulses == 0
+              ? std::string("the Hall sensor saw no pulse: the magnets never came near it (check "
+                            "sensor.position against where the magnets swing)")
+              : fmt::format("the rig's estimator accepted none from {} Hall pulse(s) (the pulses "
+                            "too weak or unlike each other, or the run too short)",
+                            out.estimator->pulses),
           out.period_trajectory ? fmt::format("; mu_k comes from the trajectory's period {:.6f} s",
                                               *out.period_trajectory)
                                 : std::string());

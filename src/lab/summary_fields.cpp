@@ -15,10 +15,17 @@ std::optional<double> relative_error(const std::optional<double>& value,
   return *value / *reference - 1.0;
 }
 
-// A value of the estimator's report, or null without an estimator.
+// A value of the estimator's report, or null without an estimator or an accepted period.
 template <typename Get>
 json from_estimator(const RunSummary& s, Get get) {
-  return s.estimator ? json(get(*s.estimator)) : json(nullptr);
+  return s.estimator && s.estimator->periods_used > 0 ? json(get(*s.estimator)) : json(nullptr);
+}
+
+// Where mu_k came from when not from the rig's estimator (left out when it did).
+json mu_k_source_json(const RunSummary& s) {
+  if (!s.mu_k_source || *s.mu_k_source == PeriodSource::kHallEstimator) return nullptr;
+  return json(s.estimator ? "trajectory: the rig's estimator accepted no period"
+                          : "trajectory: the scene has no sensor");
 }
 
 json drive_json(const RunSummary& s) {
@@ -92,9 +99,9 @@ const std::vector<SummaryField>& summary_fields() {
          return from_estimator(s, [](const EstimatorReport& e) { return e.period_std_error; });
        }},
       {"periods_used", "periods_used",
-       [](S s) { return json(s.estimator ? s.estimator->periods_used : 0); }},
+       [](S s) { return s.estimator ? json(s.estimator->periods_used) : json(nullptr); }},
       {"periods_discarded", "periods_discarded",
-       [](S s) { return json(s.estimator ? s.estimator->periods_discarded : 0); }},
+       [](S s) { return s.estimator ? json(s.estimator->periods_discarded) : json(nullptr); }},
       {"period_trajectory_s", "period_trajectory_s",
        [](S s) { return json_or_null(s.period_trajectory); }},
       {"period_trajectory_err_s", nullptr,
@@ -109,6 +116,7 @@ const std::vector<SummaryField>& summary_fields() {
        [](S s) { return json_or_null(relative_error(s.period_trajectory, s.period_thick)); }},
       {"mu_k_set", "mu_k_set", [](S s) { return json_or_null(s.mu_k_set); }},
       {"mu_k_recovered", "mu_k_recovered", [](S s) { return json_or_null(s.mu_k_recovered); }},
+      {"mu_k_source", "mu_k_source", mu_k_source_json, true},
       {"mu_k_recovered_thick", "mu_k_recovered_thick",
        [](S s) { return json_or_null(s.mu_k_recovered_thick); }},
       {"mu_k_estimator", nullptr, [](S s) { return json_or_null(s.mu_k_estimator); }, true},

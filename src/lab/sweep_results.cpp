@@ -90,11 +90,24 @@ PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
   return out;
 }
 
+// The run's columns a sweep writes after its axes: all but those an axis already is (a seeds
+// axis is the seed column).
+std::vector<std::string> run_columns(const nlohmann::json& plan) {
+  std::vector<std::string> out;
+  for (const std::string& c : fixed_columns()) {
+    bool axis = false;
+    for (const nlohmann::json& a : plan.at("axes")) axis = axis || a.at("name") == c;
+    if (!axis) out.push_back(c);
+  }
+  return out;
+}
+
 std::vector<std::string> sweep_result_columns(const nlohmann::json& plan) {
   std::vector<std::string> columns{"index"};
   for (const nlohmann::json& a : plan.at("axes"))
     columns.push_back(a.at("name").get<std::string>());
-  columns.insert(columns.end(), fixed_columns().begin(), fixed_columns().end());
+  const std::vector<std::string> run = run_columns(plan);
+  columns.insert(columns.end(), run.begin(), run.end());
   return columns;
 }
 
@@ -109,7 +122,7 @@ std::string sweep_results_csv(const nlohmann::json& plan, const std::vector<nloh
     csv += csv_cell(row.at("index"));
     for (std::size_t a = 0; a < axes; ++a)
       csv += "," + csv_cell(row.at("params").at(columns[1 + a]));
-    for (const std::string& c : fixed_columns())
+    for (const std::string& c : run_columns(plan))
       csv += "," + csv_cell(row.value(c, nlohmann::json()));
     csv += '\n';
   }

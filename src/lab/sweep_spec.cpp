@@ -102,7 +102,9 @@ SweepAxis read_key_axis(const YamlNode& n) {
   if (!from) from_node.fail("expected a number with its unit, e.g. 40 mm");
   auto to = split_number(to_node.text());
   if (!to) to_node.fail("expected a number with its unit, e.g. 200 mm");
-  if (to->unit.empty()) to->unit = from->unit;
+  if (to->unit.empty() && !from->unit.empty())
+    to_node.fail("expected a number with the unit of from (\"" + from->unit + "\"), found \"" +
+                 to_node.text() + "\" with none: a plain number is SI; write it with its unit");
   if (to->unit != from->unit)
     to_node.fail("from and to must be in the same unit (found \"" + from->unit + "\" and \"" +
                  to->unit + "\")");

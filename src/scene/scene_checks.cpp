@@ -30,6 +30,21 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
        "world.solver_iterations",
        describe("must be between 1 and 10000, found ", s.world.solver_iterations));
+  // A step of a quarter period or more cannot follow the plate (omega dt >= pi / 2): the
+  // thin plate's period, which any plate with a restoring force has at least roughly.
+  if (finite_positive(s.world.time_step) && finite_positive(s.rollers.spacing) &&
+      finite_positive(s.friction.mu_k) && finite_positive(s.world.gravity)) {
+    const double quarter = 0.25 * period_thin(s.rollers.spacing, s.friction.mu_k, s.world.gravity);
+    need(s.world.time_step < quarter, "world.time_step",
+         describe("expected a step that resolves the oscillation, shorter than a quarter of its "
+                  "period (",
+                  quarter, " s for the thin plate), found ", s.world.time_step,
+                  " s; use a step of 1 ms"));
+  }
+  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
+    need(s.world.duration >= s.world.time_step, "world.duration",
+         describe("must be at least one step of world.time_step (", s.world.time_step,
+                  " s), found ", s.world.duration, " s: a run of no step measures nothing"));
   if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
     need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
          describe("needs ", s.world.duration / s.world.time_step,

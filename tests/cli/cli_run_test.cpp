@@ -100,6 +100,73 @@ TEST(CliRun, BadScenesExitWithStatusTwo) {
   std::filesystem::remove_all(test_dir());
 }
 
+// Nonsense is refused before any work: a run of no step, a step --accuracy would take past the
+// step limit, output paths that cannot be written, keys compare sets itself. Each exits 2 with a
+// located message and writes nothing.
+TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
+  std::filesystem::create_directories(test_dir());
+  const std::string file = (test_dir() / "a-file").string();
+  std::ofstream(file) << "x";
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  for (const Case& c : {
+           Case{"run " + kMinimal + " --duration 0.5ms",
+                "world.duration: must be at least one step of world.time_step"},
+           Case{"run " + kMinimal + " --set world.time_step=0.3s",
+                "world.time_step: expected a step that resolves the oscillation"},
+           Case{"run " + kMinimal + " --accuracy 1e-20",
+                "--accuracy 1e-20: error: expected a time step the run can take"},
+           Case{"run " + kMinimal + " --video " + test_dir().string(),
+                "--video " + test_dir().string() +
+                    ": error: expected a place this command can "
+                    "write, found a folder"},
+           Case{"run " + kMinimal + " --out " + file, "found a file"},
+           Case{"run " + kMinimal + " --still " + file + "/x.png", "is a file"},
+           Case{"run " + kMinimal + " --plot", "--plot: error: expected --out DIR as well"},
+           Case{"compare --set friction.mu_k=0.3",
+                "--set friction.mu_k=0.3: error: expected a key compare leaves to the scene"},
+           Case{"compare --set world.duration=2s", "use --duration instead"},
+       }) {
+    const auto r = lab(c.args);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_EQ(r.out.find("frictionlab run:"), std::string::npos) << c.args;
+  }
+  // A plain length of metres where millimetres were meant is said aloud.
+  const auto spacing = lab("analytic --spacing 89 --mu-k 0.3");
+  EXPECT_NE(spacing.err.find("warning: --spacing 89 read as 89 m (a plain number is SI)"),
+            std::string::npos)
+      << spacing.err;
+  std::filesystem::remove_all(test_dir());
+}
+
+// What the run did not measure is null, and a fallback says it is one: a sensor the magnets never
+// reach gives no period, no spread and no estimator mu_k, and mu_k from the trajectory with its
+// source named; a scene without a sensor has no estimator counts.
+TEST(CliRun, NoNumberWithoutASource) {
+  const auto far =
+      lab("run " + kMinimal + " --duration 5s --json --set sensor.position=[400mm,0mm,15mm]");
+  ASSERT_EQ(far.status, 0) << far.err;
+  const nlohmann::json j = nlohmann::json::parse(far.out);
+  for (const char* key : {"period_s", "period_std_s", "period_std_error_s", "mu_k_estimator",
+                          "mu_k_err_worst", "mu_k_err_quadrature"})
+    EXPECT_TRUE(!j.contains(key) || j.at(key).is_null()) << key << " = " << j.value(key, nullptr);
+  EXPECT_EQ(j["periods_used"], 0);
+  EXPECT_EQ(j["mu_k_source"], "trajectory: the rig's estimator accepted no period");
+  EXPECT_NEAR(j["mu_k_recovered"].get<double>(), 0.29, 0.01);
+  EXPECT_NE(j["period_withheld"].get<std::string>().find("the Hall sensor saw no pulse"),
+            std::string::npos);
+  const auto ok = nlohmann::json::parse(lab("run " + kMinimal + " --duration 5s --json").out);
+  EXPECT_FALSE(ok.contains("mu_k_source"));  // from the rig's estimator, as the paper's rig
+  const auto bare = nlohmann::json::parse(
+      lab("run " + std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/mu-1.yaml --json")
+          .out);
+  EXPECT_TRUE(bare["periods_used"].is_null());
+  EXPECT_EQ(bare["mu_k_source"], "trajectory: the scene has no sensor");
+}
+
 TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
   const auto out = test_dir() / "accuracy";
   const auto r = lab("accuracy " + kMinimal + " --periods 4 --json --out " + out.string());

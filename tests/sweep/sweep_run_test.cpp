@@ -98,6 +98,20 @@ TEST(SweepRun, OneAndTwoWorkersWriteTheSameBytes) {
   EXPECT_EQ(fs::exists(one / "points" / "00000005.json"), true);
 }
 
+// A seeds axis is the seed column: one column named seed, holding each point's seed.
+TEST(SweepRun, ASeedsAxisIsTheSeedColumn) {
+  const fs::path dir = folder("seeds");
+  const SweepOutcome outcome =
+      run(load("format: 1\nscene: ../minimal.yaml\nset: {world.duration: 1 s}\naxes:\n"
+               "  - seeds: [3, 9]\n"),
+          dir, 1);
+  ASSERT_TRUE(outcome.complete);
+  const std::string csv = read(dir / "results.csv");
+  const std::string header = csv.substr(0, csv.find('\n'));
+  EXPECT_EQ(header.find("seed"), header.rfind("seed")) << header;
+  EXPECT_EQ(csv.substr(csv.find('\n') + 1, 6), "0,3,ok");
+}
+
 TEST(SweepRun, FailingPointsAreRecordedAndTheSweepGoesOn) {
   const SweepSpec spec = load(
       "format: 1\nscene: ../minimal.yaml\nset:\n  world.duration: 2 s\n"

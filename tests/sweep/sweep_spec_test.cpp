@@ -149,6 +149,9 @@ TEST(SweepSpec, ErrorsAreLocated) {
            Case{kHead + "axes:\n  - {key: rollers.spacing, values: [60 mm], from: 1 mm}\n",
                 "t.yaml:4:36: error: axes[0].values: give either values or a range (from, to, "
                 "steps), not both"},
+           Case{kHead + "axes:\n  - {key: rollers.spacing, from: 60 mm, to: 0.12, steps: 2}\n",
+                "t.yaml:4:45: error: axes[0].to: expected a number with the unit of from (\"mm\"), "
+                "found \"0.12\" with none: a plain number is SI"},
            Case{kHead + "axes:\n  - {key: rollers.spacing, from: 40 mm, to: 20 cm, steps: 3}\n",
                 "t.yaml:4:45: error: axes[0].to: from and to must be in the same unit (found "
                 "\"mm\" and \"cm\")"},

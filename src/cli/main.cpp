@@ -1,17 +1,20 @@
 // frictionlab: the command line of the virtual friction-oscillator lab.
 // Exit status: 0 success, 1 internal error, 2 bad input, 3 physics failure.
+#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
 #include "core/analytic_model.hpp"
 #include "core/units.hpp"
 #include "io/input_error.hpp"
+#include "io/suggest.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"frictionlab: a virtual lab of the friction (Timoshenko) oscillator"};
@@ -31,6 +34,20 @@ int main(int argc, char** argv) {
       fl::cli::add_compare_command(app, global),
   };
 
+  // A first word that is no subcommand: say which it was closest to.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+    const std::string word = argv[1];
+    if (std::find(names.begin(), names.end(), word) == names.end()) {
+      const std::vector<std::string_view> views(names.begin(), names.end());
+      const std::string near = fl::closest_match(word, views);
+      fmt::print(stderr, "error: \"{}\" is not a frictionlab command{}; the commands: {}\n", word,
+                 near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near),
+                 fmt::join(names, ", "));
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -74,7 +74,11 @@ TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
            Case{"analytic --mu-k 0.3 --period 1s", "give exactly one of"},
            Case{"analytic --material unobtainium", "unknown material"},
            Case{"analytic --material iron --temperature 77K", "at 300 K only"},
-           Case{"nosuchcommand", ""},
+           Case{"nosuchcommand",
+                "\"nosuchcommand\" is not a frictionlab command; the commands: "
+                "analytic, table, run"},
+           Case{"rum scenes/minimal.yaml", "(did you mean 'run'?)"},
+           Case{"sweeep x.yaml", "(did you mean 'sweep'?)"},
            Case{"table --assets /nonexistent", "no such file"},
        }) {
     const auto r = lab(c.args);
@@ -85,6 +89,22 @@ TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
   }
+}
+
+// README's claims on flexible foam (mu_k = 10): the minimal plate, released at 20 mm, beyond
+// l/2 - mu_k h_c = 18.7 mm, tips; a plate 10 mm thick (h_c above 4.45 mm) has no restoring force
+// and the loader refuses it.
+TEST(Cli, FlexibleFoamTipsTheMinimalPlateAndAThickPlateIsRefused) {
+  const std::string minimal = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+  const auto tips =
+      lab("run " + minimal + " --set friction.mu_k=flexible-foam --duration 1s --json");
+  ASSERT_EQ(tips.status, 0) << tips.err;
+  EXPECT_EQ(nlohmann::json::parse(tips.out)["regime"], "tips");
+  const auto thick =
+      lab("run " + minimal + " --set friction.mu_k=flexible-foam --set plate.thickness=10mm");
+  EXPECT_EQ(thick.status, 2);
+  EXPECT_NE(thick.err.find("no oscillation exists: l = 89 mm <= 2 mu_k h_c"), std::string::npos)
+      << thick.err;
 }
 
 TEST(Cli, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {

@@ -1,4 +1,7 @@
 // frictionlab run SCENE: one simulation of a scene, summarised against the analytic model.
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -14,6 +17,7 @@
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
+#include "cli/stop_signals.hpp"
 #include "io/input_error.hpp"
 #include "lab/experiment.hpp"
 #include "lab/run_outputs.hpp"
@@ -112,11 +116,32 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
   }
   options.record_cycles = !o.out.empty() && scene.output.cycles;
+  // Ctrl-C or SIGTERM ends the run after its step; what it did is kept, closed and reported.
+  options.stop = &stop_requested();
+  // A run longer than a few seconds on a terminal says how far it is.
+  const bool tty = isatty(2) == 1 && !o.json;
+  const auto wall_start = std::chrono::steady_clock::now();
+  double shown = 0.0;
+  if (tty)
+    options.progress = [&](double t) {
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      if (wall < 3.0 || wall - shown < 0.25) return;
+      shown = wall;
+      fmt::print(stderr, "\r\033[Krun: t = {:.1f} of {:.1f} s ({:.0f} %)", t, scene.world.duration,
+                 100.0 * t / scene.world.duration);
+    };
   RunRecording recording;
   const CompiledRig rig = compile_rig(scene);
-  const RunSummary summary = run_experiment(rig, options, &recording);
+  RunSummary summary;
   std::optional<VideoReport> video;
-  if (recorder) video = recorder->finish();
+  {
+    StopSignals signals;
+    summary = run_experiment(rig, options, &recording);
+    if (shown > 0.0) fmt::print(stderr, "\r\033[K");
+    // The video up to its last frame, playable, even when the run was interrupted.
+    if (recorder) video = recorder->finish();
+  }
   if (!o.out.empty()) write_run_outputs(o.out, rig, summary, recording);
   if (o.json) {
     nlohmann::json j = summary_json(summary);
@@ -138,6 +163,14 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
       return 1;
     }
     if (!o.json) fmt::print("  plot                   {}\n", plot);
+  }
+  if (summary.interrupted_at) {
+    fmt::print(stderr,
+               "frictionlab run: interrupted at t = {:.3f} s; kept: the summary above{}{} (each "
+               "marked with interrupted_at_s)\n",
+               *summary.interrupted_at, o.out.empty() ? "" : ", the outputs in " + o.out + "/",
+               video ? ", the video up to its last frame" : "");
+    return stop_exit_status();
   }
   // A guard stopped the run: the outputs up to that point are written, and the status says so.
   return summary.failure || summary.regime == Regime::kNumericallyFailed ? 3 : 0;

@@ -2,8 +2,6 @@
 // MPI ranks under mpirun), resumable; and frictionlab merge DIR...: shards joined.
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -19,41 +17,11 @@
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
+#include "cli/stop_signals.hpp"
 #include "lab/sweep_run.hpp"
 
 namespace fl::cli {
 namespace {
-
-// Set by SIGINT/SIGTERM: hand out no more points. A second signal ends the process at once.
-std::atomic<bool> g_stop{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void on_stop_signal(int signal) {
-  if (g_stop.exchange(true)) {
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
-  }
-}
-
-// Installs the handlers for the life of a sweep, and restores the old ones after.
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop = false;
-    old_int_ = std::signal(SIGINT, on_stop_signal);
-    old_term_ = std::signal(SIGTERM, on_stop_signal);
-  }
-  ~StopSignals() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  void (*old_int_)(int) = SIG_DFL;
-  void (*old_term_)(int) = SIG_DFL;
-};
 
 std::string clock_text(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
@@ -171,7 +139,7 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
   if (!o.shard.empty()) options.shard = parse_shard(o.shard);
   options.fresh = o.fresh;
   options.inputs = inputs;
-  options.stop = &g_stop;
+  options.stop = &stop_requested();
   const std::string label =
       options.shard ? fmt::format("{} (shard {}/{})", spec.name, options.shard->k, options.shard->n)
                     : spec.name;
@@ -232,7 +200,7 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
           "  this shard is done; when every shard is, join them: frictionlab merge DIR...\n");
     }
   }
-  if (outcome.interrupted) return 130;
+  if (outcome.interrupted) return stop_exit_status();
   if (outcome.complete &&
       report_failed_points("sweep", outcome.status, outcome.points, outcome.files) > 0)
     return kPointsFailed;

@@ -199,6 +199,11 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   std::optional<RunFailure> failure;
   DriveStats drive_stats(rig);
   for (long long i = 0; i < steps && !failure; ++i) {
+    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) {
+      out.interrupted_at = world.time();
+      break;
+    }
+    if (options.progress && i % 1000 == 0) options.progress(world.time());
     world.step();
     const double t = world.time();
     state = world.plate();
@@ -371,7 +376,7 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
   const auto wall_start = std::chrono::steady_clock::now();
   std::optional<SolverResidual> unconverged;
   RunSummary out = run_once(rig, options, recording, unconverged);
-  if (!unconverged) return out;
+  if (!unconverged || out.interrupted_at) return out;
   // The solver did not converge: run again from the start at twice the iterations, up to the cap,
   // so that the result is exactly a run of the scene at the iterations it ends with. A run that
   // hands its steps to an observer (a video) has already shown them, and stops instead.

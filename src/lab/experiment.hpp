@@ -4,6 +4,7 @@
 // model.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -58,6 +59,11 @@ struct RunOptions {
   bool record_cycles = false;
   // Called after every step (and once at t = 0) when set.
   std::function<void(const StepView&)> observer;
+  // When set and true, the run ends after its current step (RunSummary::interrupted_at); the
+  // outputs hold every step up to it.
+  const std::atomic<bool>* stop = nullptr;
+  // Called every 1000 steps with the simulated time [s], when set.
+  std::function<void(double)> progress;
 };
 
 // A run whose contact solver does not converge (lab/solver_convergence.hpp) starts again at twice

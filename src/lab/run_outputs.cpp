@@ -49,6 +49,10 @@ std::string summary_text(const RunSummary& s) {
   if (s.solver_iterations_raised)
     line(fmt::format("  solver iterations      {}, raised {}", s.solver_iterations,
                      *s.solver_iterations_raised));
+  if (s.interrupted_at)
+    line(
+        fmt::format("  INTERRUPTED            at t = {:.3f} s: what follows is the run up to there",
+                    *s.interrupted_at));
   if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
   if (s.clock_error)
     line(fmt::format(

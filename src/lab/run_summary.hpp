@@ -143,6 +143,8 @@ struct RunSummary {
   double max_penetration = 0.0;   // m
   // A guard stopped the run (numerical failure, or the plate left the rig): exit status 3.
   std::optional<std::string> failure;
+  // s: the run was asked to stop (an interrupt) and ended here, before its duration.
+  std::optional<double> interrupted_at;
   // How errors in T and l carry into mu_k through the thick formula for this h_c.
   double condition_period = 0.0;
   double condition_spacing = 0.0;

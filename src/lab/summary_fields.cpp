@@ -84,6 +84,7 @@ const std::vector<SummaryField>& summary_fields() {
       {"regime_since_s", nullptr, [](S s) { return json(s.regime_since); }},
       {"period_withheld", nullptr, [](S s) { return json_or_null(s.period_withheld); }},
       {"failure", nullptr, [](S s) { return json_or_null(s.failure); }},
+      {"interrupted_at_s", nullptr, [](S s) { return json_or_null(s.interrupted_at); }, true},
       {"estimator_disagreement", nullptr,
        [](S s) { return json_or_null(s.estimator_disagreement); }},
       {"condition_period", nullptr, [](S s) { return json(s.condition_period); }},

@@ -167,6 +167,29 @@ TEST(CliRun, NoNumberWithoutASource) {
   EXPECT_EQ(bare["mu_k_source"], "trajectory: the scene has no sensor");
 }
 
+// Ctrl-C (SIGINT) or SIGTERM during a long run: it stops after its step, writes what it did
+// (marked interrupted_at_s), prints its summary and exits 130 or 143.
+TEST(CliRun, AnInterruptedRunKeepsAndMarksWhatItDid) {
+  for (const auto& [signal, status] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    const std::filesystem::path out = test_dir() / signal;
+    std::filesystem::remove_all(out);
+    const auto r = test::run_command("(" + kExe + " run " + kMinimal + " --duration 5000s --out " +
+                                     out.string() + " & pid=$!; sleep 1; kill -" + signal +
+                                     " $pid; wait $pid; echo status $?)");
+    EXPECT_NE(r.out.find("status " + std::to_string(status)), std::string::npos) << r.out << r.err;
+    EXPECT_NE(r.out.find("INTERRUPTED            at t = "), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("frictionlab run: interrupted at t = "), std::string::npos) << r.err;
+    std::ifstream in(out / "summary.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_TRUE(j.contains("interrupted_at_s"));
+    const double at = j["interrupted_at_s"].get<double>();
+    EXPECT_GT(at, 1.0);
+    EXPECT_LT(at, 5000.0);
+    EXPECT_DOUBLE_EQ(j["duration_s"].get<double>(), at);
+  }
+  std::filesystem::remove_all(test_dir());
+}
+
 TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {
   const auto out = test_dir() / "accuracy";
   const auto r = lab("accuracy " + kMinimal + " --periods 4 --json --out " + out.string());

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -66,6 +67,7 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   for (const std::string& file : files)
     scenes.push_back(load_scene_file(file, {}, sources.paper, sources.parts));
 
+  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
   // Cases are independent: share them among workers.
   std::vector<StabilityRow> rows(scenes.size());
   std::atomic<std::size_t> next{0};

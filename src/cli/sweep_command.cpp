@@ -216,6 +216,7 @@ struct MergeCommandOptions {
 
 int run_merge_command(const MergeCommandOptions& o) {
   const std::string out = o.out.empty() ? o.dirs.front() : o.out;
+  prepare_output_folder(out, "--out");
   const MergeOutcome outcome = merge_sweeps(o.dirs, out);
   std::vector<std::string> pngs;
   if (o.plot) pngs = plot_sweep(out);

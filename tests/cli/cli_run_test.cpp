@@ -125,6 +125,13 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
            Case{"run " + kMinimal + " --out " + file, "found a file"},
            Case{"run " + kMinimal + " --still " + file + "/x.png", "is a file"},
            Case{"run " + kMinimal + " --plot", "--plot: error: expected --out DIR as well"},
+           Case{"accuracy " + kMinimal + " --out " + file,
+                "--out " + file + ": error: expected a place"},
+           Case{"stability --only mu-1 --out " + file, "found a file"},
+           Case{"sweep " + std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                    "/scenes/sweeps/spacing.yaml --out " + file,
+                "found a file"},
+           Case{"compare --out " + file, "found a file"},
            Case{"compare --set friction.mu_k=0.3",
                 "--set friction.mu_k=0.3: error: expected a key compare leaves to the scene"},
            Case{"compare --set world.duration=2s", "use --duration instead"},

@@ -5,9 +5,8 @@ stubs give the types. Quantities are SI; arguments that are quantities also take
 units ("89mm", "1600rpm").
 """
 
-import enum
 import os
-from typing import Any, Callable, Iterable, Mapping, Optional, Union
+from typing import Any, Callable, ClassVar, Iterable, Mapping, Optional, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -25,17 +24,28 @@ class InputError(ValueError):
     line: Optional[int]
     column: Optional[int]
 
-class Regime(enum.Enum):
-    OSCILLATES: int
-    CLIPPED: int
-    STICK_SLIP: int
-    GROWS: int
-    DECAYS: int
-    STICKS: int
-    TIPS: int
-    NO_RESTORING_FORCE: int
-    LOST: int
-    NUMERICALLY_FAILED: int
+class Regime:
+    """A pybind11 enum: compare with ==; int(regime) is its value in core/regime.hpp."""
+
+    OSCILLATES: ClassVar[Regime]
+    CLIPPED: ClassVar[Regime]
+    STICK_SLIP: ClassVar[Regime]
+    GROWS: ClassVar[Regime]
+    DECAYS: ClassVar[Regime]
+    STICKS: ClassVar[Regime]
+    TIPS: ClassVar[Regime]
+    NO_RESTORING_FORCE: ClassVar[Regime]
+    LOST: ClassVar[Regime]
+    NUMERICALLY_FAILED: ClassVar[Regime]
+    __members__: ClassVar[dict[str, Regime]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
     @property
     def label(self) -> str: ...
     @property
@@ -43,9 +53,18 @@ class Regime(enum.Enum):
     @staticmethod
     def from_label(label: str) -> Regime: ...
 
-class PeriodSource(enum.Enum):
-    HALL_ESTIMATOR: int
-    TRAJECTORY: int
+class PeriodSource:
+    HALL_ESTIMATOR: ClassVar[PeriodSource]
+    TRAJECTORY: ClassVar[PeriodSource]
+    __members__: ClassVar[dict[str, PeriodSource]]
+    def __init__(self, value: int) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
+    def __int__(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def value(self) -> int: ...
 
 class Measured:
     value: float

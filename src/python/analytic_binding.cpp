@@ -41,11 +41,11 @@ AnalyticReport analytic(py::handle spacing, py::handle spacing_err, py::handle m
   if (!beta.is_none()) set_up.beta = quantity_argument(beta, Dimension::kInverseSpeed, "beta");
   if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || !beta.is_none()))
     throw InputError({}, "v_s and beta belong to the stribeck law; add law=\"stribeck\"");
-  const int given = (mu_k.is_none() ? 0 : 1) + (period.is_none() ? 0 : 1) +
-                    (material.is_none() ? 0 : 1);
+  const int given =
+      (mu_k.is_none() ? 0 : 1) + (period.is_none() ? 0 : 1) + (material.is_none() ? 0 : 1);
   if (given != 1)
-    throw InputError({}, "give exactly one of mu_k, period or material (found " +
-                             std::to_string(given) + ")");
+    throw InputError(
+        {}, "give exactly one of mu_k, period or material (found " + std::to_string(given) + ")");
 
   if (!mu_k.is_none())
     return analytic_for_mu_k(set_up, quantity_argument(mu_k, Dimension::kDimensionless, "mu_k"));
@@ -56,8 +56,8 @@ AnalyticReport analytic(py::handle spacing, py::handle spacing_err, py::handle m
   const std::string key = material.cast<std::string>();
   const PaperMaterial* found = table.find(key);
   if (found == nullptr)
-    throw InputError({}, "material: unknown material \"" + key + "\"; " +
-                             unknown_material_note(table, key));
+    throw InputError(
+        {}, "material: unknown material \"" + key + "\"; " + unknown_material_note(table, key));
   const double kelvin = quantity_argument(temperature, Dimension::kTemperature, "temperature");
   const PaperMeasurement* row = PaperTable::at(*found, kelvin);
   if (row == nullptr)
@@ -128,7 +128,9 @@ void bind_analytic(py::module_& m) {
   bind_law_types(m);
   using R = AnalyticReport;
   const auto with_period = [](auto member) {
-    return [member](const R& r) { return r.period_measured ? std::optional(r.*member) : std::nullopt; };
+    return [member](const R& r) {
+      return r.period_measured ? std::optional(r.*member) : std::nullopt;
+    };
   };
   py::class_<R>(m, "AnalyticReport", R"(The analytic model for one set-up (SI).
 
@@ -158,8 +160,7 @@ restoring force (period_thick, tipping_amplitude, ...) are None without one.)")
           [](const R& r) { return r.material ? std::optional(r.paper_mu_k) : std::nullopt; },
           "what the paper printed, with a material")
       .def_readonly("period_measured", &R::period_measured, "T [s], given or the paper's")
-      .def_property_readonly("period_measured_err", with_period(&R::period_measured_err),
-                             "dT [s]")
+      .def_property_readonly("period_measured_err", with_period(&R::period_measured_err), "dT [s]")
       .def_property_readonly("mu_k_thin", with_period(&R::mu_k_thin),
                              "mu_k +- d mu_k from the period, thin formula (the paper's)")
       .def_property_readonly("mu_k_thick", with_period(&R::mu_k_thick),
@@ -181,11 +182,11 @@ restoring force (period_thick, tipping_amplitude, ...) are None without one.)")
   m.def("analytic", &analytic, py::kw_only(), py::arg("spacing") = "89 mm",
         py::arg("spacing_err") = "2 mm", py::arg("mu_k") = py::none(),
         py::arg("period") = py::none(), py::arg("period_err") = "0 s",
-        py::arg("material") = py::none(), py::arg("temperature") = "300 K",
-        py::arg("h_c") = "0 mm", py::arg("gravity") = "9.81 m/s^2",
-        py::arg("roller_radius") = "10 mm", py::arg("roller_speed") = "1600 rpm",
-        py::arg("amplitude") = "20 mm", py::arg("law") = "coulomb", py::arg("mu_s") = py::none(),
-        py::arg("v_s") = py::none(), py::arg("beta") = py::none(), py::arg("assets") = py::none(),
+        py::arg("material") = py::none(), py::arg("temperature") = "300 K", py::arg("h_c") = "0 mm",
+        py::arg("gravity") = "9.81 m/s^2", py::arg("roller_radius") = "10 mm",
+        py::arg("roller_speed") = "1600 rpm", py::arg("amplitude") = "20 mm",
+        py::arg("law") = "coulomb", py::arg("mu_s") = py::none(), py::arg("v_s") = py::none(),
+        py::arg("beta") = py::none(), py::arg("assets") = py::none(),
         R"(The analytic model for a set-up, as `frictionlab analytic`; returns an AnalyticReport.
 
 Give exactly one of mu_k, period (with period_err) or material (a key of the paper's Table I,

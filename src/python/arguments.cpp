@@ -15,7 +15,8 @@ double quantity_argument(py::handle value, Dimension dimension, const std::strin
     }
   }
   if (py::isinstance<py::bool_>(value) || !PyNumber_Check(value.ptr()))
-    throw InputError(SourceLocation{}, name + ": expected a " + std::string(dimension_name(dimension)) +
+    throw InputError(SourceLocation{}, name + ": expected a " +
+                                           std::string(dimension_name(dimension)) +
                                            " (a number in SI or text with units), found " +
                                            py::repr(value).cast<std::string>());
   return value.cast<double>();

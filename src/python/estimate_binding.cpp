@@ -107,8 +107,7 @@ in single precision, as the rig's Arduino does. json() is the object
                              "2 pi^2 l / (g T^2), the paper's formula")
       .def_property_readonly("mu_k_err_worst", stat(&fl_estimator::Stats::mu_k_err_worst),
                              "mu_k (dl/l + 2 dT/T), the paper's form")
-      .def_property_readonly("mu_k_err_quadrature",
-                             stat(&fl_estimator::Stats::mu_k_err_quadrature),
+      .def_property_readonly("mu_k_err_quadrature", stat(&fl_estimator::Stats::mu_k_err_quadrature),
                              "mu_k sqrt((dl/l)^2 + (2 dT/T)^2)")
       .def_property_readonly(
           "geometry", [](const E& e) { return std::string(geometry_name(e.estimate.geometry)); },
@@ -173,9 +172,8 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
         const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
         return estimate_of(read_hall_log(path_argument(path)), set_up);
       },
-      py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm",
-      py::arg("spacing_err") = "2 mm", py::arg("gravity") = "9.81 m/s^2",
-      py::arg("geometry") = "auto",
+      py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm", py::arg("spacing_err") = "2 mm",
+      py::arg("gravity") = "9.81 m/s^2", py::arg("geometry") = "auto",
       R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
 
 The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",

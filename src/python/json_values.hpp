@@ -2,8 +2,8 @@
 // rows) as Python values: objects as dicts, arrays as lists, null as None, numbers exactly.
 #pragma once
 
-#include <nlohmann/json.hpp>
 #include <pybind11/pybind11.h>
+#include <nlohmann/json.hpp>
 
 namespace fl::python {
 

@@ -11,7 +11,8 @@ PYBIND11_MODULE(frictionlab, m) {
       "load_scene and run (a simulation and its typed summary, the trajectory and the Hall\n"
       "samples as NumPy arrays), estimate and estimate_file (the rig's period estimator on a\n"
       "Hall signal), analytic, paper_table and sweep. Quantities are SI; arguments that are\n"
-      "quantities also take text with units, the way the paper writes them (\"89mm\", \"1600rpm\").\n"
+      "quantities also take text with units, the way the paper writes them (\"89mm\", "
+      "\"1600rpm\").\n"
       "Bad input raises InputError with the message the command prints (file:line:column).";
   m.attr("__version__") = FRICTIONLAB_VERSION;
   fl::python::bind_input_error(m);

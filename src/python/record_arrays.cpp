@@ -44,7 +44,7 @@ py::array trajectory_array(std::vector<TrajectoryRow>&& rows) {
 py::array hall_array(std::vector<HallSample>&& samples) {
   static_assert(sizeof(HallSample::t_us) == 4 && sizeof(HallSample::adc) == 2);
   const std::vector<RecordField> fields{{"t_us", "<u4", offsetof(HallSample, t_us)},
-                                  {"adc", "<u2", offsetof(HallSample, adc)}};
+                                        {"adc", "<u2", offsetof(HallSample, adc)}};
   return rows_array(std::move(samples), fields);
 }
 

@@ -36,8 +36,8 @@ py::array rows_array(std::vector<Row>&& rows, const std::vector<RecordField>& fi
   auto* owned = new std::vector<Row>(std::move(rows));
   const py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Row>*>(p); });
   const auto n = static_cast<py::ssize_t>(owned->size());
-  return py::array(record_dtype(fields, sizeof(Row)), {n},
-                   {static_cast<py::ssize_t>(sizeof(Row))}, owned->data(), owner);
+  return py::array(record_dtype(fields, sizeof(Row)), {n}, {static_cast<py::ssize_t>(sizeof(Row))},
+                   owned->data(), owner);
 }
 
 // Shape (steps + 1,): the start and every step. Fields t_s, x_m, z_m, pitch_rad, vx_m_s, vz_m_s,

@@ -55,7 +55,8 @@ void find_video_module() {
   if (const char* env = std::getenv(kVideoModuleVariable); env != nullptr && *env != '\0') return;
   std::string path = FRICTIONLAB_PYTHON_VIDEO_MODULE;
   Dl_info info{};
-  if (dladdr(reinterpret_cast<void*>(&find_video_module), &info) != 0 && info.dli_fname != nullptr) {
+  if (dladdr(reinterpret_cast<void*>(&find_video_module), &info) != 0 &&
+      info.dli_fname != nullptr) {
     const std::filesystem::path beside =
         std::filesystem::path(info.dli_fname).parent_path() / "frictionlab-video.so";
     std::error_code ec;
@@ -285,8 +286,7 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("roller_speed", &S::roller_speed, "rad/s")
       .def_readonly("drive", &S::drive, "the motor and gears, or None for the ideal drive")
       .def_readonly("plate_speed_max", &S::plate_speed_max, "m/s")
-      .def_readonly("slip_margin", &S::slip_margin,
-                    "roller surface speed / plate's largest speed")
+      .def_readonly("slip_margin", &S::slip_margin, "roller surface speed / plate's largest speed")
       .def_readonly("min_normal_force", &S::min_normal_force, "N, over the run")
       .def_readonly("max_penetration", &S::max_penetration, "m")
       .def_readonly("failure", &S::failure, "what stopped the run, or None")

@@ -17,10 +17,10 @@ namespace fl::python {
 
 LoadedScene load_scene_source(SceneSource source) {
   const SceneInputs inputs = scene_inputs(source.asset_dir);
-  Scene scene = source.file.empty() ? load_scene_text(source.text, source.name, source.overrides,
-                                                      inputs.paper, inputs.parts)
-                                    : load_scene_file(source.file, source.overrides, inputs.paper,
-                                                      inputs.parts);
+  Scene scene =
+      source.file.empty()
+          ? load_scene_text(source.text, source.name, source.overrides, inputs.paper, inputs.parts)
+          : load_scene_file(source.file, source.overrides, inputs.paper, inputs.parts);
   return {std::make_shared<const Scene>(std::move(scene)), std::move(source)};
 }
 
@@ -78,9 +78,9 @@ std::vector<std::string> keys_of(py::handle node) {
                          const std::vector<std::string>& keys) {
   std::vector<std::string_view> candidates(keys.begin(), keys.end());
   const std::string match = closest_match(part, candidates);
-  throw py::key_error("scene key \"" + key + "\": " +
-                      (parent.empty() ? "the scene" : "\"" + parent + "\"") + " has no key \"" +
-                      part + "\"" + (match.empty() ? "" : "; did you mean '" + match + "'?"));
+  throw py::key_error(
+      "scene key \"" + key + "\": " + (parent.empty() ? "the scene" : "\"" + parent + "\"") +
+      " has no key \"" + part + "\"" + (match.empty() ? "" : "; did you mean '" + match + "'?"));
 }
 
 // scene["plate.payload.mass"], scene["magnets.0.x"]: the value at a key path (SI).
@@ -104,8 +104,7 @@ py::object scene_key(py::object scene, const std::string& key) {
       node = list[index];
     } else {
       const std::vector<std::string> keys = keys_of(node);
-      if (std::find(keys.begin(), keys.end(), part) == keys.end())
-        no_key(key, parent, part, keys);
+      if (std::find(keys.begin(), keys.end(), part) == keys.end()) no_key(key, parent, part, keys);
       node = py::isinstance<py::dict>(node) ? py::object(node[py::str(part)])
                                             : py::object(py::getattr(node, part.c_str()));
     }
@@ -243,7 +242,9 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("cycles", &OutputDesc::cycles);
 
   const auto part = [](auto member) {
-    return [member](const LoadedScene& s) -> const auto& { return (*s.scene).*member; };
+    return [member](const LoadedScene& s) -> const auto& {
+      return (*s.scene).*member;
+    };
   };
   scene.def_property_readonly("world", part(&Scene::world), ref)
       .def_property_readonly("rollers", part(&Scene::rollers), ref)

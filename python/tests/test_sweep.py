@@ -1,7 +1,7 @@
 """sweep: a sweep file's points run in parallel, as `frictionlab sweep` runs them, the rows
 returned as columns."""
 
-import json
+import csv
 import math
 
 import numpy as np
@@ -40,20 +40,25 @@ def test_same_files_as_the_command(sweeps):
         assert (folder / "module" / name).read_bytes() == (folder / "command" / name).read_bytes()
 
 
-def test_columns_are_the_rows(sweeps):
+def test_columns_are_results_csv(sweeps):
     folder, _, columns = sweeps
-    rows = json.loads((folder / "command" / "sweep.json").read_text())["rows"]
-    header = (folder / "command" / "results.csv").read_text().splitlines()[0].split(",")
+    with open(folder / "command" / "results.csv", newline="") as f:
+        header, *rows = list(csv.reader(f))
     assert list(columns) == header
-    for name, values in columns.items():
-        want = [row.get(name) for row in rows]
-        if isinstance(values, list):  # text
-            assert values == want, name
+    for c, name in enumerate(header):
+        cells = [row[c] for row in rows]
+        values = columns[name]
+        if isinstance(values, list):  # text; an empty cell is no value
+            assert values == [cell or None for cell in cells], name
             continue
         assert isinstance(values, np.ma.MaskedArray) and values.shape == (6,), name
-        assert list(np.ma.getmaskarray(values)) == [w is None for w in want], name
-        for got, w in zip(values.tolist(), want):  # masked entries come back as None
-            assert got == w, name
+        assert list(np.ma.getmaskarray(values)) == [cell == "" for cell in cells], name
+        for value, cell in zip(values.tolist(), cells):  # masked entries come back as None
+            if cell:
+                assert value == float(cell), name  # the shortest text that reads back exactly
+    # The axes' columns are each point's labels.
+    assert columns["material"] == ["lego"] * 3 + ["cardboard"] * 3
+    assert columns["rollers.spacing"] == ["5 mm", "80 mm", "100 mm"] * 2
 
 
 def test_points_without_a_value_are_masked_not_zero(sweeps):

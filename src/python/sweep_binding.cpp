@@ -25,7 +25,8 @@ using json = nlohmann::json;
 
 // One column of the rows: numbers as a NumPy masked array (masked where the row has no value:
 // null in results.json; int64 when every value is a whole number, else float64 with NaN under
-// the mask), booleans as a masked bool array, anything else as a list (None for null).
+// the mask), booleans as a masked bool array, anything else as a list (None for null). A column
+// with no value in any row is a wholly masked float64 array.
 py::object column(const std::vector<const json*>& values) {
   bool numbers = true, integers = true, booleans = true;
   for (const json* v : values) {
@@ -103,16 +104,21 @@ py::dict sweep(py::handle file, std::optional<int> jobs, py::handle out_, bool f
 
   const SweepStore store = SweepStore::open(options.out_dir);
   const std::map<std::size_t, PointResult> points = store.load_points();
+  const std::vector<std::string> names = sweep_result_columns(store.plan());
+  // index, then one column per axis (the point's label for it, in the row's params), then the
+  // results' fixed columns, as results.csv has them.
+  const std::size_t axes = store.plan().at("axes").size();
   py::dict columns;
-  for (const std::string& name : sweep_result_columns(store.plan())) {
+  for (std::size_t c = 0; c < names.size(); ++c) {
+    static const json kNull;
     std::vector<const json*> values;
     values.reserve(points.size());
-    static const json kNull;
     for (const auto& [index, point] : points) {
-      const auto it = point.row.find(name);
-      values.push_back(it == point.row.end() ? &kNull : &*it);
+      const json& cells = c >= 1 && c <= axes ? point.row.at("params") : point.row;
+      const auto it = cells.find(names[c]);
+      values.push_back(it == cells.end() ? &kNull : &*it);
     }
-    columns[py::str(name)] = column(values);
+    columns[py::str(names[c])] = column(values);
   }
   return columns;
 }
@@ -135,8 +141,10 @@ ones finish and are kept, and KeyboardInterrupt is raised.
 Returns the rows of every finished point in the folder, in point order, as columns
 {name: values} in results.csv's order: numbers as NumPy masked arrays (masked where the
 point has no value, e.g. no period outside a harmonic oscillation or for a failed point;
-int64 when every value is a whole number, else float64 with NaN under the mask), text as
-lists (None where there is none). The status column says ok, invalid or failed.)");
+int64 when every value is a whole number, else float64 with NaN under the mask; a column
+with no value at all is wholly masked), text as lists (None where there is none). The axes'
+columns hold each point's label ("50 mm", "lego"). The status column says ok, invalid or
+failed.)");
 }
 
 }  // namespace fl::python

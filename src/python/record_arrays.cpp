@@ -16,6 +16,19 @@ py::dtype record_dtype(const std::vector<RecordField>& fields, std::size_t items
   return py::dtype(names, formats, offsets, static_cast<py::ssize_t>(itemsize));
 }
 
+void clear_between_fields(void* rows, std::size_t count, std::size_t itemsize,
+                          const std::vector<RecordField>& fields) {
+  std::vector<bool> covered(itemsize, false);
+  for (const RecordField& f : fields) {
+    const std::size_t size = py::dtype(f.format).itemsize();
+    for (std::size_t b = f.offset; b < f.offset + size && b < itemsize; ++b) covered[b] = true;
+  }
+  auto* bytes = static_cast<unsigned char*>(rows);
+  for (std::size_t r = 0; r < count; ++r, bytes += itemsize)
+    for (std::size_t b = 0; b < itemsize; ++b)
+      if (!covered[b]) bytes[b] = 0;
+}
+
 py::array trajectory_array(std::vector<TrajectoryRow>&& rows) {
   constexpr std::size_t p = offsetof(TrajectoryRow, plate);
   std::vector<RecordField> fields{

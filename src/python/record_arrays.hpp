@@ -28,11 +28,18 @@ struct RecordField {
 
 py::dtype record_dtype(const std::vector<RecordField>& fields, std::size_t itemsize);
 
+// Zeroes the bytes of each row that no field covers (padding, members left out), so that the
+// array's bytes (tobytes, numpy.save) are as reproducible as its fields.
+void clear_between_fields(void* rows, std::size_t count, std::size_t itemsize,
+                          const std::vector<RecordField>& fields);
+
 // The vector moves into a capsule the array holds; the array's rows are its elements.
 template <typename Row>
 py::array rows_array(std::vector<Row>&& rows, const std::vector<RecordField>& fields) {
   static_assert(std::is_standard_layout_v<Row>, "fields are found by offsetof");
+  static_assert(std::is_trivially_copyable_v<Row>, "rows are bytes to NumPy");
   static_assert(sizeof(bool) == 1, "NumPy's bool is one byte");
+  clear_between_fields(rows.data(), rows.size(), sizeof(Row), fields);
   auto* owned = new std::vector<Row>(std::move(rows));
   const py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Row>*>(p); });
   const auto n = static_cast<py::ssize_t>(owned->size());

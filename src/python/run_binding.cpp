@@ -308,8 +308,10 @@ A value the run did not measure is None, never 0. str(summary) is the summary
           "The object `frictionlab run --json` prints (docs/cli.md): summary.json's keys and "
           "timing.json's.")
       .def("__str__", &summary_text)
-      .def("__repr__", [](const S& s) {
-        return "<frictionlab.RunSummary '" + s.scene + "': " + regime_name(s.regime) +
+      .def("__repr__", [](const py::object& self) {
+        const S& s = self.cast<const S&>();
+        return "<frictionlab." + self.get_type().attr("__name__").cast<std::string>() + " '" +
+               s.scene + "': " + regime_name(s.regime) +
                (s.period ? ", T = " + py::repr(py::float_(*s.period)).cast<std::string>() + " s"
                          : std::string()) +
                ">";
@@ -349,6 +351,8 @@ void bind_run(py::module_& m) {
 scene: a Scene (load_scene) or a scene file's path.
 duration: simulated time, "20s" or 20.0 (default: the scene's world.duration).
 seed: the sensor's noise and jitter (world.seed; default the scene's).
+  duration and seed load the scene again with world.duration and world.seed set, as
+  `--duration` and `--set` do.
 out: a folder to write what `frictionlab run --out` writes (summary.json, timing.json,
   trajectory.csv, hall.csv, cycles.csv, as the scene's output part asks).
 accuracy: pick the largest time step whose predicted period bias is below this ("0.001%").
@@ -359,8 +363,9 @@ video, frames, still, gl, fps, size, slow_motion, camera: as `frictionlab run --
   beside this module (or the build's) when it is not set.
 
 The GIL is released while the world steps: runs in several threads run in parallel, each
-giving the result a run on its own gives. A run that a guard stopped returns (failure says
-why; regime NUMERICALLY_FAILED or LOST) rather than raising. Raises InputError for bad input.)");
+giving the result a run on its own gives; Ctrl-C is seen when the run returns. A run that a
+guard stopped returns (failure says why; regime NUMERICALLY_FAILED or LOST) rather than
+raising. Raises InputError for bad input.)");
 }
 
 }  // namespace fl::python

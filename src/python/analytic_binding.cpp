@@ -19,12 +19,14 @@
 namespace fl::python {
 namespace {
 
-AnalyticReport analytic(py::handle spacing, py::handle spacing_err, py::handle mu_k,
-                        py::handle period, py::handle period_err, py::handle material,
-                        py::handle temperature, py::handle h_c, py::handle gravity,
-                        py::handle roller_radius, py::handle roller_speed, py::handle amplitude,
-                        const std::string& law, py::handle mu_s, py::handle v_s, py::handle beta,
-                        py::handle assets) {
+AnalyticReport analytic(const Quantity& spacing, const Quantity& spacing_err,
+                        const std::optional<Quantity>& mu_k, const std::optional<Quantity>& period,
+                        const Quantity& period_err, const std::optional<std::string>& material,
+                        const Quantity& temperature, const Quantity& h_c, const Quantity& gravity,
+                        const Quantity& roller_radius, const Quantity& roller_speed,
+                        const Quantity& amplitude, const std::string& law,
+                        const std::optional<Quantity>& mu_s, const std::optional<Quantity>& v_s,
+                        const std::optional<Quantity>& beta, const std::optional<Path>& assets) {
   AnalyticSetUp set_up;
   set_up.spacing = quantity_argument(spacing, Dimension::kLength, "spacing");
   set_up.spacing_err = quantity_argument(spacing_err, Dimension::kLength, "spacing_err");
@@ -38,22 +40,21 @@ AnalyticReport analytic(py::handle spacing, py::handle spacing_err, py::handle m
   set_up.law = *kind;
   set_up.mu_s = optional_quantity(mu_s, Dimension::kDimensionless, "mu_s");
   set_up.v_s = optional_quantity(v_s, Dimension::kSpeed, "v_s");
-  if (!beta.is_none()) set_up.beta = quantity_argument(beta, Dimension::kInverseSpeed, "beta");
-  if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || !beta.is_none()))
+  if (beta) set_up.beta = quantity_argument(*beta, Dimension::kInverseSpeed, "beta");
+  if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || beta))
     throw InputError({}, "v_s and beta belong to the stribeck law; add law=\"stribeck\"");
-  const int given =
-      (mu_k.is_none() ? 0 : 1) + (period.is_none() ? 0 : 1) + (material.is_none() ? 0 : 1);
+  const int given = (mu_k ? 1 : 0) + (period ? 1 : 0) + (material ? 1 : 0);
   if (given != 1)
     throw InputError(
         {}, "give exactly one of mu_k, period or material (found " + std::to_string(given) + ")");
 
-  if (!mu_k.is_none())
-    return analytic_for_mu_k(set_up, quantity_argument(mu_k, Dimension::kDimensionless, "mu_k"));
-  if (!period.is_none())
-    return analytic_for_period(set_up, quantity_argument(period, Dimension::kTime, "period"),
+  if (mu_k)
+    return analytic_for_mu_k(set_up, quantity_argument(*mu_k, Dimension::kDimensionless, "mu_k"));
+  if (period)
+    return analytic_for_period(set_up, quantity_argument(*period, Dimension::kTime, "period"),
                                quantity_argument(period_err, Dimension::kTime, "period_err"));
-  const PaperTable& table = paper_table_in(asset_dir(optional_path(assets)));
-  const std::string key = material.cast<std::string>();
+  const PaperTable& table = paper_table_in(asset_dir(assets));
+  const std::string& key = *material;
   const PaperMaterial* found = table.find(key);
   if (found == nullptr)
     throw InputError(

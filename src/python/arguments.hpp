@@ -4,10 +4,14 @@
 // (0.3, True, [], {"x": "95mm"}); a path is str or os.PathLike.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "core/units.hpp"
 
@@ -15,14 +19,18 @@ namespace fl::python {
 
 namespace py = pybind11;
 
+// A quantity as Python gives it: Union[str, float] in a signature.
+using Quantity = std::variant<std::string, double>;
+using Path = std::filesystem::path;
+
 // Throws InputError "error: spacing: expected a length ..." naming the argument.
-double quantity_argument(py::handle value, Dimension dimension, const std::string& name);
-std::optional<double> optional_quantity(py::handle value, Dimension dimension,
+double quantity_argument(const Quantity& value, Dimension dimension, const std::string& name);
+std::optional<double> optional_quantity(const std::optional<Quantity>& value, Dimension dimension,
                                         const std::string& name);
 
-std::string override_text(py::handle value);
+// The text a quantity stands for after `--set key=`: the text, or the number's shortest form.
+std::string quantity_text(const Quantity& value);
 
-std::string path_argument(py::handle value);
-std::optional<std::string> optional_path(py::handle value);
+std::string override_text(py::handle value);
 
 }  // namespace fl::python

@@ -32,8 +32,8 @@ fl_estimator::Geometry geometry_argument(const std::string& text) {
   throw InputError({}, "geometry: expected auto, one or pair, found \"" + text + "\"");
 }
 
-LogSetUp set_up_argument(py::handle spacing, py::handle spacing_err, py::handle gravity,
-                         const std::string& geometry) {
+LogSetUp set_up_argument(const Quantity& spacing, const Quantity& spacing_err,
+                         const Quantity& gravity, const std::string& geometry) {
   LogSetUp set_up;
   set_up.spacing = quantity_argument(spacing, Dimension::kLength, "spacing");
   set_up.spacing_err = quantity_argument(spacing_err, Dimension::kLength, "spacing_err");
@@ -59,9 +59,11 @@ Estimate estimate_of(HallLog log, const LogSetUp& set_up) {
   return out;
 }
 
-std::vector<double> doubles(py::handle values) {
-  const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(values);
-  if (!a || a.ndim() != 1) throw py::type_error("expected a one-dimensional array of numbers");
+using Samples = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<double> doubles(const Samples& a, const char* name) {
+  if (a.ndim() != 1)
+    throw py::type_error(std::string(name) + ": expected a one-dimensional array of numbers");
   return std::vector<double>(a.data(), a.data() + a.size());
 }
 
@@ -150,10 +152,11 @@ in single precision, as the rig's Arduino does. json() is the object
 
   m.def(
       "estimate",
-      [](py::handle t, py::handle adc, py::handle spacing, py::handle spacing_err,
-         py::handle gravity, const std::string& geometry, const std::string& name) {
+      [](const Samples& t, const Samples& adc, const Quantity& spacing, const Quantity& spacing_err,
+         const Quantity& gravity, const std::string& geometry, const std::string& name) {
         const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
-        return estimate_of(hall_log_from_samples(doubles(t), doubles(adc), name), set_up);
+        return estimate_of(hall_log_from_samples(doubles(t, "t"), doubles(adc, "adc"), name),
+                           set_up);
       },
       py::arg("t"), py::arg("adc"), py::kw_only(), py::arg("spacing") = "89 mm",
       py::arg("spacing_err") = "2 mm", py::arg("gravity") = "9.81 m/s^2",
@@ -167,10 +170,10 @@ t: sample times [s], increasing (e.g. result.hall["t_us"] * 1e-6); adc: the ADC 
 T +- dT (saying what it found); its line is the 1-based sample index, `name` its file.)");
   m.def(
       "estimate_file",
-      [](py::handle path, py::handle spacing, py::handle spacing_err, py::handle gravity,
-         const std::string& geometry) {
+      [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
+         const Quantity& gravity, const std::string& geometry) {
         const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
-        return estimate_of(read_hall_log(path_argument(path)), set_up);
+        return estimate_of(read_hall_log(path.string()), set_up);
       },
       py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm", py::arg("spacing_err") = "2 mm",
       py::arg("gravity") = "9.81 m/s^2", py::arg("geometry") = "auto",

@@ -29,8 +29,8 @@ std::shared_ptr<LabData> lab_data(const std::string& dir) {
 
 }  // namespace
 
-std::string asset_dir(const std::optional<std::string>& given) {
-  if (given && !given->empty()) return *given;
+std::string asset_dir(const std::optional<std::filesystem::path>& given) {
+  if (given && !given->empty()) return given->string();
   if (const char* env = std::getenv("FRICTIONLAB_ASSETS"); env != nullptr && *env != '\0')
     return env;
   return FRICTIONLAB_DEFAULT_ASSET_DIR;

@@ -4,6 +4,7 @@
 // and is then shared by every scene, run and sweep (safe from several threads).
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -12,7 +13,7 @@
 
 namespace fl::python {
 
-std::string asset_dir(const std::optional<std::string>& given);
+std::string asset_dir(const std::optional<std::filesystem::path>& given);
 
 // The paper's table and the part index under `asset_dir`, each read when first called.
 SceneInputs scene_inputs(const std::string& asset_dir);

@@ -3,8 +3,10 @@
 // overrides (a run's duration and seed, Scene.with_set) through the very loader the command uses.
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <pybind11/pybind11.h>
@@ -40,6 +42,7 @@ LoadedScene with_overrides(const LoadedScene& scene, const std::vector<SceneOver
 std::vector<SceneOverride> overrides_argument(py::handle set);
 
 // A run's scene argument: a Scene, or a path to load with no overrides.
-LoadedScene scene_argument(py::handle scene);
+using SceneArgument = std::variant<LoadedScene, std::filesystem::path>;
+LoadedScene scene_argument(const SceneArgument& scene);
 
 }  // namespace fl::python

@@ -51,7 +51,7 @@ for material in table.materials: for row in material.measurements: row.period.va
           py::arg("key"), "The material with this key, or None");
   m.def(
       "paper_table",
-      [](py::handle assets) { return paper_table_in(asset_dir(optional_path(assets))); },
+      [](const std::optional<Path>& assets) { return paper_table_in(asset_dir(assets)); },
       py::kw_only(), py::arg("assets") = py::none(),
       "The paper's Table I, as `frictionlab table` reads it (assets/paper/table1.yaml).");
 }

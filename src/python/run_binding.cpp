@@ -65,43 +65,56 @@ void find_video_module() {
   if (!path.empty()) setenv(kVideoModuleVariable, path.c_str(), 0);
 }
 
-VideoRequest video_request(const LoadedScene& scene, py::handle video, py::handle frames,
-                           py::handle still, py::handle gl, py::handle fps, py::handle size,
-                           py::handle slow_motion, py::handle camera) {
+// A frame size: "1280x720" or (1280, 720).
+using FrameSize = std::variant<std::string, std::array<int, 2>>;
+
+VideoRequest video_request(const LoadedScene& scene, const std::optional<Path>& video,
+                           const std::optional<Path>& frames, const std::optional<Path>& still,
+                           const std::optional<std::string>& gl, std::optional<int> fps,
+                           const std::optional<FrameSize>& size,
+                           const std::optional<Quantity>& slow_motion,
+                           const std::optional<std::string>& camera) {
   VideoRequest request;
-  request.video = optional_path(video).value_or("");
-  request.frames = optional_path(frames).value_or("");
-  request.still = optional_path(still).value_or("");
-  if (!gl.is_none()) request.gl = gl.cast<std::string>();
-  if (!fps.is_none()) request.fps = fps.cast<int>();
-  if (py::isinstance<py::str>(size)) {
-    request.size = parse_video_size(size.cast<std::string>());
-    if (!request.size)
-      throw InputError(SourceLocation{"size", 0, 0},
-                       "expected WIDTHxHEIGHT in pixels (e.g. 1280x720), found \"" +
-                           size.cast<std::string>() + "\"");
-  } else if (!size.is_none()) {
-    request.size = size.cast<std::array<int, 2>>();
+  if (video) request.video = video->string();
+  if (frames) request.frames = frames->string();
+  if (still) request.still = still->string();
+  if (gl) request.gl = *gl;
+  request.fps = fps;
+  if (size) {
+    if (const std::string* text = std::get_if<std::string>(&*size)) {
+      request.size = parse_video_size(*text);
+      if (!request.size)
+        throw InputError(
+            SourceLocation{"size", 0, 0},
+            "expected WIDTHxHEIGHT in pixels (e.g. 1280x720), found \"" + *text + "\"");
+    } else {
+      request.size = std::get<std::array<int, 2>>(*size);
+    }
   }
   request.slow_motion = optional_quantity(slow_motion, Dimension::kDimensionless, "slow_motion");
-  if (!camera.is_none()) request.camera = camera.cast<std::string>();
+  request.camera = camera;
   request.asset_dir = scene.source.asset_dir;
   return request;
 }
 
-RunResult run(py::handle scene_argument_, py::handle duration, py::handle seed, py::handle out_,
-              py::handle accuracy, bool record, py::handle video, py::handle frames,
-              py::handle still, py::handle gl, py::handle fps, py::handle size,
-              py::handle slow_motion, py::handle camera) {
-  LoadedScene loaded = scene_argument(scene_argument_);
+RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& duration,
+              std::optional<std::int64_t> seed, const std::optional<Path>& out_folder,
+              const std::optional<Quantity>& accuracy, bool record,
+              const std::optional<Path>& video, const std::optional<Path>& frames,
+              const std::optional<Path>& still, const std::optional<std::string>& gl,
+              std::optional<int> fps, const std::optional<FrameSize>& size,
+              const std::optional<Quantity>& slow_motion,
+              const std::optional<std::string>& camera) {
+  LoadedScene loaded = scene_argument(scene_to_run);
   std::vector<SceneOverride> more;
-  if (!duration.is_none()) {
-    quantity_argument(duration, Dimension::kTime, "duration");  // checks the unit
-    more.push_back({"world.duration", override_text(duration)});
+  if (duration) {
+    quantity_argument(*duration, Dimension::kTime, "duration");  // checks the unit
+    more.push_back({"world.duration", quantity_text(*duration)});
   }
-  if (!seed.is_none()) more.push_back({"world.seed", override_text(seed)});
+  if (seed) more.push_back({"world.seed", std::to_string(*seed)});
   if (!more.empty()) loaded = with_overrides(loaded, more);
-  const std::optional<std::string> out = optional_path(out_);
+  const std::optional<std::string> out =
+      out_folder ? std::optional(out_folder->string()) : std::nullopt;
   const std::optional<double> target =
       optional_quantity(accuracy, Dimension::kDimensionless, "accuracy");
   const VideoRequest request =

@@ -48,10 +48,10 @@ std::vector<SceneOverride> overrides_argument(py::handle set) {
   return out;
 }
 
-LoadedScene scene_argument(py::handle scene) {
-  if (py::isinstance<LoadedScene>(scene)) return scene.cast<LoadedScene>();
+LoadedScene scene_argument(const SceneArgument& scene) {
+  if (const LoadedScene* loaded = std::get_if<LoadedScene>(&scene)) return *loaded;
   SceneSource source;
-  source.file = path_argument(scene);
+  source.file = std::get<std::filesystem::path>(scene).string();
   source.asset_dir = asset_dir(std::nullopt);
   return load_scene_source(std::move(source));
 }
@@ -303,7 +303,7 @@ optional one that is absent is None. A scene never changes: with_set gives a new
           "The value at a key path, or `default` when there is no such key.")
       .def(
           "with_set",
-          [](const LoadedScene& s, py::handle set) {
+          [](const LoadedScene& s, const py::object& set) {
             return with_overrides(s, overrides_argument(set));
           },
           py::arg("set"),
@@ -318,11 +318,11 @@ optional one that is absent is None. A scene never changes: with_set gives a new
 
   m.def(
       "load_scene",
-      [](py::handle path, py::handle set, py::handle assets) {
+      [](const Path& path, const py::object& set, const std::optional<Path>& assets) {
         SceneSource source;
-        source.file = path_argument(path);
+        source.file = path.string();
         source.overrides = overrides_argument(set);
-        source.asset_dir = asset_dir(optional_path(assets));
+        source.asset_dir = asset_dir(assets);
         return load_scene_source(std::move(source));
       },
       py::arg("path"), py::kw_only(), py::arg("set") = py::none(), py::arg("assets") = py::none(),
@@ -335,12 +335,13 @@ $FRICTIONLAB_ASSETS, else the build's assets/). Raises InputError with the comma
 message ("scenes/x.yaml:12:5: error: ...") for a scene the loader refuses.)");
   m.def(
       "parse_scene",
-      [](const std::string& text, const std::string& name, py::handle set, py::handle assets) {
+      [](const std::string& text, const std::string& name, const py::object& set,
+         const std::optional<Path>& assets) {
         SceneSource source;
         source.text = text;
         source.name = name;
         source.overrides = overrides_argument(set);
-        source.asset_dir = asset_dir(optional_path(assets));
+        source.asset_dir = asset_dir(assets);
         return load_scene_source(std::move(source));
       },
       py::arg("text"), py::arg("name") = "inline", py::kw_only(), py::arg("set") = py::none(),

@@ -66,12 +66,13 @@ py::object column(const std::vector<const json*>& values) {
   return out;
 }
 
-py::dict sweep(py::handle file, std::optional<int> jobs, py::handle out_, bool fresh,
-               std::optional<std::string> shard, py::handle progress, py::handle assets) {
-  const SceneInputs inputs = scene_inputs(asset_dir(optional_path(assets)));
-  const SweepSpec spec = load_sweep_file(path_argument(file), inputs);
+py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Path>& out,
+               bool fresh, const std::optional<std::string>& shard, const py::object& progress,
+               const std::optional<Path>& assets) {
+  const SceneInputs inputs = scene_inputs(asset_dir(assets));
+  const SweepSpec spec = load_sweep_file(file.string(), inputs);
   SweepRunOptions options;
-  options.out_dir = optional_path(out_).value_or("out/sweep/" + spec.name);
+  options.out_dir = out ? out->string() : "out/sweep/" + spec.name;
   if (jobs && *jobs < 1) throw py::value_error("jobs: expected a positive number of workers");
   options.workers = jobs.value_or(0);
   if (shard) options.shard = parse_shard(*shard);

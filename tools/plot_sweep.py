@@ -5,7 +5,11 @@
                          over it, and the error against the thick curve below (when l varies)
   mu-recovered.png       mu_k recovered (thin and thick formulas) against mu_k set (when mu_k varies)
   roller-speed.png       amplitude and period against the rollers' speed, by regime, with the
-                         analytic slip threshold (when the roller speed varies across points)
+                         analytic slip threshold (when the roller speed varies across points by
+                         more than 1 %)
+  runout.png             the highest jump, the share of the periods the rig's estimator discarded
+                         and the period's error against the rollers' run-out, with theory's hop
+                         threshold (when rollers.runout varies)
   cycles.png             each cycle's period and amplitude against the rollers' speed during it,
                          the ramp's way down and way up apart, with theory's slip threshold
                          (when the sweep recorded cycles: OUTDIR/cycles/*.csv)
@@ -162,6 +166,47 @@ def plot_roller_speed(rows, meta, out):
     bottom.legend(fontsize=8)
     fig.tight_layout()
     atomic_png.save(fig, os.path.join(out, "roller-speed.png"))
+
+
+def plot_runout(rows, meta, out):
+    axis = next(a for a in meta["axes"] if a.get("key") == "rollers.runout" and len(a["values"]) > 1)
+    pos, numeric = axis_positions(axis)
+    unit = axis.get("unit") or "m"
+    ok = [r for r in rows if r["status"] == "ok"]
+    ideal = next((r for r in ok if numeric and pos[r[axis["name"]]] == 0), None)
+    fig, (top, middle, bottom) = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
+    xs = [pos[r[axis["name"]]] for r in ok]
+    top.plot(xs, [1e3 * (number(r, "highest_jump_m") or 0) for r in ok], "o-", ms=4, color="C3")
+    share = []
+    for r in ok:
+        used, dropped = number(r, "periods_used") or 0, number(r, "periods_discarded") or 0
+        share.append(100 * dropped / (used + dropped) if used + dropped else float("nan"))
+    middle.plot(xs, share, "o-", ms=4, color="C1")
+    reference = number(ideal, "period_trajectory_s") if ideal else None
+    for key, label, colour in (("period_s", "the rig's estimator (periods kept)", "C0"),
+                               ("period_trajectory_s", "the trajectory", "k")):
+        pts = [(pos[r[axis["name"]]], number(r, key)) for r in ok if number(r, key)]
+        base = reference or number(ok[0], "period_thick_s")
+        bottom.plot([p[0] for p in pts], [100 * (p[1] / base - 1) for p in pts], "o-", ms=4,
+                    color=colour, label=label)
+    thresholds = sorted(t for t in (number(r, "runout_threshold_m") for r in ok) if t)
+    if thresholds and numeric:
+        scale = {"m": 1, "mm": 1e3, "um": 1e6}.get(unit, 1)
+        t = thresholds[len(thresholds) // 2] * scale
+        for ax in (top, middle, bottom):
+            ax.axvline(t, color="k", ls="--", lw=1)
+        top.plot([], [], "k--", lw=1, label=f"hop threshold from theory: {t:.3g} {unit}")
+        top.legend(fontsize=8)
+    top.set_ylabel("highest jump [mm]")
+    top.set_title(f"{meta['sweep']}: rollers off their shafts")
+    middle.set_ylabel("periods discarded [%]")
+    bottom.set_ylabel("period against true rollers [%]" if reference else "T / T_thick − 1 [%]")
+    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
+    bottom.legend(fontsize=8)
+    for ax in (top, middle, bottom):
+        ax.grid(True, alpha=0.3)
+    fig.tight_layout()
+    atomic_png.save(fig, os.path.join(out, "runout.png"))
 
 
 def read_cycles(out, index):
@@ -332,8 +377,12 @@ def main(csv_path, json_path, out):
     if len(distinct(rows, "mu_k_set")) > 1:
         plot_mu(rows, meta, out)
         drawn += 1
-    if len(distinct(rows, "roller_speed_rad_s")) > 1 and not has_cycles:
+    speeds = distinct(rows, "roller_speed_rad_s")
+    if len(speeds) > 1 and speeds[-1] > 1.01 * speeds[0] and not has_cycles:
         plot_roller_speed(rows, meta, out)
+        drawn += 1
+    if any(a.get("key") == "rollers.runout" and len(a["values"]) > 1 for a in meta["axes"]):
+        plot_runout(rows, meta, out)
         drawn += 1
     varied = [a for a in meta["axes"] if len(a["values"]) > 1]
     if len(varied) >= 2:

@@ -11,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/input_error.hpp"
 #include "lab/experiment.hpp"
@@ -26,6 +27,7 @@ struct RunCommandOptions {
   std::string out;
   std::string accuracy;
   bool json = false;
+  bool plot = false;  // periods.png in --out
   // Frames of the run (--video, --frames, --still and their settings).
   VideoRequest video;
   std::string size;
@@ -59,6 +61,17 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
       fmt::print("--accuracy {}: time step {:.4g} ms (predicted integrator bias {:.2e})\n",
                  o.accuracy, scene.world.time_step * 1e3, predicted_integrator_bias(scene));
   }
+  // Checked before the run: a plot needs the folder and the periods it draws.
+  if (o.plot && o.out.empty())
+    throw InputError(SourceLocation{"--plot", 0, 0},
+                     "expected --out DIR as well: the plot is drawn from DIR/periods.csv; add "
+                     "--out DIR");
+  if (o.plot && (!scene.sensor || scene.magnets.empty() || !scene.output.hall ||
+                 !scene.output.periods || !scene.output.summary))
+    throw InputError(SourceLocation{"--plot", 0, 0},
+                     "expected a scene with a Hall sensor, magnets and output.hall, "
+                     "output.periods and output.summary on, found a scene without them: there are "
+                     "no periods to plot; drop --plot");
   RunOptions options;
   options.record_trajectory = !o.out.empty() && scene.output.trajectory;
   options.record_hall = !o.out.empty() && scene.output.hall;
@@ -93,6 +106,11 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   std::optional<VideoReport> video;
   if (recorder) video = recorder->finish();
   if (!o.out.empty()) write_run_outputs(o.out, rig, summary, recording);
+  std::string plot;
+  if (o.plot) {
+    plot = o.out + "/periods.png";
+    run_plot_script("plot_periods.py", {o.out, plot});
+  }
   if (o.json) {
     nlohmann::json j = summary_json(summary);
     j.update(timing_json(summary));
@@ -100,6 +118,7 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   } else {
     fmt::print("{}", summary_text(summary));
     if (!o.out.empty()) fmt::print("  outputs                {}/\n", o.out);
+    if (!plot.empty()) fmt::print("  plot                   {}\n", plot);
     if (video) print_video(*video, o.video);
   }
   // A guard stopped the run: the outputs up to that point are written, and the status says so.
@@ -118,6 +137,9 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global) {
       "--accuracy", options->accuracy,
       "Pick the largest time step whose predicted period bias is below this, e.g. 0.01%");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the summary");
+  sub->add_flag("--plot", options->plot,
+                "With --out: draw the estimator's periods over the run as DIR/periods.png "
+                "(python3 + matplotlib)");
   sub->add_option("--video", options->video.video,
                   "Write an MP4 (H.264) of the rig with the Hall trace and the estimate");
   sub->add_option("--frames", options->video.frames,

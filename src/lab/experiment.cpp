@@ -9,10 +9,12 @@
 
 #include "core/analytic_model.hpp"
 #include "core/oscillation_tracker.hpp"
+#include "core/runout.hpp"
 #include "lab/hall_estimator.hpp"
 #include "lab/regime_monitor.hpp"
 #include "lab/regime_theory.hpp"
 #include "lab/solver_convergence.hpp"
+#include "lab/warming_report.hpp"
 
 namespace fl {
 namespace {
@@ -198,7 +200,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     state = world.plate();
     const auto contacts = world.contacts();
     const std::array<double, 2> surface = world.roller_surface_speeds();
-    failure = monitor.observe(t, state, contacts, surface);
+    failure = monitor.observe(t, state, contacts, surface, world.roller_angles());
     if (!failure) {
       unconverged = convergence.observe(t, previous, state, contacts);
       if (unconverged)
@@ -246,10 +248,25 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   }
   out.amplitude_drift_per_period = tracker.amplitude_drift_per_period();
   if (estimator) out.estimator = estimator->report();
+  if (estimator && options.record_hall && recording != nullptr)
+    recording->periods = estimator->periods();
+  if (rig.warming)
+    out.warming = warming_report(*rig.warming,
+                                 estimator ? estimator->periods() : std::vector<EstimatedPeriod>{},
+                                 rig.spacing, rig.plate.h_c, g, out.duration);
   // The rollers' surface speed: the set one, or the drive's mean under load.
   const double surface_speed = out.roller_speed * scene.rollers.radius;
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
                                               : std::numeric_limits<double>::infinity();
+
+  if (scene.rollers.runout > 0.0) {
+    out.runout = scene.rollers.runout;
+    const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
+    out.runout_threshold =
+        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
+                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
+                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
+  }
 
   const RegimeFinding finding = monitor.finding(failure);
   out.regime = finding.regime;
@@ -259,6 +276,8 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     out.jumps = finding.jumps;
     out.first_jump_time = finding.first_jump;
     out.longest_jump = finding.longest_jump;
+    out.highest_jump = finding.highest_jump;
+    if (recording != nullptr) recording->jumps = finding.jump_list;
   }
   // A clipped oscillation's period is read after its last stick.
   double harmonic_since = 0.0;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/cycle_tracker.hpp"
+#include "lab/host_estimator.hpp"
 #include "lab/regime_monitor.hpp"
 #include "lab/run_summary.hpp"
 #include "physics/rig_world.hpp"
@@ -29,6 +30,10 @@ struct RunRecording {
   std::vector<TrajectoryRow> trajectory;  // every step, when asked for
   std::vector<HallSample> hall;           // every sample, when asked for
   std::vector<CycleRecord> cycles;        // every complete cycle of the plate, when asked for
+  std::vector<PlateJump> jumps;           // every jump, when the run had jumps
+  // Every period the rig's estimator judged (accepted or rejected), when the Hall samples are
+  // recorded.
+  std::vector<EstimatedPeriod> periods;
 };
 
 class HallEstimator;

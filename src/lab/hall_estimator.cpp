@@ -56,4 +56,8 @@ const std::vector<double>& HallEstimator::pulse_times() const {
   return impl_->pulse_times;
 }
 
+std::vector<EstimatedPeriod> HallEstimator::periods() const {
+  return impl_->estimator.periods_if_finished();
+}
+
 }  // namespace fl

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "lab/experiment.hpp"
+#include "lab/host_estimator.hpp"
 #include "sensor/hall_signal.hpp"
 
 namespace fl {
@@ -22,6 +23,9 @@ class HallEstimator {
   EstimatorReport report() const;
   // Times [s] of the pulses detected so far (for overlays and plots).
   const std::vector<double>& pulse_times() const;
+  // Every period judged so far, accepted or rejected, on the rig's clock [s], as report() counts
+  // them (the data ending here).
+  std::vector<EstimatedPeriod> periods() const;
 
  private:
   struct Impl;

@@ -23,6 +23,12 @@ fl_estimator::Stats HostEstimator::stats_if_finished() const {
   return finished.stats();
 }
 
+std::vector<EstimatedPeriod> HostEstimator::periods_if_finished() const {
+  HostEstimator finished = *this;
+  finished.finish();
+  return finished.periods_;
+}
+
 // The estimator keeps only its latest pulses and periods: each sample's are taken as they come.
 void HostEstimator::collect() {
   for (; pulses_seen_ < estimator_.pulse_count(); ++pulses_seen_) {

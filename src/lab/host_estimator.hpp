@@ -44,6 +44,8 @@ class HostEstimator {
   void finish();
   // The statistics as they would be if the data ended now; the estimator itself goes on.
   fl_estimator::Stats stats_if_finished() const;
+  // The periods likewise: those judged so far and the one a finish would complete.
+  std::vector<EstimatedPeriod> periods_if_finished() const;
 
   const fl_estimator::PeriodEstimator& estimator() const { return estimator_; }
   const std::vector<EstimatedPulse>& pulses() const { return pulses_; }

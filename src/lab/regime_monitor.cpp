@@ -16,6 +16,14 @@ constexpr double kLiftOffFraction = 1e-3;
 // Rollers whose surfaces move on average at less than this fraction of the speed set, over the
 // last quarter of the run, have stalled.
 constexpr double kStallFraction = 0.1;
+// A lift-off counts as a jump when the plate's bottom rose this far above the roller (less is a
+// contact whose force dropped out for a step while the bodies still touched).
+constexpr double kJumpHeight = 1e-6;  // m
+// Lift-offs locked to the roller's turn: the mean resultant length of their phases. A tube off its
+// shaft can only drop away from the plate in the half-turn in which its top accelerates downward,
+// so its jumps' phases give at least 2/pi = 0.64 even spread evenly over that half; phases not
+// locked give about 1/sqrt(n).
+constexpr double kLockedResultant = 0.5;
 // The first steps settle the resting contact.
 constexpr int kSettleSteps = 3;
 
@@ -66,7 +74,8 @@ void RegimeMonitor::start(const PlateState& s) {
 
 std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                                                  const std::array<RollerContact, 2>& contacts,
-                                                 const std::array<double, 2>& surface) {
+                                                 const std::array<double, 2>& surface,
+                                                 const std::array<double, 2>& roller_angles) {
   // Guards first: numbers the lab cannot trust stop the run.
   if (!finite(s)) {
     return RunFailure{Regime::kNumericallyFailed, t, "plate", "state",
@@ -140,10 +149,12 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   first_ = false;
   static_assert(kSettleSteps > 0);
   // Which way friction pushes while the plate rests on both rollers: toward the centre is the
-  // restoring force of the oscillator; away from it, there is none.
+  // restoring force of the oscillator; away from it, there is none. A plate that left a roller
+  // within the last turn is landing, not resting: the impacts share its weight as they come.
   const double weight = mass_ * scene_.world.gravity;
+  const bool landing = last_lift_off_ && t - *last_lift_off_ <= turn_;
   if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
-      std::fabs(s.x) > 1e-6) {
+      std::fabs(s.x) > 1e-6 && !landing) {
     const double friction = contacts[0].friction_force + contacts[1].friction_force;
     // A plate held at rest feels no net friction but the solver's round-off: not a direction.
     const bool held = contacts[0].stuck && contacts[1].stuck;
@@ -166,18 +177,24 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
     slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
     const bool lifted = contacts[i].normal_force < kLiftOffFraction * weight;
+    if (lifted) last_lift_off_ = t;
     if (lifted && !tip_since_) {
       tip_since_ = t;
       tip_roller_ = i;
       tip_force_ = contacts[i].normal_force;
     }
     const std::size_t k = static_cast<std::size_t>(i);
-    if (lifted && !lifted_[k] && lift_offs_.size() < 100000) lift_offs_.push_back({i, t, t, true});
-    if (lifted_[k] && !lifted) {
+    if (lifted && !lifted_[k] && lift_offs_.size() < 100000)
+      lift_offs_.push_back({i, t, t, 0.0, roller_angles[k], true});
+    if (lifted_[k]) {
       for (auto it = lift_offs_.rbegin(); it != lift_offs_.rend(); ++it)
         if (it->roller == i && it->open) {
-          it->open = false;
           it->end = t;
+          if (lifted) {
+            it->height = std::max(it->height, contacts[i].gap);
+          } else {
+            it->open = false;
+          }
           break;
         }
     }
@@ -265,11 +282,16 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
   // the jumps are reported with it.
   const bool jumps = lift_offs_are_jumps();
   if (jumps) {
-    f.jumps = static_cast<int>(lift_offs_.size());
-    f.first_jump = lift_offs_.front().start;
-    double longest = 0.0;
-    for (const LiftOff& l : lift_offs_) longest = std::max(longest, l.end - l.start);
-    f.longest_jump = longest + scene_.world.time_step;
+    f.jump_list = this->jumps();
+    f.jumps = static_cast<int>(f.jump_list.size());
+    f.first_jump = f.jump_list.front().start;
+    double longest = 0.0, highest = 0.0;
+    for (const PlateJump& l : f.jump_list) {
+      longest = std::max(longest, l.end - l.start);
+      highest = std::max(highest, l.height);
+    }
+    f.longest_jump = longest;
+    f.highest_jump = highest;
   }
   // Lifting off a roller is the cause when it came first; the plate may have left the rig after.
   if (!jumps && tip_since_ && (!failure || *tip_since_ <= failure->time)) {
@@ -353,45 +375,47 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
         100.0 * slip_ratio_min_);
   if (jumps)
     f.evidence += fmt::format(
-        "; the plate jumped off a roller {} times from t = {:.4f} s (about once a roller turn), "
-        "each time back within {:.1f} ms",
-        f.jumps, *f.first_jump, *f.longest_jump * 1e3);
+        "; the plate jumped off a roller {} times from t = {:.4f} s (at the same point of the "
+        "roller's turn), each time back within {:.1f} ms, at most {:.3f} mm high",
+        f.jumps, *f.first_jump, *f.longest_jump * 1e3, *f.highest_jump * 1e3);
   f.motion = std::move(motion);
   return f;
 }
 
+std::vector<PlateJump> RegimeMonitor::jumps() const {
+  std::vector<PlateJump> out;
+  for (const PlateJump& l : lift_offs_)
+    if (l.height > kJumpHeight) out.push_back(l);
+  return out;
+}
+
 bool RegimeMonitor::lift_offs_are_jumps() const {
-  // Jumps come back at the rollers' own frequency (a tube off its shaft drops once a turn), in
-  // most turns from the first to the last; a tipping plate lifts off (and may chatter) near its
-  // turning points only, or for good.
-  if (lift_offs_.size() < 3 || turn_ <= 0.0) return false;
-  // A lift-off still on at the end that has lasted a turn is the plate off a roller for good.
-  for (const LiftOff& l : lift_offs_)
-    if (l.open && last_t_ - l.start > turn_) return false;
-  const double first = lift_offs_.front().start;
-  const long long turns =
-      static_cast<long long>(std::floor((lift_offs_.back().start - first) / turn_)) + 1;
-  if (turns < 3) return false;
-  std::vector<bool> seen(static_cast<std::size_t>(turns), false);
-  for (const LiftOff& l : lift_offs_)
-    seen[static_cast<std::size_t>(std::floor((l.start - first) / turn_))] = true;
-  const auto with_jump = std::count(seen.begin(), seen.end(), true);
-  if (2 * with_jump < turns) return false;
-  // And locked to the rollers' angle: each roller's lift-offs start at the same point of its
-  // turn (the mean resultant length of their phases near 1), where a chattering plate's drift.
+  // A tube off its shaft drops away under the plate at the same point of each turn
+  // (core/runout.hpp): the plate's jumps are locked to the roller's angle. A plate that tips lifts
+  // off (and may chatter) near its turning points, or stays off; on true rollers a roller's angle
+  // changes nothing, so nothing can be locked to it. Each roller's jumps are read against its own
+  // angle, which a drive under load turns a little slower than the speed set.
+  if (scene_.rollers.runout <= 0.0 || lift_offs_.empty() || turn_ <= 0.0) return false;
+  // A lift-off still on at the end that has lasted a turn and a quarter of the run is the plate off
+  // a roller for good.
+  for (const PlateJump& l : lift_offs_)
+    if (l.open && last_t_ - l.start > std::max(turn_, 0.25 * last_t_)) return false;
+  const std::vector<PlateJump> real = jumps();
+  bool any = false;
   for (int roller = 0; roller < 2; ++roller) {
     double c = 0.0, s = 0.0;
     int n = 0;
-    for (const LiftOff& l : lift_offs_) {
+    for (const PlateJump& l : real) {
       if (l.roller != roller) continue;
-      const double phase = 2.0 * 3.14159265358979323846 * l.start / turn_;
-      c += std::cos(phase);
-      s += std::sin(phase);
+      c += std::cos(l.roller_angle);
+      s += std::sin(l.roller_angle);
       ++n;
     }
-    if (n >= 3 && std::hypot(c, s) < 0.8 * n) return false;
+    if (n == 0) continue;
+    if (n < 3 || std::hypot(c, s) < kLockedResultant * n) return false;
+    any = true;
   }
-  return true;
+  return any;
 }
 
 }  // namespace fl

@@ -16,6 +16,16 @@
 
 namespace fl {
 
+// One stretch of steps in which a roller carried (almost) nothing of the plate.
+struct PlateJump {
+  int roller = 0;
+  double start = 0.0;   // s, the first step off the roller
+  double end = 0.0;     // s, the first step back on it (the run's end if it never came back)
+  double height = 0.0;  // m, the largest gap between the plate's bottom and the roller meanwhile
+  double roller_angle = 0.0;  // rad, the roller's angle since the start when the plate left it
+  bool open = true;           // still off the roller
+};
+
 struct RegimeFinding {
   Regime regime = Regime::kOscillates;
   double since = 0.0;    // s, when the evidence first appeared (0 for a clean oscillation)
@@ -23,11 +33,14 @@ struct RegimeFinding {
   // The trajectory's numbers (clip, stick-slip cycle, growth rate), when the plate stayed on both
   // rollers with a restoring force and the motion itself was read (lab/motion_diagnosis.hpp).
   std::optional<MotionFinding> motion;
-  // Jumps: the plate left a roller and came back, again and again at the rollers' own frequency (a
-  // roller off its shaft), rather than tipping. How many, when the first began, the longest.
+  // Jumps: the plate left a roller and came back, again and again locked to the rollers' angle (a
+  // roller off its shaft), rather than tipping. Each one; how many, when the first began, the
+  // longest, the highest.
+  std::vector<PlateJump> jump_list;
   int jumps = 0;
   std::optional<double> first_jump;    // s
   std::optional<double> longest_jump;  // s
+  std::optional<double> highest_jump;  // m
 };
 
 // A guard that fired: the run stops here.
@@ -48,10 +61,12 @@ class RegimeMonitor {
   void start(const PlateState& plate);
 
   // One step's state. Returns a failure when a guard fires; the run must stop then.
-  // `surface` is each roller's top's velocity along +x [m/s] this step.
+  // `surface` is each roller's top's velocity along +x [m/s] this step, `roller_angles` each
+  // roller's angle since the start [rad].
   std::optional<RunFailure> observe(double t, const PlateState& plate,
                                     const std::array<RollerContact, 2>& contacts,
-                                    const std::array<double, 2>& surface);
+                                    const std::array<double, 2>& surface,
+                                    const std::array<double, 2>& roller_angles);
 
   // The diagnosis so far (call after the last step, or after a failure).
   RegimeFinding finding(const std::optional<RunFailure>& failure) const;
@@ -98,16 +113,14 @@ class RegimeMonitor {
   long long friction_toward_ = 0;
   double away_first_t_ = 0.0, away_first_x_ = 0.0, away_first_force_ = 0.0;
   // Every stretch of steps in which a roller carried (almost) nothing of the plate.
-  struct LiftOff {
-    int roller = 0;
-    double start = 0.0, end = 0.0;
-    bool open = true;
-  };
-  std::vector<LiftOff> lift_offs_;
+  std::vector<PlateJump> lift_offs_;
   std::array<bool, 2> lifted_{};
-  double turn_ = 0.0;  // s, one turn of the rollers at the speed set
-  // Whether the lift-offs are jumps (over, starting in at least half the roller turns from the
-  // first to the last, and locked to the rollers' angle), not a tip.
+  std::optional<double> last_lift_off_;  // s, the last step a roller carried (almost) nothing
+  double turn_ = 0.0;                    // s, one turn of the rollers at the speed set
+  // The lift-offs in which the plate rose above the roller.
+  std::vector<PlateJump> jumps() const;
+  // Whether the lift-offs are jumps (on rollers with run-out, over within a turn, and locked to
+  // the lifted roller's angle), not a tip.
   bool lift_offs_are_jumps() const;
   std::optional<double> tip_since_;
   int tip_roller_ = -1;

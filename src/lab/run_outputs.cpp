@@ -56,6 +56,36 @@ std::string summary_text(const RunSummary& s) {
         "%; time a known interval on the board to calibrate it away (docs/estimator.md)",
         100.0 * *s.clock_error, 100.0 * *s.clock_error,
         100.0 * (1.0 / ((1.0 + *s.clock_error) * (1.0 + *s.clock_error)) - 1.0)));
+  if (s.runout && s.runout_threshold) {
+    const bool above = *s.runout > *s.runout_threshold;
+    line(fmt::format(
+        "  run-out                {:.3f} mm, {} the {:.3f} mm above which theory has the plate hop "
+        "(at its starting turning points, {:.0f} rpm){}",
+        *s.runout * 1e3, above ? "above" : "below", *s.runout_threshold * 1e3,
+        s.roller_speed * kRpm,
+        s.jumps ? fmt::format(": {} jumps, the highest {:.3f} mm", *s.jumps,
+                              s.highest_jump.value_or(0.0) * 1e3)
+                : std::string(": no jump")));
+  }
+  if (s.warming) {
+    const WarmingReport& w = *s.warming;
+    line(
+        fmt::format("  rollers warming        {:.0f} K -> {:.0f} K at the end ({:.0f} K room, tau "
+                    "{:.3g} s after "
+                    "{:.3g} s cold): mu_k {:.4g} -> {:.4g} (linear in T between {:.4g} and {:.4g})",
+                    w.start_temperature, w.end_temperature, w.room_temperature, w.time_constant,
+                    w.hold, w.mu_k_start, w.mu_k_end, w.mu_k_start, w.mu_k_room));
+    const auto window = [&](const std::optional<WarmingWindow>& v) {
+      if (!v) return std::string("none");
+      return fmt::format("{:.4f} ({:+.1f} %, {} periods)", v->mu_k,
+                         100.0 * (v->mu_k / w.mu_k_cold_paper_formula - 1.0), v->periods);
+    };
+    line(
+        fmt::format("  mu_k a student gets    first 10 periods {}, first 30 s {}, whole run {}; "
+                    "{:.4f} from rollers that stay at {:.0f} K (the paper's formula)",
+                    window(w.first_10_periods), window(w.first_30_s), window(w.whole_run),
+                    w.mu_k_cold_paper_formula, w.start_temperature));
+  }
   if (s.estimator_disagreement)
     line(fmt::format("  WARNING                {}", *s.estimator_disagreement));
   line(fmt::format(
@@ -163,6 +193,25 @@ std::string hall_csv(const RunRecording& r) {
   return out;
 }
 
+std::string periods_csv(const RunRecording& r) {
+  std::string out = "start_s,end_s,period_s,status\n";
+  for (const EstimatedPeriod& p : r.periods) {
+    const char* status = p.status == fl_estimator::kAccepted          ? "accepted"
+                         : p.status == fl_estimator::kRejectedOutlier ? "rejected: outlier"
+                                                                      : "rejected: broken pulse";
+    fmt::format_to(std::back_inserter(out), "{},{},{},{}\n", p.start, p.end, p.period, status);
+  }
+  return out;
+}
+
+std::string jumps_csv(const RunRecording& r) {
+  std::string out = "roller,start_s,end_s,height_m,roller_angle_rad\n";
+  for (const PlateJump& j : r.jumps)
+    fmt::format_to(std::back_inserter(out), "{},{},{},{},{}\n", j.roller, j.start, j.end, j.height,
+                   j.roller_angle);
+  return out;
+}
+
 void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
                        const RunRecording& recording) {
   const Scene& scene = rig.scene;
@@ -172,6 +221,10 @@ void write_run_outputs(const std::string& folder, const CompiledRig& rig, const 
     write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
   if (scene.output.hall && scene.sensor)
     write_file_atomic(folder + "/hall.csv", hall_csv(recording));
+  if (scene.output.periods && scene.output.hall && scene.sensor)
+    write_file_atomic(folder + "/periods.csv", periods_csv(recording));
+  if (scene.output.jumps && !recording.jumps.empty())
+    write_file_atomic(folder + "/jumps.csv", jumps_csv(recording));
   if (scene.output.summary) {
     write_file_atomic(folder + "/summary.json", summary_json(summary).dump(2) + "\n");
     write_file_atomic(folder + "/timing.json", timing_json(summary).dump(2) + "\n");

@@ -18,9 +18,14 @@ nlohmann::json timing_json(const RunSummary& summary);
 std::string summary_text(const RunSummary& summary);
 std::string trajectory_csv(const RunRecording& recording);
 std::string hall_csv(const RunRecording& recording);
+// Each period the rig's estimator judged: start, end, length [s] and whether it was accepted.
+std::string periods_csv(const RunRecording& recording);
+// Each jump of the plate: the roller it left, when, how high, at which roller angle.
+std::string jumps_csv(const RunRecording& recording);
 
-// Writes summary.json, timing.json, trajectory.csv, hall.csv and cycles.csv (as the scene's
-// output part asks) into `folder`, each file atomically. All but timing.json are bit-identical
+// Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
+// the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file
+// atomically. All but timing.json are bit-identical
 // between runs.
 void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
                        const RunRecording& recording);

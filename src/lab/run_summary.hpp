@@ -12,6 +12,7 @@
 
 #include "core/regime.hpp"
 #include "core/units.hpp"
+#include "lab/warming_report.hpp"
 
 namespace fl {
 
@@ -56,6 +57,14 @@ struct RunSummary {
   // The sensor board's clock error e (sensor.clock_error), when the scene sets one: the estimator's
   // periods read 1 + e times the true ones, its mu_k (1 + e)^-2 times.
   std::optional<double> clock_error;
+  // Rollers off their shafts (rollers.runout), when the scene sets them: the run-out [m], and the
+  // run-out above which theory has the plate hop at its start amplitude's turning points, at the
+  // rollers' mean speed over the run (core/runout.hpp) [m].
+  std::optional<double> runout;
+  std::optional<double> runout_threshold;
+  // Rollers warming over the run (friction.warming): their temperature and mu_k, and the mu_k a
+  // student computes from the estimator's periods over the first 10, the first 30 s, the run.
+  std::optional<WarmingReport> warming;
   double time_step = 0.0;     // s
   int solver_iterations = 0;  // the iterations the run ended with
   // When the run raised them (the scene's did not converge): from what, to what, and why.
@@ -86,11 +95,12 @@ struct RunSummary {
   std::optional<double> stick_duration;         // s, stick-slip: one stick phase
   std::optional<double> growth_rate;            // 1/s, grows or decays: d ln A / dt, measured
   std::optional<double> e_folding_time;         // s, grows or decays: 1 / |growth_rate|
-  // Jumps: the plate left a roller and came back, about once a roller turn (rollers off their
-  // shafts); null when it never did.
+  // Jumps: the plate left a roller and came back, again and again at the same point of the
+  // roller's turn (rollers off their shafts); null when it never did.
   std::optional<int> jumps;
   std::optional<double> first_jump_time;  // s
   std::optional<double> longest_jump;     // s
+  std::optional<double> highest_jump;     // m, the largest gap between the plate and a roller
   // The same numbers from the friction law's closed forms (lab/regime_theory.hpp), where the run
   // has them to be held against.
   std::optional<Regime> regime_theory;                // when the regime has numbers above

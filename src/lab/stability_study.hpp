@@ -28,8 +28,9 @@ struct StabilityRow {
   // stick-slip cycle, of its closed form; a clipped amplitude within 1 % of v_r / Omega).
   std::optional<double> largest_step;  // s
   std::string step_note;               // when there is none, or every step tried was fine
-  std::optional<double> period_error;  // relative to the thick formula, at the scene's step
-  double condition_period = 0.0;       // d ln mu_k / d ln T through the thick formula
+  // Relative to the thick formula, at the scene's step (none for rollers that warm or run out).
+  std::optional<double> period_error;
+  double condition_period = 0.0;  // d ln mu_k / d ln T through the thick formula
   double condition_spacing = 0.0;
   double condition_h_c = 0.0;
   double wall_s = 0.0;  // for this case, bisection included

@@ -43,6 +43,28 @@ json paper_json(const RunSummary& s) {
               {"mu_k_err", s.paper_mu_k->uncertainty}};
 }
 
+json warming_window_json(const std::optional<WarmingWindow>& w) {
+  if (!w) return nullptr;
+  return json{{"periods", w->periods}, {"period_s", w->period}, {"mu_k", w->mu_k}};
+}
+
+json warming_json(const RunSummary& s) {
+  if (!s.warming) return nullptr;
+  const WarmingReport& w = *s.warming;
+  return json{{"start_temperature_k", w.start_temperature},
+              {"room_temperature_k", w.room_temperature},
+              {"time_constant_s", w.time_constant},
+              {"hold_s", w.hold},
+              {"mu_k_start", w.mu_k_start},
+              {"mu_k_room", w.mu_k_room},
+              {"end_temperature_k", w.end_temperature},
+              {"mu_k_end", w.mu_k_end},
+              {"mu_k_cold_paper_formula", w.mu_k_cold_paper_formula},
+              {"first_10_periods", warming_window_json(w.first_10_periods)},
+              {"first_30_s", warming_window_json(w.first_30_s)},
+              {"whole_run", warming_window_json(w.whole_run)}};
+}
+
 }  // namespace
 
 const std::vector<SummaryField>& summary_fields() {
@@ -71,7 +93,7 @@ const std::vector<SummaryField>& summary_fields() {
        }},
       {"periods_used", "periods_used",
        [](S s) { return json(s.estimator ? s.estimator->periods_used : 0); }},
-      {"periods_discarded", nullptr,
+      {"periods_discarded", "periods_discarded",
        [](S s) { return json(s.estimator ? s.estimator->periods_discarded : 0); }},
       {"period_trajectory_s", "period_trajectory_s",
        [](S s) { return json_or_null(s.period_trajectory); }},
@@ -103,6 +125,9 @@ const std::vector<SummaryField>& summary_fields() {
                               : json(nullptr);
        },
        true},
+      {"runout_m", "runout_m", [](S s) { return json_or_null(s.runout); }, true},
+      {"runout_threshold_m", "runout_threshold_m",
+       [](S s) { return json_or_null(s.runout_threshold); }, true},
       {"spacing_m", "spacing_m", [](S s) { return json_or_null(s.spacing); }},
       {"h_c_m", "h_c_m", [](S s) { return json_or_null(s.h_c); }},
       {"plate_mass_kg", nullptr, [](S s) { return json_or_null(s.plate_mass); }},
@@ -135,6 +160,7 @@ const std::vector<SummaryField>& summary_fields() {
       {"jumps", "jumps", [](S s) { return s.jumps ? json(*s.jumps) : json(nullptr); }, true},
       {"first_jump_time_s", nullptr, [](S s) { return json_or_null(s.first_jump_time); }, true},
       {"longest_jump_s", nullptr, [](S s) { return json_or_null(s.longest_jump); }, true},
+      {"highest_jump_m", "highest_jump_m", [](S s) { return json_or_null(s.highest_jump); }, true},
       {"regime_theory", nullptr,
        [](S s) { return s.regime_theory ? json(regime_name(*s.regime_theory)) : json(nullptr); },
        true},
@@ -148,6 +174,7 @@ const std::vector<SummaryField>& summary_fields() {
        [](S s) { return json_or_null(s.stick_duration_theory); }, true},
       {"growth_rate_theory_per_s", nullptr, [](S s) { return json_or_null(s.growth_rate_theory); },
        true},
+      {"warming", nullptr, warming_json, true},
       {"paper", nullptr, paper_json, true},
       {nullptr, "paper_material",
        [](S s) { return s.paper_period ? json(s.paper_material) : json(nullptr); }},

@@ -45,6 +45,9 @@ class ContactFriction {
   // After the step: decides from the solver's impulses which roller contacts are stuck.
   void after_step(const std::array<RollerImpulses, 2>& impulses);
 
+  // The law from the next step on (rollers whose friction changes over the run, as they warm).
+  void set_law(const FrictionLaw& law) { law_ = law; }
+
   // Whether the plate is stuck to each roller after the last step.
   const std::array<bool, 2>& stuck() const { return stuck_; }
 

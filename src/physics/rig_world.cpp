@@ -282,6 +282,15 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
       }
     }
   }
+  // The plate's bottom face (h_c below its centre of mass along its own z axis) above each
+  // roller's surface: the distance from the tube's axis to that plane, less the radius.
+  const btTransform& body = plate->getCenterOfMassTransform();
+  const btVector3 up = body.getBasis().getColumn(2);
+  const btVector3 bottom = body.getOrigin() - up * rig.plate.h_c;
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double above = (bottom - rollers[i]->getWorldTransform().getOrigin()).dot(up);
+    out[i].gap = std::max(above - scene.rollers.radius, 0.0);
+  }
   return out;
 }
 
@@ -315,6 +324,14 @@ void RigWorld::step() {
     const double sense = impl_->scene.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
     const double speed = rig.roller_speed_ramp->at(t_next);
     impl_->roller_omega = {sense * speed, -sense * speed};
+  }
+  if (rig.warming) {
+    // Warming rollers: the law's coefficients scaled with mu_k at the step's middle.
+    const double scale = rig.warming->mu_k(t_next - 0.5 * impl_->dt) / rig.warming->mu_k_start();
+    FrictionLaw law = rig.friction;
+    law.mu_k *= scale;
+    law.mu_s *= scale;
+    impl_->friction->set_law(law);
   }
   impl_->world.stepSimulation(impl_->dt, 0);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;

@@ -30,6 +30,9 @@ struct RollerContact {
   double normal_force = 0.0;    // N, pushing the plate up
   double friction_force = 0.0;  // N, along +x on the plate
   double penetration = 0.0;     // m, deepest, >= 0
+  // How far the plate's bottom face is above the roller's surface, along the face's normal [m]:
+  // > 0 when the plate has left the roller (how high it jumped), 0 while they press.
+  double gap = 0.0;
   // The plate held to this roller's surface in the step: pressed, and its friction below the
   // limit (decided by saturation, physics/contact_friction.hpp).
   bool stuck = false;

@@ -60,6 +60,9 @@ CompiledRig compile_rig(Scene scene) {
   rig.plate = plate_mass(scene);
   rig.friction = friction_law(scene.friction);
   rig.mu_k = rig.friction.mu_k;
+  if (const std::optional<WarmingDesc>& w = scene.friction.warming)
+    rig.warming.emplace(scene.friction.temperature, w->room_temperature, w->time_constant, w->hold,
+                        rig.friction.mu_k, w->mu_k_room.value_or(rig.friction.mu_k));
   rig.spacing = scene.rollers.spacing;
   rig.gravity = scene.world.gravity;
   rig.roller_speed_nominal = nominal_roller_speed(scene);

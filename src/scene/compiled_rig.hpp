@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/analytic_model.hpp"
+#include "core/roller_warming.hpp"
 #include "scene/drive_layout.hpp"
 #include "scene/scene.hpp"
 
@@ -52,6 +53,9 @@ struct CompiledRig {
   std::optional<Ramp> roller_speed_ramp;
   std::optional<Ramp> duty_ramp;
   std::optional<CompiledDrive> drive;
+  // Rollers warming from friction.temperature (friction.warming): mu_k over time, `friction`
+  // being the law at the start.
+  std::optional<RollerWarming> warming;
 
   // The analytic oscillator for this plate. `restoring` is false when the rollers turn outward
   // or l <= 2 mu_k h_c; the thick-plate quantities are then absent.

@@ -108,6 +108,21 @@ struct SensorDesc {
   double clock_error = 0.0;
 };
 
+// Rollers that start cold (friction.temperature, e.g. 77 K after liquid nitrogen) and warm toward
+// the room (core/roller_warming.hpp): mu_k follows their temperature, linear between its value
+// at the start and at the room's temperature.
+struct WarmingDesc {
+  double room_temperature = 300.0;  // K
+  // s. The PVC wall (1.5 mm, 1400 kg/m^3, c about 700 J/(kg K) averaged from 77 to 300 K) cooled
+  // by the air over a tube turning at 1.7 m/s (h about 30 W/(m^2 K), a cylinder in cross-flow at
+  // Re about 2300): tau = rho c w / h, about 50 s (docs/physics.md).
+  double time_constant = 50.0;
+  double hold = 0.0;  // s at the start temperature first (the nitrogen inside the tubes boiling)
+  // mu_k at the room's temperature: the paper's 300 K value for the material when mu_k is taken
+  // from the paper; otherwise the scene must give it.
+  std::optional<double> mu_k_room;
+};
+
 struct FrictionDesc {
   // The law between plate and rollers (core/friction_law.hpp): coulomb (mu_k, and a static limit
   // mu_s) or stribeck (mu_k, mu_s, v_s, beta).
@@ -120,7 +135,8 @@ struct FrictionDesc {
   double beta = 0.0;           // s/m, the kinetic coefficient's slope (stribeck)
   bool from_paper = false;
   std::string paper_material;  // the Table I key used, when from_paper
-  double temperature = 300.0;  // K
+  double temperature = 300.0;  // K (at the start, when the rollers warm)
+  std::optional<WarmingDesc> warming;
   // What the paper measured for that material and temperature, when from_paper.
   std::optional<Measured> paper_period;  // T +- dT [s]
   std::optional<Measured> paper_mu_k;
@@ -189,6 +205,8 @@ struct OutputDesc {
   bool hall = true;        // hall.csv with --out (when the scene has a sensor)
   bool summary = true;     // summary.json with --out
   bool cycles = true;      // cycles.csv with --out (the plate's cycles, lab/cycle_report.hpp)
+  bool periods = true;     // periods.csv with --out: each period the rig's estimator judged
+  bool jumps = true;       // jumps.csv with --out, when the plate jumped
 };
 
 struct Scene {

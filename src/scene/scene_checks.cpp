@@ -44,6 +44,16 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   for (const double phase : s.rollers.runout_phase)
     need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
   positive(s.rollers.length, "rollers.length");
+  if (const std::optional<WarmingDesc>& w = s.friction.warming) {
+    need(std::isfinite(w->room_temperature) && w->room_temperature > s.friction.temperature,
+         "friction.warming.room",
+         describe("must be warmer than the rollers' start (friction.temperature, ",
+                  s.friction.temperature, " K), found ", w->room_temperature, " K"));
+    positive(w->time_constant, "friction.warming.time_constant");
+    need(std::isfinite(w->hold) && w->hold >= 0.0, "friction.warming.hold",
+         describe("must be >= 0, found ", w->hold, " s"));
+    if (w->mu_k_room) positive(*w->mu_k_room, "friction.warming.mu_k_room");
+  }
   need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
        describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
   // A ramp: times from 0 s, increasing; speeds >= 0, duties 0 to 1.

@@ -119,7 +119,7 @@ SensorDesc read_sensor(const YamlNode& n) {
 
 void read_friction(const YamlNode& n, const std::string& plate_material, FrictionDesc& f,
                    const PaperTableSource& paper) {
-  n.allow_keys({"law", "mu_k", "mu_s", "v_s", "beta", "temperature"});
+  n.allow_keys({"law", "mu_k", "mu_s", "v_s", "beta", "temperature", "warming"});
   if (auto v = n.find("law")) {
     const std::string law = v->text();
     const std::optional<FrictionLawKind> kind = friction_law_kind_from_name(law);
@@ -149,9 +149,26 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   } catch (const UnitError&) {
     is_number = false;
   }
+  std::optional<YamlNode> warming = n.find("warming");
+  std::optional<YamlNode> mu_k_room;
+  if (warming) {
+    warming->allow_keys({"room", "time_constant", "hold", "mu_k_room"});
+    WarmingDesc w;
+    if (auto v = warming->find("room")) w.room_temperature = v->quantity(Dimension::kTemperature);
+    if (auto v = warming->find("time_constant")) w.time_constant = v->quantity(Dimension::kTime);
+    if (auto v = warming->find("hold")) w.hold = v->quantity(Dimension::kTime);
+    mu_k_room = warming->find("mu_k_room");
+    if (mu_k_room && mu_k_room->text() != "paper")
+      w.mu_k_room = mu_k_room->quantity(Dimension::kDimensionless);
+    f.warming = w;
+  }
   if (is_number) {
     f.mu_k = number;
     f.from_paper = false;
+    if (f.warming && !f.warming->mu_k_room)
+      warming->fail(
+          "rollers that warm need mu_k at the room's temperature: give warming.mu_k_room (a "
+          "number), or take friction.mu_k from the paper (\"paper\" or a material)");
     return;
   }
   // "paper" takes the plate's material; any other text names a material of Table I.
@@ -171,17 +188,28 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   }
   f.mu_k = at->mu_k.value;
   f.from_paper = true;
+  if (f.warming && !f.warming->mu_k_room) {
+    const PaperMeasurement* room = PaperTable::at(*row, f.warming->room_temperature);
+    if (room == nullptr)
+      (mu_k_room ? *mu_k_room : *warming)
+          .fail("the paper measured " + row->name + " at 300 K and 77 K only, not at a room of " +
+                std::to_string(static_cast<int>(std::lround(f.warming->room_temperature))) +
+                " K; give warming.mu_k_room as a number");
+    f.warming->mu_k_room = room->mu_k.value;
+  }
   f.paper_material = row->key;
   f.paper_period = at->period;
   f.paper_mu_k = at->mu_k;
 }
 
 void read_output(const YamlNode& n, OutputDesc& o) {
-  n.allow_keys({"trajectory", "hall", "summary", "cycles"});
+  n.allow_keys({"trajectory", "hall", "summary", "cycles", "periods", "jumps"});
   if (auto v = n.find("trajectory")) o.trajectory = v->boolean();
   if (auto v = n.find("hall")) o.hall = v->boolean();
   if (auto v = n.find("summary")) o.summary = v->boolean();
   if (auto v = n.find("cycles")) o.cycles = v->boolean();
+  if (auto v = n.find("periods")) o.periods = v->boolean();
+  if (auto v = n.find("jumps")) o.jumps = v->boolean();
 }
 
 // The node of a dotted key (or its nearest existing parent), to locate a problem.

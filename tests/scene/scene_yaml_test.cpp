@@ -173,6 +173,32 @@ TEST(SceneYaml, FrictionLawKeysAreCheckedAndLocated) {
             std::string::npos);
 }
 
+TEST(SceneYaml, WarmingRollersTakeTheRoomsMuKFromThePaperOrTheScene) {
+  const Scene cold = load(
+      "format: 1\nfriction: {mu_k: lego, temperature: 77 K, warming: {time_constant: 1 min}}\n");
+  ASSERT_TRUE(cold.friction.warming.has_value());
+  EXPECT_DOUBLE_EQ(cold.friction.mu_k, 0.20);
+  EXPECT_DOUBLE_EQ(*cold.friction.warming->mu_k_room, 0.29);  // Table I's 300 K LEGO row
+  EXPECT_DOUBLE_EQ(cold.friction.warming->time_constant, 60.0);
+  EXPECT_DOUBLE_EQ(cold.friction.warming->room_temperature, 300.0);
+  EXPECT_DOUBLE_EQ(cold.friction.warming->hold, 0.0);
+  const Scene given = load(
+      "format: 1\nfriction: {mu_k: 0.2, temperature: 77 K, warming: {mu_k_room: 0.3, hold: 5 "
+      "s}}\n");
+  EXPECT_DOUBLE_EQ(*given.friction.warming->mu_k_room, 0.3);
+  EXPECT_DOUBLE_EQ(given.friction.warming->hold, 5.0);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: 0.2, temperature: 77 K, warming: {hold: 5 s}}\n")
+                .find("t.yaml:2:51: error: friction.warming: rollers that warm need mu_k at the "
+                      "room's temperature"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: lego, warming: {hold: 5 s}}\n")
+                .find("friction.warming.room: must be warmer than the rollers' start"),
+            std::string::npos);
+  EXPECT_NE(error_of("format: 1\nfriction: {mu_k: lego, temperature: 77 K, warming: {tau: 5 s}}\n")
+                .find("t.yaml:2:"),
+            std::string::npos);
+}
+
 TEST(SceneYaml, ImpossibleSetUpsAreRefusedWithTheReason) {
   struct Case {
     std::vector<SceneOverride> overrides;

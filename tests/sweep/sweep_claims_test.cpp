@@ -1,7 +1,9 @@
 // The lab's claims about the sweep scenes and compare, each with the tolerance it states:
 // a sweep over l reproduces the thick-plate curve within 0.05 % at every point; the roller-speed
 // sweep puts the slip threshold where the analytic slip condition does (within one step); and
-// compare's refitted mu_k, simulated again, gives the measured T within 0.05 %.
+// compare's refitted mu_k, simulated again, gives the measured T within 0.05 %; the run-out sweep
+// has the plate jump from theory's hop threshold on (within one step) and its estimator discard
+// periods only above it.
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +17,7 @@
 #include "lab/compare.hpp"
 #include "lab/experiment.hpp"
 #include "lab/sweep_run.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
@@ -23,12 +26,9 @@ namespace fs = std::filesystem;
 
 const std::string kSource = FRICTIONLAB_TEST_SOURCE_DIR;
 
-const PaperTable& table() {
-  static const PaperTable t = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  return t;
-}
-const PaperTableSource kPaper = []() -> const PaperTable& { return table(); };
-const SceneInputs kInputs{kPaper, {}};
+const PaperTableSource kPaper = []() -> const PaperTable& { return test::paper_table(); };
+const SceneInputs kInputs{kPaper,
+                          []() -> const assets::PartCatalog& { return test::part_catalog(); }};
 
 // Runs a sweep file of the repository; returns its rows.
 nlohmann::json run_rows(const std::string& name) {
@@ -57,6 +57,45 @@ TEST(SweepClaims, SpacingSweepFollowsTheThickCurveWithinFiveHundredthsOfAPercent
     EXPECT_LT(std::fabs(row["error_vs_thick"].get<double>()), 5e-4) << where;
     EXPECT_NEAR(row["period_s"].get<double>() / row["period_thick_s"].get<double>(), 1.0, 5e-4);
   }
+}
+
+TEST(SweepClaims, RunoutSweepJumpsFromTheHopThresholdOn) {
+  const nlohmann::json rows = run_rows("runout");
+  ASSERT_EQ(rows.size(), 21u);
+  const double step = 0.05e-3;  // m, the sweep's
+  bool discarded_above = false;
+  for (const nlohmann::json& row : rows) {
+    const std::string where = row["params"].dump();
+    ASSERT_EQ(row["status"], "ok") << where << row["error"];
+    EXPECT_EQ(row["regime"], "oscillates") << where << row["regime_detail"];
+    if (row["runout_m"].is_null()) {  // true rollers
+      EXPECT_TRUE(row["jumps"].is_null()) << where;
+      continue;
+    }
+    const double e = row["runout_m"].get<double>();
+    const double threshold = row["runout_threshold_m"].get<double>();
+    const bool jumps = !row["jumps"].is_null();
+    // Within one step of the threshold either may happen (at 1 ms the stepped rollers shake the
+    // plate off from 0.9 of it, docs/physics.md).
+    if (e < threshold - step) {
+      EXPECT_FALSE(jumps) << where;
+    }
+    if (e > threshold + step) {
+      EXPECT_TRUE(jumps) << where;
+    }
+    const int discarded = row["periods_discarded"].get<int>();
+    if (e < threshold) {
+      EXPECT_EQ(discarded, 0) << where;
+    }
+    discarded_above = discarded_above || discarded > 0;
+    // The periods the estimator kept give the trajectory's period.
+    if (row["periods_used"].get<int>() >= 3) {
+      EXPECT_LT(std::fabs(row["period_s"].get<double>() - row["period_trajectory_s"].get<double>()),
+                3.0 * row["period_std_error_s"].get<double>())
+          << where;
+    }
+  }
+  EXPECT_TRUE(discarded_above);
 }
 
 TEST(SweepClaims, RollerSpeedSweepFindsTheSlipThresholdWithinOneStep) {
@@ -114,7 +153,7 @@ TEST_P(CompareClaims, RefitReproducesTheMeasuredPeriod) {
   CompareOptions options;
   options.scene_file = kSource + "/scenes/" + GetParam() + ".yaml";
   options.parts = kParts;
-  const CompareResult result = run_compare(table(), options);
+  const CompareResult result = run_compare(test::paper_table(), options);
   ASSERT_EQ(result.rows.size(), 15u);
   for (const CompareRow& row : result.rows) {
     const std::string where = row.material + " " + std::to_string(row.temperature);
@@ -164,9 +203,9 @@ TEST_P(CompareClaims, RefitReproducesTheMeasuredPeriod) {
 TEST(SweepClaims, RefitConvergesFromTheThinFormula) {
   CompareOptions options;
   options.scene_file = kSource + "/scenes/minimal.yaml";
-  const CompareResult thick = run_compare(table(), options);
+  const CompareResult thick = run_compare(test::paper_table(), options);
   options.start_from_thin_formula = true;
-  const CompareResult thin = run_compare(table(), options);
+  const CompareResult thin = run_compare(test::paper_table(), options);
   for (std::size_t i = 0; i < thin.rows.size(); ++i) {
     const CompareRow& row = thin.rows[i];
     if (!row.mu_k_refit) continue;

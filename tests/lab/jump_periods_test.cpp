@@ -1,0 +1,108 @@
+// The paper's rig on rollers off their shafts: the plate jumps, the Hall signal shows it, and the
+// rig's own estimator discards the periods the jumps spoil while the periods it keeps still give
+// the trajectory's own period.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "lab/experiment.hpp"
+#include "lab/host_estimator.hpp"
+#include "support/scene_fixture.hpp"
+
+namespace fl {
+namespace {
+
+struct JumpRun {
+  RunSummary summary;
+  RunRecording recording;
+};
+
+JumpRun paper_rig(const std::string& runout) {
+  const Scene s =
+      test::scene_file("paper-rig.yaml", std::vector<SceneOverride>{
+                                             {"world.duration", "20 s"},
+                                             {"rollers.runout", runout},
+                                             {"rollers.runout_phase", "[0 deg, 90 deg]"},
+                                         });
+  RunOptions options;
+  options.record_hall = true;
+  JumpRun run;
+  run.summary = run_experiment(s, options, &run.recording);
+  return run;
+}
+
+// The relative spread of the Hall pulses' peaks, as the rig's estimator measured them.
+double peak_spread(const RunRecording& r) {
+  HostEstimator estimator(fl_estimator::Config{});
+  for (const HallSample& s : r.hall) estimator.add(s.t_us, s.adc);
+  estimator.finish();
+  std::vector<double> peaks;
+  for (const EstimatedPulse& p : estimator.pulses()) peaks.push_back(p.peak);
+  const double n = static_cast<double>(peaks.size());
+  const double mean = std::accumulate(peaks.begin(), peaks.end(), 0.0) / n;
+  double var = 0.0;
+  for (const double p : peaks) var += (p - mean) * (p - mean);
+  return std::sqrt(var / (n - 1.0)) / std::fabs(mean - 512.0);
+}
+
+// The estimator's mean period against the trajectory's, in standard errors of the mean.
+double estimator_off_trajectory(const RunSummary& s) {
+  const EstimatorReport& e = *s.estimator;
+  return (e.period - *s.period_trajectory) / e.period_std_error;
+}
+
+TEST(JumpPeriods, TrueRollersGiveSteadyPulsesAndNoDiscard) {
+  const JumpRun run = paper_rig("0 mm");
+  EXPECT_FALSE(run.summary.jumps.has_value());
+  ASSERT_TRUE(run.summary.estimator.has_value());
+  EXPECT_EQ(run.summary.estimator->periods_discarded, 0);
+  // The sensor's noise alone: 0.6 % of the pulse height.
+  EXPECT_LT(peak_spread(run.recording), 0.01);
+}
+
+// 0.3 mm, three times the threshold: jumps up to 2 mm high once a turn, which the pulses show but
+// not enough for the estimator to reject them; its periods are still the trajectory's.
+TEST(JumpPeriods, ModerateJumpsShowInThePulsesAndTheEstimatorFollowsTheTrajectory) {
+  const JumpRun run = paper_rig("0.3 mm");
+  ASSERT_TRUE(run.summary.jumps.has_value()) << run.summary.regime_evidence;
+  EXPECT_GT(*run.summary.runout, 2.0 * *run.summary.runout_threshold);
+  EXPECT_GT(*run.summary.highest_jump, 0.5e-3);
+  EXPECT_EQ(run.summary.regime, Regime::kOscillates) << run.summary.regime_evidence;
+  // The magnet rides up and down with the plate: the pulses' peaks spread several times more than
+  // the noise spreads them on true rollers (3.3 % against 0.6 %).
+  EXPECT_GT(peak_spread(run.recording), 3.0 * peak_spread(paper_rig("0 mm").recording));
+  ASSERT_TRUE(run.summary.estimator.has_value());
+  EXPECT_GE(run.summary.estimator->periods_used, 20);
+  EXPECT_LT(std::fabs(estimator_off_trajectory(run.summary)), 3.0);
+  // The jumps list says when and how high, each over within the run.
+  ASSERT_EQ(static_cast<int>(run.recording.jumps.size()), *run.summary.jumps);
+  for (const PlateJump& j : run.recording.jumps) {
+    EXPECT_GE(j.end, j.start);
+    EXPECT_GT(j.height, 0.0);
+    EXPECT_LE(j.height, *run.summary.highest_jump);
+  }
+}
+
+// 0.5 mm: jumps of several millimetres bend the pulses; the estimator rejects the periods whose
+// turning points they broke, and the periods it keeps give the trajectory's period.
+TEST(JumpPeriods, ViolentJumpsSpoilPeriodsTheEstimatorDiscards) {
+  const JumpRun run = paper_rig("0.5 mm");
+  ASSERT_TRUE(run.summary.jumps.has_value()) << run.summary.regime_evidence;
+  EXPECT_EQ(run.summary.regime, Regime::kOscillates) << run.summary.regime_evidence;
+  ASSERT_TRUE(run.summary.estimator.has_value());
+  const EstimatorReport& e = *run.summary.estimator;
+  EXPECT_GT(e.periods_discarded, 0);
+  EXPECT_GT(e.periods_used, 2);
+  const auto rejected =
+      std::count_if(run.recording.periods.begin(), run.recording.periods.end(),
+                    [](const EstimatedPeriod& p) { return p.status != fl_estimator::kAccepted; });
+  EXPECT_EQ(rejected, e.periods_discarded);
+  EXPECT_LT(std::fabs(estimator_off_trajectory(run.summary)), 3.0);
+}
+
+}  // namespace
+}  // namespace fl

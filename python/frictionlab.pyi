@@ -144,6 +144,12 @@ class Scene:
         jitter: float
         clock_error: float
 
+    class Warming:
+        room: float
+        time_constant: float
+        hold: float
+        mu_k_room: Optional[float]
+
     class Friction:
         law: str
         mu_k: float
@@ -151,6 +157,7 @@ class Scene:
         v_s: Optional[float]
         beta: float
         temperature: float
+        warming: Optional[Scene.Warming]
         paper_material: Optional[str]
         paper_period: Optional[Measured]
         paper_mu_k: Optional[Measured]
@@ -189,6 +196,8 @@ class Scene:
         hall: bool
         summary: bool
         cycles: bool
+        periods: bool
+        jumps: bool
 
     name: str
     file: Optional[str]
@@ -235,6 +244,25 @@ class DriveReport:
     senses_opposite: bool
     load_torque: float
 
+class WarmingWindow:
+    periods: int
+    period: float
+    mu_k: float
+
+class WarmingReport:
+    start_temperature: float
+    room_temperature: float
+    time_constant: float
+    hold: float
+    mu_k_start: float
+    mu_k_room: float
+    end_temperature: float
+    mu_k_end: float
+    mu_k_cold_paper_formula: float
+    first_10_periods: Optional[WarmingWindow]
+    first_30_s: Optional[WarmingWindow]
+    whole_run: Optional[WarmingWindow]
+
 class VideoReport:
     frames: int
     title_frames: int
@@ -259,6 +287,9 @@ class RunSummary:
     gravity: float
     temperature: float
     clock_error: Optional[float]
+    runout: Optional[float]
+    runout_threshold: Optional[float]
+    warming: Optional[WarmingReport]
     time_step: float
     solver_iterations: int
     solver_iterations_raised: Optional[str]
@@ -285,6 +316,7 @@ class RunSummary:
     jumps: Optional[int]
     first_jump_time: Optional[float]
     longest_jump: Optional[float]
+    highest_jump: Optional[float]
     regime_theory: Optional[Regime]
     amplitude_clipped_theory: Optional[float]
     stick_slip_period_theory: Optional[float]
@@ -327,6 +359,8 @@ class RunResult(RunSummary):
     trajectory: Optional[npt.NDArray[np.void]]
     hall: Optional[npt.NDArray[np.void]]
     cycles: Optional[npt.NDArray[np.void]]
+    periods: Optional[npt.NDArray[np.void]]
+    jump_list: Optional[npt.NDArray[np.void]]
     video: Optional[VideoReport]
 
 def run(

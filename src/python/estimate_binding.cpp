@@ -75,13 +75,6 @@ py::array pulses_array(std::vector<EstimatedPulse> pulses) {
                                         {"distorted", "?", offsetof(EstimatedPulse, distorted)}});
 }
 
-py::array periods_array(std::vector<EstimatedPeriod> periods) {
-  return rows_array(std::move(periods), {{"start_s", "<f8", offsetof(EstimatedPeriod, start)},
-                                         {"end_s", "<f8", offsetof(EstimatedPeriod, end)},
-                                         {"period_s", "<f8", offsetof(EstimatedPeriod, period)},
-                                         {"status", "u1", offsetof(EstimatedPeriod, status)}});
-}
-
 }  // namespace
 
 void bind_estimate(py::module_& m) {
@@ -136,7 +129,10 @@ in single precision, as the rig's Arduino does. json() is the object
           "structured array, shape (pulses,): time_s (the turning point, for one pulse per\n"
           "period), rise_s and fall_s (the timing level's crossings), peak (counts), distorted")
       .def_property_readonly(
-          "periods", [](const E& e) { return periods_array(e.estimate.periods); },
+          "periods",
+          [](const E& e) {
+            return periods_array(std::vector<EstimatedPeriod>(e.estimate.periods));
+          },
           "structured array, shape (periods,): start_s, end_s, period_s and status (0 "
           "accepted,\n1 an outlier, 2 at a broken turning point)")
       .def(

@@ -50,6 +50,7 @@ py::array trajectory_array(std::vector<TrajectoryRow>&& rows) {
     fields.push_back({"normal" + n + "_n", "<f8", r + offsetof(RollerContact, normal_force)});
     fields.push_back({"friction" + n + "_n", "<f8", r + offsetof(RollerContact, friction_force)});
     fields.push_back({"penetration" + n + "_m", "<f8", r + offsetof(RollerContact, penetration)});
+    fields.push_back({"gap" + n + "_m", "<f8", r + offsetof(RollerContact, gap)});
   }
   return rows_array(std::move(rows), fields);
 }
@@ -72,6 +73,23 @@ py::array cycles_array(std::vector<CycleRecord>&& cycles) {
       {"stick_s", "<f8", offsetof(CycleRecord, stick_duration)},
   };
   return rows_array(std::move(cycles), fields);
+}
+
+py::array periods_array(std::vector<EstimatedPeriod>&& periods) {
+  return rows_array(std::move(periods), {{"start_s", "<f8", offsetof(EstimatedPeriod, start)},
+                                         {"end_s", "<f8", offsetof(EstimatedPeriod, end)},
+                                         {"period_s", "<f8", offsetof(EstimatedPeriod, period)},
+                                         {"status", "u1", offsetof(EstimatedPeriod, status)}});
+}
+
+py::array jumps_array(std::vector<PlateJump>&& jumps) {
+  return rows_array(std::move(jumps),
+                    {{"roller", "<i4", offsetof(PlateJump, roller)},
+                     {"start_s", "<f8", offsetof(PlateJump, start)},
+                     {"end_s", "<f8", offsetof(PlateJump, end)},
+                     {"height_m", "<f8", offsetof(PlateJump, height)},
+                     {"roller_angle_rad", "<f8", offsetof(PlateJump, roller_angle)},
+                     {"open", "?", offsetof(PlateJump, open)}});
 }
 
 }  // namespace fl::python

@@ -13,6 +13,8 @@
 
 #include "core/cycle_tracker.hpp"
 #include "lab/experiment.hpp"
+#include "lab/host_estimator.hpp"
+#include "lab/regime_monitor.hpp"
 #include "sensor/hall_signal.hpp"
 
 namespace fl::python {
@@ -50,7 +52,7 @@ py::array rows_array(std::vector<Row>&& rows, const std::vector<RecordField>& fi
 // Shape (steps + 1,): the start and every step. Fields t_s, x_m, z_m, pitch_rad, vx_m_s, vz_m_s,
 // pitch_rate_rad_s, y_m, yaw_rad (the plate's centre of mass), and for each roller i (0 at
 // x = -l/2, 1 at +l/2) touching{i}, stuck{i} (bool), normal{i}_n, friction{i}_n (the forces on the
-// plate over the step) and penetration{i}_m.
+// plate over the step), penetration{i}_m and gap{i}_m (how far the plate is above the roller).
 py::array trajectory_array(std::vector<TrajectoryRow>&& rows);
 
 // Shape (samples,): t_us (uint32, the sensor board's microsecond clock) and adc (uint16, counts).
@@ -58,5 +60,13 @@ py::array hall_array(std::vector<HallSample>&& samples);
 
 // Shape (cycles,): start_s, period_s, amplitude_m, x_min_m, x_max_m, surface_speed_m_s, stick_s.
 py::array cycles_array(std::vector<CycleRecord>&& cycles);
+
+// Shape (periods,): each period the rig's estimator judged, start_s, end_s, period_s and status
+// (uint8: 0 accepted, 1 an outlier, 2 at a broken turning point).
+py::array periods_array(std::vector<EstimatedPeriod>&& periods);
+
+// Shape (jumps,): each time the plate left a roller, roller (0 or 1), start_s, end_s, height_m
+// (the largest gap), roller_angle_rad (the roller's angle when it left), open (never came back).
+py::array jumps_array(std::vector<PlateJump>&& jumps);
 
 }  // namespace fl::python

@@ -33,6 +33,8 @@ struct RunResult : RunSummary {
   py::object trajectory = py::none();
   py::object hall = py::none();
   py::object cycles = py::none();
+  py::object periods = py::none();
+  py::object jump_list = py::none();
   std::optional<VideoReport> video;
 };
 
@@ -149,6 +151,8 @@ RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& 
     result.trajectory = trajectory_array(std::move(recording.trajectory));
     if (loaded.scene->sensor) result.hall = hall_array(std::move(recording.hall));
     result.cycles = cycles_array(std::move(recording.cycles));
+    if (loaded.scene->sensor) result.periods = periods_array(std::move(recording.periods));
+    result.jump_list = jumps_array(std::move(recording.jumps));
   }
   return result;
 }
@@ -197,6 +201,28 @@ void bind_reports(py::module_& m) {
       .def_readonly("load_torque", &DriveReport::load_torque,
                     "N m, the torque the plate's friction takes from the rollers");
 
+  py::class_<WarmingWindow>(m, "WarmingWindow", "The estimator's accepted periods in a window.")
+      .def_readonly("periods", &WarmingWindow::periods, "how many")
+      .def_readonly("period", &WarmingWindow::period, "s, their mean")
+      .def_readonly("mu_k", &WarmingWindow::mu_k, "from the mean, the paper's formula");
+
+  py::class_<WarmingReport>(m, "WarmingReport",
+                            "Rollers warming over the run (friction.warming): their temperature, "
+                            "mu_k,\nand the mu_k a student computes from the estimator's periods.")
+      .def_readonly("start_temperature", &WarmingReport::start_temperature, "K")
+      .def_readonly("room_temperature", &WarmingReport::room_temperature, "K")
+      .def_readonly("time_constant", &WarmingReport::time_constant, "s")
+      .def_readonly("hold", &WarmingReport::hold, "s at the start temperature first")
+      .def_readonly("mu_k_start", &WarmingReport::mu_k_start)
+      .def_readonly("mu_k_room", &WarmingReport::mu_k_room)
+      .def_readonly("end_temperature", &WarmingReport::end_temperature, "K, at the run's end")
+      .def_readonly("mu_k_end", &WarmingReport::mu_k_end)
+      .def_readonly("mu_k_cold_paper_formula", &WarmingReport::mu_k_cold_paper_formula,
+                    "the paper's formula on rollers that stay at the start's temperature")
+      .def_readonly("first_10_periods", &WarmingReport::first_10_periods, "or None")
+      .def_readonly("first_30_s", &WarmingReport::first_30_s, "or None")
+      .def_readonly("whole_run", &WarmingReport::whole_run, "or None");
+
   py::class_<VideoReport>(m, "VideoReport", "The frames a run drew.")
       .def_readonly("frames", &VideoReport::frames, "title card included")
       .def_readonly("title_frames", &VideoReport::title_frames)
@@ -227,6 +253,10 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("gravity", &S::gravity, "m/s^2")
       .def_readonly("temperature", &S::temperature, "K, of the rollers")
       .def_readonly("clock_error", &S::clock_error, "the sensor board's clock error, or None")
+      .def_readonly("runout", &S::runout, "m, the rollers' run-out, or None for true rollers")
+      .def_readonly("runout_threshold", &S::runout_threshold,
+                    "m, the run-out above which theory has the plate hop, or None")
+      .def_readonly("warming", &S::warming, "rollers warming over the run, or None")
       .def_readonly("time_step", &S::time_step, "s")
       .def_readonly("solver_iterations", &S::solver_iterations, "the iterations the run ended with")
       .def_readonly("solver_iterations_raised", &S::solver_iterations_raised,
@@ -260,6 +290,7 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("jumps", &S::jumps, "lift-offs and landings, or None if it never left")
       .def_readonly("first_jump_time", &S::first_jump_time, "s")
       .def_readonly("longest_jump", &S::longest_jump, "s")
+      .def_readonly("highest_jump", &S::highest_jump, "m, the largest gap under the plate")
       .def_readonly("regime_theory", &S::regime_theory,
                     "the regime the closed forms give, where the run has numbers to hold "
                     "against them")
@@ -335,16 +366,24 @@ A value the run did not measure is None, never 0. str(summary) is the summary
 trajectory: structured array, shape (steps + 1,), the start and every step; fields
   t_s, x_m, z_m, pitch_rad, vx_m_s, vz_m_s, pitch_rate_rad_s, y_m, yaw_rad (the plate's
   centre of mass), and per roller i = 0 (at x = -l/2), 1 (+l/2): touching{i}, stuck{i}
-  (bool), normal{i}_n, friction{i}_n (forces on the plate over the step), penetration{i}_m.
+  (bool), normal{i}_n, friction{i}_n (forces on the plate over the step), penetration{i}_m,
+  gap{i}_m (how far the plate is above the roller).
 hall: structured array, shape (samples,): t_us (uint32, the sensor board's microsecond
   clock) and adc (uint16, counts); None for a scene without a sensor.
 cycles: structured array, shape (cycles,): start_s, period_s, amplitude_m, x_min_m, x_max_m,
   surface_speed_m_s, stick_s (each complete cycle of the plate).
+periods: structured array, shape (periods,): each period the rig's estimator judged, start_s,
+  end_s, period_s, status (0 accepted, 1 an outlier, 2 at a broken turning point); None for a
+  scene without a sensor.
+jump_list: structured array, shape (jumps,): each time the plate left a roller, roller,
+  start_s, end_s, height_m, roller_angle_rad, open (jumps.csv; `jumps` is their count).
 Each is None when the run was made with record=False. Each column (result.trajectory["x_m"])
 is a view, not a copy.)")
       .def_readonly("trajectory", &RunResult::trajectory)
       .def_readonly("hall", &RunResult::hall)
       .def_readonly("cycles", &RunResult::cycles)
+      .def_readonly("periods", &RunResult::periods)
+      .def_readonly("jump_list", &RunResult::jump_list)
       .def_readonly("video", &RunResult::video, "the frames drawn, or None");
 }
 

@@ -186,6 +186,11 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("noise", &SensorDesc::noise, "V rms")
       .def_readonly("jitter", &SensorDesc::jitter, "s rms")
       .def_readonly("clock_error", &SensorDesc::clock_error, "relative");
+  py::class_<WarmingDesc>(scene, "Warming", "friction.warming: rollers warming from the start.")
+      .def_readonly("room", &WarmingDesc::room_temperature, "K")
+      .def_readonly("time_constant", &WarmingDesc::time_constant, "s")
+      .def_readonly("hold", &WarmingDesc::hold, "s at the start temperature first")
+      .def_readonly("mu_k_room", &WarmingDesc::mu_k_room, "mu_k at the room's temperature");
   py::class_<FrictionDesc>(scene, "Friction", "friction: the law between plate and rollers.")
       .def_property_readonly(
           "law", [](const FrictionDesc& f) { return std::string(friction_law_kind_name(f.law)); },
@@ -194,7 +199,8 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("mu_s", &FrictionDesc::mu_s, "the static limit, or None (mu_k)")
       .def_readonly("v_s", &FrictionDesc::v_s, "m/s, the Stribeck speed, or None")
       .def_readonly("beta", &FrictionDesc::beta, "s/m")
-      .def_readonly("temperature", &FrictionDesc::temperature, "K")
+      .def_readonly("temperature", &FrictionDesc::temperature, "K (at the start)")
+      .def_readonly("warming", &FrictionDesc::warming, "or None: the rollers stay at it")
       .def_property_readonly(
           "paper_material",
           [](const FrictionDesc& f) {
@@ -239,7 +245,9 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("trajectory", &OutputDesc::trajectory)
       .def_readonly("hall", &OutputDesc::hall)
       .def_readonly("summary", &OutputDesc::summary)
-      .def_readonly("cycles", &OutputDesc::cycles);
+      .def_readonly("cycles", &OutputDesc::cycles)
+      .def_readonly("periods", &OutputDesc::periods)
+      .def_readonly("jumps", &OutputDesc::jumps);
 
   const auto part = [](auto member) {
     return [member](const LoadedScene& s) -> const auto& {

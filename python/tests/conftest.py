@@ -36,6 +36,12 @@ def cli_json(*args, status=0):
     return json.loads(cli(*args, "--json", status=status).stdout)
 
 
+def pytest_configure(config):
+    # ctest runs the fast set as python_module_test (-m "not slow") and the rest as
+    # python_module_slow_test (-m slow), as the suite's labels split the C++ tests.
+    config.addinivalue_line("markers", "slow: runs many or long simulations (ctest label slow)")
+
+
 @pytest.fixture(scope="session", autouse=True)
 def command_line_built():
     if not CLI.is_file():

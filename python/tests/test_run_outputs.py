@@ -20,7 +20,8 @@ def same_files(a, b):
 @pytest.mark.parametrize("file, overrides", [
     ("minimal.yaml", []),
     ("paper-rig.yaml", []),
-    ("paper-rig.yaml", ["rollers.runout=1mm"]),  # the plate jumps: jumps.csv too
+    # The plate jumps: jumps.csv too.
+    pytest.param("paper-rig.yaml", ["rollers.runout=1mm"], marks=pytest.mark.slow),
 ])
 def test_out_writes_the_commands_files(tmp_path, file, overrides):
     args = [a for o in overrides for a in ("--set", o)]

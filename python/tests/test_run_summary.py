@@ -185,7 +185,12 @@ def case_runs(case):
     return expected, fl.run(fl.load_scene(SCENES / file, set=overrides), seed=seed)
 
 
-@pytest.mark.parametrize("case", sorted(CASES))
+# The regimes beyond the plain oscillation, run-out and warming: the slow set.
+FAST_CASES = {"minimal", "minimal-seed-3", "paper-rig-seed-7"}
+
+
+@pytest.mark.parametrize(
+    "case", [c if c in FAST_CASES else pytest.param(c, marks=pytest.mark.slow) for c in sorted(CASES)])
 def test_summary_equals_the_commands_json(case):
     expected, result = case_runs(case)
     found = summary_keys(result)
@@ -205,6 +210,7 @@ def test_summary_equals_the_commands_json(case):
     assert set(result.json()) - set(expected) == TIMING_KEYS
 
 
+@pytest.mark.slow
 def test_the_cases_show_their_regimes():
     regimes = {case: case_runs(case)[1].regime for case in CASES}
     assert regimes["clipped"] == fl.Regime.CLIPPED

@@ -5,6 +5,8 @@ import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
 
+import pytest
+
 import frictionlab as fl
 from conftest import SCENES, TIMING_KEYS
 
@@ -18,6 +20,7 @@ def deterministic(result):
     return {k: v for k, v in result.json().items() if k not in TIMING_KEYS}
 
 
+@pytest.mark.slow
 def test_four_threads_give_the_serial_results_bit_for_bit():
     scenes = [fl.load_scene(SCENES / "minimal.yaml", set={"world.seed": seed}) for seed in (1, 2)]
     scenes += [fl.load_scene(SCENES / "paper-rig.yaml", set={"world.seed": seed}) for seed in (1, 2)]
@@ -33,6 +36,7 @@ def test_four_threads_give_the_serial_results_bit_for_bit():
     assert not same_bits(serial[0].hall, serial[1].hall)
 
 
+@pytest.mark.slow
 def test_one_scene_in_four_threads_at_once():
     scene = fl.load_scene(SCENES / "minimal.yaml")
     alone = fl.run(scene)

@@ -9,6 +9,8 @@ import pytest
 import frictionlab as fl
 from conftest import SCENES
 
+pytestmark = pytest.mark.slow  # a GL context and a renderer
+
 HAS_VIDEO = os.environ.get("FRICTIONLAB_HAS_VIDEO_MODULE", "1") == "1"
 
 

@@ -10,6 +10,8 @@ import pytest
 import frictionlab as fl
 from conftest import SCENES, cli_json
 
+pytestmark = pytest.mark.slow
+
 SWEEP = """format: 1
 name: tiny
 scene: {scene}

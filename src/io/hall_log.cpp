@@ -121,6 +121,16 @@ std::string shown(double v) {
   return s.str();
 }
 
+// Microseconds since the first sample on a 32-bit clock, as the firmware counts them.
+void stamp_rig_clock(HallLog& log) {
+  const double t0 = log.t_s.front();
+  log.t_us.reserve(log.t_s.size());
+  for (double t : log.t_s) {
+    const auto us = static_cast<uint64_t>(std::llround((t - t0) * 1e6));
+    log.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
+  }
+}
+
 constexpr std::string_view kExpected =
     "a header naming the time and ADC columns (for example \"t_us,adc\", \"t_s,adc\" or "
     "\"time,value\")";
@@ -266,13 +276,44 @@ HallLog parse_hall_log(std::string_view text, const std::string& name) {
     throw fail(log.header_line, 0,
                "no samples after the header: expected lines of " + log.time_column + " and " +
                    log.adc_column + " values");
-  // Microseconds since the first sample on a 32-bit clock, as the firmware counts them.
-  const double t0 = log.t_s.front();
-  log.t_us.reserve(log.t_s.size());
-  for (double t : log.t_s) {
-    const auto us = static_cast<uint64_t>(std::llround((t - t0) * 1e6));
-    log.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
+  stamp_rig_clock(log);
+  return log;
+}
+
+HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>& adc,
+                              const std::string& name) {
+  const auto fail = [&](std::size_t sample, const std::string& what) -> InputError {
+    return InputError(SourceLocation{name, static_cast<int>(sample), 0}, what);
+  };
+  if (t_s.size() != adc.size())
+    throw fail(0, "expected as many ADC values as times, found " + std::to_string(adc.size()) +
+                      " and " + std::to_string(t_s.size()));
+  if (t_s.empty()) throw fail(0, "no samples");
+  HallLog log;
+  log.adc.reserve(adc.size());
+  for (std::size_t i = 0; i < t_s.size(); ++i) {
+    if (!(adc[i] >= 0.0 && adc[i] <= 65535.0))
+      throw fail(i + 1, "sample " + std::to_string(i + 1) +
+                            ": expected an ADC value from 0 to 65535 counts, found " +
+                            shown(adc[i]));
+    log.adc.push_back(static_cast<uint16_t>(std::lround(adc[i])));
+    if (!std::isfinite(t_s[i]))
+      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown(t_s[i]) +
+                            " s is not a finite number");
+    if (i > 0 && !(t_s[i] > t_s[i - 1]))
+      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown(t_s[i]) +
+                            " s is not after the previous sample's " + shown(t_s[i - 1]) +
+                            " s: the times must increase");
   }
+  log.path = name;
+  log.format = "samples";
+  log.time_column = "t";
+  log.adc_column = "adc";
+  log.time_unit = "s";
+  log.t_s = std::move(t_s);
+  log.line.resize(log.t_s.size());
+  for (std::size_t i = 0; i < log.line.size(); ++i) log.line[i] = static_cast<int>(i + 1);
+  stamp_rig_clock(log);
   return log;
 }
 

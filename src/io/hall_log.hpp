@@ -14,7 +14,7 @@ namespace fl {
 
 struct HallLog {
   std::string path;         // as given
-  std::string format;       // "firmware" (the rig firmware's capture) or "csv"
+  std::string format;       // "firmware" (the rig firmware's capture), "csv" or "samples"
   std::string time_column;  // the header's names of the two columns used
   std::string adc_column;
   std::string time_unit;       // "s", "ms" or "us"
@@ -36,5 +36,12 @@ HallLog read_hall_log(const std::string& path);
 
 // The same from text in memory; `name` stands for the file in messages.
 HallLog parse_hall_log(std::string_view text, const std::string& name);
+
+// A log of samples already in memory (times in seconds on any axis, ADC values in counts),
+// checked as a file's are: `name` stands for the file in messages and each sample's 1-based index
+// for its line. Throws InputError for no samples, a length mismatch, times that are not finite or
+// do not increase, or an ADC value outside 0 to 65535 (others are rounded, as a file's are).
+HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>& adc,
+                              const std::string& name);
 
 }  // namespace fl

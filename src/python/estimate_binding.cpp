@@ -1,0 +1,183 @@
+// frictionlab.estimate and estimate_file: T +- dT and mu_k +- d mu_k from a Hall signal by the
+// rig's own estimator (src/estimator/period_estimator.h), as `frictionlab estimate LOG` finds
+// them (lab/log_estimate.hpp): from arrays of times and ADC values, or from a log file.
+#include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <pybind11/numpy.h>
+
+#include "io/hall_log.hpp"
+#include "io/input_error.hpp"
+#include "lab/log_estimate.hpp"
+#include "python/arguments.hpp"
+#include "python/bindings.hpp"
+#include "python/json_values.hpp"
+#include "python/record_arrays.hpp"
+
+namespace fl::python {
+namespace {
+
+// The log and what the estimator made of it.
+struct Estimate {
+  HallLog log;
+  LogEstimate estimate;
+};
+
+fl_estimator::Geometry geometry_argument(const std::string& text) {
+  if (text == "auto") return fl_estimator::kAutoGeometry;
+  if (text == "one") return fl_estimator::kOnePulse;
+  if (text == "pair") return fl_estimator::kPulsePair;
+  throw InputError({}, "geometry: expected auto, one or pair, found \"" + text + "\"");
+}
+
+LogSetUp set_up_argument(const Quantity& spacing, const Quantity& spacing_err,
+                         const Quantity& gravity, const std::string& geometry) {
+  LogSetUp set_up;
+  set_up.spacing = quantity_argument(spacing, Dimension::kLength, "spacing");
+  set_up.spacing_err = quantity_argument(spacing_err, Dimension::kLength, "spacing_err");
+  set_up.gravity = quantity_argument(gravity, Dimension::kAcceleration, "gravity");
+  if (!(set_up.spacing > 0.0) || !std::isfinite(set_up.spacing))
+    throw InputError({}, "spacing: the roller spacing must be a finite positive length");
+  if (!(set_up.spacing_err >= 0.0) || !std::isfinite(set_up.spacing_err))
+    throw InputError({}, "spacing_err: the uncertainty must be a finite length, not negative");
+  if (!(set_up.gravity > 0.0) || !std::isfinite(set_up.gravity))
+    throw InputError({}, "gravity: g must be a finite positive acceleration");
+  set_up.geometry = geometry_argument(geometry);
+  return set_up;
+}
+
+// Runs the estimator; InputError, located in the log, when it gives no T +- dT.
+Estimate estimate_of(HallLog log, const LogSetUp& set_up) {
+  Estimate out{std::move(log), {}};
+  {
+    const py::gil_scoped_release released;
+    out.estimate = estimate_log(out.log, set_up, false);
+  }
+  require_periods(out.log, out.estimate, "");
+  return out;
+}
+
+using Samples = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::vector<double> doubles(const Samples& a, const char* name) {
+  if (a.ndim() != 1)
+    throw py::type_error(std::string(name) + ": expected a one-dimensional array of numbers");
+  return std::vector<double>(a.data(), a.data() + a.size());
+}
+
+py::array pulses_array(std::vector<EstimatedPulse> pulses) {
+  return rows_array(std::move(pulses), {{"time_s", "<f8", offsetof(EstimatedPulse, time)},
+                                        {"rise_s", "<f8", offsetof(EstimatedPulse, rise)},
+                                        {"fall_s", "<f8", offsetof(EstimatedPulse, fall)},
+                                        {"peak", "<i4", offsetof(EstimatedPulse, peak)},
+                                        {"distorted", "?", offsetof(EstimatedPulse, distorted)}});
+}
+
+}  // namespace
+
+void bind_estimate(py::module_& m) {
+  using E = Estimate;
+  const auto stat = [](auto member) {
+    return [member](const E& e) { return static_cast<double>(e.estimate.stats.*member); };
+  };
+  py::class_<E>(m, "Estimate", R"(What the rig's estimator found in a Hall signal (SI).
+
+The period T +- dT (dT the standard deviation of the accepted periods) and mu_k +- d mu_k
+through the paper's formula, as `frictionlab estimate` reports them; the estimator holds them
+in single precision, as the rig's Arduino does. json() is the object
+`frictionlab estimate --json` prints (without "plot").)")
+      .def_property_readonly("period", stat(&fl_estimator::Stats::period_s), "s, the mean")
+      .def_property_readonly("period_std", stat(&fl_estimator::Stats::period_std_s),
+                             "s, the standard deviation of the accepted periods")
+      .def_property_readonly("period_std_error", stat(&fl_estimator::Stats::period_sem_s),
+                             "s, the standard error of the mean")
+      .def_property_readonly(
+          "periods_used", [](const E& e) { return e.estimate.stats.periods_used; }, "accepted")
+      .def_property_readonly(
+          "periods_discarded", [](const E& e) { return e.estimate.stats.periods_discarded; },
+          "outliers and periods at broken turning points")
+      .def_property_readonly("mu_k", stat(&fl_estimator::Stats::mu_k),
+                             "2 pi^2 l / (g T^2), the paper's formula")
+      .def_property_readonly("mu_k_err_worst", stat(&fl_estimator::Stats::mu_k_err_worst),
+                             "mu_k (dl/l + 2 dT/T), the paper's form")
+      .def_property_readonly("mu_k_err_quadrature", stat(&fl_estimator::Stats::mu_k_err_quadrature),
+                             "mu_k sqrt((dl/l)^2 + (2 dT/T)^2)")
+      .def_property_readonly(
+          "geometry", [](const E& e) { return std::string(geometry_name(e.estimate.geometry)); },
+          "\"one-pulse\" or \"pair\" (pulses per period)")
+      .def_property_readonly(
+          "polarity", [](const E& e) { return e.estimate.polarity; }, "+1 or -1")
+      .def_property_readonly(
+          "baseline", [](const E& e) { return e.estimate.baseline; }, "counts, at the end")
+      .def_property_readonly(
+          "outliers", [](const E& e) { return e.estimate.outliers; },
+          "periods rejected as too far from the running median")
+      .def_property_readonly(
+          "duration", [](const E& e) { return e.estimate.duration; }, "s, first to last sample")
+      .def_property_readonly(
+          "sample_rate", [](const E& e) { return e.estimate.sample_rate; }, "Hz, mean")
+      .def_property_readonly(
+          "spacing", [](const E& e) { return e.estimate.set_up.spacing; }, "l [m]")
+      .def_property_readonly(
+          "spacing_err", [](const E& e) { return e.estimate.set_up.spacing_err; }, "dl [m]")
+      .def_property_readonly(
+          "gravity", [](const E& e) { return e.estimate.set_up.gravity; }, "g [m/s^2]")
+      .def_property_readonly(
+          "pulses", [](const E& e) { return pulses_array(e.estimate.pulses); },
+          "structured array, shape (pulses,): time_s (the turning point, for one pulse per\n"
+          "period), rise_s and fall_s (the timing level's crossings), peak (counts), distorted")
+      .def_property_readonly(
+          "periods",
+          [](const E& e) {
+            return periods_array(std::vector<EstimatedPeriod>(e.estimate.periods));
+          },
+          "structured array, shape (periods,): start_s, end_s, period_s and status (0 "
+          "accepted,\n1 an outlier, 2 at a broken turning point)")
+      .def(
+          "json", [](const E& e) { return python_value(log_estimate_json(e.log, e.estimate)); },
+          "The object `frictionlab estimate --json` prints, without \"plot\".")
+      .def("__repr__", [](const E& e) {
+        const fl_estimator::Stats& s = e.estimate.stats;
+        return "<frictionlab.Estimate T = " +
+               py::repr(py::float_(static_cast<double>(s.period_s))).cast<std::string>() +
+               " s from " + std::to_string(s.periods_used) + " periods, mu_k = " +
+               py::repr(py::float_(static_cast<double>(s.mu_k))).cast<std::string>() + ">";
+      });
+
+  m.def(
+      "estimate",
+      [](const Samples& t, const Samples& adc, const Quantity& spacing, const Quantity& spacing_err,
+         const Quantity& gravity, const std::string& geometry, const std::string& name) {
+        const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
+        return estimate_of(hall_log_from_samples(doubles(t, "t"), doubles(adc, "adc"), name),
+                           set_up);
+      },
+      py::arg("t"), py::arg("adc"), py::kw_only(), py::arg("spacing") = "89 mm",
+      py::arg("spacing_err") = "2 mm", py::arg("gravity") = "9.81 m/s^2",
+      py::arg("geometry") = "auto", py::arg("name") = "samples",
+      R"(T +- dT and mu_k +- d mu_k from a Hall signal, by the rig's own estimator.
+
+t: sample times [s], increasing (e.g. result.hall["t_us"] * 1e-6); adc: the ADC values
+[counts, 0 to 65535], one per time. spacing, spacing_err, gravity: l, dl and g for mu_k
+(text with units or SI numbers). geometry: pulses per period, "auto" (recognised),
+"one" or "pair". Raises InputError, as `frictionlab estimate` fails, when the signal gives no
+T +- dT (saying what it found); its line is the 1-based sample index, `name` its file.)");
+  m.def(
+      "estimate_file",
+      [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
+         const Quantity& gravity, const std::string& geometry) {
+        const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
+        return estimate_of(read_hall_log(path.string()), set_up);
+      },
+      py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm", py::arg("spacing_err") = "2 mm",
+      py::arg("gravity") = "9.81 m/s^2", py::arg("geometry") = "auto",
+      R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
+
+The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",
+"t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...). Arguments as estimate.
+Raises InputError located in the log (file:line:column).)");
+}
+
+}  // namespace fl::python

@@ -345,6 +345,7 @@ class RunSummary:
     min_normal_force: float
     max_penetration: float
     failure: Optional[str]
+    interrupted_at: Optional[float]
     condition_period: float
     condition_spacing: float
     condition_h_c: float

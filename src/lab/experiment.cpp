@@ -330,8 +330,10 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   } else {
     // mu_k as the rig would report it: from the estimator's period; from the trajectory's when
     // the scene has no sensor or its estimator accepted no period.
-    if (out.estimator && out.estimator->periods_used > 0) {
-      out.mu_k_estimator = out.estimator->mu_k;
+    // The estimator's mu_k from one accepted period on; its uncertainty, from the periods'
+    // spread, from two.
+    if (out.estimator && out.estimator->periods_used > 0) out.mu_k_estimator = out.estimator->mu_k;
+    if (out.estimator && out.estimator->periods_used >= 2) {
       out.mu_k_err_worst = out.estimator->mu_k_err_worst;
       out.mu_k_err_quadrature = out.estimator->mu_k_err_quadrature;
     }

@@ -15,10 +15,10 @@ std::optional<double> relative_error(const std::optional<double>& value,
   return *value / *reference - 1.0;
 }
 
-// A value of the estimator's report, or null without an estimator or an accepted period.
+// A spread of the estimator's periods, or null without two accepted periods to give one.
 template <typename Get>
 json from_estimator(const RunSummary& s, Get get) {
-  return s.estimator && s.estimator->periods_used > 0 ? json(get(*s.estimator)) : json(nullptr);
+  return s.estimator && s.estimator->periods_used >= 2 ? json(get(*s.estimator)) : json(nullptr);
 }
 
 // Where mu_k came from when not from the rig's estimator (left out when it did).

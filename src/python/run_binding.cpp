@@ -334,6 +334,8 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("min_normal_force", &S::min_normal_force, "N, over the run")
       .def_readonly("max_penetration", &S::max_penetration, "m")
       .def_readonly("failure", &S::failure, "what stopped the run, or None")
+      .def_readonly("interrupted_at", &S::interrupted_at,
+                    "s: where an interrupt ended the run before its duration, or None")
       .def_readonly("condition_period", &S::condition_period, "d ln mu / d ln T (thick formula)")
       .def_readonly("condition_spacing", &S::condition_spacing, "d ln mu / d ln l")
       .def_readonly("condition_h_c", &S::condition_h_c, "d ln mu / d ln h_c")

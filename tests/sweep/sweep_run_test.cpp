@@ -117,7 +117,7 @@ TEST(SweepRun, FailingPointsAreRecordedAndTheSweepGoesOn) {
       "format: 1\nscene: ../minimal.yaml\nset:\n  world.duration: 2 s\n"
       "axes:\n"
       "  - key: rollers.spacing\n    values: [89 mm, 15 mm, abc]\n"
-      "  - key: world.time_step\n    values: [1 ms, 0.3 s]\n");
+      "  - key: world.time_step\n    values: [1 ms, 0.15 s]\n");
   const fs::path dir = folder("out");
   const SweepOutcome o = run(spec, dir, 2);
   ASSERT_TRUE(o.complete);
@@ -125,7 +125,7 @@ TEST(SweepRun, FailingPointsAreRecordedAndTheSweepGoesOn) {
   ASSERT_EQ(rows.size(), 6u);
   EXPECT_EQ(rows[0]["status"], "ok");
   EXPECT_EQ(rows[0]["regime"], "oscillates");
-  // The physics blows up at a 0.3 s step: a guard stops the run, recorded as failed.
+  // The physics blows up at a 0.15 s step: a guard stops the run, recorded as failed.
   EXPECT_EQ(rows[1]["status"], "failed");
   EXPECT_NE(rows[1]["error"].get<std::string>().find("time step"), std::string::npos) << rows[1];
   // An impossible set-up and a bad value: invalid, with the loader's located message.

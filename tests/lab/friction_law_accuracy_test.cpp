@@ -19,9 +19,7 @@ namespace {
 
 // The minimal scene without its sensor: the trajectory is what is compared.
 Scene minimal(std::vector<SceneOverride> overrides) {
-  Scene s = test::scene_file("minimal.yaml", overrides);
-  s.sensor.reset();
-  return s;
+  return test::minimal_without_sensor(overrides);
 }
 
 PlateOnRollers plate_of(const CompiledRig& rig) {

@@ -18,9 +18,7 @@ namespace {
 
 // The minimal scene without its sensor: the trajectory is what is compared.
 Scene minimal(std::vector<SceneOverride> overrides) {
-  Scene s = test::scene_file("minimal.yaml", overrides);
-  s.sensor.reset();
-  return s;
+  return test::minimal_without_sensor(overrides);
 }
 
 // The smallest normal force either roller gave over a run (after the first step's contact), as a

@@ -32,4 +32,11 @@ inline Scene scene_file(const std::string& name, std::span<const SceneOverride> 
       []() -> const assets::PartCatalog& { return part_catalog(); });
 }
 
+// The minimal scene without its sensor, overrides applied: for tests that compare the trajectory.
+inline Scene minimal_without_sensor(std::span<const SceneOverride> overrides = {}) {
+  Scene s = scene_file("minimal.yaml", overrides);
+  s.sensor.reset();
+  return s;
+}
+
 }  // namespace fl::test

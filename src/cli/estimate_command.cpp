@@ -96,9 +96,9 @@ int run_estimate(const EstimateOptions& o) {
   const fl_estimator::Stats& s = est.stats;
   fmt::print("frictionlab estimate: {}\n", log.path);
   fmt::print("  log                  {}, {} samples over {:.3f} s at {:.0f} Hz (columns {}, {})\n",
-             log.format == "firmware" ? "the rig firmware's serial output" : "CSV", log.adc.size(),
-             est.duration, est.sample_rate, log.time_column, log.adc_column);
-  if (log.unfinished_last_line)
+             log.reading.format == "firmware" ? "the rig firmware's serial output" : "CSV", log.adc.size(),
+             est.duration, est.sample_rate, log.reading.time_column, log.reading.adc_column);
+  if (log.reading.unfinished_last_line)
     fmt::print("                       (its last line, cut off without a newline, left out)\n");
   fmt::print("  signal               polarity {:+d}, baseline {:.1f} counts, {} pulses{}\n",
              est.polarity, est.baseline, s.pulses,

@@ -164,9 +164,9 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   const fl_estimator::Stats& s = est.stats;
   nlohmann::json out = verdict_json(est);
   out["log"] = log.path;
-  out["format"] = log.format;
-  out["time_column"] = log.time_column;
-  out["adc_column"] = log.adc_column;
+  out["format"] = log.reading.format;
+  out["time_column"] = log.reading.time_column;
+  out["adc_column"] = log.reading.adc_column;
   out["samples"] = log.adc.size();
   out["duration_s"] = est.duration;
   out["sample_rate_hz"] = est.sample_rate;
@@ -180,7 +180,7 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   out["spacing_m"] = est.set_up.spacing;
   out["spacing_err_m"] = est.set_up.spacing_err;
   out["gravity_m_s2"] = est.set_up.gravity;
-  out["unfinished_last_line"] = log.unfinished_last_line;
+  out["unfinished_last_line"] = log.reading.unfinished_last_line;
   out["periods"] = periods_json(est);
   return out;
 }

@@ -76,6 +76,9 @@ LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces
   const fl_estimator::PeriodEstimator& e = host.estimator();
   for (std::size_t i = 0; i < log.adc.size(); ++i) {
     if (host.add(log.t_us[i], log.adc[i]) & fl_estimator::kSignalLearned) out.learned = true;
+    // The baseline is frozen during a pulse: the one after it is the one it was timed from.
+    while (out.pulse_baseline.size() < host.pulses().size())
+      out.pulse_baseline.push_back(e.baseline());
     if (traces) {
       const bool known = e.phase() != fl_estimator::kLearning;
       const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -160,13 +163,46 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                     s.pulses, est.periods.size(), s.periods_used, s.periods_discarded, note));
 }
 
+nlohmann::json log_reading_json(const HallLog& log) {
+  const HallLogReading& r = log.reading;
+  const auto lines = [](const LineTally& t) { return nlohmann::json(t.first); };
+  const auto text_or_null = [](const std::string& s) {
+    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s);
+  };
+  return {
+      {"log", log.path},
+      {"file", log.file},
+      {"format", r.format},
+      {"encoding", log.encoding},
+      {"columns_from", r.columns_from},
+      {"time_column", text_or_null(r.time_column)},
+      {"adc_column", r.adc_column},
+      {"time_unit", text_or_null(r.time_unit)},
+      {"time_unit_from", r.time_unit_from},
+      {"rate_hz", r.rate_hz > 0.0 ? nlohmann::json(r.rate_hz) : nlohmann::json(nullptr)},
+      {"header_line", r.header_line > 0 ? nlohmann::json(r.header_line) : nlohmann::json(nullptr)},
+      {"first_line", r.first_line},
+      {"lines_skipped", r.lines_skipped},
+      {"comment_lines", r.comment_lines},
+      {"lines_corrupted", r.corrupted.count},
+      {"lines_corrupted_first", lines(r.corrupted)},
+      {"times_repeated", r.repeated_times.count},
+      {"times_repeated_first", lines(r.repeated_times)},
+      {"times_out_of_order", r.out_of_order.count},
+      {"times_out_of_order_first", lines(r.out_of_order)},
+      {"ide_timestamps", r.ide_timestamps},
+      {"decimal_comma", r.decimal_comma},
+      {"clock_wraps", r.clock_wraps},
+      {"runs", r.segments},
+      {"run_used", log.segment + 1},
+      {"samples_in_other_runs", log.segment_samples_left_out},
+      {"unfinished_last_line", r.unfinished_last_line}};
+}
+
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   const fl_estimator::Stats& s = est.stats;
   nlohmann::json out = verdict_json(est);
-  out["log"] = log.path;
-  out["format"] = log.reading.format;
-  out["time_column"] = log.reading.time_column;
-  out["adc_column"] = log.reading.adc_column;
+  out.update(log_reading_json(log));
   out["samples"] = log.adc.size();
   out["duration_s"] = est.duration;
   out["sample_rate_hz"] = est.sample_rate;
@@ -177,10 +213,11 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   out["pulses_unused"] = s.unused_pulses;
   out["restarts"] = s.restarts;
   out["periods_outliers"] = est.outliers;
+  out["geometry_from"] =
+      est.set_up.geometry == fl_estimator::kAutoGeometry ? "recognised" : "--geometry";
   out["spacing_m"] = est.set_up.spacing;
   out["spacing_err_m"] = est.set_up.spacing_err;
   out["gravity_m_s2"] = est.set_up.gravity;
-  out["unfinished_last_line"] = log.reading.unfinished_last_line;
   out["periods"] = periods_json(est);
   return out;
 }

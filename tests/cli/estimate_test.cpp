@@ -173,12 +173,13 @@ TEST_F(Estimate, BadLogsExitWithStatusTwoAndSayWhatWasFound) {
   };
   const std::string dir = dir_.string();
   for (const Case& c : {
+           // No header: read by position, the time in microseconds (1 kHz); no pulse in it.
            Case{write("numbers.csv", "0,512\n1000,513\n"),
-                dir + "/numbers.csv:1:1: error: expected a header naming the time and ADC"},
+                dir + "/numbers.csv:1: error: no pulse in 2 samples"},
            Case{write("text.csv", "t_us,adc\n0,512\nabc,513\n"),
                 dir + "/text.csv:3:1: error: column \"t_us\": expected a number, found \"abc\""},
            Case{write("back.csv", "t_s,adc\n0.1,512\n0.3,513\n0.2,514\n"),
-                dir + "/back.csv:4:1: error: time 0.2 s is not after the previous sample's 0.3 s"},
+                dir + "/back.csv:3:1: error: time 0.3 s is ahead of the next sample's 0.2 s"},
            Case{write("empty.csv", ""), dir + "/empty.csv:1: error: the log is empty"},
            Case{write_csv("flat.csv", test::generate(flat), "t_us,adc", false),
                 dir + "/flat.csv:2: error: no pulse in 5000 samples"},

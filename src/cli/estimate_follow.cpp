@@ -95,37 +95,38 @@ class LiveEstimate {
     host_ = std::make_unique<HostEstimator>(set_up_.config());
     periods_shown_ = 0;
     t0_.reset();
+    samples_ = HallLog{};
+    doubt_.clear();
   }
 
   void add(const LogSample& s) {
     if (!t0_) t0_ = s.t_s;
     const auto us = static_cast<uint64_t>(std::llround((s.t_s - *t0_) * 1e6));
-    const uint8_t events = host_->add(static_cast<uint32_t>(us & 0xFFFFFFFFu), s.adc);
+    samples_.t_s.push_back(s.t_s);
+    samples_.adc.push_back(s.adc);
+    samples_.line.push_back(s.line);
+    samples_.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
+    const uint8_t events = host_->add(samples_.t_us.back(), s.adc);
     if (quiet_ || events == fl_estimator::kNoEvent) return;
     const fl_estimator::PeriodEstimator& e = host_->estimator();
     if (events & fl_estimator::kSignalLearned)
-      say(fmt::format("  signal learned        polarity {:+d}, baseline {:.1f} counts (line {})",
-                      e.polarity(), e.baseline(), s.line));
-    if (events & fl_estimator::kGeometryFound) {
-      const bool pair = e.geometry() == fl_estimator::kPulsePair;
-      say(fmt::format("  geometry              {}{}",
-                      pair ? "a pair of pulses per period" : "one pulse per period",
-                      !pair && set_up_.geometry == fl_estimator::kAutoGeometry
-                          ? " (evenly spaced pulses: their shape is checked at the end)"
-                          : ""));
-    }
-    if (events & fl_estimator::kRestart) say("  signal lost           learning it again");
+      say(fmt::format("  {:<20}  polarity {:+d}, baseline {:.1f} counts (line {})",
+                      "signal learned", e.polarity(), e.baseline(), s.line));
+    if (events & fl_estimator::kGeometryFound) geometry_found();
+    if (events & fl_estimator::kRestart)
+      say(fmt::format("  {:<20}  learning it again", "signal lost"));
+    // The periods judged in this sample; the running statistics after the last of them.
     const std::vector<EstimatedPeriod>& periods = host_->periods();
     for (; periods_shown_ < periods.size(); ++periods_shown_) {
       const EstimatedPeriod& p = periods[periods_shown_];
       const fl_estimator::Stats st = e.stats();
-      std::string running = "no period accepted yet";
-      if (st.periods_used > 0)
+      std::string running;
+      if (periods_shown_ + 1 == periods.size() && st.periods_used > 0 && doubt_.empty())
         running =
-            fmt::format("T = {:.6f} +- {:.6f} s (N = {}), mu_k = {:.4f} +- {:.4f}", st.period_s,
+            fmt::format("  T = {:.6f} +- {:.6f} s (N = {}), mu_k = {:.4f} +- {:.4f}", st.period_s,
                         st.period_std_s, st.periods_used, st.mu_k, st.mu_k_err_worst);
-      say(fmt::format("  period {:<4}           {:.6f} s {:<8}  {}", periods_shown_ + 1, p.period,
-                      period_status_name(p.status), running));
+      say(fmt::format("  {:<20}  {:.6f} s {}{}", fmt::format("period {}", periods_shown_ + 1),
+                      p.period, period_status_name(p.status), running));
     }
   }
 
@@ -135,11 +136,33 @@ class LiveEstimate {
     std::fflush(stdout);
   }
 
+  // Evenly spaced pulses read as one per period: are they shaped like a turn? (The periods'
+  // alternation needs more of them than there are yet: the summary checks it.)
+  void geometry_found() {
+    const bool pair = host_->estimator().geometry() == fl_estimator::kPulsePair;
+    doubt_.clear();
+    if (!pair && set_up_.geometry == fl_estimator::kAutoGeometry) {
+      const GeometryCheck check = check_geometry(samples_, estimate_log(samples_, set_up_, false));
+      if (check.verdict != "turn") doubt_ = check.reason;
+    }
+    if (doubt_.empty()) {
+      say(fmt::format("  {:<20}  {}", "geometry",
+                      pair ? "a pair of pulses per period" : "one pulse per period"));
+      return;
+    }
+    say(
+        fmt::format("  {:<20}  evenly spaced pulses, one per period or two: {}; T is the "
+                    "interval below or twice it (give --geometry one or pair)",
+                    "geometry", doubt_));
+  }
+
   LogSetUp set_up_;
   bool quiet_ = false;
   std::unique_ptr<HostEstimator> host_;
   std::size_t periods_shown_ = 0;
   std::optional<double> t0_;
+  HallLog samples_;    // so far, for the geometry's check
+  std::string doubt_;  // why evenly spaced pulses may be two per period ("" : no doubt)
 };
 
 }  // namespace
@@ -169,7 +192,8 @@ int follow_rig(const FollowRequest& request) {
         segment = s.segment;
         samples.clear();
         live.reset();
-        if (!request.json) fmt::print("  the board restarted   a new run from line {}\n", s.line);
+        if (!request.json)
+          fmt::print("  {:<20}  a new run from line {}\n", "board restarted", s.line);
       }
       samples.push_back(s);
       live.add(s);
@@ -210,7 +234,7 @@ int follow_rig(const FollowRequest& request) {
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                     request.baud));
   if (!request.json) {
-    fmt::print("  {}                  {} lines received\n",
+    fmt::print("  {:<20}  {} lines received\n",
                stop_requested ? "stopped"
                : open         ? "time up"
                               : "port closed",
@@ -221,9 +245,10 @@ int follow_rig(const FollowRequest& request) {
   take();
 
   // The summary: the same as `estimate LOG` on the lines received.
+  // Messages locate lines in the raw log, which holds them as received.
   HallLog log;
-  log.path = request.port;
-  log.file = request.raw_log.empty() ? request.port : request.raw_log;
+  log.path = request.raw_log.empty() ? request.port : request.raw_log;
+  log.file = log.path;
   log.encoding = "utf-8";
   log.reading = reader.reading();
   log.segment = segment;

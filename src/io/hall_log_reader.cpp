@@ -22,10 +22,23 @@ constexpr double kHighestRate = 20000.0;
 // Headerless logs: lines of numbers in a row that make the first one the start.
 constexpr std::size_t kConfirmingLines = 3;
 
+// A field or line for a message: bytes that are not printable ASCII (garbage from a reset, a
+// wrong baud rate) as \xNN.
 std::string quoted(std::string_view s) {
   constexpr std::size_t kMax = 60;
+  constexpr char kHex[] = "0123456789abcdef";
   std::string out = "\"";
-  out += s.size() > kMax ? std::string(s.substr(0, kMax)) + "..." : std::string(s);
+  for (std::size_t i = 0; i < s.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    }
+  }
+  if (s.size() > kMax) out += "...";
   out += '"';
   return out;
 }

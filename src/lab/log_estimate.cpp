@@ -147,13 +147,31 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                                    "row to tell one pulse per period from a pair; record more "
                                    "periods{}",
                                    est.pulses.size(), intervals, note));
+    // Do the intervals alternate (the 1st and 3rd of each four both shorter, or both longer,
+    // than the 2nd and 4th)? Then the pulses are two per period, too wide a pair to recognise.
+    int alternating = 0;
+    int windows = 0;
+    for (std::size_t i = 4; i < est.pulses.size(); ++i, ++windows) {
+      double iv[4];
+      for (std::size_t k = 0; k < 4; ++k)
+        iv[k] = est.pulses[i - 3 + k].time - est.pulses[i - 4 + k].time;
+      const bool ordered = std::max(iv[0], iv[2]) < std::min(iv[1], iv[3]) ||
+                           std::max(iv[1], iv[3]) < std::min(iv[0], iv[2]);
+      alternating += ordered ? 1 : 0;
+    }
+    const std::string advice =
+        2 * alternating > windows
+            ? "they alternate short and long: two pulses per period (the magnet passing the "
+              "sensor and back, a sensor inside the turning point or near the middle of the "
+              "travel), too wide a pair to recognise on its own: give --geometry pair"
+            : "they are irregular (spurious pulses, the plate jumping, a weak or noisy signal): "
+              "--plot FILE.png shows them";
     throw InputError(
         at_pulse,
         fmt::format("{} pulses, but no two turning points: the intervals between pulses ({} s) fit "
                     "neither one pulse per period (equal intervals) nor a close pair per period "
-                    "(alternating short and long, the short under 0.6 of the long); with the "
-                    "sensor near the middle of the motion give --geometry pair{}",
-                    est.pulses.size(), intervals, note));
+                    "(alternating short and long, the short under 0.6 of the long); {}{}",
+                    est.pulses.size(), intervals, advice, note));
   }
   if (s.periods_used < 2)
     throw InputError(

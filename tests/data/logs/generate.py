@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Writes the Hall-log corpus of this folder from two simulated runs of the paper's rig with a
-plate of rigid foam (mu_k 1.75 in the paper's Table I: T = 0.3016 s, so a few seconds hold enough
+plate of rigid foam (mu_k 1.7 in the paper's Table I: T = 0.3016 s, so a few seconds hold enough
 periods), sampled at 500 Hz for 3 s:
 
   frictionlab run scenes/paper-rig.yaml --set friction.mu_k=rigid-foam \

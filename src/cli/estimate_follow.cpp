@@ -174,7 +174,8 @@ int follow_rig(const FollowRequest& request) {
     throw InputError({}, "--duration: expected a positive time, such as 30s");
   SerialPort port(request.port, static_cast<int>(request.baud));
   RawLog raw(request.raw_log);
-  HallLogReader reader(request.port, request.reading);
+  // Messages locate lines in the raw log, which holds them as received.
+  HallLogReader reader(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
   LiveEstimate live(request.set_up, request.json);
   const StopOnSignal stop;
 

@@ -134,7 +134,7 @@ bool HallLogReader::start(std::string_view text, std::size_t offset, int number)
       if (used) sample = parse_log_number(fields[i].text, delimiter, &v, nullptr);
     }
     if (!sample) {
-      ++reading_.lines_skipped;
+      skip(text);
       return false;
     }
     delimiter_ = delimiter;
@@ -157,11 +157,11 @@ bool HallLogReader::start(std::string_view text, std::size_t offset, int number)
     numeric = numeric && parse_log_number(f.text, delimiter, &v, nullptr);
   if (!candidates_.empty() && (!numeric || fields.size() != candidates_.front().fields ||
                                delimiter != candidates_.front().delimiter)) {
-    reading_.lines_skipped += static_cast<int>(candidates_.size());
+    for (const Candidate& c : candidates_) skip(c.text);
     candidates_.clear();
   }
   if (!numeric) {
-    ++reading_.lines_skipped;
+    skip(text);
     return false;
   }
   candidates_.push_back({std::string(text), offset, number, fields.size(), delimiter});
@@ -281,6 +281,10 @@ void HallLogReader::start_by_position() {
   set_unit();
   const std::vector<Candidate> lines = std::exchange(candidates_, {});
   for (const Candidate& c : lines) data_line(c.text, c.offset, c.number, false);
+}
+
+void HallLogReader::skip(std::string_view text) {
+  if (reading_.lines_skipped++ == 0) first_skipped_ = std::string(trim(text));
 }
 
 void HallLogReader::set_unit() {
@@ -494,6 +498,7 @@ void HallLogReader::finish() {
       throw InputError(top, "the log has only comment lines: expected " + kExpected);
     throw InputError(top, "none of the log's " + std::to_string(reading_.lines_skipped) +
                               " lines is a header or a sample: expected " + kExpected +
+                              ", found lines such as " + quoted(first_skipped_) +
                               "; for a log without a header, name its fields in order with "
                               "--columns (for example --columns t_ms,adc)");
   }

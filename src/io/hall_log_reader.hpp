@@ -118,6 +118,7 @@ class HallLogReader {
   bool try_header(std::string_view text, int number);
   void start_by_position();
   void set_unit();
+  void skip(std::string_view text);
   bool is_header_again(std::string_view content) const;
   void data_line(std::string_view text, std::size_t offset, int number, bool unfinished);
   void timed(double reading, std::uint16_t adc, int line, int column);
@@ -133,7 +134,8 @@ class HallLogReader {
   bool started_ = false;
   char delimiter_ = 0;
   ColumnLayout layout_;
-  std::string header_text_;  // the header as written, to recognise it again
+  std::string header_text_;    // the header as written, to recognise it again
+  std::string first_skipped_;  // the first line skipped before the log, for messages
   std::vector<Candidate> candidates_;
   Problem first_corrupted_;
   Problem first_repeated_;

@@ -142,7 +142,7 @@ int run_estimate(const EstimateOptions& o) {
   require_geometry(log, est, check, plot_note);
 
   if (o.json) {
-    fmt::print("{}\n", estimate_json(log, est, check, o.plot).dump(2));
+    fmt::print("{}\n", estimate_json(log, est, o.plot).dump(2));
     return 0;
   }
   print_estimate(log, est, check, o.plot);

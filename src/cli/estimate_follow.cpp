@@ -6,7 +6,6 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -14,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "cli/estimate_report.hpp"
+#include "cli/stop_signals.hpp"
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
 #include "lab/geometry_check.hpp"
@@ -21,37 +21,6 @@
 
 namespace fl::cli {
 namespace {
-
-volatile std::sig_atomic_t stop_requested = 0;
-
-void request_stop(int /*signal*/) {
-  stop_requested = 1;
-}
-
-// Ctrl-C (and a termination request) end the capture; the summary follows. Restores the
-// previous handlers when it goes.
-class StopOnSignal {
- public:
-  StopOnSignal() {
-    stop_requested = 0;
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = 0;  // no SA_RESTART: a signal cuts the wait for the port short
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopOnSignal() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopOnSignal(const StopOnSignal&) = delete;
-  StopOnSignal& operator=(const StopOnSignal&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
-};
 
 // The lines received, written as they come: each line whole, with write(2) and no buffer, so
 // the file holds everything received up to any moment the capture ends, however it ends.
@@ -177,7 +146,8 @@ int follow_rig(const FollowRequest& request) {
   // Messages locate lines in the raw log, which holds them as received.
   HallLogReader reader(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
   LiveEstimate live(request.set_up, request.json);
-  const StopOnSignal stop;
+  // Ctrl-C (or SIGTERM) ends the capture, and the summary follows: the normal end, exit 0.
+  const StopSignals stop;
 
   if (!request.json) {
     fmt::print("frictionlab estimate --follow {} at {:.0f} baud{}: Ctrl-C ends it\n", request.port,
@@ -206,7 +176,7 @@ int follow_rig(const FollowRequest& request) {
   std::size_t received = 0;
   int number = 0;
   bool open = true;
-  while (open && !stop_requested) {
+  while (open && !stop_requested()) {
     if (request.duration_s) {
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -236,9 +206,9 @@ int follow_rig(const FollowRequest& request) {
                     request.baud));
   if (!request.json) {
     fmt::print("  {:<20}  {} lines received\n",
-               stop_requested ? "stopped"
-               : open         ? "time up"
-                              : "port closed",
+               stop_requested() ? "stopped"
+               : open           ? "time up"
+                                : "port closed",
                number);
     std::fflush(stdout);
   }
@@ -275,7 +245,7 @@ int follow_rig(const FollowRequest& request) {
   const GeometryCheck check = check_geometry(log, est);
   require_geometry(log, est, check, note);
   if (request.json) {
-    nlohmann::json out = estimate_json(log, est, check, request.plot);
+    nlohmann::json out = estimate_json(log, est, request.plot);
     out["raw_log"] =
         request.raw_log.empty() ? nlohmann::json(nullptr) : nlohmann::json(request.raw_log);
     fmt::print("{}\n", out.dump(2));

@@ -123,20 +123,8 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
   if (!plot.empty()) fmt::print("  plot                 {}\n", plot);
 }
 
-nlohmann::json estimate_json(const HallLog& log, const LogEstimate& est, const GeometryCheck& check,
-                             const std::string& plot) {
+nlohmann::json estimate_json(const HallLog& log, const LogEstimate& est, const std::string& plot) {
   nlohmann::json out = log_estimate_json(log, est);
-  if (check.needed) {
-    out["geometry_check"] = {{"verdict", check.verdict},
-                             {"pulse_shape_ratio", json_or_null(check.shape_ratio)},
-                             {"shape_pulses", check.shape_pulses},
-                             {"samples_across_pulse", json_or_null(check.samples_across)},
-                             {"alternation_s", json_or_null(check.alternation_s)},
-                             {"alternation_err_s", json_or_null(check.alternation_err_s)},
-                             {"alternation_triples", check.alternation_triples}};
-  } else {
-    out["geometry_check"] = nullptr;
-  }
   out["plot"] = json_or_null(plot.empty() ? std::nullopt : std::optional<std::string>(plot));
   return out;
 }

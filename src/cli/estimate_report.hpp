@@ -17,9 +17,8 @@ namespace fl::cli {
 void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCheck& check,
                     const std::string& plot);
 
-// The JSON object: lab's log_estimate_json with "geometry_check" and "plot".
-nlohmann::json estimate_json(const HallLog& log, const LogEstimate& est, const GeometryCheck& check,
-                             const std::string& plot);
+// The JSON object: lab's log_estimate_json with "plot".
+nlohmann::json estimate_json(const HallLog& log, const LogEstimate& est, const std::string& plot);
 
 // "lines 12, 40, 977, ..." for the first lines of a kind.
 std::string line_list(const LineTally& tally);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "io/json_value.hpp"
 
 namespace fl {
 namespace {
@@ -172,6 +173,17 @@ GeometryCheck check_geometry(const HallLog& log, const LogEstimate& est) {
     check.verdict = "turn";
   }
   return check;
+}
+
+nlohmann::json geometry_check_json(const GeometryCheck& check) {
+  if (!check.needed) return nullptr;
+  return {{"verdict", check.verdict},
+          {"pulse_shape_ratio", json_or_null(check.shape_ratio)},
+          {"shape_pulses", check.shape_pulses},
+          {"samples_across_pulse", json_or_null(check.samples_across)},
+          {"alternation_s", json_or_null(check.alternation_s)},
+          {"alternation_err_s", json_or_null(check.alternation_err_s)},
+          {"alternation_triples", check.alternation_triples}};
 }
 
 void require_geometry(const HallLog& log, const LogEstimate& est, const GeometryCheck& check,

@@ -18,6 +18,8 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "io/hall_log.hpp"
 #include "lab/log_estimate.hpp"
 
@@ -47,6 +49,9 @@ struct GeometryCheck {
 
 // Looks at the log when the estimator recognised one pulse per period on its own.
 GeometryCheck check_geometry(const HallLog& log, const LogEstimate& estimate);
+
+// The check as `frictionlab estimate --json` gives it: null when it was not needed.
+nlohmann::json geometry_check_json(const GeometryCheck& check);
 
 // Throws InputError (at the first pulse's line) when the check leaves the geometry in doubt,
 // saying what it found and which --geometry to give. `note` ends the message.

@@ -7,6 +7,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
+#include "lab/geometry_check.hpp"
 
 namespace fl {
 namespace {
@@ -237,6 +238,7 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   out["spacing_err_m"] = est.set_up.spacing_err;
   out["gravity_m_s2"] = est.set_up.gravity;
   out["periods"] = periods_json(est);
+  out["geometry_check"] = geometry_check_json(check_geometry(log, est));
   return out;
 }
 

@@ -61,8 +61,7 @@ const char* geometry_name(fl_estimator::Geometry geometry);
 // How the log was read and what was left out of it (docs/cli.md, `estimate --json`).
 nlohmann::json log_reading_json(const HallLog& log);
 
-// The result as `frictionlab estimate --json` prints it (docs/cli.md), without "plot" and
-// "geometry_check".
+// The result as `frictionlab estimate --json` prints it (docs/cli.md), without "plot".
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& estimate);
 
 // What tools/plot_hall.py draws: the samples (long logs thinned to the lowest and highest of each

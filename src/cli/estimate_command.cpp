@@ -1,12 +1,13 @@
 // frictionlab estimate LOG: T +- dT and mu_k +- d mu_k from a log of the real rig's Hall sensor,
-// by the very estimator the rig's Arduino runs (src/estimator/period_estimator.h). The estimate
-// itself is lab/log_estimate; this command reads the options and prints.
+// by the very estimator the rig's Arduino runs (src/estimator/period_estimator.h); with --follow
+// PORT, live from the rig's serial port (cli/estimate_follow). Reading the log is io/hall_log,
+// the estimate lab/log_estimate, the geometry's check lab/geometry_check; this command reads the
+// options and prints (cli/estimate_report).
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -16,11 +17,13 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/estimate_follow.hpp"
+#include "cli/estimate_report.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/plot_script.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "io/json_value.hpp"
+#include "lab/geometry_check.hpp"
 #include "lab/log_estimate.hpp"
 
 namespace fl::cli {
@@ -32,8 +35,15 @@ struct EstimateOptions {
   std::string spacing_err = "2 mm";
   std::string gravity = "9.81 m/s^2";
   std::string geometry = "auto";
+  std::string columns;
+  std::string rate;
+  std::string time_unit;
   std::string plot;
   bool json = false;
+  std::string follow;
+  std::string baud = "250000";
+  std::string raw_log;
+  std::string duration;
 };
 
 fl_estimator::Geometry parse_geometry(const std::string& text) {
@@ -41,6 +51,34 @@ fl_estimator::Geometry parse_geometry(const std::string& text) {
   if (text == "one") return fl_estimator::kOnePulse;
   if (text == "pair") return fl_estimator::kPulsePair;
   throw InputError({}, "--geometry: expected auto, one or pair, found \"" + text + "\"");
+}
+
+LogSetUp set_up_from(const EstimateOptions& o) {
+  LogSetUp set_up;
+  set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
+  set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
+  set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
+  if (!(set_up.spacing > 0.0) || !std::isfinite(set_up.spacing))
+    throw InputError({}, "--spacing: the roller spacing must be a finite positive length");
+  if (!(set_up.spacing_err >= 0.0) || !std::isfinite(set_up.spacing_err))
+    throw InputError({}, "--spacing-err: the uncertainty must be a finite length, not negative");
+  if (!(set_up.gravity > 0.0) || !std::isfinite(set_up.gravity))
+    throw InputError({}, "--gravity: g must be a finite positive acceleration");
+  set_up.geometry = parse_geometry(o.geometry);
+  return set_up;
+}
+
+HallLogOptions reading_from(const EstimateOptions& o) {
+  HallLogOptions reading;
+  reading.columns = o.columns;
+  reading.time_unit = o.time_unit;
+  if (!o.rate.empty()) {
+    reading.rate_hz = option_quantity(o.rate, Dimension::kFrequency, "--rate");
+    if (!(reading.rate_hz > 0.0) || !std::isfinite(reading.rate_hz))
+      throw InputError({}, "--rate: expected a positive sample rate (for example 1kHz), found \"" +
+                               o.rate + "\"");
+  }
+  return reading;
 }
 
 // The plot's data as JSON in a temporary file, then the script.
@@ -65,19 +103,34 @@ void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& pn
 }
 
 int run_estimate(const EstimateOptions& o) {
-  LogSetUp set_up;
-  set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
-  set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
-  set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  if (!(set_up.spacing > 0.0) || !std::isfinite(set_up.spacing))
-    throw InputError({}, "--spacing: the roller spacing must be a finite positive length");
-  if (!(set_up.spacing_err >= 0.0) || !std::isfinite(set_up.spacing_err))
-    throw InputError({}, "--spacing-err: the uncertainty must be a finite length, not negative");
-  if (!(set_up.gravity > 0.0) || !std::isfinite(set_up.gravity))
-    throw InputError({}, "--gravity: g must be a finite positive acceleration");
-  set_up.geometry = parse_geometry(o.geometry);
+  const LogSetUp set_up = set_up_from(o);
+  const HallLogOptions reading = reading_from(o);
+  if (!o.follow.empty()) {
+    if (!o.log.empty())
+      throw InputError({}, "--follow: reads the rig's serial port, not a log file; found both \"" +
+                               o.follow + "\" and \"" + o.log +
+                               "\" (give one: estimate LOG, or estimate --follow PORT)");
+    FollowRequest request;
+    request.port = o.follow;
+    request.baud = option_quantity(o.baud, Dimension::kDimensionless, "--baud");
+    request.raw_log = o.raw_log;
+    if (!o.duration.empty())
+      request.duration_s = option_quantity(o.duration, Dimension::kTime, "--duration");
+    request.set_up = set_up;
+    request.reading = reading;
+    request.json = o.json;
+    request.plot = o.plot;
+    request.draw_plot = draw_plot;
+    return follow_rig(request);
+  }
+  if (o.log.empty())
+    throw InputError({},
+                     "estimate: expected a log (a file, a folder holding one, or - for "
+                     "standard input), or --follow PORT for the rig's serial port");
+  if (!o.raw_log.empty() || !o.duration.empty())
+    throw InputError({}, "--log and --duration go with --follow PORT");
 
-  const HallLog log = read_hall_log(o.log);
+  const HallLog log = read_hall_log(o.log, reading);
   const LogEstimate est = estimate_log(log, set_up, !o.plot.empty());
   std::string plot_note;
   if (!o.plot.empty()) {
@@ -85,40 +138,14 @@ int run_estimate(const EstimateOptions& o) {
     plot_note = " (the plot " + o.plot + " shows the signal)";
   }
   require_periods(log, est, plot_note);
+  const GeometryCheck check = check_geometry(log, est);
+  require_geometry(log, est, check, plot_note);
 
   if (o.json) {
-    nlohmann::json out = log_estimate_json(log, est);
-    out["plot"] = json_or_null(o.plot.empty() ? std::nullopt : std::optional<std::string>(o.plot));
-    fmt::print("{}\n", out.dump(2));
+    fmt::print("{}\n", estimate_json(log, est, o.plot).dump(2));
     return 0;
   }
-
-  const fl_estimator::Stats& s = est.stats;
-  fmt::print("frictionlab estimate: {}\n", log.path);
-  fmt::print("  log                  {}, {} samples over {:.3f} s at {:.0f} Hz (columns {}, {})\n",
-             log.format == "firmware" ? "the rig firmware's serial output" : "CSV", log.adc.size(),
-             est.duration, est.sample_rate, log.time_column, log.adc_column);
-  if (log.unfinished_last_line)
-    fmt::print("                       (its last line, cut off without a newline, left out)\n");
-  fmt::print("  signal               polarity {:+d}, baseline {:.1f} counts, {} pulses{}\n",
-             est.polarity, est.baseline, s.pulses,
-             est.distorted > 0 ? fmt::format(" ({} distorted)", est.distorted) : std::string());
-  fmt::print("  geometry             {}\n", est.geometry == fl_estimator::kPulsePair
-                                                ? "a pair of pulses per period"
-                                                : "one pulse per period");
-  const int broken = static_cast<int>(s.periods_discarded) - est.outliers;
-  fmt::print("  periods              {} used, {} discarded ({} {}, {} at broken turning points)\n",
-             s.periods_used, s.periods_discarded, est.outliers,
-             est.outliers == 1 ? "outlier" : "outliers", broken);
-  fmt::print("  period T             {:.6f} +- {:.6f} s (N = {}, standard error {:.6f} s)\n",
-             s.period_s, s.period_std_s, s.periods_used, s.period_sem_s);
-  fmt::print("  mu_k                 {:.4f} +- {:.4f} (worst case) +- {:.4f} (quadrature)\n",
-             s.mu_k, s.mu_k_err_worst, s.mu_k_err_quadrature);
-  fmt::print(
-      "                       for l = {:.1f} +- {:.1f} mm, g = {:.3f} m/s^2, dT the "
-      "standard deviation\n",
-      set_up.spacing * 1e3, set_up.spacing_err * 1e3, set_up.gravity);
-  if (!o.plot.empty()) fmt::print("  plot                 {}\n", o.plot);
+  print_estimate(log, est, check, o.plot);
   return 0;
 }
 
@@ -129,19 +156,42 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
   CLI::App* sub = app.add_subcommand(
       "estimate",
       "T +- dT and mu_k +- d mu_k from a Hall-sensor log of the real rig (the rig firmware's "
-      "serial output, or a CSV of time and ADC value), by the estimator the rig's Arduino runs");
-  sub->add_option("LOG", options->log, "The log: the firmware's serial capture or a CSV")
-      ->required();
+      "serial output, a serial monitor's capture, or a CSV of time and ADC value), or live from "
+      "the rig's serial port, by the estimator the rig's Arduino runs");
+  sub->add_option("LOG", options->log,
+                  "The log: a file, a folder holding one (a run's hall.csv), or - for standard "
+                  "input");
+  sub->add_option("--columns", options->columns,
+                  "The log's fields in order, for a log without a header (or to override it): "
+                  "t_us,adc, millis,sensorValue, _,t_ms,adc (_ skips a field)");
+  sub->add_option("--rate", options->rate,
+                  "Sample rate (1kHz): time the samples by their count, for a log without a time "
+                  "column (or whose times repeat)");
+  sub->add_option("--time-unit", options->time_unit,
+                  "Unit of the time column when its name gives none: us, ms or s (default: the "
+                  "unit that makes the sample rate 20 Hz to 20 kHz)");
   sub->add_option("--spacing", options->spacing, "Roller spacing l")->capture_default_str();
   sub->add_option("--spacing-err", options->spacing_err, "Uncertainty dl of the spacing")
       ->capture_default_str();
   sub->add_option("--gravity", options->gravity, "Gravity g")->capture_default_str();
   sub->add_option("--geometry", options->geometry,
-                  "Pulses per period: auto (recognise), one, or pair")
+                  "Pulses per period: auto (recognise), one (the sensor beyond the turning "
+                  "point), or pair (the magnet passes the sensor and back: a sensor inside the "
+                  "turning point or at the middle of the travel)")
       ->capture_default_str();
   sub->add_option("--plot", options->plot,
                   "Draw the signal with the pulses and the rejected periods to this PNG");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
+  sub->add_option("--follow", options->follow,
+                  "Read the rig live from this serial port (/dev/ttyACM0): each period as it "
+                  "comes, the summary at Ctrl-C");
+  sub->add_option("--baud", options->baud, "With --follow: the port's baud rate (the firmware's)")
+      ->capture_default_str();
+  sub->add_option("--log", options->raw_log,
+                  "With --follow: write the lines received to this file, line by line as they "
+                  "come");
+  sub->add_option("--duration", options->duration,
+                  "With --follow: stop after this long (30s) instead of at Ctrl-C");
   return Command{sub, [options] { return run_estimate(*options); }};
 }
 

@@ -32,12 +32,17 @@
 //     either one pulse (the magnet reaches the sensor and turns back) or a close pair (it passes
 //     over the sensor, turns, and passes back). From five pulses in a row the estimator
 //     recognises which: one pulse gives four equal intervals (within half the tolerance, 10 %,
-//     of their median); a pair gives intervals that alternate short, long, short, long (short
-//     < 0.6 long, i.e. the pair spans less than 3/8 of the period; with Config::geometry set to
-//     kPulsePair any alternation will do). Pulses before that are not used (Stats::unused_pulses).
+//     of their median) that do not alternate; a pair gives intervals that alternate short, long,
+//     short, long (short < 0.6 long, i.e. the pair spans less than 3/8 of the period). Intervals
+//     that alternate by more than 4 % are never one pulse per period; evenly spaced pulses are
+//     read as one, as a sensor at the exact middle of the travel also gives them. With
+//     Config::geometry set to kPulsePair, any two pulses per period will do, evenly spaced
+//     included. Pulses before that are not used (Stats::unused_pulses).
 //     The pulses are then grouped: pulses closer than half the running median period form one
-//     group, the group's turning point is the midpoint of its first and last pulse (the mid-point
-//     of a pair is the turning point, the plate's motion being symmetric in time about it). A group
+//     group (a pair wider than 3/8 of the period is grouped two by two instead, the second pulse
+//     one span after the first), the group's turning point is the midpoint of its first and last
+//     pulse (the mid-point of two passes is the turning point between them, the plate's motion
+//     being symmetric in time about it). A group
 //     with the expected number of pulses (1 or 2) and no distorted pulse is clean; any other (a
 //     spurious pulse joined a group, one of a pair is missing, a pulse was bent out of shape) is
 //     broken. Four broken groups in a row mean the geometry changed (the amplitude grew or shrank
@@ -257,7 +262,7 @@ class BasicPeriodEstimator {
           } else {
             // Baseline: only samples near it count, so pulse tails do not drag it along.
             if (sd < lo_ && sd > -lo_) base_ += (d + base_round_) >> base_shift_;
-            if (group_size_ != 0 && static_cast<uint32_t>(t_us - group_last_.us) > theta_us_)
+            if (group_size_ != 0 && static_cast<uint32_t>(t_us - group_last_.us) > group_wait_us())
               events |= close_group();
           }
         } else {
@@ -566,6 +571,8 @@ class BasicPeriodEstimator {
     ring_pos_ = 0;
     median_us_ = 0;
     theta_us_ = 0;
+    by_span_ = false;
+    span_us_ = 0.0f;
   }
 
   uint8_t on_pulse(const Pulse& p) {
@@ -599,21 +606,33 @@ class BasicPeriodEstimator {
     const float tol = config_.tolerance;
     bool one = false;
     bool pair = false;
+    // Intervals that alternate: the 1st and 3rd both shorter (or both longer) than the 2nd and
+    // 4th, their sums more than 4 % apart. That is two pulses per period (a sensor inside the
+    // turning point, near the middle of the travel), never one.
+    const float lo02 = iv[0] < iv[2] ? iv[0] : iv[2];
+    const float hi02 = iv[0] < iv[2] ? iv[2] : iv[0];
+    const float lo13 = iv[1] < iv[3] ? iv[1] : iv[3];
+    const float hi13 = iv[1] < iv[3] ? iv[3] : iv[1];
+    const float sum02 = iv[0] + iv[2];
+    const float sum13 = iv[1] + iv[3];
+    const bool alternates =
+        (hi02 < lo13 && sum02 < 0.96f * sum13) || (hi13 < lo02 && sum13 < 0.96f * sum02);
     if (config_.geometry != kPulsePair) {
-      // Four intervals within half the tolerance of their median.
+      // Four intervals within half the tolerance of their median, not alternating.
       const float m = median4(iv);
-      one = m > 0.0f;
+      one = m > 0.0f && !alternates;
       for (uint8_t i = 0; i < 4; ++i) one = one && near(iv[i], m, 0.5f * tol, m);
     }
+    const float shorter = iv[0] < iv[1] ? iv[0] : iv[1];
+    const float longer = iv[0] < iv[1] ? iv[1] : iv[0];
     if (!one && config_.geometry != kOnePulse) {
       const float t01 = iv[0] + iv[1];
       const float t12 = iv[1] + iv[2];
       const float t23 = iv[2] + iv[3];
       const float t = (t01 + t12 + t23) * (1.0f / 3.0f);
-      const float shorter = iv[0] < iv[1] ? iv[0] : iv[1];
-      const float longer = iv[0] < iv[1] ? iv[1] : iv[0];
-      // Auto needs a clear pair (short < 0.6 long); a forced pair only needs alternation.
-      const float ratio = config_.geometry == kPulsePair ? 0.95f : 0.6f;
+      // Auto needs a clear pair (short < 0.6 long); a forced pair is any two pulses per period,
+      // evenly spaced too (the sensor at the middle of the travel).
+      const float ratio = config_.geometry == kPulsePair ? 1.0f : 0.6f;
       pair = t > 0.0f && shorter > 0.0f && shorter <= ratio * longer &&
              near(iv[0], iv[2], tol, t) && near(iv[1], iv[3], tol, t) && near(t01, t, tol, t) &&
              near(t12, t, tol, t) && near(t23, t, tol, t);
@@ -638,6 +657,10 @@ class BasicPeriodEstimator {
     // second of a pair whose first pulse came before the window.
     const uint8_t first = (pair && iv[0] > iv[1]) ? 1 : 0;
     unused_pulses_ += first;
+    // A pair wider than 3/8 of the period cannot be told from the gap between pairs by a time
+    // threshold: its pulses are grouped two by two, the second one span after the first.
+    by_span_ = pair && shorter > 0.6f * longer;
+    span_us_ = 0.5f * (iv[first] + iv[first + 2]);
     uint8_t events = kGeometryFound;
     for (uint8_t i = first; i < 5; ++i) events |= group_add(pulse(oldest + i));
     return events;
@@ -645,10 +668,29 @@ class BasicPeriodEstimator {
 
   uint8_t expected_group_size() const { return geometry_ == kPulsePair ? 2 : 1; }
 
+  // How long an open group waits for its next pulse [us].
+  uint32_t group_wait_us() const {
+    if (!by_span_) return theta_us_;
+    return static_cast<uint32_t>(span_us_ +
+                                 0.5f * config_.tolerance * static_cast<float>(median_us_));
+  }
+
   uint8_t group_add(const Pulse& p) {
     uint8_t events = kNoEvent;
     if (group_size_ != 0) {
-      if (static_cast<uint32_t>(p.time.us - group_last_.us) <= theta_us_) {
+      const uint32_t since = p.time.us - group_last_.us;
+      if (by_span_) {
+        // A wide pair: the second pulse comes one span (within 10 % of the period) after the
+        // first, and completes the group.
+        const float off = fabsf(static_cast<float>(since) - span_us_);
+        if (group_size_ == 1 && off <= 0.5f * config_.tolerance * static_cast<float>(median_us_)) {
+          group_last_ = p.time;
+          group_distorted_ = group_distorted_ || p.distorted;
+          ++group_size_;
+          if (!group_distorted_) span_us_ += 0.25f * (static_cast<float>(since) - span_us_);
+          return close_group();
+        }
+      } else if (since <= theta_us_) {
         group_last_ = p.time;
         group_distorted_ = group_distorted_ || p.distorted;
         if (group_size_ != 0xFF) ++group_size_;
@@ -763,6 +805,8 @@ class BasicPeriodEstimator {
   uint32_t unused_pulses_;
   uint32_t restarts_;
   bool locked_;
+  bool by_span_;   // a wide pair: grouped two by two (see try_lock)
+  float span_us_;  // its running span: first to second pulse [us]
   Geometry geometry_;
   uint8_t window_pulses_;
   uint8_t group_size_;

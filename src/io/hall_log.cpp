@@ -1,124 +1,57 @@
 #include "io/hall_log.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <map>
 #include <sstream>
-#include <system_error>
 
-#include "core/micros_clock.hpp"
-#include "core/text.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
 
 namespace fl {
 namespace {
 
-struct Field {
-  std::string_view text;
-  int column = 0;  // 1-based
-};
-
-bool is_space(char c) {
-  return c == ' ' || c == '\t' || c == '\r';
-}
-
-// Around a field: blanks and quotes.
-constexpr std::string_view kPadding = " \t\r\"'";
-
-// Splits a line at `delimiter` (0: runs of spaces or tabs), keeping each field's column.
-std::vector<Field> split(std::string_view line, char delimiter) {
-  std::vector<Field> out;
-  std::size_t i = 0;
-  if (delimiter == 0) {
-    while (i < line.size()) {
-      while (i < line.size() && is_space(line[i])) ++i;
-      if (i >= line.size()) break;
-      const std::size_t start = i;
-      while (i < line.size() && !is_space(line[i])) ++i;
-      out.push_back({line.substr(start, i - start), static_cast<int>(start) + 1});
-    }
-    return out;
-  }
-  for (;;) {
-    const std::size_t end = line.find(delimiter, i);
-    const std::string_view raw =
-        line.substr(i, end == std::string_view::npos ? line.npos : end - i);
-    std::size_t lead = 0;
-    while (lead < raw.size() && is_space(raw[lead])) ++lead;
-    out.push_back({trim(raw, kPadding), static_cast<int>(i + lead) + 1});
-    if (end == std::string_view::npos) break;
-    i = end + 1;
+// UTF-16 text of a spreadsheet's "Unicode text" export: the log's characters are ASCII, so each
+// is kept from its code unit (any other becomes '?').
+std::string from_utf16(std::string_view bytes, bool little_endian) {
+  std::string out;
+  out.reserve(bytes.size() / 2);
+  for (std::size_t i = 0; i + 1 < bytes.size(); i += 2) {
+    const auto lo = static_cast<unsigned char>(bytes[little_endian ? i : i + 1]);
+    const auto hi = static_cast<unsigned char>(bytes[little_endian ? i + 1 : i]);
+    out += hi == 0 && lo < 0x80 ? static_cast<char>(lo) : '?';
   }
   return out;
 }
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) {
-    return static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  });
-  return out;
-}
-
-// The unit of a time column's name ("t_us" -> "us", "time (s)" -> "s", "t" -> "s"), or "" when
-// the name is not a time column's.
-std::string time_unit_of(std::string_view header) {
-  const std::string name = lower(trim(header, kPadding));
-  if (name == "micros") return "us";
-  if (name == "millis") return "ms";
-  for (std::string_view base : {"timestamp", "time", "ts", "t"}) {
-    if (name.rfind(base, 0) != 0) continue;
-    std::string_view rest = std::string_view(name).substr(base.size());
-    while (!rest.empty() && (rest.front() == '_' || rest.front() == '-' || rest.front() == ' ' ||
-                             rest.front() == '(' || rest.front() == '[' || rest.front() == '/')) {
-      rest.remove_prefix(1);
-    }
-    while (!rest.empty() && (rest.back() == ')' || rest.back() == ']' || rest.back() == ' ')) {
-      rest.remove_suffix(1);
-    }
-    if (rest.empty() || rest == "s" || rest == "sec" || rest == "secs" || rest == "second" ||
-        rest == "seconds")
-      return "s";
-    if (rest == "ms" || rest == "msec" || rest == "millis" || rest == "milliseconds") return "ms";
-    if (rest == "us" || rest == "\xC2\xB5s" || rest == "usec" || rest == "micros" ||
-        rest == "microseconds")
-      return "us";
+// The log a folder holds: hall.csv (a simulated run's outputs), or its only .csv, .txt, .log or
+// .tsv file.
+std::string log_in_folder(const std::string& folder) {
+  namespace fs = std::filesystem;
+  const fs::path dir(folder);
+  if (fs::is_regular_file(dir / "hall.csv")) return (dir / "hall.csv").string();
+  std::vector<std::string> logs;
+  std::error_code ec;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+    const std::string ext = e.path().extension().string();
+    if (e.is_regular_file() && (ext == ".csv" || ext == ".txt" || ext == ".log" || ext == ".tsv"))
+      logs.push_back(e.path().string());
   }
-  return "";
-}
-
-bool is_adc_name(std::string_view header) {
-  static constexpr std::array<std::string_view, 14> kNames = {
-      "adc", "value",  "val",    "hall",   "hall_adc", "adc_value",  "a0",
-      "raw", "analog", "counts", "sensor", "reading",  "analogread", "signal"};
-  const std::string name = lower(trim(header, kPadding));
-  return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
-}
-
-bool parse_number(std::string_view text, double* out) {
-  text = trim(text, kPadding);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  if (text.empty()) return false;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
-  return ec == std::errc() && end == text.data() + text.size() && std::isfinite(*out);
-}
-
-std::string quoted(std::string_view s) {
-  constexpr std::size_t kMax = 60;
-  std::string out = "\"";
-  out += s.size() > kMax ? std::string(s.substr(0, kMax)) + "..." : std::string(s);
-  out += '"';
-  return out;
-}
-
-// A number as the log wrote it, for messages.
-std::string shown(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
+  std::sort(logs.begin(), logs.end());
+  if (logs.size() == 1) return logs.front();
+  if (logs.empty())
+    throw InputError(SourceLocation{folder, 0, 0},
+                     "expected a folder holding a log (hall.csv, or one .csv, .txt, .log or .tsv "
+                     "file), found none: give the log's file");
+  std::string names;
+  for (std::size_t i = 0; i < logs.size() && i < 4; ++i)
+    names += (i > 0 ? ", " : "") + fs::path(logs[i]).filename().string();
+  if (logs.size() > 4) names += ", ...";
+  throw InputError(SourceLocation{folder, 0, 0},
+                   "expected a folder holding one log, found " + std::to_string(logs.size()) +
+                       " (" + names + "): give the log's file, for example " + logs.front());
 }
 
 // Microseconds since the first sample on a 32-bit clock, as the firmware counts them.
@@ -131,151 +64,84 @@ void stamp_rig_clock(HallLog& log) {
   }
 }
 
-constexpr std::string_view kExpected =
-    "a header naming the time and ADC columns (for example \"t_us,adc\", \"t_s,adc\" or "
-    "\"time,value\")";
+// A number as given, for messages.
+std::string shown(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
+}
 
 }  // namespace
 
-HallLog parse_hall_log(std::string_view text, const std::string& name) {
+std::string decode_log_text(std::string_view bytes, std::string* encoding) {
+  const auto starts = [&](std::string_view mark) { return bytes.substr(0, mark.size()) == mark; };
+  if (starts("\xEF\xBB\xBF")) {
+    *encoding = "utf-8 with BOM";
+    return std::string(bytes.substr(3));
+  }
+  if (starts("\xFF\xFE")) {
+    *encoding = "utf-16le";
+    return from_utf16(bytes.substr(2), true);
+  }
+  if (starts("\xFE\xFF")) {
+    *encoding = "utf-16be";
+    return from_utf16(bytes.substr(2), false);
+  }
+  *encoding = "utf-8";
+  return std::string(bytes);
+}
+
+HallLog parse_hall_log(std::string_view bytes, const std::string& name,
+                       const HallLogOptions& options) {
   HallLog log;
   log.path = name;
-  log.format = "csv";
-  auto fail = [&](int line, int column, const std::string& what) -> InputError {
-    return InputError(SourceLocation{name, line, column}, what);
-  };
-
-  char delimiter = 0;
-  std::size_t time_index = 0;
-  std::size_t adc_index = 0;
-  std::size_t fields_needed = 0;
-  double scale = 1.0;  // seconds per unit of the time column
-  MicrosClock clock;   // a microsecond column may be the firmware's wrapping clock
-  double previous_raw = 0.0;
-  int previous_line = 0;
-  int line_number = 0;
-  bool comments_only = true;
+  log.file = name;
+  const std::string text = decode_log_text(bytes, &log.encoding);
+  HallLogReader reader(name, options);
+  // Lines end in "\n" (or "\r\n"); a text without any "\n" may end its lines in "\r" alone.
+  const char end_of_line = text.find('\n') == std::string::npos ? '\r' : '\n';
+  std::vector<LogSample> samples;
+  int number = 0;
   std::size_t pos = 0;
-  while (pos <= text.size()) {
-    std::size_t end = text.find('\n', pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
+  while (pos < text.size()) {
+    std::size_t end = text.find(end_of_line, pos);
+    const bool unfinished = end == std::string::npos;
+    if (unfinished) end = text.size();
+    reader.add_line(std::string_view(text).substr(pos, end - pos), ++number, unfinished);
     pos = end + 1;
-    ++line_number;
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    std::size_t first = 0;
-    while (first < line.size() && is_space(line[first])) ++first;
-    if (first == line.size()) continue;
-    if (line[first] == '#') {
-      if (line.substr(first).rfind("# frictionlab rig firmware", 0) == 0) log.format = "firmware";
+    std::vector<LogSample> more = reader.take();
+    samples.insert(samples.end(), more.begin(), more.end());
+  }
+  reader.finish();
+  std::vector<LogSample> more = reader.take();
+  samples.insert(samples.end(), more.begin(), more.end());
+  log.reading = reader.reading();
+
+  // Several runs (the board restarted): the longest is used.
+  std::map<int, int> per_segment;
+  for (const LogSample& s : samples) ++per_segment[s.segment];
+  int longest = 0;
+  int most = -1;
+  for (const auto& [segment, count] : per_segment) {
+    if (count > most) {
+      most = count;
+      longest = segment;
+    }
+  }
+  log.segment = longest;
+  for (const LogSample& s : samples) {
+    if (s.segment != longest) {
+      ++log.segment_samples_left_out;
       continue;
     }
-    comments_only = false;
-
-    if (log.header_line == 0) {
-      delimiter = line.find(',') != line.npos    ? ','
-                  : line.find(';') != line.npos  ? ';'
-                  : line.find('\t') != line.npos ? '\t'
-                                                 : 0;
-      const std::vector<Field> header = split(line, delimiter);
-      bool all_numbers = true;
-      for (const Field& f : header) {
-        double v = 0.0;
-        all_numbers = all_numbers && parse_number(f.text, &v);
-      }
-      if (all_numbers)
-        throw fail(line_number, static_cast<int>(first) + 1,
-                   "expected " + std::string(kExpected) + ", found numbers: " + quoted(line));
-      bool have_time = false;
-      bool have_adc = false;
-      for (std::size_t i = 0; i < header.size(); ++i) {
-        const std::string unit = time_unit_of(header[i].text);
-        if (!have_time && !unit.empty()) {
-          have_time = true;
-          time_index = i;
-          log.time_column = std::string(header[i].text);
-          log.time_unit = unit;
-        } else if (!have_adc && is_adc_name(header[i].text)) {
-          have_adc = true;
-          adc_index = i;
-          log.adc_column = std::string(header[i].text);
-        }
-      }
-      if (!have_time)
-        throw fail(line_number, 0,
-                   "the header " + quoted(line) +
-                       " names no time column: expected one called t_us, t_ms, t_s, time, "
-                       "timestamp or micros (a unit may follow, as in \"time (ms)\")");
-      if (!have_adc)
-        throw fail(line_number, 0,
-                   "the header " + quoted(line) +
-                       " names no ADC column: expected one called adc, value, hall, a0, raw, "
-                       "analog, counts, reading, sensor or signal");
-      scale = log.time_unit == "us" ? 1e-6 : log.time_unit == "ms" ? 1e-3 : 1.0;
-      fields_needed = std::max(time_index, adc_index) + 1;
-      log.header_line = line_number;
-      continue;
-    }
-
-    const std::vector<Field> fields = split(line, delimiter);
-    // A capture stopped in the middle of a line: its unfinished last line is left out.
-    const bool unfinished = end == text.size();
-    if (unfinished) {
-      double v = 0.0;
-      const bool complete = fields.size() >= fields_needed &&
-                            parse_number(fields[time_index].text, &v) &&
-                            parse_number(fields[adc_index].text, &v);
-      if (!complete) {
-        log.unfinished_last_line = true;
-        break;
-      }
-    }
-    if (fields.size() < fields_needed)
-      throw fail(line_number, 0,
-                 "expected at least " + std::to_string(fields_needed) +
-                     " fields, as the header has the time in field " +
-                     std::to_string(time_index + 1) + " and the ADC value in field " +
-                     std::to_string(adc_index + 1) + ", found " + std::to_string(fields.size()) +
-                     ": " + quoted(line));
-    const Field& tf = fields[time_index];
-    const Field& af = fields[adc_index];
-    double t_raw = 0.0;
-    double value = 0.0;
-    if (!parse_number(tf.text, &t_raw))
-      throw fail(
-          line_number, tf.column,
-          "column " + quoted(log.time_column) + ": expected a number, found " + quoted(tf.text));
-    if (!parse_number(af.text, &value))
-      throw fail(
-          line_number, af.column,
-          "column " + quoted(log.adc_column) + ": expected a number, found " + quoted(af.text));
-    if (value < 0.0 || value > 65535.0)
-      throw fail(line_number, af.column,
-                 "column " + quoted(log.adc_column) +
-                     ": expected an ADC value from 0 to 65535 counts, found " + shown(value));
-    const double t = (log.time_unit == "us" ? clock.advance(t_raw) : t_raw) * scale;
-    if (!log.t_s.empty() && !(t > log.t_s.back()))
-      throw fail(line_number, tf.column,
-                 "time " + shown(t_raw) + " " + log.time_unit + " is not after the previous " +
-                     "sample's " + shown(previous_raw) + " " + log.time_unit + " (line " +
-                     std::to_string(previous_line) + "): the times must increase");
-    log.t_s.push_back(t);
-    log.adc.push_back(static_cast<uint16_t>(std::lround(value)));
-    log.line.push_back(line_number);
-    previous_raw = t_raw;
-    previous_line = line_number;
+    log.t_s.push_back(s.t_s);
+    log.adc.push_back(s.adc);
+    log.line.push_back(s.line);
   }
-
-  if (log.header_line == 0) {
-    if (comments_only && line_number > 1)
-      throw fail(1, 0, "the log has only comment lines: expected " + std::string(kExpected));
-    throw fail(1, 0, "the log is empty: expected " + std::string(kExpected));
-  }
-  log.clock_wraps = clock.wraps();
   if (log.t_s.empty())
-    throw fail(log.header_line, 0,
-               "no samples after the header: expected lines of " + log.time_column + " and " +
-                   log.adc_column + " values");
+    throw InputError(SourceLocation{name, log.reading.first_line, 0},
+                     "no samples after the header: expected lines of time and ADC values");
   stamp_rig_clock(log);
   return log;
 }
@@ -306,10 +172,16 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
                             " s: the times must increase");
   }
   log.path = name;
-  log.format = "samples";
-  log.time_column = "t";
-  log.adc_column = "adc";
-  log.time_unit = "s";
+  log.file = name;
+  log.reading.format = "samples";
+  log.reading.columns_from = "samples";
+  log.reading.time_column = "t";
+  log.reading.adc_column = "adc";
+  log.reading.time_unit = "s";
+  log.reading.time_unit_from = "samples";
+  log.reading.first_line = 1;
+  log.reading.data_lines = static_cast<int>(t_s.size());
+  log.reading.segments = 1;
   log.t_s = std::move(t_s);
   log.line.resize(log.t_s.size());
   for (std::size_t i = 0; i < log.line.size(); ++i) log.line[i] = static_cast<int>(i + 1);
@@ -317,8 +189,19 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
   return log;
 }
 
-HallLog read_hall_log(const std::string& path) {
-  return parse_hall_log(read_text_file(path, "the log"), path);
+HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
+  if (path == "-") {
+    std::string text;
+    char buffer[1 << 16];
+    while (std::cin.read(buffer, sizeof buffer) || std::cin.gcount() > 0)
+      text.append(buffer, static_cast<std::size_t>(std::cin.gcount()));
+    return parse_hall_log(text, "<stdin>", options);
+  }
+  std::error_code ec;
+  const std::string file = std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
+  HallLog log = parse_hall_log(read_text_file(file, "the log"), file, options);
+  log.path = path;
+  return log;
 }
 
 }  // namespace fl

@@ -7,6 +7,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
+#include "lab/geometry_check.hpp"
 
 namespace fl {
 namespace {
@@ -76,6 +77,9 @@ LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces
   const fl_estimator::PeriodEstimator& e = host.estimator();
   for (std::size_t i = 0; i < log.adc.size(); ++i) {
     if (host.add(log.t_us[i], log.adc[i]) & fl_estimator::kSignalLearned) out.learned = true;
+    // The baseline is frozen during a pulse: the one after it is the one it was timed from.
+    while (out.pulse_baseline.size() < host.pulses().size())
+      out.pulse_baseline.push_back(e.baseline());
     if (traces) {
       const bool known = e.phase() != fl_estimator::kLearning;
       const float nan = std::numeric_limits<float>::quiet_NaN();
@@ -144,13 +148,31 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                                    "row to tell one pulse per period from a pair; record more "
                                    "periods{}",
                                    est.pulses.size(), intervals, note));
+    // Do the intervals alternate (the 1st and 3rd of each four both shorter, or both longer,
+    // than the 2nd and 4th)? Then the pulses are two per period, too wide a pair to recognise.
+    int alternating = 0;
+    int windows = 0;
+    for (std::size_t i = 4; i < est.pulses.size(); ++i, ++windows) {
+      double iv[4];
+      for (std::size_t k = 0; k < 4; ++k)
+        iv[k] = est.pulses[i - 3 + k].time - est.pulses[i - 4 + k].time;
+      const bool ordered = std::max(iv[0], iv[2]) < std::min(iv[1], iv[3]) ||
+                           std::max(iv[1], iv[3]) < std::min(iv[0], iv[2]);
+      alternating += ordered ? 1 : 0;
+    }
+    const std::string advice =
+        2 * alternating > windows
+            ? "they alternate short and long: two pulses per period (the magnet passing the "
+              "sensor and back, a sensor inside the turning point or near the middle of the "
+              "travel), too wide a pair to recognise on its own: give --geometry pair"
+            : "they are irregular (spurious pulses, the plate jumping, a weak or noisy signal): "
+              "--plot FILE.png shows them";
     throw InputError(
         at_pulse,
         fmt::format("{} pulses, but no two turning points: the intervals between pulses ({} s) fit "
                     "neither one pulse per period (equal intervals) nor a close pair per period "
-                    "(alternating short and long, the short under 0.6 of the long); with the "
-                    "sensor near the middle of the motion give --geometry pair{}",
-                    est.pulses.size(), intervals, note));
+                    "(alternating short and long, the short under 0.6 of the long); {}{}",
+                    est.pulses.size(), intervals, advice, note));
   }
   if (s.periods_used < 2)
     throw InputError(
@@ -160,13 +182,46 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                     s.pulses, est.periods.size(), s.periods_used, s.periods_discarded, note));
 }
 
+nlohmann::json log_reading_json(const HallLog& log) {
+  const HallLogReading& r = log.reading;
+  const auto lines = [](const LineTally& t) { return nlohmann::json(t.first); };
+  const auto text_or_null = [](const std::string& s) {
+    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s);
+  };
+  return {
+      {"log", log.path},
+      {"file", log.file},
+      {"format", r.format},
+      {"encoding", log.encoding},
+      {"columns_from", r.columns_from},
+      {"time_column", text_or_null(r.time_column)},
+      {"adc_column", r.adc_column},
+      {"time_unit", text_or_null(r.time_unit)},
+      {"time_unit_from", r.time_unit_from},
+      {"rate_hz", r.rate_hz > 0.0 ? nlohmann::json(r.rate_hz) : nlohmann::json(nullptr)},
+      {"header_line", r.header_line > 0 ? nlohmann::json(r.header_line) : nlohmann::json(nullptr)},
+      {"first_line", r.first_line},
+      {"lines_skipped", r.lines_skipped},
+      {"comment_lines", r.comment_lines},
+      {"lines_corrupted", r.corrupted.count},
+      {"lines_corrupted_first", lines(r.corrupted)},
+      {"times_repeated", r.repeated_times.count},
+      {"times_repeated_first", lines(r.repeated_times)},
+      {"times_out_of_order", r.out_of_order.count},
+      {"times_out_of_order_first", lines(r.out_of_order)},
+      {"ide_timestamps", r.ide_timestamps},
+      {"decimal_comma", r.decimal_comma},
+      {"clock_wraps", r.clock_wraps},
+      {"runs", r.segments},
+      {"run_used", log.segment + 1},
+      {"samples_in_other_runs", log.segment_samples_left_out},
+      {"unfinished_last_line", r.unfinished_last_line}};
+}
+
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   const fl_estimator::Stats& s = est.stats;
   nlohmann::json out = verdict_json(est);
-  out["log"] = log.path;
-  out["format"] = log.format;
-  out["time_column"] = log.time_column;
-  out["adc_column"] = log.adc_column;
+  out.update(log_reading_json(log));
   out["samples"] = log.adc.size();
   out["duration_s"] = est.duration;
   out["sample_rate_hz"] = est.sample_rate;
@@ -177,11 +232,13 @@ nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   out["pulses_unused"] = s.unused_pulses;
   out["restarts"] = s.restarts;
   out["periods_outliers"] = est.outliers;
+  out["geometry_from"] =
+      est.set_up.geometry == fl_estimator::kAutoGeometry ? "recognised" : "--geometry";
   out["spacing_m"] = est.set_up.spacing;
   out["spacing_err_m"] = est.set_up.spacing_err;
   out["gravity_m_s2"] = est.set_up.gravity;
-  out["unfinished_last_line"] = log.unfinished_last_line;
   out["periods"] = periods_json(est);
+  out["geometry_check"] = geometry_check_json(check_geometry(log, est));
   return out;
 }
 

@@ -34,6 +34,7 @@ struct LogEstimate {
   double baseline = 0.0;  // at the end [counts]
   bool learned = false;   // the signal was learned at least once
   std::vector<EstimatedPulse> pulses;
+  std::vector<float> pulse_baseline;  // the baseline each pulse was measured from [counts]
   std::vector<EstimatedPeriod> periods;
   int outliers = 0;       // periods rejected as farther than the tolerance from the running median
   int distorted = 0;      // pulses bent out of shape
@@ -56,6 +57,9 @@ void require_periods(const HallLog& log, const LogEstimate& estimate, const std:
 // "accepted", "outlier", "broken"; "one-pulse", "pair", "unknown".
 const char* period_status_name(std::uint8_t status);
 const char* geometry_name(fl_estimator::Geometry geometry);
+
+// How the log was read and what was left out of it (docs/cli.md, `estimate --json`).
+nlohmann::json log_reading_json(const HallLog& log);
 
 // The result as `frictionlab estimate --json` prints it (docs/cli.md), without "plot".
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& estimate);

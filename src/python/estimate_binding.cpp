@@ -10,6 +10,7 @@
 
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
+#include "lab/geometry_check.hpp"
 #include "lab/log_estimate.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
@@ -56,6 +57,8 @@ Estimate estimate_of(HallLog log, const LogSetUp& set_up) {
     out.estimate = estimate_log(out.log, set_up, false);
   }
   require_periods(out.log, out.estimate, "");
+  // Evenly spaced pulses may be two per period: never half the period (lab/geometry_check).
+  require_geometry(out.log, out.estimate, check_geometry(out.log, out.estimate), "");
   return out;
 }
 

@@ -173,12 +173,13 @@ TEST_F(Estimate, BadLogsExitWithStatusTwoAndSayWhatWasFound) {
   };
   const std::string dir = dir_.string();
   for (const Case& c : {
+           // No header: read by position, the time in microseconds (1 kHz); no pulse in it.
            Case{write("numbers.csv", "0,512\n1000,513\n"),
-                dir + "/numbers.csv:1:1: error: expected a header naming the time and ADC"},
+                dir + "/numbers.csv:1: error: no pulse in 2 samples"},
            Case{write("text.csv", "t_us,adc\n0,512\nabc,513\n"),
                 dir + "/text.csv:3:1: error: column \"t_us\": expected a number, found \"abc\""},
            Case{write("back.csv", "t_s,adc\n0.1,512\n0.3,513\n0.2,514\n"),
-                dir + "/back.csv:4:1: error: time 0.2 s is not after the previous sample's 0.3 s"},
+                dir + "/back.csv:3:1: error: time 0.3 s is ahead of the next sample's 0.2 s"},
            Case{write("empty.csv", ""), dir + "/empty.csv:1: error: the log is empty"},
            Case{write_csv("flat.csv", test::generate(flat), "t_us,adc", false),
                 dir + "/flat.csv:2: error: no pulse in 5000 samples"},
@@ -196,6 +197,86 @@ TEST_F(Estimate, BadLogsExitWithStatusTwoAndSayWhatWasFound) {
   }
   EXPECT_NE(lab(dir + "/three.csv").err.find("only one pulse"), std::string::npos);
   EXPECT_NE(lab(dir + "/few.csv").err.find("needs five in a row"), std::string::npos);
+}
+
+TEST_F(Estimate, StandardInputAndAFolder) {
+  const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
+  const nlohmann::json file = json(log);
+  const test::CommandResult in =
+      test::run_command("sh -c '" + kExe + " estimate - --json < " + log + "'");
+  ASSERT_EQ(in.status, 0) << in.err;
+  const nlohmann::json piped = nlohmann::json::parse(in.out);
+  EXPECT_EQ(piped["log"], "<stdin>");
+  EXPECT_EQ(piped["period_s"], file["period_s"]);
+  // A folder: its hall.csv (a run's outputs), or its only log.
+  const nlohmann::json folder = json(dir_.string());
+  EXPECT_EQ(folder["file"], log);
+  EXPECT_EQ(folder["period_s"], file["period_s"]);
+  std::filesystem::create_directories(dir_ / "one");
+  std::filesystem::copy_file(log, dir_ / "one" / "rig-log.txt");
+  EXPECT_EQ(json((dir_ / "one").string())["period_s"], file["period_s"]);
+  std::filesystem::copy_file(log, dir_ / "one" / "again.csv");
+  const test::CommandResult two = lab((dir_ / "one").string());
+  EXPECT_EQ(two.status, 2);
+  EXPECT_EQ(two.err.rfind((dir_ / "one").string() +
+                              ": error: expected a folder holding one log, "
+                              "found 2 (again.csv, rig-log.txt): give the log's file",
+                          0),
+            0u)
+      << two.err;
+}
+
+// Each error's advice names an option, and following it gives the true period.
+TEST_F(Estimate, TheAdviceInAnErrorWorks) {
+  const test::HallSignal s = rig();
+  const test::HallSamples samples = test::generate(s);
+  struct Case {
+    std::string log;
+    std::string advice;  // in the message, and what is then given
+    double period_s;     // the truth
+  };
+  // A sensor at the middle of the travel: evenly spaced passes shaped like a pass.
+  test::HallSignal middle = rig();
+  middle.sensor_offset_m = -middle.amplitude_m;
+  // A sensor inside the turning point by 0.75 of the amplitude: a pair too wide to recognise.
+  test::HallSignal wide = rig();
+  wide.sensor_offset_m = -0.75 * wide.amplitude_m;
+  // A sketch printing millis() at 2 kHz: every other time repeats.
+  test::HallSignal fast = rig();
+  fast.sample_rate_hz = 2000.0;
+  fast.duration_s = 10.0;
+  const test::HallSamples fast_samples = test::generate(fast);
+  std::string millis = "millis,adc\n";
+  for (std::size_t i = 0; i < fast_samples.adc.size(); ++i)
+    millis += std::to_string(fast_samples.t_us[i] / 1000) + "," +
+              std::to_string(fast_samples.adc[i]) + "\n";
+  // Values only, and three numbers a line without a header.
+  std::string values = "sensorValue\n";
+  std::string three;
+  for (std::size_t i = 0; i < samples.adc.size(); ++i) {
+    values += std::to_string(samples.adc[i]) + "\n";
+    three += std::to_string(samples.t_us[i] / 1000) + "," + std::to_string(samples.adc[i]) + ",7\n";
+  }
+  for (const Case& c : {
+           Case{write_csv("middle.csv", test::generate(middle), "t_us,adc", false),
+                "--geometry pair", middle.period_s},
+           Case{write_csv("wide.csv", test::generate(wide), "t_us,adc", false), "--geometry pair",
+                wide.period_s},
+           Case{write("millis.csv", millis), "--rate 2kHz", fast.period_s},
+           Case{write("values.csv", values), "--rate 1kHz", s.period_s},
+           Case{write("three.csv", three), "--columns t_ms,adc,_", s.period_s},
+       }) {
+    const test::CommandResult r = lab(c.log);
+    EXPECT_EQ(r.status, 2) << c.log << "\n" << r.out;
+    EXPECT_EQ(r.err.rfind(c.log + ":", 0), 0u) << r.err;
+    const std::string option = c.advice.substr(0, c.advice.find(' '));
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+    if (option == "--geometry") {
+      EXPECT_NE(r.err.find(c.advice), std::string::npos) << r.err;
+    }
+    const nlohmann::json j = json(c.log + " " + c.advice);
+    EXPECT_NEAR(j["period_s"].get<double>(), c.period_s, 5e-4 * c.period_s) << c.log;
+  }
 }
 
 TEST_F(Estimate, APlotEvenWhenThereIsNoPeriod) {

@@ -33,11 +33,13 @@ TEST(HallLog, TheFirmwaresSerialOutput) {
       "# stats periods=1 N=1 discarded=0 T_mean_us=790000.0 dT_us=0.0\r\n"
       "3000,514\r\n";
   const HallLog log = parse_hall_log(text, "rig.log");
-  EXPECT_EQ(log.format, "firmware");
-  EXPECT_EQ(log.time_column, "t_us");
-  EXPECT_EQ(log.adc_column, "adc");
-  EXPECT_EQ(log.time_unit, "us");
-  EXPECT_EQ(log.header_line, 2);
+  EXPECT_EQ(log.reading.format, "firmware");
+  EXPECT_EQ(log.reading.time_column, "t_us");
+  EXPECT_EQ(log.reading.adc_column, "adc");
+  EXPECT_EQ(log.reading.time_unit, "us");
+  EXPECT_EQ(log.reading.header_line, 2);
+  EXPECT_EQ(log.reading.comment_lines, 4);
+  EXPECT_EQ(log.reading.lines_skipped, 0);
   ASSERT_EQ(log.adc.size(), 4u);
   EXPECT_EQ(log.adc[2], 600);
   EXPECT_EQ(log.line[2], 6);
@@ -54,7 +56,8 @@ TEST(HallLog, ColumnsAreFoundByNameInAnyOrderAndUnit) {
   };
   for (const Case& c : {
            Case{"t_s,adc\n0.5,512\n0.501,513\n", "t_s", "adc", 0.501},
-           Case{"time,value\n10,512\n10.25,513\n", "time", "value", 10.25},
+           // No unit in the name: the one that makes the rate 20 Hz to 20 kHz (here 1 kHz in s).
+           Case{"time,value\n10,512\n10.001,513\n", "time", "value", 10.001},
            Case{"adc,t_us\n512,100\n513,1100\n", "t_us", "adc", 0.0011},
            Case{"Time (ms);Hall\n0;512\n2.5;513\n", "Time (ms)", "Hall", 0.0025},
            Case{"x\ttimestamp_us\tA0\n7\t5\t512\n7\t15\t513\n", "timestamp_us", "A0", 15e-6},
@@ -62,9 +65,9 @@ TEST(HallLog, ColumnsAreFoundByNameInAnyOrderAndUnit) {
            Case{"\"t_ms\",\"adc\",\"x_mm\"\n0,512,1\n1,513,2\n", "t_ms", "adc", 0.001},
        }) {
     const HallLog log = parse_hall_log(c.text, "log.csv");
-    EXPECT_EQ(log.format, "csv") << c.text;
-    EXPECT_EQ(log.time_column, c.time) << c.text;
-    EXPECT_EQ(log.adc_column, c.adc) << c.text;
+    EXPECT_EQ(log.reading.format, "csv") << c.text;
+    EXPECT_EQ(log.reading.time_column, c.time) << c.text;
+    EXPECT_EQ(log.reading.adc_column, c.adc) << c.text;
     ASSERT_EQ(log.adc.size(), 2u) << c.text;
     EXPECT_EQ(log.adc[1], 513) << c.text;
     EXPECT_NEAR(log.t_s[1], c.t1_s, 1e-12) << c.text;
@@ -74,7 +77,7 @@ TEST(HallLog, ColumnsAreFoundByNameInAnyOrderAndUnit) {
 
 TEST(HallLog, TheFirmwaresMicrosecondClockWrapsAround) {
   const HallLog log = parse_hall_log("t_us,adc\n4294966296,512\n4294967000,513\n1000,514\n", "x");
-  EXPECT_EQ(log.clock_wraps, 1);
+  EXPECT_EQ(log.reading.clock_wraps, 1);
   ASSERT_EQ(log.t_s.size(), 3u);
   EXPECT_NEAR(log.t_s[2] - log.t_s[0], 0.002, 1e-12);
   EXPECT_EQ(log.t_us[2], 2000u);
@@ -88,9 +91,18 @@ TEST(HallLog, ErrorsNameTheLineAndSayWhatWasFound) {
   for (const Case& c : {
            Case{"", "log.csv:1: error: the log is empty: expected a header naming the time"},
            Case{"# only\n# comments\n", "log.csv:1: error: the log has only comment lines"},
-           Case{"0,512\n1000,513\n",
-                "log.csv:1:1: error: expected a header naming the time and ADC columns (for "
-                "example \"t_us,adc\", \"t_s,adc\" or \"time,value\"), found numbers: \"0,512\""},
+           Case{"Monitor port settings:\n  baudrate=250000\n",
+                "log.csv:1: error: none of the log's 2 lines is a header or a sample: expected a "
+                "header naming the time and ADC columns"},
+           Case{"1,2,3\n4,5,6\n7,8,9\n",
+                "log.csv:1: error: 3 numbers per line and no header: say which field is the time "
+                "and which the ADC value with --columns"},
+           Case{"512\n513\n514\n",
+                "log.csv:1: error: one number per line and no header: ADC values without times; "
+                "give the sample rate with --rate"},
+           Case{"sensorValue\n512\n",
+                "log.csv:1: error: the header \"sensorValue\" names no time "
+                "column"},
            Case{"x,adc\n0,512\n", "log.csv:1: error: the header \"x,adc\" names no time column"},
            Case{"t_us,temperature\n0,20\n",
                 "log.csv:1: error: the header \"t_us,temperature\" names no ADC column"},
@@ -99,10 +111,21 @@ TEST(HallLog, ErrorsNameTheLineAndSayWhatWasFound) {
                 "log.csv:3:6: error: column \"adc\": expected a number, found \"5l2\""},
            Case{"t_us,adc\n0,512\nabc,513\n",
                 "log.csv:3:1: error: column \"t_us\": expected a number, found \"abc\""},
+           // One of three out of order is more than the 10 % the reader leaves out.
            Case{"t_s,adc\n0.1,512\n0.3,513\n0.2,514\n",
-                "log.csv:4:1: error: time 0.2 s is not after the previous sample's 0.3 s (line "
+                "log.csv:3:1: error: time 0.3 s is ahead of the next sample's 0.2 s (line 4): "
+                "the times must increase; 1 of the 3 lines after the header (33.3 %) are left "
+                "out"},
+           Case{"t_s,adc\n0.1,512\n0.2,513\n0.05,514\n",
+                "log.csv:4:1: error: time 0.05 s is not after the previous sample's 0.2 s (line "
                 "3): the times must increase"},
-           Case{"t_us,adc\n0,512\n0,513\n", "log.csv:3:1: error: time 0 us is not after"},
+           Case{"t_us,adc\n0,512\n0,513\n",
+                "log.csv:3:1: error: time 0 us repeats the previous sample's (line 2); 1 of the 2 "
+                "lines after the header (50 %) are left out, more than the 10 % the reader skips: "
+                "1 repeat the time before them"},
+           Case{"time,value\n0,512\n100000,513\n200000,514\n",
+                "log.csv:2: error: the time column \"time\" names no unit, and its step of 100000 "
+                "per sample fits none"},
            Case{"t_us,adc\n0,512\n1000\n", "log.csv:3: error: expected at least 2 fields"},
            Case{"t_us,adc\n0,-4\n",
                 "log.csv:2:3: error: column \"adc\": expected an ADC value from 0 to 65535 "
@@ -116,10 +139,10 @@ TEST(HallLog, ErrorsNameTheLineAndSayWhatWasFound) {
 
 TEST(HallLog, ACaptureStoppedMidLineLeavesTheUnfinishedLineOut) {
   const HallLog cut = parse_hall_log("t_us,adc\n0,512\n1000,513\n20", "x");
-  EXPECT_TRUE(cut.unfinished_last_line);
+  EXPECT_TRUE(cut.reading.unfinished_last_line);
   EXPECT_EQ(cut.adc.size(), 2u);
   const HallLog whole = parse_hall_log("t_us,adc\n0,512\n1000,513\n2000,514", "x");
-  EXPECT_FALSE(whole.unfinished_last_line);
+  EXPECT_FALSE(whole.reading.unfinished_last_line);
   EXPECT_EQ(whole.adc.size(), 3u);
 }
 

@@ -1,0 +1,258 @@
+#include "cli/estimate_follow.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "cli/estimate_report.hpp"
+#include "cli/stop_signals.hpp"
+#include "io/input_error.hpp"
+#include "io/serial_port.hpp"
+#include "lab/geometry_check.hpp"
+#include "lab/host_estimator.hpp"
+
+namespace fl::cli {
+namespace {
+
+// The lines received, written as they come: each line whole, with write(2) and no buffer, so
+// the file holds everything received up to any moment the capture ends, however it ends.
+class RawLog {
+ public:
+  explicit RawLog(const std::string& path) : path_(path) {
+    if (path.empty()) return;
+    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+      throw InputError(SourceLocation{path, 0, 0},
+                       std::string("--log: cannot write the raw log: ") + std::strerror(errno));
+  }
+  ~RawLog() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  RawLog(const RawLog&) = delete;
+  RawLog& operator=(const RawLog&) = delete;
+
+  void write(std::string_view bytes) {
+    while (fd_ >= 0 && !bytes.empty()) {
+      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0)
+        throw InputError(SourceLocation{path_, 0, 0},
+                         std::string("--log: cannot write the raw log: ") + std::strerror(errno));
+      bytes.remove_prefix(static_cast<std::size_t>(n));
+    }
+  }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
+// The estimator run live on the samples as they come, with what it says printed at once.
+class LiveEstimate {
+ public:
+  LiveEstimate(const LogSetUp& set_up, bool quiet) : set_up_(set_up), quiet_(quiet) { reset(); }
+
+  void reset() {
+    host_ = std::make_unique<HostEstimator>(set_up_.config());
+    periods_shown_ = 0;
+    t0_.reset();
+    samples_ = HallLog{};
+    doubt_.clear();
+  }
+
+  void add(const LogSample& s) {
+    if (!t0_) t0_ = s.t_s;
+    const auto us = static_cast<uint64_t>(std::llround((s.t_s - *t0_) * 1e6));
+    samples_.t_s.push_back(s.t_s);
+    samples_.adc.push_back(s.adc);
+    samples_.line.push_back(s.line);
+    samples_.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
+    const uint8_t events = host_->add(samples_.t_us.back(), s.adc);
+    if (quiet_ || events == fl_estimator::kNoEvent) return;
+    const fl_estimator::PeriodEstimator& e = host_->estimator();
+    if (events & fl_estimator::kSignalLearned)
+      say(fmt::format("  {:<20}  polarity {:+d}, baseline {:.1f} counts (line {})",
+                      "signal learned", e.polarity(), e.baseline(), s.line));
+    if (events & fl_estimator::kGeometryFound) geometry_found();
+    if (events & fl_estimator::kRestart)
+      say(fmt::format("  {:<20}  learning it again", "signal lost"));
+    // The periods judged in this sample; the running statistics after the last of them.
+    const std::vector<EstimatedPeriod>& periods = host_->periods();
+    for (; periods_shown_ < periods.size(); ++periods_shown_) {
+      const EstimatedPeriod& p = periods[periods_shown_];
+      const fl_estimator::Stats st = e.stats();
+      std::string running;
+      if (periods_shown_ + 1 == periods.size() && st.periods_used > 0 && doubt_.empty())
+        running =
+            fmt::format("  T = {:.6f} +- {:.6f} s (N = {}), mu_k = {:.4f} +- {:.4f}", st.period_s,
+                        st.period_std_s, st.periods_used, st.mu_k, st.mu_k_err_worst);
+      say(fmt::format("  {:<20}  {:.6f} s {}{}", fmt::format("period {}", periods_shown_ + 1),
+                      p.period, period_status_name(p.status), running));
+    }
+  }
+
+ private:
+  static void say(const std::string& line) {
+    fmt::print("{}\n", line);
+    std::fflush(stdout);
+  }
+
+  // Evenly spaced pulses read as one per period: are they shaped like a turn? (The periods'
+  // alternation needs more of them than there are yet: the summary checks it.)
+  void geometry_found() {
+    const bool pair = host_->estimator().geometry() == fl_estimator::kPulsePair;
+    doubt_.clear();
+    if (!pair && set_up_.geometry == fl_estimator::kAutoGeometry) {
+      const GeometryCheck check = check_geometry(samples_, estimate_log(samples_, set_up_, false));
+      if (check.verdict != "turn") doubt_ = check.reason;
+    }
+    if (doubt_.empty()) {
+      say(fmt::format("  {:<20}  {}", "geometry",
+                      pair ? "a pair of pulses per period" : "one pulse per period"));
+      return;
+    }
+    say(
+        fmt::format("  {:<20}  evenly spaced pulses, one per period or two: {}; T is the "
+                    "interval below or twice it (give --geometry one or pair)",
+                    "geometry", doubt_));
+  }
+
+  LogSetUp set_up_;
+  bool quiet_ = false;
+  std::unique_ptr<HostEstimator> host_;
+  std::size_t periods_shown_ = 0;
+  std::optional<double> t0_;
+  HallLog samples_;    // so far, for the geometry's check
+  std::string doubt_;  // why evenly spaced pulses may be two per period ("" : no doubt)
+};
+
+}  // namespace
+
+int follow_rig(const FollowRequest& request) {
+  if (!(request.baud >= 1.0) || request.baud > 4e6 || request.baud != std::floor(request.baud))
+    throw InputError({}, "--baud: expected a whole positive baud rate, such as 250000");
+  if (request.duration_s && !(*request.duration_s > 0.0))
+    throw InputError({}, "--duration: expected a positive time, such as 30s");
+  SerialPort port(request.port, static_cast<int>(request.baud));
+  RawLog raw(request.raw_log);
+  // Messages locate lines in the raw log, which holds them as received.
+  HallLogReader reader(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
+  LiveEstimate live(request.set_up, request.json);
+  // Ctrl-C (or SIGTERM) ends the capture, and the summary follows: the normal end, exit 0.
+  const StopSignals stop;
+
+  if (!request.json) {
+    fmt::print("frictionlab estimate --follow {} at {:.0f} baud{}: Ctrl-C ends it\n", request.port,
+               request.baud, request.raw_log.empty() ? "" : ", raw log " + request.raw_log);
+    std::fflush(stdout);
+  }
+  // Every sample of the run being received, for the summary.
+  std::vector<LogSample> samples;
+  int segment = 0;
+  const auto take = [&] {
+    for (const LogSample& s : reader.take()) {
+      if (s.segment != segment) {
+        segment = s.segment;
+        samples.clear();
+        live.reset();
+        if (!request.json)
+          fmt::print("  {:<20}  a new run from line {}\n", "board restarted", s.line);
+      }
+      samples.push_back(s);
+      live.add(s);
+    }
+  };
+
+  const auto start = std::chrono::steady_clock::now();
+  std::string pending;  // bytes of a line not yet complete
+  std::size_t received = 0;
+  int number = 0;
+  bool open = true;
+  while (open && !stop_requested()) {
+    if (request.duration_s) {
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (elapsed >= *request.duration_s) break;
+    }
+    const std::size_t before = pending.size();
+    open = port.read_some(&pending, 100);
+    received += pending.size() - before;
+    std::size_t done = 0;
+    for (std::size_t end; (end = pending.find('\n', done)) != std::string::npos; done = end + 1) {
+      raw.write(std::string_view(pending).substr(done, end + 1 - done));
+      reader.add_line(std::string_view(pending).substr(done, end - done), ++number);
+      take();
+    }
+    pending.erase(0, done);
+  }
+  if (!pending.empty()) {
+    raw.write(pending);
+    reader.add_line(pending, ++number, true);
+  }
+  if (received == 0)
+    throw InputError(
+        SourceLocation{request.port, 0, 0},
+        fmt::format("nothing came from the port in {:.1f} s: is the rig's firmware "
+                    "running, and sending at {:.0f} baud (--baud)?",
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                    request.baud));
+  if (!request.json) {
+    fmt::print("  {:<20}  {} lines received\n",
+               stop_requested() ? "stopped"
+               : open           ? "time up"
+                                : "port closed",
+               number);
+    std::fflush(stdout);
+  }
+  reader.finish();
+  take();
+
+  // The summary: the same as `estimate LOG` on the lines received.
+  // Messages locate lines in the raw log, which holds them as received.
+  HallLog log;
+  log.path = request.raw_log.empty() ? request.port : request.raw_log;
+  log.file = log.path;
+  log.encoding = "utf-8";
+  log.reading = reader.reading();
+  log.segment = segment;
+  for (const LogSample& s : samples) {
+    log.t_s.push_back(s.t_s);
+    log.adc.push_back(s.adc);
+    log.line.push_back(s.line);
+  }
+  if (log.t_s.empty())
+    throw InputError(SourceLocation{request.port, 0, 0},
+                     "no samples received: expected the rig firmware's lines of t_us and adc");
+  const double t0 = log.t_s.front();
+  for (double t : log.t_s)
+    log.t_us.push_back(
+        static_cast<uint32_t>(static_cast<uint64_t>(std::llround((t - t0) * 1e6)) & 0xFFFFFFFFu));
+  const LogEstimate est = estimate_log(log, request.set_up, !request.plot.empty());
+  std::string note;
+  if (!request.plot.empty()) {
+    request.draw_plot(log, est, request.plot);
+    note = " (the plot " + request.plot + " shows the signal)";
+  }
+  require_periods(log, est, note);
+  const GeometryCheck check = check_geometry(log, est);
+  require_geometry(log, est, check, note);
+  if (request.json) {
+    nlohmann::json out = estimate_json(log, est, request.plot);
+    out["raw_log"] =
+        request.raw_log.empty() ? nlohmann::json(nullptr) : nlohmann::json(request.raw_log);
+    fmt::print("{}\n", out.dump(2));
+  } else {
+    print_estimate(log, est, check, request.plot);
+  }
+  return 0;
+}
+
+}  // namespace fl::cli

@@ -1,0 +1,33 @@
+// The rig's serial port (the Uno's USB serial device, /dev/ttyACM0, or any terminal device, a
+// pseudo-terminal included): opened raw, as the firmware's bytes must arrive (no echo, no line
+// editing, no translation of '\r' or '\n', no flow control), 8 data bits, no parity, one stop
+// bit, at any baud rate (the firmware's 250000 is not one of the POSIX speeds: it is set through
+// Linux's termios2 and BOTHER). Opening the port resets an Uno (DTR), so its output starts with
+// the firmware's header.
+#pragma once
+
+#include <string>
+
+namespace fl {
+
+class SerialPort {
+ public:
+  // Throws InputError located at `path` when it cannot be opened or set up, saying why.
+  SerialPort(const std::string& path, int baud);
+  ~SerialPort();
+  SerialPort(const SerialPort&) = delete;
+  SerialPort& operator=(const SerialPort&) = delete;
+
+  // Waits up to `timeout_ms` for bytes and appends what came to `out`. Returns false when the
+  // port is gone (the board unplugged, the other end of a pseudo-terminal closed); a signal only
+  // cuts the wait short.
+  bool read_some(std::string* out, int timeout_ms);
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
+}  // namespace fl

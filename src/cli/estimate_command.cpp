@@ -20,6 +20,7 @@
 #include "cli/estimate_follow.hpp"
 #include "cli/estimate_report.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
@@ -110,6 +111,8 @@ int run_estimate(const EstimateOptions& o) {
       throw InputError({}, "--follow: reads the rig's serial port, not a log file; found both \"" +
                                o.follow + "\" and \"" + o.log +
                                "\" (give one: estimate LOG, or estimate --follow PORT)");
+    if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
+    if (!o.raw_log.empty()) prepare_output_file(o.raw_log, "--log");
     FollowRequest request;
     request.port = o.follow;
     request.baud = option_quantity(o.baud, Dimension::kDimensionless, "--baud");
@@ -130,23 +133,35 @@ int run_estimate(const EstimateOptions& o) {
   if (!o.raw_log.empty() || !o.duration.empty())
     throw InputError({}, "--log and --duration go with --follow PORT");
 
+  // The plot's place is checked before any work; a plot that fails still leaves the results.
+  if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
   const HallLog log = read_hall_log(o.log, reading);
   const LogEstimate est = estimate_log(log, set_up, !o.plot.empty());
   std::string plot_note;
+  std::string plot_failure;
   if (!o.plot.empty()) {
-    draw_plot(log, est, o.plot);
-    plot_note = " (the plot " + o.plot + " shows the signal)";
+    try {
+      draw_plot(log, est, o.plot);
+      plot_note = " (the plot " + o.plot + " shows the signal)";
+    } catch (const std::runtime_error& e) {
+      plot_failure = e.what();
+    }
   }
+  const auto plot_failed = [&] {
+    if (plot_failure.empty()) return 0;
+    fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
+    return 1;
+  };
   require_periods(log, est, plot_note);
   const GeometryCheck check = check_geometry(log, est);
   require_geometry(log, est, check, plot_note);
 
   if (o.json) {
-    fmt::print("{}\n", estimate_json(log, est, o.plot).dump(2));
-    return 0;
+    fmt::print("{}\n", estimate_json(log, est, plot_failure.empty() ? o.plot : "").dump(2));
+    return plot_failed();
   }
-  print_estimate(log, est, check, o.plot);
-  return 0;
+  print_estimate(log, est, check, plot_failure.empty() ? o.plot : "");
+  return plot_failed();
 }
 
 }  // namespace

@@ -132,6 +132,9 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
                     "/scenes/sweeps/spacing.yaml --out " + file,
                 "found a file"},
            Case{"compare --out " + file, "found a file"},
+           Case{"estimate " + std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                    "/tests/data/logs/clean.csv --plot " + file + "/x.png",
+                "--plot " + file + "/x.png: error: expected a place this command can write"},
            Case{"compare --set friction.mu_k=0.3",
                 "--set friction.mu_k=0.3: error: expected a key compare leaves to the scene"},
            Case{"compare --set world.duration=2s", "use --duration instead"},

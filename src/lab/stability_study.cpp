@@ -53,10 +53,8 @@ Trial try_step(const Scene& base, double dt, Regime expected) {
   } else if (trial.trustworthy && expected == Regime::kOscillates && r.warming) {
     // Warming rollers: the trajectory's mean period lies between the thick plate's at the start's
     // mu_k and at the end's.
-    const CompiledRig rig = compile_rig(scene);
-    const double cold =
-        period_thick(rig.spacing, r.warming->mu_k_start, rig.plate.h_c, rig.gravity);
-    const double warm = period_thick(rig.spacing, r.warming->mu_k_end, rig.plate.h_c, rig.gravity);
+    const double cold = period_thick(r.spacing, r.warming->mu_k_start, r.h_c, r.gravity);
+    const double warm = period_thick(r.spacing, r.warming->mu_k_end, r.h_c, r.gravity);
     trial.trustworthy = r.period_trajectory && *r.period_trajectory <= std::max(cold, warm) &&
                         *r.period_trajectory >= std::min(cold, warm);
   } else if (trial.trustworthy && expected == Regime::kOscillates) {

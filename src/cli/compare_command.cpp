@@ -1,7 +1,9 @@
-// frictionlab compare: every row of the paper's Table I simulated in the rig, residuals in units
-// of the paper's dT, and mu_k refitted through the simulation.
+// frictionlab compare: every row of a measurements file (the paper's Table I unless --measured
+// names another) simulated in the rig, residuals in units of the row's dT, and mu_k refitted
+// through the simulation.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,7 +20,6 @@
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "lab/compare.hpp"
 
 namespace fl::cli {
@@ -26,6 +27,7 @@ namespace {
 
 struct CompareCommandOptions {
   std::string scene;
+  std::string measured;
   std::vector<std::string> overrides;
   std::string duration;
   int workers = 0;
@@ -42,24 +44,35 @@ std::string default_scene() {
   return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
 }
 
+// As the row wrote it, to at most 6 decimals (a table written by frictionlab estimate carries
+// every digit of a float).
 std::string measured_text(const Measured& m) {
-  return fmt::format("{:.{}f} +- {:.{}f}", m.value, m.decimals, m.uncertainty,
-                     m.uncertainty_decimals);
+  return fmt::format("{:.{}f} +- {:.{}f}", m.value, std::min(m.decimals, 6), m.uncertainty,
+                     std::min(m.uncertainty_decimals, 6));
 }
 
-void print_table(const CompareResult& r) {
+void print_table(const CompareResult& r, bool paper) {
   fmt::print(
-      "frictionlab compare: the paper's Table I in the scene {} (l = {:.1f} +- {:.1f} mm, h_c = "
-      "{:.2f} mm, g = {} m/s^2)\n",
-      r.scene, r.spacing * 1e3, r.spacing_err * 1e3, r.h_c * 1e3, r.gravity);
+      "frictionlab compare: {} in the scene {} (l = {:.1f}{} mm, h_c = {:.2f} mm, g = {} "
+      "m/s^2)\n",
+      paper ? std::string("the paper's Table I") : r.measurements, r.scene, r.spacing * 1e3,
+      r.spacing_err ? fmt::format(" +- {:.1f}", *r.spacing_err * 1e3) : std::string(), r.h_c * 1e3,
+      r.gravity);
   fmt::print(
       "  residual = (T_sim - T_measured) / dT; thin bias = how much the paper's formula "
       "overestimates mu_k for this h_c\n\n");
-  fmt::print("  {:<28} {:>5}  {:>15} {:>10} {:>9} {:>9}  {:>14}  {:>27} {:>9}\n", "material",
-             "temp", "T measured [s]", "T sim [s]", "residual", "thin bias", "mu_k paper",
-             "mu_k refit (worst) (quad.)", "T at fit");
+  // The rows' own rigs, where their keys change the scene's spacing or plate.
+  for (const CompareRow& row : r.rows)
+    if (!row.keys.empty() &&
+        (std::fabs(row.spacing - r.spacing) > 1e-12 || std::fabs(row.h_c - r.h_c) > 1e-12))
+      fmt::print("  {}: l = {:.1f} mm, h_c = {:.2f} mm\n", row.label, row.spacing * 1e3,
+                 row.h_c * 1e3);
+  fmt::print("  {:<28} {:>5}  {:>15} {:>10} {:>9} {:>9}  {:>14}  {:>27} {:>9}\n",
+             paper ? "material" : "row", "temp", "T measured [s]", "T sim [s]", "residual",
+             "thin bias", paper ? "mu_k paper" : "mu_k reported", "mu_k refit (worst) (quad.)",
+             "T at fit");
   for (const CompareRow& row : r.rows) {
-    const std::string head = fmt::format("  {:<28} {:>3} K  {:>15}", row.name, row.temperature,
+    const std::string head = fmt::format("  {:<28} {:>3} K  {:>15}", row.label, row.temperature,
                                          measured_text(row.period_measured));
     if (row.status != "compared") {
       fmt::print("{}  {}: {}\n", head, row.status, row.reason);
@@ -78,7 +91,8 @@ void print_table(const CompareResult& r) {
     const bool from_trajectory = row.period_simulated_source.starts_with("trajectory");
     fmt::print("{} {:>10.5f} {:>7.2f} sd {:>+8.2f}%  {:>14}  {:>27} {:>9}{}{}\n", head,
                row.period_simulated.value_or(NAN), row.residual_sigma.value_or(NAN),
-               100.0 * row.thin_bias_mu_k.value_or(NAN), measured_text(row.mu_k_paper), refit,
+               100.0 * row.thin_bias_mu_k.value_or(NAN),
+               row.mu_k_reported ? measured_text(*row.mu_k_reported) : std::string("-"), refit,
                at_fit, row.refit_note.empty() ? "" : "  (" + row.refit_note + ")",
                from_trajectory ? "  (T sim from the trajectory: the rig's estimator accepted no "
                                  "period; simulate longer)"
@@ -87,22 +101,32 @@ void print_table(const CompareResult& r) {
 }
 
 int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
-  const PaperTable table = load_paper_table(paper_table_path(resolve_asset_dir(global.asset_dir)));
+  const std::string asset_dir = resolve_asset_dir(global.asset_dir);
+  const bool paper = o.measured.empty();
+  const MeasuredRows measured =
+      read_measured_rows(paper ? paper_measurements_path(asset_dir) : o.measured);
   CompareOptions options;
   options.scene_file = o.scene.empty() ? default_scene() : o.scene;
-  options.parts = scene_sources(global).parts;
+  const SceneSources sources = scene_sources(global);
+  options.paper = sources.paper;
+  options.parts = sources.parts;
   for (const std::string& text : o.overrides) {
     SceneOverride over = parse_override(text);
-    // What the comparison sets for each row of Table I would silently win over the option.
+    // What the comparison or the rows set would silently win over the option.
     const bool duration = over.path == "world.duration";
-    if (duration || over.path == "friction.mu_k" || over.path == "plate.material" ||
-        over.path == "friction.temperature")
+    const bool by_rows =
+        std::any_of(measured.rows.begin(), measured.rows.end(), [&](const auto& r) {
+          return std::any_of(r.keys.begin(), r.keys.end(),
+                             [&](const SceneOverride& k) { return k.path == over.path; });
+        });
+    if (compare_sets_key(over.path) || by_rows)
       throw InputError(
           SourceLocation{"--set " + text, 0, 0},
-          fmt::format("expected a key compare leaves to the scene, found {}, which compare sets "
-                      "for each row of Table I (the row's material, temperature and mu_k, and "
-                      "the run's length); {}",
+          fmt::format("expected a key compare leaves to the scene, found {}, which {}; {}",
                       over.path,
+                      by_rows ? "rows of " + measured.file + " set for themselves"
+                              : "compare sets for each row (mu_k by the refit, and the run's "
+                                "length)",
                       duration ? "use --duration instead"
                                : "drop it, or simulate that set-up with frictionlab run"));
     options.overrides.push_back(std::move(over));
@@ -122,7 +146,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
       if (done == total) fmt::print(stderr, "\n");
     }
   };
-  const CompareResult result = run_compare(table, options);
+  const CompareResult result = run_compare(measured, options);
   const nlohmann::json j = compare_json(result);
   const std::string csv = o.out + "/compare.csv";
   const std::string json = o.out + "/compare.json";
@@ -137,7 +161,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
     fmt::print("{}\n", j.dump(2));
     return 0;
   }
-  print_table(result);
+  print_table(result, paper);
   fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", result.simulations, result.wall_s,
              result.workers, result.workers == 1 ? "" : "s");
   fmt::print("  written: {}, {}{}\n", csv, json, png.empty() ? "" : ", " + png);
@@ -149,8 +173,13 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
 Command add_compare_command(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<CompareCommandOptions>();
   CLI::App* sub = app.add_subcommand(
-      "compare", "Simulate every row of the paper's Table I and refit mu_k through the model");
+      "compare",
+      "Simulate every row of your measurements (or the paper's Table I) and refit mu_k through "
+      "the model");
   sub->add_option("--scene", options->scene, "The rig's scene (default scenes/paper-rig.yaml)");
+  sub->add_option("--measured", options->measured,
+                  "Your measurements: a CSV of label, scene keys, period, period_err (default: "
+                  "the paper's Table I, assets/paper/table1-measured.csv)");
   sub->add_option("--set", options->overrides,
                   "Override a scene key, e.g. --set plate.thickness=5mm (repeatable)");
   sub->add_option("--duration", options->duration,

@@ -3,6 +3,7 @@
 // PORT, live from the rig's serial port (cli/estimate_follow). Reading the log is io/hall_log,
 // the estimate lab/log_estimate, the geometry's check lab/geometry_check; this command reads the
 // options and prints (cli/estimate_report).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <unistd.h>
 
@@ -22,16 +24,23 @@
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
+#include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
+#include "io/log_files.hpp"
 #include "lab/geometry_check.hpp"
 #include "lab/log_estimate.hpp"
+#include "lab/log_table.hpp"
 
 namespace fl::cli {
 namespace {
 
+// The exit status when some of several logs gave no period (docs/cli.md).
+constexpr int kSomeLogsFailed = 3;
+
 struct EstimateOptions {
-  std::string log;
+  std::vector<std::string> logs;
+  std::string log;  // the one log, when one is named
   std::string spacing = "89 mm";
   std::string spacing_err = "2 mm";
   std::string gravity = "9.81 m/s^2";
@@ -45,6 +54,9 @@ struct EstimateOptions {
   std::string baud = "250000";
   std::string raw_log;
   std::string duration;
+  std::string material;
+  std::string temperature;
+  std::string out;
 };
 
 fl_estimator::Geometry parse_geometry(const std::string& text) {
@@ -103,9 +115,94 @@ void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& pn
   run_plot_script("plot_hall.py", {json_path.string(), png});
 }
 
+// Whether the logs named are many (a table) or one (today's report): more than one argument, a
+// pattern, or a folder of several logs.
+bool names_many_logs(const std::vector<std::string>& logs) {
+  if (logs.size() > 1) return true;
+  if (logs.empty() || logs.front() == "-") return false;
+  if (is_log_pattern(logs.front())) return true;
+  std::error_code ec;
+  return std::filesystem::is_directory(logs.front(), ec) && expand_log_arguments(logs).size() > 1;
+}
+
+void print_log_table(const std::vector<LogTableRow>& rows) {
+  fmt::print("frictionlab estimate: {} logs\n\n", rows.size());
+  fmt::print("  {:<24} {:>7}  {:>20}  {:>9}  {:>18}  {}\n", "log", "l [mm]", "T +- dT [s]",
+             "N (disc.)", "mu_k +- worst", "material");
+  for (const LogTableRow& r : rows) {
+    const std::string label = r.label.size() > 24 ? r.label.substr(0, 21) + "..." : r.label;
+    if (r.status != "ok") {
+      fmt::print("  {:<24} {:>7.1f}  failed: {}\n", label, r.set_up.spacing * 1e3, r.error);
+      continue;
+    }
+    fmt::print(
+        "  {:<24} {:>7.1f}  {:>9.6f} +- {:>8.6f}  {:>4} ({:>2})  {:>8.4f} +- {:>6.4f}  {}{}\n",
+        label, r.set_up.spacing * 1e3, *r.period, *r.period_err, *r.periods_used,
+        *r.periods_discarded, *r.mu_k, *r.mu_k_err_worst, r.material.value_or("-"),
+        r.temperature ? fmt::format(" at {:g} K", *r.temperature) : std::string());
+  }
+  fmt::print(
+      "\n  dT is the standard error of the mean period; mu_k is the paper's thin formula and its "
+      "worst-case error\n  (from the periods' standard deviation and dl), as the rig computes "
+      "them\n");
+}
+
+int run_many_logs(const EstimateOptions& o, const LogSetUp& set_up, const HallLogOptions& reading) {
+  if (!o.plot.empty())
+    throw InputError({},
+                     "--plot draws one log's signal; with several logs give --out DIR for "
+                     "the table, or estimate one log with --plot");
+  if (!o.follow.empty() || !o.raw_log.empty() || !o.duration.empty())
+    throw InputError({},
+                     "--follow, --log and --duration read the rig's serial port, not logs "
+                     "(give one: estimate LOG..., or estimate --follow PORT)");
+  if (std::find(o.logs.begin(), o.logs.end(), "-") != o.logs.end())
+    throw InputError({}, "- (standard input) is one log: estimate it alone, not among others");
+  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
+  LogTableDefaults defaults;
+  defaults.set_up = set_up;
+  defaults.reading = reading;
+  if (!o.material.empty()) defaults.material = o.material;
+  if (!o.temperature.empty())
+    defaults.temperature = option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
+  std::vector<LogTableRow> rows;
+  for (const std::string& log : expand_log_arguments(o.logs))
+    rows.push_back(estimate_log_row(log, defaults));
+  const nlohmann::json j = log_table_json(rows);
+  std::string written;
+  if (!o.out.empty()) {
+    const std::string csv = o.out + "/estimates.csv";
+    const std::string json = o.out + "/estimates.json";
+    write_file_atomic(csv, log_table_csv(rows));
+    write_file_atomic(json, nlohmann::json{{"logs", j}}.dump(1) + "\n");
+    written = csv + ", " + json;
+  }
+  if (o.json) {
+    fmt::print("{}\n", nlohmann::json{{"logs", j}}.dump(2));
+  } else {
+    print_log_table(rows);
+    if (!written.empty()) fmt::print("  written: {}\n", written);
+  }
+  const auto failed = std::count_if(rows.begin(), rows.end(),
+                                    [](const LogTableRow& r) { return r.status != "ok"; });
+  if (failed == 0) return 0;
+  fmt::print(stderr, "error: {} of {} logs gave no period (their rows say why)\n", failed,
+             rows.size());
+  return kSomeLogsFailed;
+}
+
 int run_estimate(const EstimateOptions& o) {
   const LogSetUp set_up = set_up_from(o);
   const HallLogOptions reading = reading_from(o);
+  if (names_many_logs(o.logs)) return run_many_logs(o, set_up, reading);
+  if (!o.out.empty())
+    throw InputError({},
+                     "--out writes the table of several logs; for one log use --json (or "
+                     "--log with --follow), or name several logs");
+  if (!o.material.empty() || !o.temperature.empty())
+    throw InputError({},
+                     "--material and --temperature go into the table of several logs; one "
+                     "log's estimate does not use them");
   if (!o.follow.empty()) {
     if (!o.log.empty())
       throw InputError({}, "--follow: reads the rig's serial port, not a log file; found both \"" +
@@ -173,9 +270,10 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
       "T +- dT and mu_k +- d mu_k from a Hall-sensor log of the real rig (the rig firmware's "
       "serial output, a serial monitor's capture, or a CSV of time and ADC value), or live from "
       "the rig's serial port, by the estimator the rig's Arduino runs");
-  sub->add_option("LOG", options->log,
+  sub->add_option("LOG", options->logs,
                   "The log: a file, a folder holding one (a run's hall.csv), or - for standard "
-                  "input");
+                  "input. Several logs, a folder of logs or a pattern (logs/*.csv) give a table, "
+                  "one row per log");
   sub->add_option("--columns", options->columns,
                   "The log's fields in order, for a log without a header (or to override it): "
                   "t_us,adc, millis,sensorValue, _,t_ms,adc (_ skips a field)");
@@ -207,7 +305,17 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
                   "come");
   sub->add_option("--duration", options->duration,
                   "With --follow: stop after this long (30s) instead of at Ctrl-C");
-  return Command{sub, [options] { return run_estimate(*options); }};
+  sub->add_option("--material", options->material,
+                  "With several logs: the plate's material, for logs whose sidecar names none");
+  sub->add_option("--temperature", options->temperature,
+                  "With several logs: the rollers' temperature (300 K), for logs whose sidecar "
+                  "names none");
+  sub->add_option("--out", options->out,
+                  "With several logs: the folder for estimates.csv and estimates.json");
+  return Command{sub, [options] {
+                   if (options->logs.size() == 1) options->log = options->logs.front();
+                   return run_estimate(*options);
+                 }};
 }
 
 }  // namespace fl::cli

@@ -28,20 +28,16 @@ struct Simulation {
 
 class Rig {
  public:
-  Rig(const PaperTable& table, const CompareOptions& options)
-      : table_(table),
-        options_(options),
-        paper_([this]() -> const PaperTable& { return table_; }),
-        parts_(shared_once(options.parts)) {}
+  explicit Rig(const CompareOptions& options)
+      : options_(options), paper_(shared_once(options.paper)), parts_(shared_once(options.parts)) {}
 
-  // The rig's scene for a row, read once: the row's material, temperature and duration, with
-  // the paper's mu_k for that material.
-  Scene scene(const CompareRow& row) const {
+  // The rig's scene for a row, read once: the scene's keys, then the row's own keys and the run's
+  // length, with mu_k set as a number where the row reports one.
+  Scene scene(const MeasuredRow& row, double duration) const {
     std::vector<SceneOverride> overrides = options_.overrides;
-    overrides.push_back({"world.duration", fmt::format("{} s", row.duration)});
-    overrides.push_back({"plate.material", row.material});
-    overrides.push_back({"friction.temperature", fmt::format("{} K", row.temperature)});
-    overrides.push_back({"friction.mu_k", row.material});
+    overrides.push_back({"world.duration", fmt::format("{} s", duration)});
+    overrides.insert(overrides.end(), row.keys.begin(), row.keys.end());
+    if (row.mu_k) overrides.push_back({"friction.mu_k", fmt::format("{}", row.mu_k->value)});
     return load_scene_file(options_.scene_file, overrides, paper_, parts_);
   }
 
@@ -66,7 +62,6 @@ class Rig {
   const PartCatalogSource& parts() const { return parts_; }
 
  private:
-  const PaperTable& table_;
   const CompareOptions& options_;
   PaperTableSource paper_;
   PartCatalogSource parts_;
@@ -103,11 +98,10 @@ std::string no_oscillation_reason(const Simulation& s) {
   return "the estimator measured no period";
 }
 
-void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareResult& rig_facts,
-           const CompareOptions& options) {
+void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptions& options) {
   const double target = row.period_measured.value;
-  const double l = rig_facts.spacing;
-  const double h_c = rig_facts.h_c;
+  const double l = row.spacing;
+  const double h_c = row.h_c;
   // Above l / (2 h_c) there is no restoring force: keep every trial below it.
   const double mu_ceiling = h_c > 0.0 ? 0.999 * l / (2.0 * h_c) : 1e9;
   const auto run = [&](double mu, std::optional<double> spacing = std::nullopt) {
@@ -123,7 +117,7 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareResul
     return r;
   };
   const double mu0 = options.start_from_thin_formula
-                         ? std::min(mu_k_from_period_thin(target, l, rig_facts.gravity), mu_ceiling)
+                         ? std::min(mu_k_from_period_thin(target, l, row.gravity), mu_ceiling)
                          : *row.mu_k_thick_formula;
   std::vector<CompareRun> trials{run(mu0)};
   trials.push_back(run(std::min(mu0 * (1.0 + options.slope_step), mu_ceiling)));
@@ -156,25 +150,34 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareResul
     row.refit_note = fmt::format("not converged: the closest run is {:+.4f} % off after {} runs",
                                  100.0 * (*fit.period / target - 1.0), trials.size());
 
-  // The spacing's sensitivity, from one run at l + dl.
-  const double dl = rig_facts.spacing_err > 0.0 ? rig_facts.spacing_err : 0.02 * l;
+  // The spacing's sensitivity, from one run at l + dl (2 % of l where the row gives no dl).
+  const double spacing_err = row.spacing_err.value_or(0.0);
+  const double dl = spacing_err > 0.0 ? spacing_err : 0.02 * l;
   const CompareRun wide = run(fit.mu_k, l + dl);
   const double slope_l = std::log(*wide.period / *fit.period) / std::log((l + dl) / l);
   row.sensitivity_spacing = slope_l;
   // ln mu = (ln T - slope_l ln l) / slope + const: carry dT/T and dl/l through it.
   const double from_period = std::fabs(1.0 / slope) * row.period_measured.uncertainty / target;
-  const double from_spacing = std::fabs(slope_l / slope) * rig_facts.spacing_err / l;
+  const double from_spacing = std::fabs(slope_l / slope) * spacing_err / l;
   row.mu_k_refit_err_worst = fit.mu_k * (from_period + from_spacing);
   row.mu_k_refit_err_quadrature = fit.mu_k * std::hypot(from_period, from_spacing);
 }
 
-CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
+// The row's scene and its rig's numbers (spacing, h_c, g, the first run's mu_k, the initial
+// amplitude), before any simulation.
+struct RowRig {
+  Scene scene;
+  double amplitude = 0.0;
+};
+
+CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
                        const CompareOptions& options) {
-  const double l = facts.spacing;
-  const double h_c = facts.h_c;
-  const double g = facts.gravity;
-  const double mu = row.mu_k_paper.value;
+  const double l = row.spacing;
+  const double h_c = row.h_c;
+  const double g = row.gravity;
+  const double mu = row.mu_k_simulated;
   const double t_measured = row.period_measured.value;
+  const std::string whose = row.mu_k_reported ? "the row's" : "the scene's";
   row.period_thin = period_thin(l, mu, g);
   row.mu_k_thick_formula = mu_k_from_period_thick(t_measured, l, h_c, g);
   row.thin_bias_mu_k = mu_k_from_period_thin(t_measured, l, g) / *row.mu_k_thick_formula - 1.0;
@@ -183,19 +186,15 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
     row.reason = fmt::format(
         "no restoring force: l = {:.1f} mm <= 2 mu_k h_c = 2 x {} x {:.2f} mm = {:.1f} mm", l * 1e3,
         mu, h_c * 1e3, 2.0 * mu * h_c * 1e3);
-    row.refit_note = "not fitted: the paper's numbers give no Coulomb oscillation";
+    row.refit_note = "not fitted: " + whose + " mu_k gives no Coulomb oscillation";
     return row;
   }
   row.period_thick = period_thick(l, mu, h_c, g);
   row.thin_bias_period = row.period_thin / *row.period_thick - 1.0;
 
   Simulation s;
-  double amplitude = facts.amplitude;
-  std::optional<Scene> scene;
   try {
-    scene = rig.scene(row);
-    amplitude = compile_rig(*scene).amplitude_initial;
-    s = rig.simulate(*scene);
+    s = rig.simulate(row_rig.scene);
   } catch (const std::exception& e) {
     row.status = "failed";
     row.reason = e.what();
@@ -207,11 +206,11 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
     row.status = "no oscillation";
     const double tipping = tipping_amplitude(l, mu, h_c);
     row.reason = no_oscillation_reason(s);
-    if (amplitude >= tipping)
+    if (row_rig.amplitude >= tipping)
       row.reason = fmt::format(
           "the plate tips: its amplitude {:.1f} mm reaches l/2 - mu_k h_c = {:.1f} mm ({})",
-          amplitude * 1e3, tipping * 1e3, row.reason);
-    row.refit_note = "not fitted: the paper's numbers give no Coulomb oscillation";
+          row_rig.amplitude * 1e3, tipping * 1e3, row.reason);
+    row.refit_note = "not fitted: " + whose + " mu_k gives no Coulomb oscillation";
     return row;
   }
   row.status = "compared";
@@ -225,7 +224,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;
   try {
-    refit(rig, *scene, row, facts, options);
+    refit(rig, row_rig.scene, row, options);
   } catch (const std::exception& e) {
     row.mu_k_refit.reset();
     row.mu_k_refit_err_worst.reset();
@@ -235,16 +234,45 @@ CompareRow compare_row(Rig& rig, CompareRow row, const CompareResult& facts,
   return row;
 }
 
+// The text after "error: " in a located diagnostic.
+std::string without_location(const std::string& diagnostic) {
+  const std::size_t at = diagnostic.find("error: ");
+  return at == std::string::npos ? diagnostic : diagnostic.substr(at + 7);
+}
+
+// The row's rig, built (not run) so that a key that makes no rig is refused at its cell before
+// any simulation.
+RowRig build_row_rig(const Rig& rig, const MeasuredRow& measured, double duration) {
+  try {
+    RowRig out{rig.scene(measured, duration), 0.0};
+    out.amplitude = compile_rig(out.scene).amplitude_initial;
+    return out;
+  } catch (const InputError& e) {
+    // An error in one of the row's keys is located at its cell; any other at the row's line.
+    SourceLocation where = measured.where;
+    for (std::size_t k = 0; k < measured.keys.size(); ++k)
+      if (e.where().file.starts_with("--set " + measured.keys[k].path + "="))
+        where = measured.key_cells[k];
+    throw InputError(where, "row \"" + measured.label + "\": its rig cannot be built: " +
+                                (e.where().file.starts_with("--set ") ? without_location(e.what())
+                                                                      : std::string(e.what())));
+  } catch (const std::exception& e) {
+    throw InputError(measured.where,
+                     "row \"" + measured.label + "\": its rig cannot be built: " + e.what());
+  }
+}
+
 std::string name_or_empty(const std::optional<Regime>& regime) {
   return regime ? regime_name(*regime) : "";
 }
 
 }  // namespace
 
-CompareResult run_compare(const PaperTable& table, const CompareOptions& options) {
+CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  Rig rig(table, options);
+  Rig rig(options);
   CompareResult result;
+  result.measurements = measured.file;
   // The rig's own numbers, from the scene as the rows will see it (LEGO's mu_k for the amplitude).
   {
     std::vector<SceneOverride> overrides = options.overrides;
@@ -252,38 +280,48 @@ CompareResult run_compare(const PaperTable& table, const CompareOptions& options
     const Scene base = load_scene_file(options.scene_file, overrides, rig.paper(), rig.parts());
     result.scene = base.name;
     result.spacing = base.rollers.spacing;
-    result.spacing_err = table.spacing.uncertainty;
     const CompiledRig compiled = compile_rig(base);
     result.h_c = compiled.plate.h_c;
     result.gravity = compiled.gravity;
     result.amplitude = compiled.amplitude_initial;
     result.duration = base.world.duration;
   }
+  if (!measured.rows.empty() &&
+      std::all_of(measured.rows.begin(), measured.rows.end(), [&](const MeasuredRow& r) {
+        return r.spacing_err == measured.rows.front().spacing_err;
+      }))
+    result.spacing_err = measured.rows.front().spacing_err;
+
+  // Every row's rig built first: a row whose keys make no rig stops the comparison before any run.
   std::vector<CompareRow> rows;
-  for (const PaperMaterial& m : table.materials) {
-    for (const PaperMeasurement* at : {&m.room, m.cold ? &*m.cold : nullptr}) {
-      if (at == nullptr) continue;
-      CompareRow row;
-      row.material = m.key;
-      row.name = m.name;
-      row.temperature = at->temperature;
-      row.period_measured = at->period;
-      row.mu_k_paper = at->mu_k;
-      row.duration = std::max(result.duration, options.min_periods * at->period.value);
-      rows.push_back(row);
-    }
+  std::vector<RowRig> rigs;
+  for (const MeasuredRow& m : measured.rows) {
+    CompareRow row;
+    row.label = m.label;
+    row.keys = m.keys;
+    row.period_measured = m.period;
+    row.mu_k_reported = m.mu_k;
+    row.spacing_err = m.spacing_err;
+    row.duration = std::max(result.duration, options.min_periods * m.period.value);
+    RowRig row_rig = build_row_rig(rig, m, row.duration);
+    const CompiledRig compiled = compile_rig(row_rig.scene);
+    row.material = row_rig.scene.plate.material;
+    row.temperature = row_rig.scene.friction.temperature;
+    row.mu_k_simulated = row_rig.scene.friction.mu_k;
+    row.spacing = row_rig.scene.rollers.spacing;
+    row.h_c = compiled.plate.h_c;
+    row.gravity = compiled.gravity;
+    rows.push_back(std::move(row));
+    rigs.push_back(std::move(row_rig));
   }
-  // Room temperature first, then 77 K, each in the table's order.
-  std::stable_sort(rows.begin(), rows.end(), [](const CompareRow& a, const CompareRow& b) {
-    return a.temperature > b.temperature;
-  });
 
   result.workers = options.workers > 0 ? options.workers : hardware_workers();
   result.rows.resize(rows.size());
   {
     WorkPool<std::pair<std::size_t, CompareRow>> pool(
-        std::min<int>(result.workers, static_cast<int>(rows.size())), [&](std::size_t i) {
-          return std::make_pair(i, compare_row(rig, rows[i], result, options));
+        std::max(1, std::min<int>(result.workers, static_cast<int>(rows.size()))),
+        [&](std::size_t i) {
+          return std::make_pair(i, compare_row(rig, rows[i], rigs[i], options));
         });
     for (std::size_t i = 0; i < rows.size(); ++i) pool.push(i);
     pool.close();
@@ -301,6 +339,10 @@ CompareResult run_compare(const PaperTable& table, const CompareOptions& options
   return result;
 }
 
+std::string paper_measurements_path(const std::string& asset_dir) {
+  return asset_dir + "/paper/table1-measured.csv";
+}
+
 nlohmann::json compare_json(const CompareResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const CompareRow& row : r.rows) {
@@ -310,9 +352,15 @@ nlohmann::json compare_json(const CompareResult& r) {
                       {"spacing_m", run.spacing},
                       {"period_s", json_or_null(run.period)},
                       {"regime", name_or_empty(run.regime)}});
-    rows.push_back({{"material", row.material},
-                    {"name", row.name},
+    nlohmann::json keys = nlohmann::json::object();
+    for (const SceneOverride& k : row.keys) keys[k.path] = k.value;
+    rows.push_back({{"label", row.label},
+                    {"keys", keys},
+                    {"material", row.material},
                     {"temperature_k", row.temperature},
+                    {"spacing_m", row.spacing},
+                    {"spacing_err_m", json_or_null(row.spacing_err)},
+                    {"h_c_m", row.h_c},
                     {"duration_s", row.duration},
                     {"status", row.status},
                     {"reason", row.reason},
@@ -327,8 +375,12 @@ nlohmann::json compare_json(const CompareResult& r) {
                     {"period_thick_s", json_or_null(row.period_thick)},
                     {"thin_bias_period", json_or_null(row.thin_bias_period)},
                     {"thin_bias_mu_k", json_or_null(row.thin_bias_mu_k)},
-                    {"mu_k_paper", row.mu_k_paper.value},
-                    {"mu_k_paper_err", row.mu_k_paper.uncertainty},
+                    {"mu_k_reported", row.mu_k_reported ? nlohmann::json(row.mu_k_reported->value)
+                                                        : nlohmann::json(nullptr)},
+                    {"mu_k_reported_err", row.mu_k_reported && row.mu_k_reported->uncertainty > 0
+                                              ? nlohmann::json(row.mu_k_reported->uncertainty)
+                                              : nlohmann::json(nullptr)},
+                    {"mu_k_simulated", row.mu_k_simulated},
                     {"mu_k_thick_formula", json_or_null(row.mu_k_thick_formula)},
                     {"mu_k_refit", json_or_null(row.mu_k_refit)},
                     {"mu_k_refit_err_worst", json_or_null(row.mu_k_refit_err_worst)},
@@ -344,8 +396,9 @@ nlohmann::json compare_json(const CompareResult& r) {
                     {"runs", runs}});
   }
   return nlohmann::json{{"scene", r.scene},
+                        {"measurements", r.measurements},
                         {"spacing_m", r.spacing},
-                        {"spacing_err_m", r.spacing_err},
+                        {"spacing_err_m", json_or_null(r.spacing_err)},
                         {"h_c_m", r.h_c},
                         {"gravity_m_s2", r.gravity},
                         {"amplitude_m", r.amplitude},
@@ -355,8 +408,10 @@ nlohmann::json compare_json(const CompareResult& r) {
 }
 
 std::string compare_csv(const CompareResult& r) {
-  static const char* const kColumns[] = {"material",
+  static const char* const kColumns[] = {"label",
+                                         "material",
                                          "temperature_k",
+                                         "spacing_m",
                                          "status",
                                          "period_measured_s",
                                          "period_measured_err_s",
@@ -368,8 +423,9 @@ std::string compare_csv(const CompareResult& r) {
                                          "period_thick_s",
                                          "thin_bias_period",
                                          "thin_bias_mu_k",
-                                         "mu_k_paper",
-                                         "mu_k_paper_err",
+                                         "mu_k_reported",
+                                         "mu_k_reported_err",
+                                         "mu_k_simulated",
                                          "mu_k_thick_formula",
                                          "mu_k_refit",
                                          "mu_k_refit_err_worst",

@@ -1,0 +1,54 @@
+// Many Hall-sensor logs at once: each log estimated as `frictionlab estimate` estimates one (its
+// rig from its sidecar, io/log_sidecar, else from the command line), one row per log. A log that
+// gives no period is a row with its error; the others go on. The table's columns are those a
+// measurements file takes (lab/measured_rows), so it feeds `frictionlab compare --measured` and
+// `frictionlab fit` as it is.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/hall_log.hpp"
+#include "lab/log_estimate.hpp"
+
+namespace fl {
+
+struct LogTableRow {
+  std::string log;      // the file read
+  std::string sidecar;  // the sidecar read, "" for none
+  std::string label;
+  LogSetUp set_up;
+  std::optional<std::string> material;
+  std::optional<double> temperature;  // K
+  std::string status;                 // "ok" or "failed"
+  std::string error;                  // why, when failed
+  std::string geometry;               // "one-pulse", "pair"
+  std::optional<int> periods_used;
+  std::optional<int> periods_discarded;
+  std::optional<double> period;               // s, the mean of the accepted periods
+  std::optional<double> period_err;           // s, its standard error
+  std::optional<double> period_std;           // s, the periods' standard deviation
+  std::optional<double> mu_k;                 // thin formula, as the rig computes it
+  std::optional<double> mu_k_err_worst;       // from dT = the standard deviation and dl
+  std::optional<double> mu_k_err_quadrature;  // the same in quadrature
+};
+
+// What the command line gives every log without a sidecar (or whose sidecar leaves a key out).
+struct LogTableDefaults {
+  LogSetUp set_up;
+  std::optional<std::string> material;
+  std::optional<double> temperature;  // K
+  HallLogOptions reading;
+};
+
+// One log's row; never throws for what is wrong with the log or its sidecar (the row says it).
+LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults);
+
+// The rows as a measurements table: CSV (the columns docs/cli.md lists) and JSON.
+std::string log_table_csv(const std::vector<LogTableRow>& rows);
+nlohmann::json log_table_json(const std::vector<LogTableRow>& rows);
+
+}  // namespace fl

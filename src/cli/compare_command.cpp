@@ -14,13 +14,16 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/log_options.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
+#include "io/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "lab/compare.hpp"
+#include "lab/log_against_rig.hpp"
 
 namespace fl::cli {
 namespace {
@@ -28,6 +31,11 @@ namespace {
 struct CompareCommandOptions {
   std::string scene;
   std::string measured;
+  std::string log;
+  std::string geometry;
+  std::string columns;
+  std::string rate;
+  std::string time_unit;
   std::vector<std::string> overrides;
   std::string duration;
   int workers = 0;
@@ -100,11 +108,112 @@ void print_table(const CompareResult& r, bool paper) {
   }
 }
 
+void print_log_report(const LogAgainstRig& r, const std::string& written) {
+  const CompareRow& row = r.fit.rows.front();
+  fmt::print(
+      "frictionlab compare --log: {} against the scene {} (l = {:.1f} mm, h_c = {:.2f} mm)\n\n",
+      r.log, r.fit.scene, row.spacing * 1e3, row.h_c * 1e3);
+  fmt::print(
+      "  the log                T = {:.6f} +- {:.6f} s (standard error, N = {}, {} "
+      "discarded)\n",
+      row.period_measured.value, row.period_measured.uncertainty, r.measured.periods_used,
+      r.measured.periods_discarded);
+  fmt::print(
+      "  the scene's mu_k       {:.4f}: T = {}\n", row.mu_k_simulated,
+      row.period_simulated ? fmt::format("{:.6f} s", *row.period_simulated) : std::string("-"));
+  if (row.mu_k_refit)
+    fmt::print("  mu_k refitted          {:.4f} +- {:.4f} (quadrature, from dT): T = {:.6f} s{}\n",
+               *row.mu_k_refit, row.mu_k_refit_err_quadrature.value_or(NAN),
+               row.period_at_refit.value_or(NAN),
+               row.refit_note.empty() ? "" : " (" + row.refit_note + ")");
+  else
+    fmt::print("  mu_k refitted          none{}\n",
+               row.refit_note.empty() ? "" : ": " + row.refit_note);
+  fmt::print("  simulated at mu_k      {:.4f}: T = {:.6f} +- {:.6f} s (sd), {} periods\n", r.mu_k,
+             r.simulated.period, r.simulated.period_std, r.simulated.periods_used);
+  fmt::print(
+      "  aligned                on the first pulse (the log's time = simulated time {:+.4f} s)\n",
+      r.shift);
+  fmt::print(
+      "  residual               {:.1f} counts rms (first three periods {:.1f}, last three "
+      "{:.1f})\n",
+      r.residual_rms, r.residual_rms_first_periods, r.residual_rms_last_periods);
+  fmt::print("  {:<22} {:>12} {:>12}\n", "", "log", "simulated");
+  fmt::print("  {:<22} {:>11.3f}% {:>11.3f}%\n", "period scatter (sd/T)",
+             100 * r.measured.period_std / r.measured.period,
+             100 * r.simulated.period_std / r.simulated.period);
+  fmt::print("  {:<22} {:>12} {:>12}\n", "periods discarded", r.measured.periods_discarded,
+             r.simulated.periods_discarded);
+  const auto drift = [](const TraceFacts& f) {
+    return f.period_drift ? fmt::format("{:+.2f}", 60e3 * *f.period_drift) : std::string("-");
+  };
+  fmt::print("  {:<22} {:>12} {:>12}\n", "drift [ms/min]", drift(r.measured), drift(r.simulated));
+  fmt::print("  {:<22} {:>12.2f} {:>12.2f}\n", "pulse width [ms]", 1e3 * r.measured.pulse_width,
+             1e3 * r.simulated.pulse_width);
+  fmt::print("  {:<22} {:>12.0f} {:>12.0f}\n", "pulse height [counts]", r.measured.pulse_height,
+             r.simulated.pulse_height);
+  fmt::print("  {:<22} {:>+12.1f} {:>+12.1f}\n", "baseline drift [counts]",
+             r.measured.baseline_last - r.measured.baseline_first,
+             r.simulated.baseline_last - r.simulated.baseline_first);
+  if (r.disagreements.empty())
+    fmt::print("\n  the log and its simulation agree in every test above\n");
+  else
+    fmt::print("\n  where they disagree:\n");
+  for (const std::string& d : r.disagreements) fmt::print("  - {}\n", d);
+  if (!written.empty()) fmt::print("\n  written: {}\n", written);
+}
+
+int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
+  const HallLog log = read_hall_log(o.log, log_reading(o.columns, o.rate, o.time_unit));
+  LogSetUp set_up;
+  set_up.geometry = parse_geometry(o.geometry.empty() ? "auto" : o.geometry);
+  {
+    const Scene scene =
+        load_scene_file(options.scene_file, options.overrides, options.paper, options.parts);
+    set_up.spacing = scene.rollers.spacing;
+    set_up.gravity = scene.world.gravity;
+  }
+  const LogAgainstRig r = compare_log_with_rig(log, set_up, options);
+  const nlohmann::json j = log_against_rig_json(r);
+  const std::string report = o.out + "/compare-log.json";
+  const std::string traces = o.out + "/compare-log-traces.json";
+  write_file_atomic(report, j.dump(1) + "\n");
+  write_file_atomic(traces, log_against_rig_plot_data(r).dump() + "\n");
+  std::string written = report + ", " + traces;
+  std::string plot_failure;
+  if (o.plot) {
+    const std::string png = o.out + "/compare-log.png";
+    try {
+      run_plot_script("plot_log_vs_sim.py", {traces, png});
+      written += ", " + png;
+    } catch (const std::runtime_error& e) {
+      plot_failure = e.what();
+    }
+  }
+  if (o.json)
+    fmt::print("{}\n", j.dump(2));
+  else
+    print_log_report(r, written);
+  if (plot_failure.empty()) return 0;
+  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
+  return 1;
+}
+
 int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
   const std::string asset_dir = resolve_asset_dir(global.asset_dir);
-  const bool paper = o.measured.empty();
+  if (o.log.empty() &&
+      (!o.geometry.empty() || !o.columns.empty() || !o.rate.empty() || !o.time_unit.empty()))
+    throw InputError({},
+                     "--geometry, --columns, --rate and --time-unit say how to read a log; "
+                     "they go with --log LOG");
+  if (!o.log.empty() && !o.measured.empty())
+    throw InputError({},
+                     "--log compares one Hall log with its simulation, --measured a table of "
+                     "periods; give one");
+  const bool paper = o.measured.empty() && o.log.empty();
   const MeasuredRows measured =
-      read_measured_rows(paper ? paper_measurements_path(asset_dir) : o.measured);
+      o.log.empty() ? read_measured_rows(paper ? paper_measurements_path(asset_dir) : o.measured)
+                    : MeasuredRows{};
   CompareOptions options;
   options.scene_file = o.scene.empty() ? default_scene() : o.scene;
   const SceneSources sources = scene_sources(global);
@@ -119,7 +228,9 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
           return std::any_of(r.keys.begin(), r.keys.end(),
                              [&](const SceneOverride& k) { return k.path == over.path; });
         });
-    if (compare_sets_key(over.path) || by_rows)
+    // With --log, mu_k is where the refit starts (the scene's own otherwise).
+    const bool start_mu_k = !o.log.empty() && over.path == "friction.mu_k";
+    if ((compare_sets_key(over.path) && !start_mu_k) || by_rows)
       throw InputError(
           SourceLocation{"--set " + text, 0, 0},
           fmt::format("expected a key compare leaves to the scene, found {}, which {}; {}",
@@ -146,8 +257,14 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
       if (done == total) fmt::print(stderr, "\n");
     }
   };
+  if (!o.log.empty()) return run_compare_log(o, options);
   const CompareResult result = run_compare(measured, options);
-  const nlohmann::json j = compare_json(result);
+  nlohmann::json j = compare_json(result);
+  // Rows of a table of logs whose log gave no period: left out, and said.
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const SkippedRow& row : measured.skipped)
+    skipped.push_back({{"label", row.label}, {"line", row.where.line}, {"reason", row.reason}});
+  j["skipped"] = skipped;
   const std::string csv = o.out + "/compare.csv";
   const std::string json = o.out + "/compare.json";
   write_file_atomic(csv, compare_csv(result));
@@ -162,6 +279,9 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
     return 0;
   }
   print_table(result, paper);
+  for (const SkippedRow& row : measured.skipped)
+    fmt::print("  left out: {} (line {}, {}: no period to compare)\n", row.label, row.where.line,
+               row.reason);
   fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", result.simulations, result.wall_s,
              result.workers, result.workers == 1 ? "" : "s");
   fmt::print("  written: {}, {}{}\n", csv, json, png.empty() ? "" : ", " + png);
@@ -180,6 +300,16 @@ Command add_compare_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--measured", options->measured,
                   "Your measurements: a CSV of label, scene keys, period, period_err (default: "
                   "the paper's Table I, assets/paper/table1-measured.csv)");
+  sub->add_option("--log", options->log,
+                  "A Hall log of your rig: refit mu_k so the simulated signal has its period, "
+                  "and set the two signals side by side (compare-log.json, --plot)");
+  sub->add_option("--geometry", options->geometry,
+                  "With --log: pulses per period, auto, one or pair (as for estimate)");
+  sub->add_option("--columns", options->columns,
+                  "With --log: the log's fields in order (as for estimate)");
+  sub->add_option("--rate", options->rate, "With --log: the sample rate of a log without times");
+  sub->add_option("--time-unit", options->time_unit,
+                  "With --log: the unit of the log's time column (us, ms or s)");
   sub->add_option("--set", options->overrides,
                   "Override a scene key, e.g. --set plate.thickness=5mm (repeatable)");
   sub->add_option("--duration", options->duration,

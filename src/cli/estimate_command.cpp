@@ -21,6 +21,7 @@
 #include "cli/commands.hpp"
 #include "cli/estimate_follow.hpp"
 #include "cli/estimate_report.hpp"
+#include "cli/log_options.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
@@ -59,13 +60,6 @@ struct EstimateOptions {
   std::string out;
 };
 
-fl_estimator::Geometry parse_geometry(const std::string& text) {
-  if (text == "auto") return fl_estimator::kAutoGeometry;
-  if (text == "one") return fl_estimator::kOnePulse;
-  if (text == "pair") return fl_estimator::kPulsePair;
-  throw InputError({}, "--geometry: expected auto, one or pair, found \"" + text + "\"");
-}
-
 LogSetUp set_up_from(const EstimateOptions& o) {
   LogSetUp set_up;
   set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
@@ -82,16 +76,7 @@ LogSetUp set_up_from(const EstimateOptions& o) {
 }
 
 HallLogOptions reading_from(const EstimateOptions& o) {
-  HallLogOptions reading;
-  reading.columns = o.columns;
-  reading.time_unit = o.time_unit;
-  if (!o.rate.empty()) {
-    reading.rate_hz = option_quantity(o.rate, Dimension::kFrequency, "--rate");
-    if (!(reading.rate_hz > 0.0) || !std::isfinite(reading.rate_hz))
-      throw InputError({}, "--rate: expected a positive sample rate (for example 1kHz), found \"" +
-                               o.rate + "\"");
-  }
-  return reading;
+  return log_reading(o.columns, o.rate, o.time_unit);
 }
 
 // The plot's data as JSON in a temporary file, then the script.

@@ -357,5 +357,27 @@ TEST(CliCompare, EveryRowOfTableOneIsReported) {
       << table.out;
 }
 
+// compare --log: the example log of the paper's rig at 89 mm against the paper's rig, with the
+// report, the traces and the plot written; options that read a log refused without one.
+TEST(CliCompare, ALogAgainstItsSimulation) {
+  const fs::path out = folder("log");
+  const std::string log =
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/assets/examples/spacing-series/lego-l089.csv";
+  const auto r = lab("compare --log " + log + " --json --plot --out " + out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  // The example was simulated from this scene at mu_k 0.29: the refit finds it.
+  EXPECT_NEAR(j["mu_k_refit"].get<double>(), 0.29, 1e-3);
+  EXPECT_TRUE(j["disagreements"].empty()) << j["disagreements"];
+  for (const char* file : {"compare-log.json", "compare-log-traces.json", "compare-log.png"})
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  auto refused = lab("compare --geometry one --out " + out.string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("they go with --log LOG"), std::string::npos) << refused.err;
+  refused = lab("compare --log " + log + " --measured x.csv --out " + out.string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("give one"), std::string::npos) << refused.err;
+}
+
 }  // namespace
 }  // namespace fl

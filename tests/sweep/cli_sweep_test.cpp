@@ -379,5 +379,29 @@ TEST(CliCompare, ALogAgainstItsSimulation) {
   EXPECT_NE(refused.err.find("give one"), std::string::npos) << refused.err;
 }
 
+// README's worked example: the example spacing series estimated into a table, the table compared
+// with the paper's rig it was simulated from. The thin mu_k each log reports falls with l (the
+// thick plate's bias 2 mu_k h_c / l); the refit through the rig finds the truth, 0.29, in every row.
+TEST(CliCompare, TheExampleSeriesRefitsToTheTruth) {
+  const fs::path out = folder("series");
+  const std::string series =
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/assets/examples/spacing-series";
+  const auto table = lab("estimate " + series + " --out " + out.string());
+  ASSERT_EQ(table.status, 0) << table.err;
+  const auto r = lab("compare --measured " + (out / "estimates.csv").string() + " --json --out " +
+                     out.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = nlohmann::json::parse(r.out)["rows"];
+  ASSERT_EQ(rows.size(), 7u);
+  double previous_thin = 1.0;
+  for (const auto& row : rows) {
+    EXPECT_EQ(row["status"], "compared") << row["label"];
+    EXPECT_LT(row["mu_k_reported"].get<double>(), previous_thin) << row["label"];
+    previous_thin = row["mu_k_reported"].get<double>();
+    // The log's T is within a few standard errors (about 5e-5 T) of the scene's: mu_k within 1e-3.
+    EXPECT_NEAR(row["mu_k_refit"].get<double>(), 0.29, 1e-3) << row["label"];
+  }
+}
+
 }  // namespace
 }  // namespace fl

@@ -9,6 +9,7 @@
 #include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "lab/accuracy_study.hpp"
 
 namespace fl::cli {
@@ -36,6 +37,19 @@ std::string study_csv(const AccuracyStudy& study) {
 }
 
 int run_accuracy(const AccuracyOptions& o, const GlobalOptions& global) {
+  // The study sets each point's length (--periods), step and solver iterations itself.
+  if (!o.scene.duration.empty())
+    throw InputError(SourceLocation{"--duration", 0, 0},
+                     "each point simulates --periods periods of the thick-plate period; give "
+                     "--periods N instead");
+  for (const std::string& text : o.scene.overrides) {
+    const std::string path = parse_override(text).path;
+    if (path == "world.duration" || path == "world.time_step" || path == "world.solver_iterations")
+      throw InputError(SourceLocation{"--set " + text, 0, 0},
+                       "the study sets " + path +
+                           " for each point of its grid, so this would be ignored; drop it (the "
+                           "length is --periods)");
+  }
   const Scene scene = load_scene_with_options(o.scene, global);
   AccuracyGrid grid;
   grid.periods = o.periods;

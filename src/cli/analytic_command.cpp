@@ -221,7 +221,20 @@ Command add_analytic_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--v-s", options->v_s, "Stribeck speed v_s, e.g. 1mm/s (stribeck)");
   sub->add_option("--beta", options->beta, "Slope of mu with slip speed, e.g. -0.01s/m (stribeck)");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
-  return Command{sub, [options, &global] { return run_analytic(*options, global); }};
+  return Command{sub, [options, &global, sub] {
+                   // Options the report would ignore are refused.
+                   if (sub->count("--period-err") > 0 && options->period.empty())
+                     throw InputError({},
+                                      "--period-err is the uncertainty of --period (with "
+                                      "--material the paper's dT is used); give --period, or "
+                                      "drop --period-err");
+                   if (sub->count("--temperature") > 0 && options->material.empty())
+                     throw InputError({},
+                                      "--temperature picks the row of --material in the "
+                                      "paper's table; give --material, or drop "
+                                      "--temperature");
+                   return run_analytic(*options, global);
+                 }};
 }
 
 }  // namespace fl::cli

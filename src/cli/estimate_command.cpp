@@ -297,7 +297,11 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
                   "names none");
   sub->add_option("--out", options->out,
                   "With several logs: the folder for estimates.csv and estimates.json");
-  return Command{sub, [options] {
+  return Command{sub, [options, sub] {
+                   if (sub->count("--baud") > 0 && options->follow.empty())
+                     throw InputError({},
+                                      "--baud is the serial port's rate for --follow PORT; "
+                                      "a log file has none: drop it, or add --follow");
                    if (options->logs.size() == 1) options->log = options->logs.front();
                    return run_estimate(*options);
                  }};

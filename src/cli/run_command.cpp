@@ -57,7 +57,31 @@ void print_video(const VideoReport& v, const VideoRequest& request) {
   }
 }
 
+// An option the run would ignore is refused: the frame options without frames to draw, and a
+// time step both set and picked.
+void refuse_ignored_options(const RunCommandOptions& o) {
+  if (!o.video.any()) {
+    const std::pair<const char*, bool> frame_options[] = {{"--gl", !o.video.gl.empty()},
+                                                          {"--size", !o.size.empty()},
+                                                          {"--fps", o.video.fps.has_value()},
+                                                          {"--slow-motion", !o.slow_motion.empty()},
+                                                          {"--camera", !o.camera.empty()}};
+    for (const auto& [name, given] : frame_options)
+      if (given)
+        throw InputError(SourceLocation{name, 0, 0},
+                         "this option shapes the frames of --video, --frames or --still, and the "
+                         "run draws none; add one of them, or drop it");
+  }
+  if (!o.accuracy.empty())
+    for (const std::string& text : o.scene.overrides)
+      if (parse_override(text).path == "world.time_step")
+        throw InputError(SourceLocation{"--set " + text, 0, 0},
+                         "--accuracy picks the time step, so this one would be ignored; give one "
+                         "of them");
+}
+
 int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
+  refuse_ignored_options(o);
   Scene scene = load_scene_with_options(o.scene, global);
   if (!o.accuracy.empty()) {
     const double target = option_quantity(o.accuracy, Dimension::kDimensionless, "--accuracy");

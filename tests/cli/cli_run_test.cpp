@@ -155,6 +155,35 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
 // What the run did not measure is null, and a fallback says it is one: a sensor the magnets never
 // reach gives no period, no spread and no estimator mu_k, and mu_k from the trajectory with its
 // source named; a scene without a sensor has no estimator counts.
+// An option a command would ignore is an error, before any work.
+TEST(CliRun, AnOptionTheCommandWouldIgnoreIsRefused) {
+  struct Case {
+    std::string args;
+    std::string message;
+  };
+  for (const Case& c : {
+           Case{"run " + kMinimal + " --camera top",
+                "--camera: error: this option shapes the frames"},
+           Case{"run " + kMinimal + " --fps 10", "--fps: error: this option shapes the frames"},
+           Case{"run " + kMinimal + " --size 640x480", "--size: error:"},
+           Case{"run " + kMinimal + " --gl osmesa", "--gl: error:"},
+           Case{"run " + kMinimal + " --slow-motion 2", "--slow-motion: error:"},
+           Case{"run " + kMinimal + " --accuracy 0.01% --set world.time_step=1ms",
+                "--accuracy picks the time step"},
+           Case{"accuracy " + kMinimal + " --duration 2s", "give --periods N instead"},
+           Case{"accuracy " + kMinimal + " --set world.time_step=1ms",
+                "for each point of its grid"},
+           Case{"analytic --mu-k 0.3 --period-err 0.01s", "--period-err is the uncertainty"},
+           Case{"analytic --mu-k 0.3 --temperature 77K", "--temperature picks the row"},
+           Case{"estimate " + kMinimal + " --baud 9600", "--baud is the serial port's rate"},
+       }) {
+    const test::CommandResult r = lab(c.args);
+    EXPECT_EQ(r.status, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << c.args << "\n" << r.out;
+  }
+}
+
 TEST(CliRun, NoNumberWithoutASource) {
   const auto far =
       lab("run " + kMinimal + " --duration 5s --json --set sensor.position=[400mm,0mm,15mm]");

@@ -381,7 +381,8 @@ TEST(CliCompare, ALogAgainstItsSimulation) {
 
 // README's worked example: the example spacing series estimated into a table, the table compared
 // with the paper's rig it was simulated from. The thin mu_k each log reports falls with l (the
-// thick plate's bias 2 mu_k h_c / l); the refit through the rig finds the truth, 0.29, in every row.
+// thick plate's bias 2 mu_k h_c / l); the refit through the rig finds the truth, 0.29, in every
+// row.
 TEST(CliCompare, TheExampleSeriesRefitsToTheTruth) {
   const fs::path out = folder("series");
   const std::string series =

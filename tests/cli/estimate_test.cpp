@@ -216,14 +216,14 @@ TEST_F(Estimate, StandardInputAndAFolder) {
   std::filesystem::copy_file(log, dir_ / "one" / "rig-log.txt");
   EXPECT_EQ(json((dir_ / "one").string())["period_s"], file["period_s"]);
   std::filesystem::copy_file(log, dir_ / "one" / "again.csv");
-  const test::CommandResult two = lab((dir_ / "one").string());
-  EXPECT_EQ(two.status, 2);
-  EXPECT_EQ(two.err.rfind((dir_ / "one").string() +
-                              ": error: expected a folder holding one log, "
-                              "found 2 (again.csv, rig-log.txt): give the log's file",
-                          0),
-            0u)
-      << two.err;
+  // A folder of several logs: the table of them, one row per log, by name.
+  const test::CommandResult two = lab((dir_ / "one").string() + " --json");
+  ASSERT_EQ(two.status, 0) << two.err;
+  const nlohmann::json rows = nlohmann::json::parse(two.out)["logs"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["label"], "again.csv");
+  EXPECT_EQ(rows[1]["label"], "rig-log.txt");
+  EXPECT_EQ(rows[1]["period_s"], file["period_s"]);
 }
 
 // Each error's advice names an option, and following it gives the true period.

@@ -58,8 +58,8 @@ struct RigFit {
 };
 
 // Throws RigFitError when a row's run gives no period, fl::DomainError for a series the fit
-// refuses or whose closed-form fit has no mu_k (a falling line), and std::runtime_error naming
-// the key when the scene refuses a row's spacing.
+// refuses or whose closed-form fit has no mu_k (a falling line), and InputError naming the row
+// and the scene's key when the scene cannot be built at a row's spacing.
 RigFit fit_through_rig(std::span<const SpacingPeriod> series, const RigFitRequest& request);
 
 }  // namespace fl

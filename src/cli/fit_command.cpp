@@ -106,9 +106,8 @@ void print_report(const SpacingFitReport& r) {
                                         -*f.h_c / *f.h_c_err)
                           : std::string());
   if (f.correlation)
-    fmt::print("  correlation            {:+.3f} (mu_k with h_c: a larger h_c goes with a larger "
-               "mu_k)\n",
-               *f.correlation);
+    fmt::print("  correlation            {:+.3f} (of mu_k and h_c: a larger h_c goes with a {} mu_k)\n",
+               *f.correlation, *f.correlation < 0.0 ? "smaller" : "larger");
   fmt::print("  chi^2                  {:.3f} for {} degree{} of freedom{}\n", f.chi2,
              f.degrees_of_freedom, f.degrees_of_freedom == 1 ? "" : "s",
              f.chi2_per_dof ? fmt::format(" (chi^2/dof {:.3f})", *f.chi2_per_dof)

@@ -78,12 +78,12 @@ void print_monte_carlo(const AnalyticReport& r) {
       "[{:.4f}, {:.4f}]\n",
       m.mean, m.sd ? fmt::format("{:.4f}", *m.sd) : std::string("-"), mc.accepted, mc.seed,
       m.quantile_025, m.quantile_975);
-  fmt::print(
-      "                               thick formula on T, l{} drawn from Gaussians{}{}\n",
-      r.set_up.h_c_err > 0.0 ? " and h_c" : "",
-      r.set_up.h_c_err > 0.0 ? " (the rules above leave dh_c out)" : "",
-      mc.skipped > 0 ? fmt::format("; {} draws outside the formula's domain skipped", mc.skipped)
-                     : std::string());
+  fmt::print("                               thick formula on T, l{} drawn from Gaussians{}{}\n",
+             r.set_up.h_c_err > 0.0 ? " and h_c" : "",
+             r.set_up.h_c_err > 0.0 ? " (the rules above leave dh_c out)" : "",
+             mc.skipped > 0
+                 ? fmt::format("; {} draws outside the formula's domain skipped", mc.skipped)
+                 : std::string());
 }
 
 void print_report(const AnalyticReport& r) {
@@ -182,9 +182,8 @@ void print_report(const AnalyticReport& r) {
 // The histogram's data as JSON in a temporary file, then the script.
 void draw_histogram(const AnalyticReport& report, const std::string& png) {
   const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-  const std::filesystem::path json_path =
-      std::filesystem::temp_directory_path() /
-      fmt::format("frictionlab-mc-{}-{}.json", getpid(), stamp);
+  const std::filesystem::path json_path = std::filesystem::temp_directory_path() /
+                                          fmt::format("frictionlab-mc-{}-{}.json", getpid(), stamp);
   {
     std::ofstream f(json_path);
     f << monte_carlo_plot_data(report).dump();
@@ -207,8 +206,8 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
   set_up.h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
   set_up.h_c_err = option_quantity(o.h_c_err, Dimension::kLength, "--h-c-err");
   if (!(set_up.h_c_err >= 0.0) || !std::isfinite(set_up.h_c_err))
-    throw InputError({}, "--h-c-err: expected an uncertainty of 0 or more, found \"" + o.h_c_err +
-                             "\"");
+    throw InputError(
+        {}, "--h-c-err: expected an uncertainty of 0 or more, found \"" + o.h_c_err + "\"");
   set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
   set_up.roller_radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
   set_up.roller_speed = option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
@@ -229,12 +228,14 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
 
   const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
   if (mc && !o.mu_k.empty())
-    throw InputError({}, "--mc: carries a measured period's uncertainty into mu_k; a given mu_k "
-                         "has none: give --period T --period-err dT (or --material) instead of "
-                         "--mu-k");
+    throw InputError({},
+                     "--mc: carries a measured period's uncertainty into mu_k; a given mu_k "
+                     "has none: give --period T --period-err dT (or --material) instead of "
+                     "--mu-k");
   if (!o.plot.empty() && !mc)
-    throw InputError({}, "--plot: draws the Monte Carlo's histogram of mu_k; add --mc N (e.g. "
-                         "--mc 100000)");
+    throw InputError({},
+                     "--plot: draws the Monte Carlo's histogram of mu_k; add --mc N (e.g. "
+                     "--mc 100000)");
   // The plot's place is checked before any work; a plot that fails still leaves the results.
   if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
 
@@ -263,8 +264,9 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
   }
   if (o.json) {
     nlohmann::json j = analytic_json(report);
-    if (mc) j["plot"] = o.plot.empty() || !plot_failure.empty() ? nlohmann::json(nullptr)
-                                                                : nlohmann::json(o.plot);
+    if (mc)
+      j["plot"] = o.plot.empty() || !plot_failure.empty() ? nlohmann::json(nullptr)
+                                                          : nlohmann::json(o.plot);
     fmt::print("{}\n", j.dump(2));
   } else {
     print_report(report);

@@ -73,9 +73,8 @@ void require_physical(const SpacingFitReport& r) {
                     "2 mu_k h_c = {:.1f} mm (mu_k = {:.4g}, h_c = {:.2f} mm), where no plate "
                     "oscillates; the rows do not lie on one thick-plate line (this row's "
                     "residual is {:+.1f} sd): check its values, or measure at larger spacings",
-                    s.rows[i].measurement.spacing * 1e3,
-                    *spacing_without_restoring_force(f) * 1e3, *f.mu_k, *f.h_c * 1e3,
-                    f.rows[i].residual_sigma));
+                    s.rows[i].measurement.spacing * 1e3, *spacing_without_restoring_force(f) * 1e3,
+                    *f.mu_k, *f.h_c * 1e3, f.rows[i].residual_sigma));
   }
 }
 
@@ -102,12 +101,13 @@ void print_report(const SpacingFitReport& r) {
                               : std::string());
   fmt::print("  mu_k                   {}\n", pm(f.mu_k, f.mu_k_err, 1.0, 4));
   fmt::print("  h_c                    {} mm{}\n", pm(f.h_c, f.h_c_err, 1e3, 2),
-             *f.h_c < 0.0 ? fmt::format(" (below the contact line: {:.1f} sd from 0)",
-                                        -*f.h_c / *f.h_c_err)
-                          : std::string());
+             *f.h_c < 0.0
+                 ? fmt::format(" (below the contact line: {:.1f} sd from 0)", -*f.h_c / *f.h_c_err)
+                 : std::string());
   if (f.correlation)
-    fmt::print("  correlation            {:+.3f} (of mu_k and h_c: a larger h_c goes with a {} mu_k)\n",
-               *f.correlation, *f.correlation < 0.0 ? "smaller" : "larger");
+    fmt::print(
+        "  correlation            {:+.3f} (of mu_k and h_c: a larger h_c goes with a {} mu_k)\n",
+        *f.correlation, *f.correlation < 0.0 ? "smaller" : "larger");
   fmt::print("  chi^2                  {:.3f} for {} degree{} of freedom{}\n", f.chi2,
              f.degrees_of_freedom, f.degrees_of_freedom == 1 ? "" : "s",
              f.chi2_per_dof ? fmt::format(" (chi^2/dof {:.3f})", *f.chi2_per_dof)
@@ -129,7 +129,8 @@ void print_report(const SpacingFitReport& r) {
                in.label.substr(0, 14),
                pm(in.measurement.spacing, in.measurement.spacing_err, 1e3, 1),
                pm(in.measurement.period, in.measurement.period_err, 1.0, 4),
-               out.period_fit.value_or(std::numeric_limits<double>::quiet_NaN()), out.residual_sigma, out.mu_k_thin);
+               out.period_fit.value_or(std::numeric_limits<double>::quiet_NaN()),
+               out.residual_sigma, out.mu_k_thin);
     if (r.rig)
       fmt::print(" {:>11.5f} {:>+10.2e}", r.rig->rows[i].period_simulated,
                  r.rig->rows[i].correction - 1.0);
@@ -146,8 +147,8 @@ void print_report(const SpacingFitReport& r) {
     if (mc.mu_k) {
       fmt::print("    mu_k                 {}  (fit: +- {:.4f})\n", interval(*mc.mu_k, 1.0, 4, ""),
                  *f.mu_k_err);
-      fmt::print("    h_c                  {}  (fit: +- {:.2f} mm)\n", interval(*mc.h_c, 1e3, 2, " mm"),
-                 *f.h_c_err * 1e3);
+      fmt::print("    h_c                  {}  (fit: +- {:.2f} mm)\n",
+                 interval(*mc.h_c, 1e3, 2, " mm"), *f.h_c_err * 1e3);
       if (mc.correlation)
         fmt::print("    correlation          {:+.3f}  (fit: {:+.3f})\n", *mc.correlation,
                    *f.correlation);
@@ -164,9 +165,9 @@ void print_report(const SpacingFitReport& r) {
     fmt::print("    mu_k                 {} (closed form {:.4f}; {:+.2e} relative)\n",
                pm(g.mu_k, g.mu_k_err, 1.0, 4), *rig.closed_form.mu_k,
                *g.mu_k / *rig.closed_form.mu_k - 1.0);
-    fmt::print("    h_c                  {} mm fitted; the scene's plate has {:.2f} mm ({:+.1f} sd)\n",
-               pm(g.h_c, g.h_c_err, 1e3, 2), rig.h_c_scene * 1e3,
-               (*g.h_c - rig.h_c_scene) / *g.h_c_err);
+    fmt::print(
+        "    h_c                  {} mm fitted; the scene's plate has {:.2f} mm ({:+.1f} sd)\n",
+        pm(g.h_c, g.h_c_err, 1e3, 2), rig.h_c_scene * 1e3, (*g.h_c - rig.h_c_scene) / *g.h_c_err);
     if (g.chi2_per_dof) fmt::print("    chi^2/dof            {:.3f}\n", *g.chi2_per_dof);
   }
 }
@@ -199,12 +200,13 @@ void draw_plot(const nlohmann::json& j, const std::string& written_json, const s
 int run_fit(const FitOptions& o, const GlobalOptions& global) {
   const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
   if (!(gravity > 0.0) || !std::isfinite(gravity))
-    throw InputError({}, "--gravity: expected a finite positive acceleration, found \"" +
-                             o.gravity + "\"");
+    throw InputError(
+        {}, "--gravity: expected a finite positive acceleration, found \"" + o.gravity + "\"");
   const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
   if (!o.through_rig && (!o.scene.empty() || !o.overrides.empty()))
-    throw InputError({}, "--scene and --set name the rig --through-rig simulates; add "
-                         "--through-rig");
+    throw InputError({},
+                     "--scene and --set name the rig --through-rig simulates; add "
+                     "--through-rig");
   std::string png;
   if (o.plot_option->count() > 0) {
     if (!o.plot.empty()) {
@@ -212,8 +214,9 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
     } else if (!o.out.empty()) {
       png = (std::filesystem::path(o.out) / "fit.png").string();
     } else {
-      throw InputError({}, "--plot: expected a PNG to draw (--plot fit.png), or --out DIR for "
-                           "DIR/fit.png; found neither");
+      throw InputError({},
+                       "--plot: expected a PNG to draw (--plot fit.png), or --out DIR for "
+                       "DIR/fit.png; found neither");
     }
   }
   // Output places are checked before any work; a plot that fails still leaves the results.
@@ -225,8 +228,8 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
   SpacingFitReport report = fit_spacing_series(std::move(series), gravity);
   require_physical(report);
   if (mc)
-    report.monte_carlo = thick_plate_fit_monte_carlo(report.series.measurements(),
-                                                     {.gravity = gravity}, *mc);
+    report.monte_carlo =
+        thick_plate_fit_monte_carlo(report.series.measurements(), {.gravity = gravity}, *mc);
   if (o.through_rig) {
     SceneOptions scene_options;
     scene_options.file = o.scene.empty() ? default_scene() : o.scene;
@@ -237,8 +240,9 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
     try {
       report.rig = fit_through_rig(report.series.measurements(), request);
     } catch (const RigFitError& e) {
-      fmt::print(stderr, "error: --through-rig: {}; the closed-form fit stands (run without "
-                         "--through-rig), or simulate a scene that oscillates there\n",
+      fmt::print(stderr,
+                 "error: --through-rig: {}; the closed-form fit stands (run without "
+                 "--through-rig), or simulate a scene that oscillates there\n",
                  e.what());
       return 3;
     }
@@ -265,8 +269,8 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
   }
   if (o.json) {
     nlohmann::json out = j;
-    out["plot"] = png.empty() || !plot_failure.empty() ? nlohmann::json(nullptr)
-                                                       : nlohmann::json(png);
+    out["plot"] =
+        png.empty() || !plot_failure.empty() ? nlohmann::json(nullptr) : nlohmann::json(png);
     fmt::print("{}\n", out.dump(2));
   } else {
     print_report(report);

@@ -13,8 +13,10 @@ void add_monte_carlo_options(CLI::App& command, MonteCarloOptions& options) {
   CLI::Option* mc = command.add_option("--mc", options.draws,
                                        "Carry the uncertainties into mu_k by Monte Carlo with "
                                        "this many draws (e.g. 100000)");
-  command.add_option("--seed", options.seed, "The Monte Carlo's seed (the same seed, the same "
-                                             "numbers)")
+  command
+      .add_option("--seed", options.seed,
+                  "The Monte Carlo's seed (the same seed, the same "
+                  "numbers)")
       ->capture_default_str()
       ->needs(mc);
 }

@@ -26,9 +26,9 @@ struct MuKMeasurement {
 };
 
 struct MonteCarloRequest {
-  int draws = 0;               // > 0
-  std::uint64_t seed = 1;      // the same seed gives the same bits
-  bool keep_samples = true;    // the accepted draws of mu_k, in draw order, for a histogram
+  int draws = 0;             // > 0
+  std::uint64_t seed = 1;    // the same seed gives the same bits
+  bool keep_samples = true;  // the accepted draws of mu_k, in draw order, for a histogram
 };
 
 struct MuKMonteCarlo {

@@ -9,7 +9,7 @@ namespace fl {
 
 struct SampleSummary {
   double mean = 0.0;
-  std::optional<double> sd;  // sample standard deviation (n - 1); absent below 2 samples
+  std::optional<double> sd;   // sample standard deviation (n - 1); absent below 2 samples
   double quantile_025 = 0.0;  // 2.5 % quantile, linear between order statistics
   double quantile_975 = 0.0;  // 97.5 % quantile
 };

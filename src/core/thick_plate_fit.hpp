@@ -45,16 +45,16 @@ struct FitRow {
 
 struct ThickPlateFit {
   // The straight line T^2 = s l + c.
-  double slope = 0.0;                           // s [s^2/m]
-  double intercept = 0.0;                       // c [s^2]
-  double slope_err = 0.0;                       // standard error of s [s^2/m]
-  double intercept_err = 0.0;                   // standard error of c [s^2]
-  double slope_intercept_covariance = 0.0;      // [s^4/m]
+  double slope = 0.0;                       // s [s^2/m]
+  double intercept = 0.0;                   // c [s^2]
+  double slope_err = 0.0;                   // standard error of s [s^2/m]
+  double intercept_err = 0.0;               // standard error of c [s^2]
+  double slope_intercept_covariance = 0.0;  // [s^4/m]
   // From the line; absent when s <= 0 (T^2 not growing with l: no friction oscillator's series).
   std::optional<double> mu_k;
   std::optional<double> mu_k_err;
-  std::optional<double> h_c;      // [m]; may come out below 0 within its error for a thin plate
-  std::optional<double> h_c_err;  // [m]
+  std::optional<double> h_c;          // [m]; may come out below 0 within its error for a thin plate
+  std::optional<double> h_c_err;      // [m]
   std::optional<double> correlation;  // of mu_k and h_c (that of s and c)
   double chi2 = 0.0;
   int degrees_of_freedom = 0;          // rows - 2

@@ -23,10 +23,10 @@ struct ThickPlateFitMonteCarlo {
   int skipped = 0;
   std::uint64_t seed = 0;
   std::optional<SampleSummary> mu_k;
-  std::optional<SampleSummary> h_c;  // [m]
+  std::optional<SampleSummary> h_c;   // [m]
   std::optional<double> correlation;  // of mu_k and h_c over the accepted refits
-  std::vector<double> mu_k_samples;  // the accepted refits, in draw order (when kept)
-  std::vector<double> h_c_samples;   // [m]
+  std::vector<double> mu_k_samples;   // the accepted refits, in draw order (when kept)
+  std::vector<double> h_c_samples;    // [m]
 };
 
 // Refuses what fit_thick_plate refuses, and draws <= 0, with fl::DomainError.

@@ -30,12 +30,14 @@ constexpr std::array<ColumnInfo, 5> kColumns{{
     {SeriesColumn::kPeriod, "period", Dimension::kTime, "the period T", "0.79 s", true},
     {SeriesColumn::kPeriodErr, "period_err", Dimension::kTime, "the period's uncertainty dT",
      "5 ms", true},
-    {SeriesColumn::kSpacingErr, "spacing_err", Dimension::kLength,
-     "the spacing's uncertainty dl", "1 mm", false},
+    {SeriesColumn::kSpacingErr, "spacing_err", Dimension::kLength, "the spacing's uncertainty dl",
+     "1 mm", false},
     {SeriesColumn::kLabel, "label", Dimension::kDimensionless, "a label", "run 3", false},
 }};
 
-const ColumnInfo& info(SeriesColumn column) { return kColumns[static_cast<std::size_t>(column)]; }
+const ColumnInfo& info(SeriesColumn column) {
+  return kColumns[static_cast<std::size_t>(column)];
+}
 
 struct Field {
   std::string text;  // trimmed, quotes removed
@@ -126,12 +128,12 @@ std::vector<std::optional<SeriesColumn>> read_header(const std::vector<Field>& f
   if (!missing.empty()) {
     std::string list;
     for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
-    throw InputError(SourceLocation{file, line, 1},
-                     fmt::format("expected a header naming spacing, period and period_err, found "
-                                 "no {} column{}; add {} (e.g. a header \"spacing,period,"
-                                 "period_err\" and rows \"89 mm,0.79 s,5 ms\")",
-                                 list, missing.size() > 1 ? "s" : "",
-                                 missing.size() > 1 ? "them" : "it"));
+    throw InputError(
+        SourceLocation{file, line, 1},
+        fmt::format("expected a header naming spacing, period and period_err, found "
+                    "no {} column{}; add {} (e.g. a header \"spacing,period,"
+                    "period_err\" and rows \"89 mm,0.79 s,5 ms\")",
+                    list, missing.size() > 1 ? "s" : "", missing.size() > 1 ? "them" : "it"));
   }
   return order;
 }
@@ -223,9 +225,8 @@ SpacingSeries parse_spacing_series(std::string_view text, const std::string& fil
     if (fields.size() != order.size())
       throw InputError(
           SourceLocation{file, line_number,
-                         fields.size() > order.size()
-                             ? fields[order.size()].column
-                             : static_cast<int>(line.size()) + 1},
+                         fields.size() > order.size() ? fields[order.size()].column
+                                                      : static_cast<int>(line.size()) + 1},
           fmt::format("expected {} fields as the header on line {} names, found {}; {}",
                       order.size(), series.header_line, fields.size(),
                       fields.size() > order.size()
@@ -243,7 +244,8 @@ SpacingSeries parse_spacing_series(std::string_view text, const std::string& fil
           break;
         case SeriesColumn::kSpacingErr:
           // An empty cell: this row's spacing taken as exact, like a file without the column.
-          if (!fields[i].text.empty()) row.measurement.spacing_err = read_value(fields[i], c, where);
+          if (!fields[i].text.empty())
+            row.measurement.spacing_err = read_value(fields[i], c, where);
           break;
         case SeriesColumn::kSpacing:
           row.measurement.spacing = read_value(fields[i], c, where);

@@ -25,11 +25,11 @@ std::vector<SimulatedPeriod> simulate_rows(std::span<const SpacingPeriod> series
     try {
       scene = scene_with_mu_k(request.scene, mu_k, row.spacing);
     } catch (const std::runtime_error& e) {
-      throw InputError({}, fmt::format("--through-rig: row {} (l = {:.1f} mm): the scene {} cannot "
-                                       "be built at this spacing ({}); simulate another scene "
-                                       "(--scene), or fit without --through-rig",
-                                       scenes.size() + 1, row.spacing * 1e3, request.scene.name,
-                                       e.what()));
+      throw InputError(
+          {}, fmt::format("--through-rig: row {} (l = {:.1f} mm): the scene {} cannot "
+                          "be built at this spacing ({}); simulate another scene "
+                          "(--scene), or fit without --through-rig",
+                          scenes.size() + 1, row.spacing * 1e3, request.scene.name, e.what()));
     }
     scene.world.gravity = request.gravity;
     scene.world.duration = std::max(request.scene.world.duration, request.min_periods * row.period);

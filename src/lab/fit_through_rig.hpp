@@ -28,8 +28,8 @@ class RigFitError : public std::runtime_error {
 struct RigFitRequest {
   Scene scene;  // the rig; each run sets rollers.spacing, friction.mu_k and world.gravity
   double gravity = kDefaultGravity;  // [m/s^2], the series' (the scene is simulated at it)
-  double tolerance = 1e-4;  // stop when mu_k changes by less than this, relative
-  int max_iterations = 6;   // rounds of simulations (one per row each)
+  double tolerance = 1e-4;           // stop when mu_k changes by less than this, relative
+  int max_iterations = 6;            // rounds of simulations (one per row each)
   // Each run simulates at least this many of the row's periods (or the scene's duration if
   // longer), as compare does: enough for the rig's estimator to average over.
   int min_periods = 15;
@@ -37,7 +37,7 @@ struct RigFitRequest {
 };
 
 struct RigFitRow {
-  double period_simulated = 0.0;  // [s] at the row's spacing and the last simulated mu_k
+  double period_simulated = 0.0;        // [s] at the row's spacing and the last simulated mu_k
   std::string period_simulated_source;  // "hall estimator" or "trajectory (...)"
   double period_closed_form = 0.0;      // [s] thick formula, same mu_k, the scene's h_c
   double correction = 1.0;              // T_closed_form / T_simulated

@@ -79,11 +79,10 @@ TEST_F(Fit, AnExactSeriesGivesBackItsMuKAndHc) {
 }
 
 TEST_F(Fit, TwoRowsHaveNoChiSquaredPerDegreeOfFreedom) {
-  const std::string file = write("two.csv",
-                                 fmt::format("spacing,period,period_err\n70mm,{:.17g},2ms\n"
-                                             "110mm,{:.17g},2ms\n",
-                                             period_thick(0.070, kMuK, kHc),
-                                             period_thick(0.110, kMuK, kHc)));
+  const std::string file =
+      write("two.csv", fmt::format("spacing,period,period_err\n70mm,{:.17g},2ms\n"
+                                   "110mm,{:.17g},2ms\n",
+                                   period_thick(0.070, kMuK, kHc), period_thick(0.110, kMuK, kHc)));
   const nlohmann::json j = json("fit " + file);
   EXPECT_EQ(j["degrees_of_freedom"], 0);
   EXPECT_TRUE(j["chi2_per_dof"].is_null());
@@ -242,9 +241,9 @@ TEST(AnalyticMonteCarlo, SmallErrorsGiveTheQuadratureRuleAndTheSeedItsBytes) {
 }
 
 TEST(AnalyticMonteCarlo, TextReportAndHistogramAndRefusals) {
-  const std::string png = (std::filesystem::temp_directory_path() /
-                           ("fl-mc-" + std::to_string(::getpid()) + ".png"))
-                              .string();
+  const std::string png =
+      (std::filesystem::temp_directory_path() / ("fl-mc-" + std::to_string(::getpid()) + ".png"))
+          .string();
   const test::CommandResult r = test::run_command(
       kExe + " analytic --material lego --h-c 3.6mm --h-c-err 0.5mm --mc 20000 --plot " + png);
   ASSERT_EQ(r.status, 0) << r.err;

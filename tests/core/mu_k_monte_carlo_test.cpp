@@ -19,7 +19,9 @@ constexpr int kDraws = 200000;
 // The sample standard deviation of N Gaussian draws has a relative standard error of
 // 1 / sqrt(2 (N - 1)); 4 of those bound the MC sd against the exact one (0.63 % at 200 000).
 // Linearisation leaves out terms of order (dT/T)^2 ~ 1e-6 relative at 0.1 % errors: far below.
-double sd_tolerance(int draws) { return 4.0 / std::sqrt(2.0 * (draws - 1)); }
+double sd_tolerance(int draws) {
+  return 4.0 / std::sqrt(2.0 * (draws - 1));
+}
 
 TEST(MuKMonteCarlo, SmallErrorsGiveTheQuadratureRule) {
   const MuKMeasurement m{.period = 0.79,
@@ -59,9 +61,9 @@ TEST(MuKMonteCarlo, ThickPlateWithAnUncertainHcGivesTheLinearPropagation) {
                          .gravity = kG};
   const MuKMonteCarlo mc = mu_k_monte_carlo(m, {.draws = kDraws, .seed = 11});
   const MuKUncertainty u = mu_k_with_uncertainty(0.79, 0.79e-3, 0.089, 0.089e-3, 0.0036, kG);
-  const double linear =
-      u.mu_k * std::sqrt(std::pow(u.condition_spacing * 1e-3, 2) +
-                         std::pow(u.condition_period * 1e-3, 2) + std::pow(u.condition_h_c * 1e-3, 2));
+  const double linear = u.mu_k * std::sqrt(std::pow(u.condition_spacing * 1e-3, 2) +
+                                           std::pow(u.condition_period * 1e-3, 2) +
+                                           std::pow(u.condition_h_c * 1e-3, 2));
   EXPECT_NEAR(*mc.mu_k->sd / linear, 1.0, sd_tolerance(kDraws));
   // Without dh_c the MC is the quadrature rule of the thick formula.
   MuKMeasurement fixed_h = m;
@@ -71,7 +73,8 @@ TEST(MuKMonteCarlo, ThickPlateWithAnUncertainHcGivesTheLinearPropagation) {
 }
 
 TEST(MuKMonteCarlo, TheSameSeedGivesTheSameBitsAndAnotherSeedOthers) {
-  const MuKMeasurement m{.period = 0.79, .period_err = 0.03, .spacing = 0.089, .spacing_err = 0.002};
+  const MuKMeasurement m{
+      .period = 0.79, .period_err = 0.03, .spacing = 0.089, .spacing_err = 0.002};
   const MuKMonteCarlo a = mu_k_monte_carlo(m, {.draws = 1000, .seed = 3});
   const MuKMonteCarlo b = mu_k_monte_carlo(m, {.draws = 1000, .seed = 3});
   const MuKMonteCarlo c = mu_k_monte_carlo(m, {.draws = 1000, .seed = 4});

@@ -45,8 +45,8 @@ TEST(ThickPlateFit, ExactPeriodsGiveBackMuKAndHcToRounding) {
     // The thin formula on each row reads mu_k high by 4 pi^2 h_c / (g T^2) (analytic_model.hpp).
     for (std::size_t i = 0; i < fit.rows.size(); ++i) {
       const double l = spacings_60_to_120_mm()[i];
-      EXPECT_NEAR(fit.rows[i].mu_k_thin, mu_k_from_period_thin(period_thick(l, kMuK, kHc, kG), l, kG),
-                  1e-14);
+      EXPECT_NEAR(fit.rows[i].mu_k_thin,
+                  mu_k_from_period_thin(period_thick(l, kMuK, kHc, kG), l, kG), 1e-14);
       EXPECT_NEAR(*fit.rows[i].period_fit, period_thick(l, kMuK, kHc, kG), 1e-13);
     }
     EXPECT_GT(fit.mu_k_thin_line, kMuK);  // a line forced through the origin: biased high
@@ -172,8 +172,12 @@ Coverage coverage(int series_count, double period_err, std::optional<double> spa
 constexpr int kSeries = 2000;
 constexpr double kOneSigma = 0.682689492137086;  // erf(1 / sqrt(2))
 
-double coverage_band() { return 4.0 * std::sqrt(kOneSigma * (1.0 - kOneSigma) / kSeries); }
-double chi2_band() { return 4.0 * std::sqrt(2.0 / (5.0 * kSeries)); }  // 7 rows: 5 dof
+double coverage_band() {
+  return 4.0 * std::sqrt(kOneSigma * (1.0 - kOneSigma) / kSeries);
+}
+double chi2_band() {
+  return 4.0 * std::sqrt(2.0 / (5.0 * kSeries));
+}  // 7 rows: 5 dof
 
 TEST(ThickPlateFitCoverage, PeriodErrorsOnly) {
   // dT = 5 ms on T = 0.64 to 0.91 s: mu_k to about 2 %, h_c to about 1 mm.

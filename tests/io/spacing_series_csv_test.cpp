@@ -9,7 +9,9 @@
 namespace fl {
 namespace {
 
-SpacingSeries parse(const std::string& text) { return parse_spacing_series(text, "s.csv"); }
+SpacingSeries parse(const std::string& text) {
+  return parse_spacing_series(text, "s.csv");
+}
 
 // The message of the InputError the text raises, or a failure.
 std::string refusal(const std::string& text) {
@@ -61,9 +63,10 @@ TEST(SpacingSeriesCsv, RefusalsNameTheCellAndWhatToDo) {
   EXPECT_EQ(refusal(header + "89 mm,0.79 s,5 ms\n"),
             "s.csv:2: error: expected at least 2 rows (a straight line T^2 against l needs two "
             "spacings), found 1; measure the period at other spacings and add a row for each");
-  EXPECT_EQ(refusal(header), "s.csv:1: error: expected at least 2 rows (a straight line T^2 "
-                             "against l needs two spacings), found 0; measure the period at other "
-                             "spacings and add a row for each");
+  EXPECT_EQ(refusal(header),
+            "s.csv:1: error: expected at least 2 rows (a straight line T^2 "
+            "against l needs two spacings), found 0; measure the period at other "
+            "spacings and add a row for each");
   EXPECT_EQ(refusal(header + "89 mm,0.79 s,5 ms\n89mm,0.80 s,5 ms\n"),
             "s.csv:3:1: error: expected at least two different spacings, found every row at 89 "
             "mm; T^2 against l needs the period at other spacings (move a roller and measure "
@@ -76,10 +79,11 @@ TEST(SpacingSeriesCsv, RefusalsNameTheCellAndWhatToDo) {
                 .find("s.csv:2:14: error: period_err: expected the period's uncertainty dT "
                       "greater than 0, found \"0 ms\""),
             std::string::npos);
-  EXPECT_NE(refusal(header + "89 mm,nan,5 ms\n100 mm,0.8 s,5 ms\n")
-                .find("s.csv:2:7: error: period: expected a time (a number with one of the units: s, "
-                      "ms, us, µs, min, h), found \"nan\": the number is not finite"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal(header + "89 mm,nan,5 ms\n100 mm,0.8 s,5 ms\n")
+          .find("s.csv:2:7: error: period: expected a time (a number with one of the units: s, "
+                "ms, us, µs, min, h), found \"nan\": the number is not finite"),
+      std::string::npos);
   EXPECT_NE(refusal(header + "89 mm,0.79 kg,5 ms\n100 mm,0.8 s,5 ms\n")
                 .find("s.csv:2:7: error: period: expected a time"),
             std::string::npos);

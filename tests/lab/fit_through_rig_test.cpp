@@ -69,10 +69,11 @@ TEST(FitThroughRig, ACoarseStepsPhaseErrorIsTakenOutOfHc) {
   const double shift = scene.world.gravity * scene.world.time_step * scene.world.time_step / 12.0;
   EXPECT_GT(*fit.closed_form.h_c - fit.h_c_scene, 3.0 * *fit.closed_form.h_c_err);
   EXPECT_NEAR(*fit.closed_form.h_c - fit.h_c_scene, shift, 3.0 * *fit.closed_form.h_c_err);
-  std::printf("1/60 s: mu_k %.6f +- %.6f (closed form %.6f), h_c %.4f +- %.4f mm (closed form "
-              "%.4f, scene %.4f, predicted shift %.4f)\n",
-              *fit.fit.mu_k, *fit.fit.mu_k_err, *fit.closed_form.mu_k, *fit.fit.h_c * 1e3,
-              *fit.fit.h_c_err * 1e3, *fit.closed_form.h_c * 1e3, fit.h_c_scene * 1e3, shift * 1e3);
+  std::printf(
+      "1/60 s: mu_k %.6f +- %.6f (closed form %.6f), h_c %.4f +- %.4f mm (closed form "
+      "%.4f, scene %.4f, predicted shift %.4f)\n",
+      *fit.fit.mu_k, *fit.fit.mu_k_err, *fit.closed_form.mu_k, *fit.fit.h_c * 1e3,
+      *fit.fit.h_c_err * 1e3, *fit.closed_form.h_c * 1e3, fit.h_c_scene * 1e3, shift * 1e3);
 }
 
 TEST(FitThroughRig, ARowWhoseRunGivesNoPeriodIsRefusedWithTheReason) {

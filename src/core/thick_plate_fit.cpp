@@ -90,7 +90,7 @@ ThickPlateFit fit_thick_plate(std::span<const SpacingPeriod> series,
     // Effective variance: an error dl in x moves y by s dl; the weights depend on the slope they
     // determine, so refit until the slope stops changing.
     fit.converged = false;
-    for (fit.iterations = 1; fit.iterations < options.max_iterations;) {
+    while (fit.iterations < options.max_iterations) {
       for (std::size_t i = 0; i < n; ++i)
         sigma[i] = std::hypot(sigma_period[i], line.slope * series[i].spacing_err.value_or(0.0));
       const Line next = weighted_line(x, y, sigma);

@@ -97,6 +97,27 @@ TEST(ThickPlateFit, AgreesWithNumpysWeightedLine) {
   EXPECT_NEAR(fit.mu_k_thin_line, 0.28704282489545346, 1e-9);
 }
 
+TEST(ThickPlateFit, TheEffectiveVarianceAgreesWithNumpyIteratedByHand) {
+  // The same series with dl; numpy.polyfit refitted with w = 1/sqrt((2 T dT)^2 + (s dl)^2) until
+  // the slope stopped changing (5 fits), 17 digits.
+  const std::vector<SpacingPeriod> series{{0.060, 0.6460, 0.004, 0.001},
+                                          {0.075, 0.7260, 0.005, 0.0005},
+                                          {0.089, 0.7905, 0.003, 0.001},
+                                          {0.105, 0.8560, 0.006, 0.002},
+                                          {0.120, 0.9190, 0.005, 0.001}};
+  const ThickPlateFit fit = fit_thick_plate(series, {.gravity = kG});
+  EXPECT_TRUE(fit.converged);
+  EXPECT_GT(fit.iterations, 2);
+  EXPECT_LT(fit.iterations, 20);
+  const double tol = 1e-9;
+  EXPECT_NEAR(fit.slope, 7.088942390759926, tol * 7.1);
+  EXPECT_NEAR(fit.intercept, -0.006458548011419359, tol * 7.1);
+  EXPECT_NEAR(fit.slope_err * fit.slope_err, 0.049777217637233875, tol * 0.05);
+  EXPECT_NEAR(fit.intercept_err * fit.intercept_err, 0.0003630492597667717, tol * 0.05);
+  EXPECT_NEAR(fit.slope_intercept_covariance, -0.004138582522096717, tol * 0.05);
+  EXPECT_NEAR(fit.chi2, 0.17473187116159627, 1e-7);
+}
+
 TEST(ThickPlateFit, AFallingLineHasNoMuK) {
   const std::vector<SpacingPeriod> falling{{0.070, 0.90, 0.002, {}}, {0.110, 0.80, 0.002, {}}};
   const ThickPlateFit fit = fit_thick_plate(falling, {.gravity = kG});

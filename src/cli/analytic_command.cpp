@@ -1,12 +1,22 @@
 // frictionlab analytic: the analytic model for a set-up given by l, mu_k or T, and h_c. The
 // model's report is lab/analytic_report; this command reads the options and prints.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
+
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/monte_carlo_options.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
+#include "cli/plot_script.hpp"
 #include "core/paper_table.hpp"
 #include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
@@ -25,6 +35,7 @@ struct AnalyticOptions {
   std::string material;
   std::string temperature = "300 K";
   std::string h_c = "0 mm";
+  std::string h_c_err = "0 mm";
   std::string gravity = "9.81 m/s^2";
   std::string roller_radius = "10 mm";
   std::string roller_speed = "1600 rpm";
@@ -34,6 +45,8 @@ struct AnalyticOptions {
   std::string v_s;
   std::string beta;
   bool json = false;
+  MonteCarloOptions monte_carlo;
+  std::string plot;
 };
 
 // The material and its row of Table I that --material and --temperature name.
@@ -52,13 +65,35 @@ std::pair<const PaperMaterial*, const PaperMeasurement*> paper_row(const PaperTa
   return {material, row};
 }
 
+void print_monte_carlo(const AnalyticReport& r) {
+  const MuKMonteCarlo& mc = *r.monte_carlo;
+  if (!mc.mu_k) {
+    fmt::print("  mu_k, Monte Carlo            no draw of {} fell inside the formula's domain\n",
+               mc.draws);
+    return;
+  }
+  const SampleSummary& m = *mc.mu_k;
+  fmt::print(
+      "  mu_k, Monte Carlo            {:.4f} +- {} (mean and sd of {} draws, seed {}); 95 % in "
+      "[{:.4f}, {:.4f}]\n",
+      m.mean, m.sd ? fmt::format("{:.4f}", *m.sd) : std::string("-"), mc.accepted, mc.seed,
+      m.quantile_025, m.quantile_975);
+  fmt::print("                               thick formula on T, l{} drawn from Gaussians{}{}\n",
+             r.set_up.h_c_err > 0.0 ? " and h_c" : "",
+             r.set_up.h_c_err > 0.0 ? " (the rules above leave dh_c out)" : "",
+             mc.skipped > 0
+                 ? fmt::format("; {} draws outside the formula's domain skipped", mc.skipped)
+                 : std::string());
+}
+
 void print_report(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
   constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
   fmt::print("frictionlab analytic: the friction oscillator for {}\n", r.source);
   fmt::print("  roller spacing l             {:.1f} +- {:.1f} mm\n", s.spacing * 1e3,
              s.spacing_err * 1e3);
-  fmt::print("  centre-of-mass height h_c    {:.2f} mm\n", s.h_c * 1e3);
+  fmt::print("  centre-of-mass height h_c    {:.2f}{} mm\n", s.h_c * 1e3,
+             s.h_c_err > 0.0 ? fmt::format(" +- {:.2f}", s.h_c_err * 1e3) : std::string());
   if (r.period_measured) {
     fmt::print("  measured period T            {:.4g} +- {:.2g} s\n", *r.period_measured,
                r.period_measured_err);
@@ -74,6 +109,7 @@ void print_report(const AnalyticReport& r) {
     fmt::print(
         "  condition numbers            d ln mu / d ln T = {:.3f}, d ln mu / d ln l = {:.0f}\n",
         r.mu_k_thick.condition_period, r.mu_k_thick.condition_spacing);
+    if (r.monte_carlo) print_monte_carlo(r);
   } else {
     fmt::print("  mu_k                         {:.4g}\n", r.mu_k);
   }
@@ -143,11 +179,35 @@ void print_report(const AnalyticReport& r) {
                  : std::string());
 }
 
+// The histogram's data as JSON in a temporary file, then the script.
+void draw_histogram(const AnalyticReport& report, const std::string& png) {
+  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+  const std::filesystem::path json_path = std::filesystem::temp_directory_path() /
+                                          fmt::format("frictionlab-mc-{}-{}.json", getpid(), stamp);
+  {
+    std::ofstream f(json_path);
+    f << monte_carlo_plot_data(report).dump();
+    if (!f) throw std::runtime_error("cannot write " + json_path.string());
+  }
+  struct Remove {
+    std::filesystem::path path;
+    ~Remove() {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
+  } remove_json{json_path};
+  run_plot_script("plot_mc.py", {json_path.string(), png});
+}
+
 int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
   AnalyticSetUp set_up;
   set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
   set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
   set_up.h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
+  set_up.h_c_err = option_quantity(o.h_c_err, Dimension::kLength, "--h-c-err");
+  if (!(set_up.h_c_err >= 0.0) || !std::isfinite(set_up.h_c_err))
+    throw InputError(
+        {}, "--h-c-err: expected an uncertainty of 0 or more, found \"" + o.h_c_err + "\"");
   set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
   set_up.roller_radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
   set_up.roller_speed = option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
@@ -166,6 +226,19 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
     throw InputError({}, "give exactly one of --mu-k, --period or --material (found " +
                              std::to_string(given) + ")");
 
+  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
+  if (mc && !o.mu_k.empty())
+    throw InputError({},
+                     "--mc: carries a measured period's uncertainty into mu_k; a given mu_k "
+                     "has none: give --period T --period-err dT (or --material) instead of "
+                     "--mu-k");
+  if (!o.plot.empty() && !mc)
+    throw InputError({},
+                     "--plot: draws the Monte Carlo's histogram of mu_k; add --mc N (e.g. "
+                     "--mc 100000)");
+  // The plot's place is checked before any work; a plot that fails still leaves the results.
+  if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
+
   AnalyticReport report;
   if (!o.mu_k.empty()) {
     report =
@@ -180,11 +253,28 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
     const auto [material, row] = paper_row(table, o);
     report = analytic_for_material(set_up, *material, *row);
   }
-  if (o.json)
-    fmt::print("{}\n", analytic_json(report).dump(2));
-  else
+  if (mc) add_monte_carlo(report, *mc);
+  std::string plot_failure;
+  if (!o.plot.empty()) {
+    try {
+      draw_histogram(report, o.plot);
+    } catch (const std::runtime_error& e) {
+      plot_failure = e.what();
+    }
+  }
+  if (o.json) {
+    nlohmann::json j = analytic_json(report);
+    if (mc)
+      j["plot"] = o.plot.empty() || !plot_failure.empty() ? nlohmann::json(nullptr)
+                                                          : nlohmann::json(o.plot);
+    fmt::print("{}\n", j.dump(2));
+  } else {
     print_report(report);
-  return 0;
+    if (!o.plot.empty() && plot_failure.empty()) fmt::print("  plot: {}\n", o.plot);
+  }
+  if (plot_failure.empty()) return 0;
+  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
+  return 1;
 }
 
 }  // namespace
@@ -220,6 +310,12 @@ Command add_analytic_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--mu-s", options->mu_s, "Static limit mu_s (default mu_k)");
   sub->add_option("--v-s", options->v_s, "Stribeck speed v_s, e.g. 1mm/s (stribeck)");
   sub->add_option("--beta", options->beta, "Slope of mu with slip speed, e.g. -0.01s/m (stribeck)");
+  sub->add_option("--h-c-err", options->h_c_err,
+                  "Uncertainty of h_c, drawn by the Monte Carlo (--mc)")
+      ->capture_default_str();
+  add_monte_carlo_options(*sub, options->monte_carlo);
+  sub->add_option("--plot", options->plot,
+                  "With --mc: draw the histogram of mu_k's draws to this PNG");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
   return Command{sub, [options, &global, sub] {
                    // Options the report would ignore are refused.

@@ -89,11 +89,15 @@ CsvTable parse_csv_table(std::string_view text, const std::string& file) {
       continue;
     }
     if (cells.size() != table.header.size())
-      throw InputError(cells.size() > table.header.size() ? cells[table.header.size()].where
-                                                          : SourceLocation{file, line_number, 0},
-                       "expected " + std::to_string(table.header.size()) +
-                           " fields as the header names, found " + std::to_string(cells.size()) +
-                           " (quote a field that holds a comma: \"a, b\")");
+      throw InputError(
+          cells.size() > table.header.size()
+              ? cells[table.header.size()].where
+              : SourceLocation{file, line_number, static_cast<int>(line.size()) + 1},
+          "expected " + std::to_string(table.header.size()) +
+              " fields as the header names, found " + std::to_string(cells.size()) +
+              (cells.size() > table.header.size()
+                   ? "; remove the extra fields (quote a field that holds a comma: \"a, b\")"
+                   : "; fill in the missing ones"));
     table.rows.push_back(std::move(cells));
   }
   if (!have_header)

@@ -90,12 +90,58 @@ AnalyticReport analytic_for_material(const AnalyticSetUp& set_up, const PaperMat
   return r;
 }
 
+void add_monte_carlo(AnalyticReport& r, const MonteCarloRequest& request) {
+  if (!r.period_measured)
+    throw DomainError("a Monte Carlo of mu_k needs a measured period (--period or --material)");
+  const AnalyticSetUp& s = r.set_up;
+  r.monte_carlo = mu_k_monte_carlo(MuKMeasurement{.period = *r.period_measured,
+                                                  .period_err = r.period_measured_err,
+                                                  .spacing = s.spacing,
+                                                  .spacing_err = s.spacing_err,
+                                                  .h_c = s.h_c,
+                                                  .h_c_err = s.h_c_err,
+                                                  .gravity = s.gravity},
+                                   request);
+}
+
+namespace {
+
+nlohmann::json monte_carlo_json(const MuKMonteCarlo& mc) {
+  const std::optional<SampleSummary>& m = mc.mu_k;
+  return {{"draws", mc.draws},
+          {"seed", mc.seed},
+          {"accepted", mc.accepted},
+          {"skipped", mc.skipped},
+          {"mu_k_mean", m ? nlohmann::json(m->mean) : nlohmann::json(nullptr)},
+          {"mu_k_sd", m ? json_or_null(m->sd) : nlohmann::json(nullptr)},
+          {"mu_k_quantile_025", m ? nlohmann::json(m->quantile_025) : nlohmann::json(nullptr)},
+          {"mu_k_quantile_975", m ? nlohmann::json(m->quantile_975) : nlohmann::json(nullptr)}};
+}
+
+}  // namespace
+
+nlohmann::json monte_carlo_plot_data(const AnalyticReport& r) {
+  nlohmann::json out = r.monte_carlo ? monte_carlo_json(*r.monte_carlo) : nlohmann::json::object();
+  out["samples"] = r.monte_carlo ? r.monte_carlo->samples : std::vector<double>{};
+  out["mu_k_thick"] = r.mu_k_thick.mu_k;
+  out["mu_k_err_worst"] = r.mu_k_thick.worst;
+  out["mu_k_err_quadrature"] = r.mu_k_thick.quadrature;
+  out["period_s"] = json_or_null(r.period_measured);
+  out["period_err_s"] = r.period_measured_err;
+  out["spacing_m"] = r.set_up.spacing;
+  out["spacing_err_m"] = r.set_up.spacing_err;
+  out["h_c_m"] = r.set_up.h_c;
+  out["h_c_err_m"] = r.set_up.h_c_err;
+  return out;
+}
+
 nlohmann::json analytic_json(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
   nlohmann::json out;
   out["spacing_m"] = s.spacing;
   out["spacing_err_m"] = s.spacing_err;
   out["h_c_m"] = s.h_c;
+  out["h_c_err_m"] = s.h_c_err;
   out["gravity_m_s2"] = s.gravity;
   out["source"] = r.source;
   if (r.material) {
@@ -160,6 +206,7 @@ nlohmann::json analytic_json(const AnalyticReport& r) {
     out["friction_law"] = nullptr;
   }
   out["friction_law_refused"] = json_or_null(r.friction_law_refused);
+  out["monte_carlo"] = r.monte_carlo ? monte_carlo_json(*r.monte_carlo) : nlohmann::json(nullptr);
   return out;
 }
 

@@ -12,6 +12,7 @@
 #include "core/analytic_model.hpp"
 #include "core/friction_law.hpp"
 #include "core/friction_regime.hpp"
+#include "core/mu_k_monte_carlo.hpp"
 #include "core/paper_table.hpp"
 
 namespace fl {
@@ -20,6 +21,7 @@ struct AnalyticSetUp {
   double spacing = 0.089;      // l [m]
   double spacing_err = 0.002;  // dl [m]
   double h_c = 0.0;            // centre of mass above the contact line [m]
+  double h_c_err = 0.0;        // its uncertainty, drawn only by the Monte Carlo [m]
   double gravity = kDefaultGravity;
   double roller_radius = 0.010;  // [m]
   double roller_speed = 0.0;     // [rad/s]
@@ -70,12 +72,24 @@ struct AnalyticReport {
   // With a restoring force, and a law whose closed forms have a meaning here.
   std::optional<AnalyticLaw> friction_law;
   std::optional<std::string> friction_law_refused;  // why not, when they have none
+
+  // With a period and a Monte Carlo asked for: mu_k through the thick formula from T, l and h_c
+  // drawn about their values (core/mu_k_monte_carlo.hpp), beside the worst-case and quadrature
+  // rules above.
+  std::optional<MuKMonteCarlo> monte_carlo;
 };
 
 AnalyticReport analytic_for_mu_k(const AnalyticSetUp& set_up, double mu_k);
 AnalyticReport analytic_for_period(const AnalyticSetUp& set_up, double period, double period_err);
 AnalyticReport analytic_for_material(const AnalyticSetUp& set_up, const PaperMaterial& material,
                                      const PaperMeasurement& row);
+
+// Adds the Monte Carlo of mu_k to a report with a period (fl::DomainError without one, or for
+// draws <= 0).
+void add_monte_carlo(AnalyticReport& report, const MonteCarloRequest& request);
+
+// What tools/plot_mc.py draws: the accepted draws with their summary and the paper's rules.
+nlohmann::json monte_carlo_plot_data(const AnalyticReport& report);
 
 // The report as `frictionlab analytic --json` prints it (docs/cli.md; SI, null where there is
 // none).

@@ -8,23 +8,14 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "io/input_error.hpp"
 #include "io/json_value.hpp"
-#include "lab/experiment.hpp"
+#include "lab/simulated_period.hpp"
 #include "lab/sweep_pool.hpp"
 #include "scene/compiled_rig.hpp"
-#include "scene/scene_checks.hpp"
 
 namespace fl {
 namespace {
-
-struct Simulation {
-  std::optional<double> period;  // s
-  std::optional<double> period_std;
-  bool from_trajectory = false;  // the estimator accepted no period: the trajectory's instead
-  std::optional<Regime> regime;
-  std::string evidence;
-  std::optional<std::string> failure;
-};
 
 class Rig {
  public:
@@ -41,20 +32,11 @@ class Rig {
     return load_scene_file(options_.scene_file, overrides, paper_, parts_);
   }
 
-  Simulation simulate(const Scene& scene) {
+  // The rig's estimator's period; the trajectory's (without a spread) where it accepted none,
+  // and the row says so.
+  SimulatedPeriod simulate(const Scene& scene) {
     ++simulations_;
-    const RunSummary summary = run_experiment(scene, RunOptions{});
-    Simulation s;
-    // The rig's estimator's period; the trajectory's (without a spread) where it accepted none,
-    // and the row says so.
-    s.period = summary.period ? summary.period : summary.period_trajectory;
-    s.from_trajectory = !summary.period && summary.period_trajectory.has_value();
-    if (summary.estimator && summary.estimator->periods_used > 0)
-      s.period_std = summary.estimator->period_std;
-    s.regime = summary.regime;
-    s.evidence = summary.regime_evidence;
-    s.failure = summary.failure;
-    return s;
+    return simulate_period(scene);
   }
 
   int simulations() const { return simulations_.load(); }
@@ -68,36 +50,6 @@ class Rig {
   std::atomic<int> simulations_{0};
 };
 
-// The row's scene with mu_k (and the spacing) set as numbers, checked as the loader checks a
-// scene.
-Scene with_mu_k(const Scene& row_scene, double mu_k, std::optional<double> spacing) {
-  Scene scene = row_scene;
-  scene.friction.mu_k = mu_k;
-  scene.friction.from_paper = false;
-  scene.friction.paper_material.clear();
-  scene.friction.paper_period.reset();
-  scene.friction.paper_mu_k.reset();
-  if (spacing) scene.rollers.spacing = *spacing;
-  const std::vector<SceneProblem> problems = check_scene(scene);
-  if (!problems.empty())
-    throw std::runtime_error(problems.front().key + ": " + problems.front().message);
-  return scene;
-}
-
-bool oscillates(const Simulation& s) {
-  return !s.failure && s.regime && regime_is_harmonic(*s.regime) && s.period && *s.period > 0.0;
-}
-
-std::string no_oscillation_reason(const Simulation& s) {
-  if (s.failure) return "the run failed: " + *s.failure;
-  if (!s.regime || !regime_is_harmonic(*s.regime))
-    return "the simulated plate " +
-           (!s.regime ? std::string("did not oscillate")
-                      : "'" + std::string(regime_name(*s.regime)) + "'") +
-           (s.evidence.empty() ? "" : ": " + s.evidence);
-  return "the estimator measured no period";
-}
-
 void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptions& options) {
   const double target = row.period_measured.value;
   const double l = row.spacing;
@@ -108,12 +60,12 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptio
     CompareRun r;
     r.mu_k = mu;
     r.spacing = spacing.value_or(l);
-    const Simulation s = rig.simulate(with_mu_k(row_scene, mu, spacing));
+    const SimulatedPeriod s = rig.simulate(scene_with_mu_k(row_scene, mu, spacing));
     r.regime = s.regime;
-    if (oscillates(s)) r.period = s.period;
+    if (s.oscillates()) r.period = s.period;
     row.runs.push_back(r);
     if (!r.period)
-      throw std::runtime_error(fmt::format("at mu_k = {:.5g}: {}", mu, no_oscillation_reason(s)));
+      throw std::runtime_error(fmt::format("at mu_k = {:.5g}: {}", mu, s.no_oscillation_reason()));
     return r;
   };
   const double mu0 = options.start_from_thin_formula
@@ -192,7 +144,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
   row.period_thick = period_thick(l, mu, h_c, g);
   row.thin_bias_period = row.period_thin / *row.period_thick - 1.0;
 
-  Simulation s;
+  SimulatedPeriod s;
   try {
     s = rig.simulate(row_rig.scene);
   } catch (const std::exception& e) {
@@ -202,10 +154,10 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
   }
   row.runs.push_back(CompareRun{mu, l, s.period, s.regime});
   row.regime = s.regime;
-  if (!oscillates(s)) {
+  if (!s.oscillates()) {
     row.status = "no oscillation";
     const double tipping = tipping_amplitude(l, mu, h_c);
-    row.reason = no_oscillation_reason(s);
+    row.reason = s.no_oscillation_reason();
     if (row_rig.amplitude >= tipping)
       row.reason = fmt::format(
           "the plate tips: its amplitude {:.1f} mm reaches l/2 - mu_k h_c = {:.1f} mm ({})",
@@ -216,10 +168,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
   row.status = "compared";
   row.period_simulated = s.period;
   row.period_simulated_std = s.period_std;
-  row.period_simulated_source =
-      s.period
-          ? (s.from_trajectory ? "trajectory (the estimator accepted no period)" : "hall estimator")
-          : "";
+  row.period_simulated_source = s.source();
   if (row.period_measured.uncertainty > 0.0)
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;

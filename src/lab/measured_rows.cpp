@@ -5,21 +5,15 @@
 #include <cmath>
 
 #include "io/csv_table.hpp"
+#include "io/estimate_table_columns.hpp"
 #include "io/suggest.hpp"
 #include "io/text_file.hpp"
 
 namespace fl {
 namespace {
 
-constexpr std::array<std::string_view, 14> kColumns = {
-    "label", "period", "period_err", "mu_k", "mu_k_err", "spacing_err", "status",
-    // Columns of `frictionlab estimate`'s table that say how a row was measured: read past.
-    "log", "period_std", "periods_used", "periods_discarded", "mu_k_err_worst",
-    "mu_k_err_quadrature", "error"};
-
-bool is_note_column(std::string_view name) {
-  return std::find(kColumns.begin() + 7, kColumns.end(), name) != kColumns.end();
-}
+constexpr std::array<std::string_view, 7> kColumns = {
+    "label", "period", "period_err", "mu_k", "mu_k_err", "spacing_err", "status"};
 
 // A cell as a measured quantity; "+-" in the cell gives its uncertainty.
 Measured measured_cell(const CsvCell& cell, Dimension dimension, std::string_view column) {
@@ -71,7 +65,7 @@ MeasuredRows parse_measured_rows(std::string_view text, const std::string& file)
       status = i;
     else if (h.text == "mu_k_err_worst")
       mu_k_err_worst = i;
-    else if (is_note_column(h.text))
+    else if (is_estimate_table_note_column(h.text))
       continue;
     else if (h.text.find('.') != std::string::npos) {
       if (compare_sets_key(h.text))

@@ -1,0 +1,322 @@
+// frictionlab fit SERIES.csv: mu_k and h_c from periods measured at several roller spacings, by
+// the thick-plate line T^2 = (2 pi^2 / (mu_k g)) l - 4 pi^2 h_c / g (core/thick_plate_fit); with
+// --mc, its Monte Carlo; with --through-rig, refitted through simulations of a scene
+// (lab/fit_through_rig). Reading the series is io/spacing_series_csv, the report
+// lab/spacing_fit_report; this command reads the options, checks what the fit says, and prints.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "cli/monte_carlo_options.hpp"
+#include "cli/option_quantity.hpp"
+#include "cli/output_paths.hpp"
+#include "cli/plot_script.hpp"
+#include "cli/scene_options.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+#include "lab/spacing_fit_report.hpp"
+
+namespace fl::cli {
+namespace {
+
+struct FitOptions {
+  std::string file;
+  std::string gravity = "9.81 m/s^2";
+  bool json = false;
+  std::string out;
+  std::string plot;
+  CLI::Option* plot_option = nullptr;
+  MonteCarloOptions monte_carlo;
+  bool through_rig = false;
+  std::string scene;
+  std::vector<std::string> overrides;
+  int workers = 0;
+};
+
+// The rig's scene: scenes/minimal.yaml from the working folder, else from the source tree.
+std::string default_scene() {
+  const std::string relative = "scenes/minimal.yaml";
+  if (std::filesystem::exists(relative)) return relative;
+  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
+}
+
+// What the fit says that a friction oscillator's series cannot: refused with exit status 2,
+// saying so rather than printing a mu_k that means nothing.
+void require_physical(const SpacingFitReport& r) {
+  const ThickPlateFit& f = r.fit;
+  const SpacingSeries& s = r.series;
+  if (!f.mu_k)
+    throw InputError(
+        SourceLocation{s.file, 0, 0},
+        fmt::format("expected T^2 to grow with the spacing (T^2 = 2 pi^2 l / (mu_k g) - 4 pi^2 "
+                    "h_c / g), found it falling: slope {:.4g} +- {:.2g} s^2/m, so no positive "
+                    "mu_k fits these rows; check that the spacing and period columns hold what "
+                    "their names say, in the units written",
+                    f.slope, f.slope_err));
+  for (std::size_t i = 0; i < f.rows.size(); ++i) {
+    if (f.rows[i].period_fit) continue;
+    throw InputError(
+        s.at(i, SeriesColumn::kSpacing),
+        fmt::format("the fitted line leaves no restoring force at this spacing: l = {:.1f} mm <= "
+                    "2 mu_k h_c = {:.1f} mm (mu_k = {:.4g}, h_c = {:.2f} mm), where no plate "
+                    "oscillates; the rows do not lie on one thick-plate line (this row's "
+                    "residual is {:+.1f} sd): check its values, or measure at larger spacings",
+                    s.rows[i].measurement.spacing * 1e3, *spacing_without_restoring_force(f) * 1e3,
+                    *f.mu_k, *f.h_c * 1e3, f.rows[i].residual_sigma));
+  }
+}
+
+std::string pm(std::optional<double> value, std::optional<double> err, double scale, int digits) {
+  if (!value) return "-";
+  return err ? fmt::format("{:.{}f} +- {:.{}f}", *value * scale, digits, *err * scale, digits)
+             : fmt::format("{:.{}f}", *value * scale, digits);
+}
+
+std::string interval(const SampleSummary& s, double scale, int digits, const char* unit) {
+  return fmt::format("{:.{}f} +- {}{} (95 % in [{:.{}f}, {:.{}f}]{})", s.mean * scale, digits,
+                     s.sd ? fmt::format("{:.{}f}", *s.sd * scale, digits) : std::string("-"), unit,
+                     s.quantile_025 * scale, digits, s.quantile_975 * scale, digits, unit);
+}
+
+void print_report(const SpacingFitReport& r) {
+  const ThickPlateFit& f = r.fit;
+  fmt::print("frictionlab fit: {} ({} rows, g = {} m/s^2)\n", r.series.file, r.series.rows.size(),
+             r.gravity);
+  fmt::print("  line T^2 = s l + c     s = {:.5g} +- {:.2g} s^2/m, c = {:.5g} +- {:.2g} s^2{}\n",
+             f.slope, f.slope_err, f.intercept, f.intercept_err,
+             f.iterations > 1 ? fmt::format(" (effective variance: {} iterations{})", f.iterations,
+                                            f.converged ? "" : ", not converged")
+                              : std::string());
+  fmt::print("  mu_k                   {}\n", pm(f.mu_k, f.mu_k_err, 1.0, 4));
+  fmt::print("  h_c                    {} mm{}\n", pm(f.h_c, f.h_c_err, 1e3, 2),
+             *f.h_c < 0.0
+                 ? fmt::format(" (below the contact line: {:.1f} sd from 0)", -*f.h_c / *f.h_c_err)
+                 : std::string());
+  if (f.correlation)
+    fmt::print(
+        "  correlation            {:+.3f} (of mu_k and h_c: a larger h_c goes with a {} mu_k)\n",
+        *f.correlation, *f.correlation < 0.0 ? "smaller" : "larger");
+  fmt::print("  chi^2                  {:.3f} for {} degree{} of freedom{}\n", f.chi2,
+             f.degrees_of_freedom, f.degrees_of_freedom == 1 ? "" : "s",
+             f.chi2_per_dof ? fmt::format(" (chi^2/dof {:.3f})", *f.chi2_per_dof)
+                            : std::string(" (two rows: the line goes through both; no check)"));
+  fmt::print(
+      "  thin formula           mu_k = {:.4f} +- {:.4f} from a line through the origin "
+      "(chi^2/dof {:.3g}): the paper's formula, h_c = 0\n",
+      f.mu_k_thin_line, f.mu_k_thin_line_err,
+      f.rows.size() > 1 ? f.thin_chi2 / static_cast<double>(f.rows.size() - 1)
+                        : std::numeric_limits<double>::quiet_NaN());
+  fmt::print("\n  {:>4} {:<14} {:>16} {:>20} {:>10} {:>9} {:>10}", "line", "label", "l [mm]",
+             "T [s]", "T fit [s]", "residual", "mu_k thin");
+  if (r.rig) fmt::print(" {:>11} {:>11}", "T sim [s]", "correction");
+  fmt::print("\n");
+  for (std::size_t i = 0; i < f.rows.size(); ++i) {
+    const SpacingSeriesRow& in = r.series.rows[i];
+    const FitRow& out = f.rows[i];
+    fmt::print("  {:>4} {:<14} {:>16} {:>20} {:>10.5f} {:>+6.2f} sd {:>10.4f}", in.line,
+               in.label.substr(0, 14),
+               pm(in.measurement.spacing, in.measurement.spacing_err, 1e3, 1),
+               pm(in.measurement.period, in.measurement.period_err, 1.0, 4),
+               out.period_fit.value_or(std::numeric_limits<double>::quiet_NaN()),
+               out.residual_sigma, out.mu_k_thin);
+    if (r.rig)
+      fmt::print(" {:>11.5f} {:>+10.2e}", r.rig->rows[i].period_simulated,
+                 r.rig->rows[i].correction - 1.0);
+    fmt::print("\n");
+  }
+  if (r.monte_carlo) {
+    const ThickPlateFitMonteCarlo& mc = *r.monte_carlo;
+    fmt::print("\n  Monte Carlo            {} draws of every row (seed {}), each refitted{}\n",
+               mc.draws, mc.seed,
+               mc.skipped > 0 ? fmt::format("; {} skipped (a period or spacing drawn <= 0, or a "
+                                            "falling line)",
+                                            mc.skipped)
+                              : std::string());
+    if (mc.mu_k) {
+      fmt::print("    mu_k                 {}  (fit: +- {:.4f})\n", interval(*mc.mu_k, 1.0, 4, ""),
+                 *f.mu_k_err);
+      fmt::print("    h_c                  {}  (fit: +- {:.2f} mm)\n",
+                 interval(*mc.h_c, 1e3, 2, " mm"), *f.h_c_err * 1e3);
+      if (mc.correlation)
+        fmt::print("    correlation          {:+.3f}  (fit: {:+.3f})\n", *mc.correlation,
+                   *f.correlation);
+    }
+  }
+  if (r.rig) {
+    const RigFit& rig = *r.rig;
+    const ThickPlateFit& g = rig.fit;
+    fmt::print(
+        "\n  through the rig        scene {}: every row simulated at its spacing ({} simulations, "
+        "{} iteration{}{})\n",
+        rig.scene, rig.simulations, rig.iterations, rig.iterations == 1 ? "" : "s",
+        rig.converged ? "" : ", NOT converged");
+    fmt::print("    mu_k                 {} (closed form {:.4f}; {:+.2e} relative)\n",
+               pm(g.mu_k, g.mu_k_err, 1.0, 4), *rig.closed_form.mu_k,
+               *g.mu_k / *rig.closed_form.mu_k - 1.0);
+    fmt::print(
+        "    h_c                  {} mm fitted; the scene's plate has {:.2f} mm ({:+.1f} sd)\n",
+        pm(g.h_c, g.h_c_err, 1e3, 2), rig.h_c_scene * 1e3, (*g.h_c - rig.h_c_scene) / *g.h_c_err);
+    if (g.chi2_per_dof) fmt::print("    chi^2/dof            {:.3f}\n", *g.chi2_per_dof);
+  }
+}
+
+// The plot's data: fit.json where --out wrote it, else a temporary copy.
+void draw_plot(const nlohmann::json& j, const std::string& written_json, const std::string& png) {
+  if (!written_json.empty()) {
+    run_plot_script("plot_fit.py", {written_json, png});
+    return;
+  }
+  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+  const std::filesystem::path json_path =
+      std::filesystem::temp_directory_path() /
+      fmt::format("frictionlab-fit-{}-{}.json", getpid(), stamp);
+  {
+    std::ofstream f(json_path);
+    f << j.dump();
+    if (!f) throw std::runtime_error("cannot write " + json_path.string());
+  }
+  struct Remove {
+    std::filesystem::path path;
+    ~Remove() {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
+  } remove_json{json_path};
+  run_plot_script("plot_fit.py", {json_path.string(), png});
+}
+
+int run_fit(const FitOptions& o, const GlobalOptions& global) {
+  const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
+  if (!(gravity > 0.0) || !std::isfinite(gravity))
+    throw InputError(
+        {}, "--gravity: expected a finite positive acceleration, found \"" + o.gravity + "\"");
+  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
+  if (!o.through_rig && (!o.scene.empty() || !o.overrides.empty()))
+    throw InputError({},
+                     "--scene and --set name the rig --through-rig simulates; add "
+                     "--through-rig");
+  std::string png;
+  if (o.plot_option->count() > 0) {
+    if (!o.plot.empty()) {
+      png = o.plot;
+    } else if (!o.out.empty()) {
+      png = (std::filesystem::path(o.out) / "fit.png").string();
+    } else {
+      throw InputError({},
+                       "--plot: expected a PNG to draw (--plot fit.png), or --out DIR for "
+                       "DIR/fit.png; found neither");
+    }
+  }
+  // Output places are checked before any work; a plot that fails still leaves the results.
+  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
+  if (!png.empty()) prepare_output_file(png, "--plot");
+
+  SpacingSeries series = read_spacing_series(o.file);
+  for (const std::string& w : series.warnings) fmt::print(stderr, "{}\n", w);
+  SpacingFitReport report = fit_spacing_series(std::move(series), gravity);
+  require_physical(report);
+  if (mc)
+    report.monte_carlo =
+        thick_plate_fit_monte_carlo(report.series.measurements(), {.gravity = gravity}, *mc);
+  if (o.through_rig) {
+    SceneOptions scene_options;
+    scene_options.file = o.scene.empty() ? default_scene() : o.scene;
+    scene_options.overrides = o.overrides;
+    RigFitRequest request{.scene = load_scene_with_options(scene_options, global),
+                          .gravity = gravity};
+    request.workers = o.workers;
+    try {
+      report.rig = fit_through_rig(report.series.measurements(), request);
+    } catch (const RigFitError& e) {
+      fmt::print(stderr,
+                 "error: --through-rig: {}; the closed-form fit stands (run without "
+                 "--through-rig), or simulate a scene that oscillates there\n",
+                 e.what());
+      return 3;
+    }
+  }
+
+  const nlohmann::json j = spacing_fit_json(report);
+  std::string written_json;
+  std::vector<std::string> written;
+  if (!o.out.empty()) {
+    written_json = (std::filesystem::path(o.out) / "fit.json").string();
+    const std::string csv = (std::filesystem::path(o.out) / "fit.csv").string();
+    write_file_atomic(csv, spacing_fit_csv(report));
+    write_file_atomic(written_json, j.dump(1) + "\n");
+    written = {csv, written_json};
+  }
+  std::string plot_failure;
+  if (!png.empty()) {
+    try {
+      draw_plot(j, written_json, png);
+      written.push_back(png);
+    } catch (const std::runtime_error& e) {
+      plot_failure = e.what();
+    }
+  }
+  if (o.json) {
+    nlohmann::json out = j;
+    out["plot"] =
+        png.empty() || !plot_failure.empty() ? nlohmann::json(nullptr) : nlohmann::json(png);
+    fmt::print("{}\n", out.dump(2));
+  } else {
+    print_report(report);
+    if (!written.empty()) {
+      std::string list;
+      for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
+      fmt::print("\n  written: {}\n", list);
+    }
+  }
+  if (plot_failure.empty()) return 0;
+  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
+  return 1;
+}
+
+}  // namespace
+
+Command add_fit_command(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<FitOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "fit",
+      "mu_k and h_c from periods measured at several roller spacings (a CSV of spacing, period, "
+      "period_err[, spacing_err, label]): the thick-plate line T^2 against l");
+  sub->add_option("SERIES", options->file,
+                  "The series: a CSV whose header names spacing, period, period_err and "
+                  "optionally spacing_err and label; values with units (89 mm, 0.79 s, 5 ms)")
+      ->required();
+  sub->add_option("--gravity", options->gravity, "Gravity g")->capture_default_str();
+  sub->add_option("--out", options->out, "Folder for fit.csv and fit.json (and fit.png)");
+  options->plot_option =
+      sub->add_option("--plot", options->plot,
+                      "Draw T^2 against l with the fit, its 1-sigma band and the thin formula's "
+                      "line: to this PNG, or to DIR/fit.png with --out DIR")
+          ->expected(0, 1);
+  add_monte_carlo_options(*sub, options->monte_carlo);
+  sub->add_flag("--through-rig", options->through_rig,
+                "Refit through simulations of a scene at every row's spacing, for what the "
+                "closed form leaves out");
+  sub->add_option("--scene", options->scene,
+                  "With --through-rig: the rig's scene (default scenes/minimal.yaml)");
+  sub->add_option("--set", options->overrides,
+                  "With --through-rig: override a scene key, e.g. --set world.time_step=0.5ms");
+  sub->add_option("-j,--jobs", options->workers,
+                  "With --through-rig: rows simulated in parallel (default: every core)")
+      ->check(CLI::PositiveNumber);
+  sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
+  return Command{sub, [options, &global] { return run_fit(*options, global); }};
+}
+
+}  // namespace fl::cli

@@ -1,0 +1,245 @@
+#include "io/spacing_series_csv.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "core/units.hpp"
+#include "io/csv_table.hpp"
+#include "io/estimate_table_columns.hpp"
+#include "io/suggest.hpp"
+#include "io/text_file.hpp"
+
+namespace fl {
+namespace {
+
+struct ColumnInfo {
+  SeriesColumn column;
+  std::string_view name;
+  Dimension dimension;
+  std::string_view what;     // "the period", for messages
+  std::string_view example;  // "0.79 s"
+  bool required;
+};
+
+constexpr std::array<ColumnInfo, 5> kColumns{{
+    {SeriesColumn::kSpacing, "spacing", Dimension::kLength, "the roller spacing l", "89 mm", true},
+    {SeriesColumn::kPeriod, "period", Dimension::kTime, "the period T", "0.79 s", true},
+    {SeriesColumn::kPeriodErr, "period_err", Dimension::kTime, "the period's uncertainty dT",
+     "5 ms", true},
+    {SeriesColumn::kSpacingErr, "spacing_err", Dimension::kLength, "the spacing's uncertainty dl",
+     "1 mm", false},
+    {SeriesColumn::kLabel, "label", Dimension::kDimensionless, "a label", "run 3", false},
+}};
+
+const ColumnInfo& info(SeriesColumn column) {
+  return kColumns[static_cast<std::size_t>(column)];
+}
+
+std::string lower(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string known_names() {
+  std::string out;
+  for (const ColumnInfo& c : kColumns)
+    out += fmt::format("{}{}{}", out.empty() ? "" : ", ", c.name, c.required ? "" : " (optional)");
+  return out;
+}
+
+// The header: which column of the file holds which quantity (none for a column read past: the
+// notes and the status of frictionlab estimate's table; `status` is where that column is, or -1).
+std::vector<std::optional<SeriesColumn>> read_header(const std::vector<CsvCell>& cells,
+                                                     const std::string& file, int* status) {
+  std::vector<std::optional<SeriesColumn>> order;
+  std::array<int, 5> seen{};  // column of the file (1-based) where each was named, 0 if not
+  *status = -1;
+  for (const CsvCell& cell : cells) {
+    std::string name = lower(cell.text);
+    if (name == "rollers.spacing") name = "spacing";  // the table frictionlab estimate writes
+    if (name == "status") *status = static_cast<int>(order.size());
+    if (name == "status" || is_estimate_table_note_column(name) || name == "mu_k" ||
+        name == "mu_k_err" || name.find('.') != std::string::npos) {
+      // Scene keys (plate.material, ...) say which rig a row is, and a row's own mu_k is what the
+      // fit replaces: it does not need them.
+      order.push_back(std::nullopt);
+      continue;
+    }
+    const auto found = std::find_if(kColumns.begin(), kColumns.end(),
+                                    [&](const ColumnInfo& c) { return c.name == name; });
+    if (found == kColumns.end()) {
+      std::vector<std::string_view> names;
+      for (const ColumnInfo& c : kColumns) names.push_back(c.name);
+      const std::string near = closest_match(name, names);
+      throw InputError(cell.where,
+                       fmt::format("expected a column named {}, found \"{}\"{}; rename or remove "
+                                   "the column (units go in the cells: 89 mm, 0.79 s)",
+                                   known_names(), cell.text,
+                                   near.empty() ? "" : fmt::format(" (did you mean '{}'?)", near)));
+    }
+    int& first = seen[static_cast<std::size_t>(found->column)];
+    if (first != 0)
+      throw InputError(cell.where, fmt::format("the column {} is named twice (first at column "
+                                               "{}); keep one",
+                                               found->name, first));
+    first = cell.where.column;
+    order.push_back(found->column);
+  }
+  std::vector<std::string> missing;
+  for (const ColumnInfo& c : kColumns)
+    if (c.required && seen[static_cast<std::size_t>(c.column)] == 0)
+      missing.push_back(std::string(c.name));
+  if (!missing.empty()) {
+    std::string list;
+    for (const std::string& m : missing) list += (list.empty() ? "" : ", ") + m;
+    throw InputError(
+        SourceLocation{file, cells.front().where.line, 1},
+        fmt::format("expected a header naming spacing, period and period_err, found "
+                    "no {} column{}; add {} (e.g. a header \"spacing,period,"
+                    "period_err\" and rows \"89 mm,0.79 s,5 ms\")",
+                    list, missing.size() > 1 ? "s" : "", missing.size() > 1 ? "them" : "it"));
+  }
+  return order;
+}
+
+double read_value(const CsvCell& field, const ColumnInfo& c, const SourceLocation& where) {
+  if (field.text.empty())
+    throw InputError(where, fmt::format("{}: expected {} (e.g. \"{}\"), found an empty cell; fill "
+                                        "it in or remove the row",
+                                        c.name, c.what, c.example));
+  double value = 0.0;
+  try {
+    value = parse_quantity(field.text, c.dimension, c.name);
+  } catch (const UnitError& e) {
+    throw InputError(where, e.what());
+  }
+  if (!std::isfinite(value))
+    throw InputError(where, fmt::format("{}: expected {} as a finite number, found \"{}\"", c.name,
+                                        c.what, field.text));
+  const bool error_column =
+      c.column == SeriesColumn::kSpacingErr || c.column == SeriesColumn::kPeriodErr;
+  const bool ok = c.column == SeriesColumn::kSpacingErr ? value >= 0.0 : value > 0.0;
+  if (!ok)
+    throw InputError(
+        where,
+        fmt::format("{}: expected {} {}, found \"{}\"; {}", c.name, c.what,
+                    c.column == SeriesColumn::kSpacingErr ? "of 0 or more" : "greater than 0",
+                    field.text,
+                    c.column == SeriesColumn::kPeriodErr
+                        ? "give each period's standard deviation (a period known exactly would "
+                          "outweigh every other row)"
+                    : error_column ? "give the uncertainty as a positive length"
+                                   : "check the row's value and unit"));
+  return value;
+}
+
+// "file:line:column: warning: what", as format_diagnostic writes an error.
+std::string warning_at(const SourceLocation& where, std::string_view what) {
+  std::string out = format_diagnostic(where, what);
+  out.replace(out.find("error: "), 7, "warning: ");
+  return out;
+}
+
+bool plain_number(std::string_view text) {
+  double ignored = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), ignored);
+  return ec == std::errc{} && ptr == text.data() + text.size();
+}
+
+}  // namespace
+
+std::vector<SpacingPeriod> SpacingSeries::measurements() const {
+  std::vector<SpacingPeriod> out;
+  out.reserve(rows.size());
+  for (const SpacingSeriesRow& row : rows) out.push_back(row.measurement);
+  return out;
+}
+
+SourceLocation SpacingSeries::at(std::size_t row, SeriesColumn column) const {
+  const SpacingSeriesRow& r = rows.at(row);
+  return SourceLocation{file, r.line, r.columns[static_cast<std::size_t>(column)]};
+}
+
+SpacingSeries parse_spacing_series(std::string_view text, const std::string& file) {
+  const CsvTable table = parse_csv_table(text, file);
+  SpacingSeries series;
+  series.file = file;
+  series.header_line = table.header.front().where.line;
+  int status = -1;
+  const std::vector<std::optional<SeriesColumn>> order = read_header(table.header, file, &status);
+  for (const auto& c : order) {
+    series.has_spacing_err = series.has_spacing_err || c == SeriesColumn::kSpacingErr;
+    series.has_label = series.has_label || c == SeriesColumn::kLabel;
+  }
+  for (const std::vector<CsvCell>& fields : table.rows) {
+    const int line_number = fields.front().where.line;
+    // A row of frictionlab estimate's table whose log gave no period.
+    if (status >= 0 && fields[static_cast<std::size_t>(status)].text != "ok") {
+      ++series.rows_left_out;
+      continue;
+    }
+    SpacingSeriesRow row;
+    row.line = line_number;
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (!order[i]) continue;
+      const ColumnInfo& c = info(*order[i]);
+      row.columns[static_cast<std::size_t>(c.column)] = fields[i].where.column;
+      const SourceLocation& where = fields[i].where;
+      switch (c.column) {
+        case SeriesColumn::kLabel:
+          row.label = fields[i].text;
+          break;
+        case SeriesColumn::kSpacingErr:
+          // An empty cell: this row's spacing taken as exact, like a file without the column.
+          if (!fields[i].text.empty())
+            row.measurement.spacing_err = read_value(fields[i], c, where);
+          break;
+        case SeriesColumn::kSpacing:
+          row.measurement.spacing = read_value(fields[i], c, where);
+          if (plain_number(fields[i].text) && row.measurement.spacing >= 2.0)
+            series.warnings.push_back(
+                warning_at(where, fmt::format("spacing: {} read as {} m (a plain number is SI); "
+                                              "write {} mm for millimetres",
+                                              fields[i].text, fields[i].text, fields[i].text)));
+          break;
+        case SeriesColumn::kPeriod:
+          row.measurement.period = read_value(fields[i], c, where);
+          break;
+        case SeriesColumn::kPeriodErr:
+          row.measurement.period_err = read_value(fields[i], c, where);
+          break;
+      }
+    }
+    series.rows.push_back(std::move(row));
+  }
+  if (series.rows.size() < 2)
+    throw InputError(
+        SourceLocation{file, series.rows.empty() ? series.header_line : series.rows.back().line, 0},
+        fmt::format("expected at least 2 rows (a straight line T^2 against l needs two "
+                    "spacings), found {}; measure the period at other spacings and add a row "
+                    "for each",
+                    series.rows.size()));
+  const double l0 = series.rows.front().measurement.spacing;
+  if (std::all_of(series.rows.begin(), series.rows.end(),
+                  [l0](const SpacingSeriesRow& r) { return r.measurement.spacing == l0; }))
+    throw InputError(
+        series.at(series.rows.size() - 1, SeriesColumn::kSpacing),
+        fmt::format("expected at least two different spacings, found every row at {:g} mm; T^2 "
+                    "against l needs the period at other spacings (move a roller and measure "
+                    "again)",
+                    l0 * 1e3));
+  return series;
+}
+
+SpacingSeries read_spacing_series(const std::string& path) {
+  return parse_spacing_series(read_text_file(path, "the spacing series"), path);
+}
+
+}  // namespace fl

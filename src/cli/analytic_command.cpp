@@ -179,24 +179,8 @@ void print_report(const AnalyticReport& r) {
                  : std::string());
 }
 
-// The histogram's data as JSON in a temporary file, then the script.
 void draw_histogram(const AnalyticReport& report, const std::string& png) {
-  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-  const std::filesystem::path json_path = std::filesystem::temp_directory_path() /
-                                          fmt::format("frictionlab-mc-{}-{}.json", getpid(), stamp);
-  {
-    std::ofstream f(json_path);
-    f << monte_carlo_plot_data(report).dump();
-    if (!f) throw std::runtime_error("cannot write " + json_path.string());
-  }
-  struct Remove {
-    std::filesystem::path path;
-    ~Remove() {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  } remove_json{json_path};
-  run_plot_script("plot_mc.py", {json_path.string(), png});
+  run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
 }
 
 int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "cli/estimate_follow.hpp"
 #include "cli/estimate_report.hpp"
 #include "cli/log_options.hpp"
+#include "cli/monte_carlo_options.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
@@ -29,6 +31,7 @@
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "io/log_files.hpp"
+#include "lab/analytic_report.hpp"
 #include "lab/geometry_check.hpp"
 #include "lab/log_estimate.hpp"
 #include "lab/log_table.hpp"
@@ -58,6 +61,10 @@ struct EstimateOptions {
   std::string material;
   std::string temperature;
   std::string out;
+  MonteCarloOptions monte_carlo;
+  std::string h_c;
+  std::string h_c_err;
+  std::string mc_plot;
 };
 
 LogSetUp set_up_from(const EstimateOptions& o) {
@@ -79,25 +86,33 @@ HallLogOptions reading_from(const EstimateOptions& o) {
   return log_reading(o.columns, o.rate, o.time_unit);
 }
 
-// The plot's data as JSON in a temporary file, then the script.
 void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& png) {
-  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-  const std::filesystem::path json_path =
-      std::filesystem::temp_directory_path() /
-      fmt::format("frictionlab-hall-{}-{}.json", getpid(), stamp);
-  {
-    std::ofstream f(json_path);
-    f << hall_plot_data(log, est).dump();
-    if (!f) throw std::runtime_error("cannot write " + json_path.string());
+  run_plot_script_on("plot_hall.py", hall_plot_data(log, est), png);
+}
+
+void draw_histogram(const AnalyticReport& report, const std::string& png) {
+  run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
+}
+
+void print_monte_carlo(const AnalyticReport& r, const std::string& png) {
+  const MuKMonteCarlo& mc = *r.monte_carlo;
+  if (!mc.mu_k) {
+    fmt::print("  mu_k, Monte Carlo    no draw of {} fell inside the formula's domain\n", mc.draws);
+    return;
   }
-  struct Remove {
-    std::filesystem::path path;
-    ~Remove() {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  } remove_json{json_path};
-  run_plot_script("plot_hall.py", {json_path.string(), png});
+  const SampleSummary& m = *mc.mu_k;
+  fmt::print(
+      "  mu_k, Monte Carlo    {:.4f} +- {} (mean and sd of {} draws, seed {}); 95 % in "
+      "[{:.4f}, {:.4f}]\n",
+      m.mean, m.sd ? fmt::format("{:.4f}", *m.sd) : std::string("-"), mc.accepted, mc.seed,
+      m.quantile_025, m.quantile_975);
+  fmt::print("                       T, l{} drawn from Gaussians, through the {} formula{}{}\n",
+             r.set_up.h_c_err > 0.0 ? " and h_c" : "",
+             r.set_up.h_c > 0.0 ? fmt::format("thick (h_c = {:.2f} mm)", r.set_up.h_c * 1e3)
+                                : std::string("paper's"),
+             mc.skipped > 0 ? fmt::format("; {} draws outside its domain skipped", mc.skipped)
+                            : std::string(),
+             png.empty() ? "" : "; histogram " + png);
 }
 
 // Whether the logs named are many (a table) or one (today's report): more than one argument, a
@@ -179,7 +194,14 @@ int run_many_logs(const EstimateOptions& o, const LogSetUp& set_up, const HallLo
 int run_estimate(const EstimateOptions& o) {
   const LogSetUp set_up = set_up_from(o);
   const HallLogOptions reading = reading_from(o);
-  if (names_many_logs(o.logs)) return run_many_logs(o, set_up, reading);
+  const bool monte_carlo =
+      !o.monte_carlo.draws.empty() || !o.h_c.empty() || !o.h_c_err.empty() || !o.mc_plot.empty();
+  const bool many = names_many_logs(o.logs);
+  if (monte_carlo && (many || !o.follow.empty()))
+    throw InputError({},
+                     "--mc and its options estimate one log's mu_k by Monte Carlo; give one "
+                     "log (not several, nor --follow)");
+  if (many) return run_many_logs(o, set_up, reading);
   if (!o.out.empty())
     throw InputError({},
                      "--out writes the table of several logs; for one log use --json (or "
@@ -215,8 +237,19 @@ int run_estimate(const EstimateOptions& o) {
   if (!o.raw_log.empty() || !o.duration.empty())
     throw InputError({}, "--log and --duration go with --follow PORT");
 
-  // The plot's place is checked before any work; a plot that fails still leaves the results.
+  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
+  if (!mc && (!o.h_c.empty() || !o.h_c_err.empty() || !o.mc_plot.empty()))
+    throw InputError({},
+                     "--h-c, --h-c-err and --mc-plot go with --mc N (the Monte Carlo of "
+                     "mu_k); add --mc 100000, or drop them");
+  const double h_c = o.h_c.empty() ? 0.0 : option_quantity(o.h_c, Dimension::kLength, "--h-c");
+  const double h_c_err =
+      o.h_c_err.empty() ? 0.0 : option_quantity(o.h_c_err, Dimension::kLength, "--h-c-err");
+  if (!(h_c >= 0.0) || !std::isfinite(h_c) || !(h_c_err >= 0.0) || !std::isfinite(h_c_err))
+    throw InputError({}, "--h-c and --h-c-err: expected finite lengths, not negative");
+  // The plots' places are checked before any work; a plot that fails still leaves the results.
   if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
+  if (!o.mc_plot.empty()) prepare_output_file(o.mc_plot, "--mc-plot");
   const HallLog log = read_hall_log(o.log, reading);
   const LogEstimate est = estimate_log(log, set_up, !o.plot.empty());
   std::string plot_note;
@@ -238,11 +271,35 @@ int run_estimate(const EstimateOptions& o) {
   const GeometryCheck check = check_geometry(log, est);
   require_geometry(log, est, check, plot_note);
 
+  // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
+  // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).
+  std::optional<AnalyticReport> mc_report;
+  if (mc) {
+    AnalyticSetUp mc_set_up;
+    mc_set_up.spacing = set_up.spacing;
+    mc_set_up.spacing_err = set_up.spacing_err;
+    mc_set_up.gravity = set_up.gravity;
+    mc_set_up.h_c = h_c;
+    mc_set_up.h_c_err = h_c_err;
+    mc_report = analytic_for_period(mc_set_up, est.stats.period_s, est.stats.period_std_s);
+    add_monte_carlo(*mc_report, *mc);
+    if (!o.mc_plot.empty()) {
+      try {
+        draw_histogram(*mc_report, o.mc_plot);
+      } catch (const std::runtime_error& e) {
+        plot_failure += (plot_failure.empty() ? "" : "; ") + std::string(e.what());
+      }
+    }
+  }
   if (o.json) {
-    fmt::print("{}\n", estimate_json(log, est, plot_failure.empty() ? o.plot : "").dump(2));
+    nlohmann::json j = estimate_json(log, est, plot_failure.empty() ? o.plot : "");
+    j["monte_carlo"] =
+        mc_report ? monte_carlo_json(*mc_report->monte_carlo) : nlohmann::json(nullptr);
+    fmt::print("{}\n", j.dump(2));
     return plot_failed();
   }
   print_estimate(log, est, check, plot_failure.empty() ? o.plot : "");
+  if (mc_report) print_monte_carlo(*mc_report, o.mc_plot);
   return plot_failed();
 }
 
@@ -297,6 +354,12 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
                   "names none");
   sub->add_option("--out", options->out,
                   "With several logs: the folder for estimates.csv and estimates.json");
+  add_monte_carlo_options(*sub, options->monte_carlo);
+  sub->add_option("--h-c", options->h_c,
+                  "With --mc: the plate's centre of mass above the contact line (thick formula)");
+  sub->add_option("--h-c-err", options->h_c_err, "With --mc: the uncertainty of --h-c");
+  sub->add_option("--mc-plot", options->mc_plot,
+                  "With --mc: draw the histogram of mu_k's draws to this PNG");
   return Command{sub, [options, sub] {
                    if (sub->count("--baud") > 0 && options->follow.empty())
                      throw InputError({},

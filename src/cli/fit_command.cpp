@@ -178,23 +178,7 @@ void draw_plot(const nlohmann::json& j, const std::string& written_json, const s
     run_plot_script("plot_fit.py", {written_json, png});
     return;
   }
-  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-  const std::filesystem::path json_path =
-      std::filesystem::temp_directory_path() /
-      fmt::format("frictionlab-fit-{}-{}.json", getpid(), stamp);
-  {
-    std::ofstream f(json_path);
-    f << j.dump();
-    if (!f) throw std::runtime_error("cannot write " + json_path.string());
-  }
-  struct Remove {
-    std::filesystem::path path;
-    ~Remove() {
-      std::error_code ignored;
-      std::filesystem::remove(path, ignored);
-    }
-  } remove_json{json_path};
-  run_plot_script("plot_fit.py", {json_path.string(), png});
+  run_plot_script_on("plot_fit.py", j, png);
 }
 
 int run_fit(const FitOptions& o, const GlobalOptions& global) {

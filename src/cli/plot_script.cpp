@@ -4,7 +4,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 extern char** environ;
@@ -44,6 +47,27 @@ void run_plot_script(const std::string& script, const std::vector<std::string>& 
   if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("the plotting script tools/" + script + " failed (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+}
+
+void run_plot_script_on(const std::string& script, const nlohmann::json& data,
+                        const std::string& png) {
+  const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+  const std::filesystem::path json_path =
+      std::filesystem::temp_directory_path() /
+      ("frictionlab-plot-" + std::to_string(getpid()) + "-" + std::to_string(stamp) + ".json");
+  struct Remove {
+    std::filesystem::path path;
+    ~Remove() {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    }
+  } remove_json{json_path};
+  {
+    std::ofstream f(json_path);
+    f << data.dump();
+    if (!f) throw std::runtime_error("cannot write " + json_path.string());
+  }
+  run_plot_script(script, {json_path.string(), png});
 }
 
 }  // namespace fl::cli

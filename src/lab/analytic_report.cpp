@@ -104,8 +104,6 @@ void add_monte_carlo(AnalyticReport& r, const MonteCarloRequest& request) {
                                    request);
 }
 
-namespace {
-
 nlohmann::json monte_carlo_json(const MuKMonteCarlo& mc) {
   const std::optional<SampleSummary>& m = mc.mu_k;
   return {{"draws", mc.draws},
@@ -117,8 +115,6 @@ nlohmann::json monte_carlo_json(const MuKMonteCarlo& mc) {
           {"mu_k_quantile_025", m ? nlohmann::json(m->quantile_025) : nlohmann::json(nullptr)},
           {"mu_k_quantile_975", m ? nlohmann::json(m->quantile_975) : nlohmann::json(nullptr)}};
 }
-
-}  // namespace
 
 nlohmann::json monte_carlo_plot_data(const AnalyticReport& r) {
   nlohmann::json out = r.monte_carlo ? monte_carlo_json(*r.monte_carlo) : nlohmann::json::object();

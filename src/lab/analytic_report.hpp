@@ -88,6 +88,10 @@ AnalyticReport analytic_for_material(const AnalyticSetUp& set_up, const PaperMat
 // draws <= 0).
 void add_monte_carlo(AnalyticReport& report, const MonteCarloRequest& request);
 
+// The Monte Carlo's summary as the JSON outputs give it: draws, seed, accepted, skipped and mu_k's
+// mean, sd and 2.5 % and 97.5 % quantiles (null without an accepted draw).
+nlohmann::json monte_carlo_json(const MuKMonteCarlo& mc);
+
 // What tools/plot_mc.py draws: the accepted draws with their summary and the paper's rules.
 nlohmann::json monte_carlo_plot_data(const AnalyticReport& report);
 

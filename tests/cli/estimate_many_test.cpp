@@ -182,5 +182,32 @@ TEST_F(EstimateMany, TheTableFeedsCompareMeasured) {
               mu_k_from_period_thin(rows[0]["period_measured_s"].get<double>(), 0.089), 1e-6);
 }
 
+// estimate --mc: mu_k by Monte Carlo beside the paper's rules. For errors this small (0.02 % in T,
+// 1 % in l) mu_k is linear in them, so the draws' sd is the quadrature rule's; with 100000 draws
+// the sd's own relative error is 1/sqrt(2 N) = 0.2 %, so 1 % is a 5-sigma band. Seeded: the same
+// seed gives the same bits, another seed other draws.
+TEST_F(EstimateMany, MonteCarloOfOneLogMatchesTheQuadratureRuleAndIsSeeded) {
+  const std::string log = write_log("logs/a.csv", 0.79, 3);
+  const auto run = [&](const std::string& extra) {
+    const auto r = lab(log + " --spacing 89mm --spacing-err 1mm --json " + extra);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out);
+  };
+  const nlohmann::json a = run("--mc 100000");
+  const nlohmann::json& mc = a["monte_carlo"];
+  EXPECT_EQ(mc["accepted"], 100000);
+  EXPECT_NEAR(mc["mu_k_sd"].get<double>() / a["mu_k_err_quadrature"].get<double>(), 1.0, 0.01);
+  EXPECT_NEAR(mc["mu_k_mean"].get<double>() / a["mu_k"].get<double>(), 1.0, 1e-3);
+  EXPECT_EQ(run("--mc 100000")["monte_carlo"], mc);
+  EXPECT_NE(run("--mc 100000 --seed 2")["monte_carlo"]["mu_k_mean"], mc["mu_k_mean"]);
+  EXPECT_TRUE(run("")["monte_carlo"].is_null());
+  // Options that would do nothing.
+  EXPECT_EQ(lab(log + " --h-c 3mm").status, 2);
+  const std::string b = write_log("logs/b.csv", 0.79, 4);
+  const auto many = lab(log + " " + b + " --mc 1000");
+  EXPECT_EQ(many.status, 2);
+  EXPECT_NE(many.err.find("give one log"), std::string::npos) << many.err;
+}
+
 }  // namespace
 }  // namespace fl

@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/monte_carlo_options.hpp"
+#include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
@@ -65,27 +66,6 @@ std::pair<const PaperMaterial*, const PaperMeasurement*> paper_row(const PaperTa
   return {material, row};
 }
 
-void print_monte_carlo(const AnalyticReport& r) {
-  const MuKMonteCarlo& mc = *r.monte_carlo;
-  if (!mc.mu_k) {
-    fmt::print("  mu_k, Monte Carlo            no draw of {} fell inside the formula's domain\n",
-               mc.draws);
-    return;
-  }
-  const SampleSummary& m = *mc.mu_k;
-  fmt::print(
-      "  mu_k, Monte Carlo            {:.4f} +- {} (mean and sd of {} draws, seed {}); 95 % in "
-      "[{:.4f}, {:.4f}]\n",
-      m.mean, m.sd ? fmt::format("{:.4f}", *m.sd) : std::string("-"), mc.accepted, mc.seed,
-      m.quantile_025, m.quantile_975);
-  fmt::print("                               thick formula on T, l{} drawn from Gaussians{}{}\n",
-             r.set_up.h_c_err > 0.0 ? " and h_c" : "",
-             r.set_up.h_c_err > 0.0 ? " (the rules above leave dh_c out)" : "",
-             mc.skipped > 0
-                 ? fmt::format("; {} draws outside the formula's domain skipped", mc.skipped)
-                 : std::string());
-}
-
 void print_report(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
   constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
@@ -109,7 +89,7 @@ void print_report(const AnalyticReport& r) {
     fmt::print(
         "  condition numbers            d ln mu / d ln T = {:.3f}, d ln mu / d ln l = {:.0f}\n",
         r.mu_k_thick.condition_period, r.mu_k_thick.condition_spacing);
-    if (r.monte_carlo) print_monte_carlo(r);
+    if (r.monte_carlo) print_mu_k_monte_carlo(r, 29, "");
   } else {
     fmt::print("  mu_k                         {:.4g}\n", r.mu_k);
   }

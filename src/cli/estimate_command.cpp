@@ -24,6 +24,7 @@
 #include "cli/estimate_report.hpp"
 #include "cli/log_options.hpp"
 #include "cli/monte_carlo_options.hpp"
+#include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
 #include "cli/output_paths.hpp"
 #include "cli/plot_script.hpp"
@@ -92,27 +93,6 @@ void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& pn
 
 void draw_histogram(const AnalyticReport& report, const std::string& png) {
   run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
-}
-
-void print_monte_carlo(const AnalyticReport& r, const std::string& png) {
-  const MuKMonteCarlo& mc = *r.monte_carlo;
-  if (!mc.mu_k) {
-    fmt::print("  mu_k, Monte Carlo    no draw of {} fell inside the formula's domain\n", mc.draws);
-    return;
-  }
-  const SampleSummary& m = *mc.mu_k;
-  fmt::print(
-      "  mu_k, Monte Carlo    {:.4f} +- {} (mean and sd of {} draws, seed {}); 95 % in "
-      "[{:.4f}, {:.4f}]\n",
-      m.mean, m.sd ? fmt::format("{:.4f}", *m.sd) : std::string("-"), mc.accepted, mc.seed,
-      m.quantile_025, m.quantile_975);
-  fmt::print("                       T, l{} drawn from Gaussians, through the {} formula{}{}\n",
-             r.set_up.h_c_err > 0.0 ? " and h_c" : "",
-             r.set_up.h_c > 0.0 ? fmt::format("thick (h_c = {:.2f} mm)", r.set_up.h_c * 1e3)
-                                : std::string("paper's"),
-             mc.skipped > 0 ? fmt::format("; {} draws outside its domain skipped", mc.skipped)
-                            : std::string(),
-             png.empty() ? "" : "; histogram " + png);
 }
 
 // Whether the logs named are many (a table) or one (today's report): more than one argument, a
@@ -299,7 +279,7 @@ int run_estimate(const EstimateOptions& o) {
     return plot_failed();
   }
   print_estimate(log, est, check, plot_failure.empty() ? o.plot : "");
-  if (mc_report) print_monte_carlo(*mc_report, o.mc_plot);
+  if (mc_report) print_mu_k_monte_carlo(*mc_report, 19, o.mc_plot);
   return plot_failed();
 }
 

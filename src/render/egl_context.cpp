@@ -234,6 +234,10 @@ class EglContext final : public GlContext {
   }
 
   void make_current() override {
+    // EGL skips binding a context it believes current; another library (OSMesa shares Mesa's GL
+    // dispatch) may have made its own current since, so bind again from scratch.
+    if (eglGetCurrentContext() == context_)
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
       throw RenderError("EGL could not make its context current without a surface (" +
                         egl_error_text() + ")");

@@ -279,7 +279,7 @@ std::vector<AxisTick> hall_adc_ticks(double bottom, double top) {
     }
   }
   for (double k = std::ceil(bottom / step - 1e-9); k * step <= top + 1e-9; k += 1.0)
-    ticks.push_back({k * step, fmt::format("{:.0f}", k * step)});
+    ticks.push_back({k * step + 0.0, fmt::format("{:.0f}", k * step + 0.0)});
   return ticks;
 }
 

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,8 +60,10 @@ void print_video(const VideoReport& v, const VideoRequest& request) {
 }
 
 int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
-  // A video format it cannot write is refused before anything is loaded or created.
-  if (!o.video.video.empty()) {
+  // A video format it cannot write is refused before anything is loaded or created (a folder
+  // given as the file is refused below, saying so).
+  std::error_code folder_error;
+  if (!o.video.video.empty() && !std::filesystem::is_directory(o.video.video, folder_error)) {
     const std::string problem = video_file_problem(o.video.video);
     if (!problem.empty()) throw InputError(SourceLocation{"--video", 0, 0}, problem);
   }

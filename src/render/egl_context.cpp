@@ -6,10 +6,13 @@
 // buffer and read with glReadPixels, whose rows come bottom-up and are flipped.
 #include "render/gl_api.hpp"
 
+// No X11 here: some eglplatform.h versions bring Xlib.h and its macros (None, Bool) unless told.
+#define EGL_NO_X11
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>

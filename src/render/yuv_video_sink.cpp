@@ -36,6 +36,8 @@ class YuvVideoEncoder final : public FrameSink {
                         std::to_string(options_.fps));
     if (options_.crf < 0 || options_.crf > 51)
       throw RenderError("x264's crf must be 0 to 51, not " + std::to_string(options_.crf));
+    if (options_.vp9_crf < 0 || options_.vp9_crf > 63)
+      throw RenderError("VP9's crf must be 0 to 63, not " + std::to_string(options_.vp9_crf));
     quiet_av_log();
     encoder_ = avcodec_find_encoder_by_name(codec_.encoder);
     if (encoder_ == nullptr)

@@ -41,8 +41,8 @@ if(FRICTIONLAB_WITH_RENDER AND NOT FRICTIONLAB_DEFAULT_FONT)
   message(FATAL_ERROR "FRICTIONLAB_WITH_RENDER=ON needs DejaVu Sans (apt-get install fonts-dejavu-core)")
 endif()
 
-# GL back ends. OSMesa renders in software (llvmpipe) with no display or GPU. An EGL back end
-# (a GPU without a display) is not written yet; it will be a switch beside this one.
+# GL back ends. OSMesa renders in software (llvmpipe) with no display or GPU; EGL renders with
+# no display either, on Mesa's surfaceless platform (llvmpipe here) or a GPU's EGL device.
 pkg_check_modules(OSMESA QUIET IMPORTED_TARGET osmesa)
 set(osmesa_default OFF)
 if(OSMESA_FOUND AND FRICTIONLAB_WITH_RENDER)
@@ -58,10 +58,26 @@ if(FRICTIONLAB_WITH_OSMESA AND NOT OSMESA_FOUND)
   message(FATAL_ERROR "FRICTIONLAB_WITH_OSMESA=ON but osmesa.pc was not found (apt-get install libosmesa6-dev)")
 endif()
 
-pkg_check_modules(LIBAV QUIET IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
-option(FRICTIONLAB_WITH_VIDEO "MP4 video through libavcodec/libavformat/libswscale" ${LIBAV_FOUND})
+pkg_check_modules(EGL QUIET IMPORTED_TARGET egl)
+set(egl_default OFF)
+if(EGL_FOUND AND FRICTIONLAB_WITH_RENDER)
+  set(egl_default ON)
+endif()
+option(FRICTIONLAB_WITH_EGL "The EGL GL back end (needs FRICTIONLAB_WITH_RENDER)" ${egl_default})
+if(FRICTIONLAB_WITH_EGL AND NOT FRICTIONLAB_WITH_RENDER)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_EGL=ON needs FRICTIONLAB_WITH_RENDER=ON (a back end "
+                      "without the drawing layer draws nothing)")
+endif()
+if(FRICTIONLAB_WITH_EGL AND NOT EGL_FOUND)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_EGL=ON but egl.pc was not found (apt-get install libegl-dev)")
+endif()
+
+# Videos (MP4, WebM, GIF) through libav; libavfilter makes the GIF's palette.
+pkg_check_modules(LIBAV QUIET IMPORTED_TARGET libavcodec libavformat libavfilter libavutil
+                  libswscale)
+option(FRICTIONLAB_WITH_VIDEO "MP4, WebM and GIF video through libav" ${LIBAV_FOUND})
 if(FRICTIONLAB_WITH_VIDEO AND NOT LIBAV_FOUND)
-  message(FATAL_ERROR "FRICTIONLAB_WITH_VIDEO=ON but libav* were not found (apt-get install libavcodec-dev libavformat-dev libswscale-dev)")
+  message(FATAL_ERROR "FRICTIONLAB_WITH_VIDEO=ON but libav* were not found (apt-get install libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev)")
 endif()
 
 find_package(assimp QUIET)

@@ -7,6 +7,8 @@
 //
 //   rig_bench [--benchmark_filter=...]    (scene: <source>/scenes/paper-rig.yaml, loaded by the
 //                                          render tests' fixture, tests/support/rig_fixture.hpp)
+//   FRICTIONLAB_GL=egl rig_bench ...      the GL back end (osmesa, egl; default auto), named in
+//                                          BM_RigFrame's label
 //
 // BM_RigFrame reports wall ms per frame, fps, the CPU time of all the process's threads per
 // frame (llvmpipe renders on LP_NUM_THREADS threads; unset: one per core) and the triangles of
@@ -134,7 +136,7 @@ void report(benchmark::State& state, double cpu, const FrameStats& stats, std::s
 
 // Args: width, height, shadows, samples, overlay, shadow map size.
 void BM_RigFrame(benchmark::State& state) {
-  if (!kHasRender || !kHasOsmesa) {
+  if (!kHasRender || (!kHasOsmesa && !kHasEgl)) {
     state.SkipWithError("built without rendering or without a GL back end");
     return;
   }
@@ -147,6 +149,8 @@ void BM_RigFrame(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(rig.frame(i++).pixels);
   report(state, process_cpu_seconds() - cpu0, rig.renderer->last_frame_stats(),
          static_cast<std::size_t>(i));
+  // The back end ($FRICTIONLAB_GL, else auto) beside the numbers.
+  state.SetLabel(std::string(rig.context->backend_name()));
 }
 BENCHMARK(BM_RigFrame)
     ->ArgNames({"w", "h", "shadows", "samples", "overlay", "map"})
@@ -171,7 +175,7 @@ BENCHMARK(BM_RigFrame)
 // the closed file. Reports both in ms per frame and the overhead in %. Args: width, height, x264
 // threads (0: x264 decides).
 void BM_RigFrameEncoded(benchmark::State& state) {
-  if (!kHasRender || !kHasOsmesa || !kHasVideo) {
+  if (!kHasRender || (!kHasOsmesa && !kHasEgl) || !kHasVideo) {
     state.SkipWithError("built without rendering, a GL back end or video");
     return;
   }

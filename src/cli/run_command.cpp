@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@
 #include "lab/run_outputs.hpp"
 #include "lab/step_choice.hpp"
 #include "lab/video_recorder.hpp"
+#include "scene/video_format.hpp"
 
 namespace fl::cli {
 namespace {
@@ -82,6 +84,13 @@ void refuse_ignored_options(const RunCommandOptions& o) {
 
 int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   refuse_ignored_options(o);
+  // A video format it cannot write is refused before anything is loaded or created (a folder
+  // given as the file is refused below, saying so).
+  std::error_code folder_error;
+  if (!o.video.video.empty() && !std::filesystem::is_directory(o.video.video, folder_error)) {
+    const std::string problem = video_file_problem(o.video.video);
+    if (!problem.empty()) throw InputError(SourceLocation{"--video", 0, 0}, problem);
+  }
   Scene scene = load_scene_with_options(o.scene, global);
   if (!o.accuracy.empty()) {
     const double target = option_quantity(o.accuracy, Dimension::kDimensionless, "--accuracy");
@@ -137,6 +146,8 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
       fmt::print(stderr, "error: {}\n", e.what());
       return 2;
     }
+    if (const std::string note = recorder->note(); !note.empty())
+      fmt::print(stderr, "note: {}\n", note);
     options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
   }
   options.record_cycles = !o.out.empty() && scene.output.cycles;
@@ -215,8 +226,10 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_flag("--plot", options->plot,
                 "With --out: draw the estimator's periods over the run as DIR/periods.png "
                 "(python3 + matplotlib)");
-  sub->add_option("--video", options->video.video,
-                  "Write an MP4 (H.264) of the rig with the Hall trace and the estimate");
+  sub->add_option(
+      "--video", options->video.video,
+      "Write a video of the rig with the Hall trace and the estimate: FILE.mp4 (H.264), "
+      "FILE.gif (animated GIF) or FILE.webm (VP9)");
   sub->add_option("--frames", options->video.frames,
                   "Write every frame as DIR/frame_000000.png, ... (earlier frames are replaced)");
   sub->add_option("--still", options->video.still, "Write the frame at the run's end as a PNG");

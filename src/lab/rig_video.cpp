@@ -62,6 +62,7 @@ struct RigVideo final : public VideoEngine {
   RigVideo(const Scene& s, const VideoRequest& r);
   void observe(const VideoStep& step) override;
   VideoReport finish() override;
+  std::string note() const override { return backend_note; }
 
   const CompiledRig rig;  // the scene compiled once, for the model, the pose and the title
   const Scene& scene;
@@ -75,8 +76,8 @@ struct RigVideo final : public VideoEngine {
   std::unique_ptr<render::GlContext> context;
   std::unique_ptr<render::Renderer> renderer;
   std::unique_ptr<render::RigView> view;
-  render::Camera camera;  // the preset, framed once; the orbit turns it
-  std::unique_ptr<render::FrameSink> mp4;
+  render::Camera camera;                       // the preset, framed once; the orbit turns it
+  std::unique_ptr<render::FrameSink> encoder;  // the video file (--video)
   std::unique_ptr<render::FrameSink> png;
   render::TitleCard title;
   std::string heading;
@@ -91,6 +92,7 @@ struct RigVideo final : public VideoEngine {
   std::vector<render::HallPoint> hall;
   std::optional<std::array<double, 2>> hall_seen;  // lowest and highest ADC value so far
   std::vector<double> pulses;
+  std::vector<double> learning_pulses;  // s, the pulses the estimator learned the signal from
   std::vector<std::array<double, 2>> discarded;  // s, the estimator's discarded periods
   render::EstimatorValues estimator;
   std::optional<double> motor_speed;
@@ -99,6 +101,7 @@ struct RigVideo final : public VideoEngine {
   bool has_sensor = false;
 
   VideoReport report;
+  std::string backend_note;  // why "auto" chose the back end it did, when it had to fall back
 
   void take_samples(const VideoStep& step);
   void take_estimator(const VideoStep& step);
@@ -123,7 +126,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
       render::VideoOptions options;
       options.path = request.video;
       options.fps = video.fps;
-      mp4 = render::make_mp4_sink(options);
+      encoder = render::make_video_sink(options);
     }
     render::GlContextOptions gl;
     gl.width = video.width;
@@ -131,7 +134,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     gl.samples = 4;
     gl.backend = request.gl;
     gl.source = request.gl.empty() ? "" : "--gl";
-    context = render::make_gl_context(gl);
+    context = render::make_gl_context(gl, &backend_note);
     report.backend = context->description();
     // The shadow map's texels about as fine as the frame's pixels over the rig: 512 at 360p,
     // 1024 at 720p, 2048 at 1080p (a 2048 map at 360p costs a third of the frame).
@@ -167,8 +170,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
   }
   material = material_name(scene, request.asset_dir);
   title = render::make_title_card(rig, material, video.slow_motion, video.fps);
-  heading = material + " on PVC rollers  \xc2\xb7  l = " +
-            std::to_string(static_cast<int>(std::lround(scene.rollers.spacing * 1e3))) + " mm";
+  heading = render::rig_heading(scene, material);
   report.width = video.width;
   report.height = video.height;
   report.fps = video.fps;
@@ -209,6 +211,25 @@ void RigVideo::take_estimator(const VideoStep& step) {
     estimator.mu_k_err = r.mu_k_err_worst;
   }
   pulses = r.pulse_times;
+  learning_pulses = r.learning_pulse_times;
+  estimator.learning_pulses = static_cast<int>(r.learning_pulse_times.size());
+  estimator.signal_learned = r.signal_learned;
+  estimator.geometry_known = r.geometry_known;
+  estimator.provisional_periods = static_cast<int>(r.provisional_periods.size());
+  estimator.provisional_period.reset();
+  estimator.provisional_std.reset();
+  if (!r.provisional_periods.empty()) {
+    double sum = 0.0;
+    for (const double p : r.provisional_periods) sum += p;
+    const double mean = sum / static_cast<double>(r.provisional_periods.size());
+    estimator.provisional_period = mean;
+    if (r.provisional_periods.size() >= 2) {
+      double sq = 0.0;
+      for (const double p : r.provisional_periods) sq += (p - mean) * (p - mean);
+      estimator.provisional_std =
+          std::sqrt(sq / static_cast<double>(r.provisional_periods.size() - 1));
+    }
+  }
   estimator.periods_discarded = r.periods_discarded;
   discarded = r.discarded;
 }
@@ -229,6 +250,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
     o.hall_range = std::array<double, 2>{mid - half, mid + half};
   }
   o.pulses = pulses;
+  o.learning_pulses = learning_pulses;
   o.discarded = discarded;
   o.has_sensor = has_sensor;
   o.estimator = estimator;
@@ -250,7 +272,7 @@ void RigVideo::draw(const render::RigPose& pose, double t, double video_time, fl
 
 void RigVideo::emit() {
   const render::ImageView frame = renderer->end_frame();
-  if (mp4) mp4->write(frame);
+  if (encoder) encoder->write(frame);
   if (png) png->write(frame);
   report.triangles = renderer->last_frame_stats().triangles;
   ++video_frame;
@@ -261,7 +283,7 @@ void RigVideo::observe(const VideoStep& step) {
   take_samples(step);
   take_estimator(step);
   const render::RigPose current = pose_of(step);
-  const bool sinks = mp4 || png;
+  const bool sinks = encoder || png;
   if (!started) {
     started = true;
     previous = current;
@@ -297,7 +319,7 @@ VideoReport RigVideo::finish() {
     report.triangles = renderer->last_frame_stats().triangles;
   }
   const auto start = Clock::now();
-  if (mp4) mp4->finish();
+  if (encoder) encoder->finish();
   if (png) png->finish();
   report.finish_seconds = seconds_since(start);
   report.frames = video_frame;

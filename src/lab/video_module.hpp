@@ -34,6 +34,12 @@ struct VideoEstimate {
   double mu_k = 0.0;                // from the mean period, thin formula
   double mu_k_err_worst = 0.0;      // the paper's d mu/mu = dl/l + 2 dT/T
   std::vector<double> pulse_times;  // s, every pulse detected so far
+  // s, the pulses the estimator learned the signal from (not timed; hall_estimator.hpp)
+  std::vector<double> learning_pulse_times;
+  bool signal_learned = false;  // the estimator times pulses
+  bool geometry_known = false;  // it has recognised one pulse or a pair per period
+  // s, before the geometry is known: the periods the timed pulses give (hall_estimator.hpp)
+  std::vector<double> provisional_periods;
   int periods_discarded = 0;
   // The periods the estimator discarded so far (a jump bent a pulse, a pulse went missing): from,
   // to [s].
@@ -77,6 +83,8 @@ class VideoEngine {
   virtual void observe(const VideoStep& step) = 0;
   // Writes the still, flushes and closes the video and the frames. Called once, after the run.
   virtual VideoReport finish() = 0;
+  // A line worth telling before the run, or empty: the GL back end "auto" fell back to and why.
+  virtual std::string note() const = 0;
 };
 
 // Makes the engine: creates the GL context, builds and uploads the rig, opens the sinks. Throws
@@ -85,7 +93,7 @@ class VideoEngine {
 std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request);
 
 // Raise when anything that crosses the seam changes.
-inline constexpr int kVideoModuleVersion = 1;
+inline constexpr int kVideoModuleVersion = 2;
 
 struct VideoModuleAbi {
   int version = kVideoModuleVersion;

@@ -60,6 +60,10 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   e.mu_k = r.mu_k;
   e.mu_k_err_worst = r.mu_k_err_worst;
   e.pulse_times = view.estimator->pulse_times();
+  e.learning_pulse_times = view.estimator->learning_pulse_times();
+  e.signal_learned = view.estimator->signal_learned();
+  e.geometry_known = view.estimator->geometry_known();
+  e.provisional_periods = view.estimator->provisional_periods();
   e.periods_discarded = r.periods_discarded;
   e.discarded.clear();
   for (const EstimatedPeriod& p : view.estimator->judged_periods())
@@ -89,6 +93,10 @@ void VideoRecorder::observe(const StepView& view) {
 
 VideoReport VideoRecorder::finish() {
   return impl_->engine->finish();
+}
+
+std::string VideoRecorder::note() const {
+  return impl_->engine->note();
 }
 
 }  // namespace fl

@@ -33,6 +33,9 @@ class VideoRecorder {
   void observe(const StepView& view);
   // Writes the still, flushes and closes the video and the frames. Call once, after the run.
   VideoReport finish();
+  // A line worth telling before the run, or empty: e.g. that the GL back end "auto" chose OSMesa
+  // because EGL did not start, and why.
+  std::string note() const;
 
  private:
   struct Impl;

@@ -1,10 +1,12 @@
 // The video's settings and frame clock (fl_video_settings): linked into the executable, which
 // checks a request with them before it loads the video module, even in a build without
 // rendering, and into the module.
+#include <algorithm>
 #include <cmath>
 
 #include "io/input_error.hpp"
 #include "lab/video_settings.hpp"
+#include "scene/video_format.hpp"
 
 namespace fl {
 namespace {
@@ -34,6 +36,20 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
     check("--camera", video_camera_problem(*request.camera));
     v.camera = *request.camera;
     v.placed.reset();
+  }
+  if (!request.video.empty()) {
+    check("--video", video_file_problem(request.video));
+    // A GIF is drawn small unless the command line asks otherwise: its size is what keeps it
+    // to a few MB, and text drawn at the GIF's own size stays sharp (scaling text down blurs it).
+    if (video_format_of(request.video) == VideoFormat::kGif) {
+      if (!request.size) {
+        const double scale = std::min({1.0, static_cast<double>(kGifMaxWidth) / v.width,
+                                       static_cast<double>(kGifMaxHeight) / v.height});
+        v.width = 2 * static_cast<int>(std::lround(0.5 * v.width * scale));
+        v.height = 2 * static_cast<int>(std::lround(0.5 * v.height * scale));
+      }
+      if (!request.fps) v.fps = std::min(v.fps, kGifMaxFps);
+    }
   }
   return v;
 }

@@ -1,6 +1,7 @@
 // Which optional rendering components this build has, and the errors the render layer throws.
-// The drawing layer (renderer, text, PNG: FRICTIONLAB_WITH_RENDER), the OSMesa GL back end
-// (FRICTIONLAB_WITH_OSMESA) and video (libav: FRICTIONLAB_WITH_VIDEO) are optional: a build
+// The drawing layer (renderer, text, PNG: FRICTIONLAB_WITH_RENDER), the GL back ends
+// (FRICTIONLAB_WITH_OSMESA, FRICTIONLAB_WITH_EGL) and video (libav: FRICTIONLAB_WITH_VIDEO) are
+// optional: a build
 // without one compiles stubs whose functions throw MissingComponent naming what is missing.
 // Tests skip on kHas*.
 #pragma once
@@ -15,6 +16,9 @@
 #ifndef FRICTIONLAB_HAS_OSMESA
 #error "FRICTIONLAB_HAS_OSMESA is set by the fl_render target; link fl_render"
 #endif
+#ifndef FRICTIONLAB_HAS_EGL
+#error "FRICTIONLAB_HAS_EGL is set by the fl_render target; link fl_render"
+#endif
 #ifndef FRICTIONLAB_HAS_VIDEO
 #error "FRICTIONLAB_HAS_VIDEO is set by the fl_render target; link fl_render"
 #endif
@@ -24,9 +28,11 @@ namespace fl::render {
 // The drawing layer: the renderer, text through stb_truetype, PNG through libpng, the rig view.
 inline constexpr bool kHasRender = FRICTIONLAB_HAS_RENDER != 0;
 // The OSMesa GL back end (software rendering on llvmpipe). Drawing frames needs kHasRender and a
-// back end; EGL is not written yet, so today that back end is OSMesa.
+// back end (OSMesa or EGL).
 inline constexpr bool kHasOsmesa = FRICTIONLAB_HAS_OSMESA != 0;
-// MP4 through libavcodec/libavformat/libswscale (H.264 by libx264).
+// The EGL GL back end (no display: Mesa's surfaceless platform or an EGL device).
+inline constexpr bool kHasEgl = FRICTIONLAB_HAS_EGL != 0;
+// Videos through libav: MP4 (H.264), WebM (VP9), GIF (libavfilter's palette).
 inline constexpr bool kHasVideo = FRICTIONLAB_HAS_VIDEO != 0;
 
 // A failure of the render layer: a GL error, a shader that does not compile, an encoder error.

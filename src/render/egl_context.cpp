@@ -1,18 +1,308 @@
-// The EGL back end (a GPU, no display) is not written yet: this machine has no GPU to test it
-// on. It will be a GlContext made with eglGetPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA or a
-// device), an OpenGL core context, GlApi::load(eglGetProcAddress), a multisampled framebuffer
-// resolved into a single-sampled one, and glReadPixels with the rows flipped.
+// The EGL back end: an OpenGL 3.3+ core context with no window, no display server and no
+// surface. The display is Mesa's surfaceless platform (EGL_MESA_platform_surfaceless: llvmpipe
+// here, a GPU's driver where there is one), else the first EGL device that starts
+// (EGL_EXT_platform_device). With no default framebuffer, the frame is drawn into our own: the
+// 4x multisampled target the OSMesa back end uses too, resolved into a single-sampled colour
+// buffer and read with glReadPixels, whose rows come bottom-up and are flipped.
+#include "render/gl_api.hpp"
+
+// No X11 here: some eglplatform.h versions bring Xlib.h and its macros (None, Bool) unless told.
+#define EGL_NO_X11
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <vector>
+
 #include "render/components.hpp"
+#include "render/frame_target.hpp"
 #include "render/gl_backends.hpp"
 
 namespace fl::render {
+namespace {
 
-std::unique_ptr<GlContext> make_egl_context(const GlContextOptions& /*options*/) {
-  throw_missing("the GL back end 'egl'", "an EGL back end",
-                kHasOsmesa ? "it is not implemented yet; use FRICTIONLAB_GL=osmesa"
-                           : "it is not implemented yet, and FRICTIONLAB_GL=osmesa needs a build "
-                             "with -DFRICTIONLAB_WITH_OSMESA=ON; GL back ends in this build: " +
-                                 compiled_gl_backends());
+std::string egl_error_text() {
+  const EGLint code = eglGetError();
+  switch (code) {
+    case EGL_SUCCESS:
+      return "EGL_SUCCESS";
+    case EGL_NOT_INITIALIZED:
+      return "EGL_NOT_INITIALIZED";
+    case EGL_BAD_ACCESS:
+      return "EGL_BAD_ACCESS";
+    case EGL_BAD_ALLOC:
+      return "EGL_BAD_ALLOC";
+    case EGL_BAD_ATTRIBUTE:
+      return "EGL_BAD_ATTRIBUTE";
+    case EGL_BAD_CONFIG:
+      return "EGL_BAD_CONFIG";
+    case EGL_BAD_CONTEXT:
+      return "EGL_BAD_CONTEXT";
+    case EGL_BAD_DISPLAY:
+      return "EGL_BAD_DISPLAY";
+    case EGL_BAD_MATCH:
+      return "EGL_BAD_MATCH";
+    case EGL_BAD_PARAMETER:
+      return "EGL_BAD_PARAMETER";
+    default:
+      return "EGL error 0x" + [&] {
+        char text[16];
+        std::snprintf(text, sizeof text, "%x", static_cast<unsigned>(code));
+        return std::string(text);
+      }();
+  }
+}
+
+bool has_extension(const char* list, std::string_view name) {
+  if (list == nullptr) return false;
+  const std::string_view all(list);
+  for (std::size_t at = 0; (at = all.find(name, at)) != std::string_view::npos; at += name.size()) {
+    const bool starts = at == 0 || all[at - 1] == ' ';
+    const bool ends = at + name.size() == all.size() || all[at + name.size()] == ' ';
+    if (starts && ends) return true;
+  }
+  return false;
+}
+
+// EGL displays are one per platform and device in a process, and eglTerminate ends them for
+// every context: each is terminated when its last context goes.
+std::mutex display_mutex;
+std::map<EGLDisplay, int> display_users;
+
+void release_display(EGLDisplay display) {
+  const std::lock_guard lock(display_mutex);
+  if (--display_users[display] == 0) {
+    display_users.erase(display);
+    eglTerminate(display);
+  }
+}
+
+// Initialises `display`; true when it starts (and counts this user).
+bool start_display(EGLDisplay display) {
+  if (display == EGL_NO_DISPLAY) return false;
+  const std::lock_guard lock(display_mutex);
+  EGLint major = 0, minor = 0;
+  if (eglInitialize(display, &major, &minor) != EGL_TRUE) return false;
+  ++display_users[display];
+  return true;
+}
+
+// The surfaceless display, else the first device's that starts. Throws RenderError saying what
+// was tried.
+EGLDisplay open_display(std::string& platform) {
+  const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+  if (client == nullptr)
+    throw RenderError(
+        "EGL offers no client extensions (libEGL without EGL 1.5 or "
+        "EGL_EXT_client_extensions)");
+  const auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  if (get_display == nullptr || !has_extension(client, "EGL_EXT_platform_base"))
+    throw RenderError("EGL has no eglGetPlatformDisplayEXT (EGL_EXT_platform_base)");
+  std::string tried;
+  if (has_extension(client, "EGL_MESA_platform_surfaceless")) {
+    const EGLDisplay d = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+    if (start_display(d)) {
+      platform = "surfaceless";
+      return d;
+    }
+    tried = "the surfaceless platform did not initialise (" + egl_error_text() + ")";
+  } else {
+    tried = "no surfaceless platform (EGL_MESA_platform_surfaceless)";
+  }
+  const auto query_devices =
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  if (has_extension(client, "EGL_EXT_platform_device") && query_devices != nullptr) {
+    EGLDeviceEXT devices[16];
+    EGLint count = 0;
+    if (query_devices(16, devices, &count) == EGL_TRUE) {
+      for (EGLint i = 0; i < count; ++i) {
+        const EGLDisplay d = get_display(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
+        if (start_display(d)) {
+          platform = "device " + std::to_string(i);
+          return d;
+        }
+      }
+    }
+    tried += "; none of " + std::to_string(count) + " EGL devices initialised";
+  } else {
+    tried += "; no EGL devices (EGL_EXT_platform_device)";
+  }
+  throw RenderError("EGL found no display without a window: " + tried);
+}
+
+// A framebuffer of one sample: the colour read back, and the depth when nothing is multisampled.
+class SingleSampleTarget {
+ public:
+  SingleSampleTarget(const GlApi& gl, int width, int height, bool depth) : gl_(gl) {
+    gl.GenRenderbuffers(1, &color_);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, color_);
+    gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, 0, GL_RGBA8, width, height);
+    if (depth) {
+      gl.GenRenderbuffers(1, &depth_);
+      gl.BindRenderbuffer(GL_RENDERBUFFER, depth_);
+      gl.RenderbufferStorageMultisample(GL_RENDERBUFFER, 0, GL_DEPTH_COMPONENT24, width, height);
+    }
+    gl.GenFramebuffers(1, &framebuffer_);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_);
+    if (depth)
+      gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_);
+    const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    if (status != GL_FRAMEBUFFER_COMPLETE)
+      throw RenderError("the EGL back end's framebuffer of " + std::to_string(width) + "x" +
+                        std::to_string(height) + " is incomplete (status " +
+                        std::to_string(status) + ")");
+  }
+  SingleSampleTarget(const SingleSampleTarget&) = delete;
+  SingleSampleTarget& operator=(const SingleSampleTarget&) = delete;
+  ~SingleSampleTarget() {
+    gl_.DeleteFramebuffers(1, &framebuffer_);
+    gl_.DeleteRenderbuffers(1, &color_);
+    if (depth_ != 0) gl_.DeleteRenderbuffers(1, &depth_);
+  }
+  GLuint framebuffer() const { return framebuffer_; }
+
+ private:
+  const GlApi& gl_;
+  GLuint framebuffer_ = 0;
+  GLuint color_ = 0;
+  GLuint depth_ = 0;
+};
+
+class EglContext final : public GlContext {
+ public:
+  explicit EglContext(const GlContextOptions& options)
+      : width_(options.width), height_(options.height), samples_(options.samples) {
+    display_ = open_display(platform_);
+    try {
+      const char* extensions = eglQueryString(display_, EGL_EXTENSIONS);
+      if (!has_extension(extensions, "EGL_KHR_no_config_context") &&
+          !has_extension(extensions, "EGL_MESA_configless_context"))
+        throw RenderError(
+            "EGL cannot make a context without a config "
+            "(EGL_KHR_no_config_context)");
+      if (!has_extension(extensions, "EGL_KHR_surfaceless_context"))
+        throw RenderError(
+            "EGL cannot make a context current without a surface "
+            "(EGL_KHR_surfaceless_context)");
+      if (eglBindAPI(EGL_OPENGL_API) != EGL_TRUE)
+        throw RenderError("EGL offers no desktop OpenGL (" + egl_error_text() + ")");
+      // OpenGL 3.3 core or newer (llvmpipe answers with 4.5 core).
+      const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                   3,
+                                   EGL_CONTEXT_MINOR_VERSION,
+                                   3,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_NONE};
+      context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
+      if (context_ == EGL_NO_CONTEXT)
+        throw RenderError("EGL could not create an OpenGL 3.3 core context (" + egl_error_text() +
+                          ")");
+      make_current();
+      gl_.load(&eglGetProcAddress, "egl");
+      // Colour + depth in one sample when nothing is multisampled; else the multisampled target
+      // takes the drawing and this one only the resolved colour.
+      resolved_ = std::make_unique<SingleSampleTarget>(gl_, width_, height_, samples_ <= 1);
+      if (samples_ > 1)
+        target_ = std::make_unique<MultisampleTarget>(gl_, width_, height_, samples_);
+      gl_.check("creating the EGL context");
+    } catch (...) {
+      release();
+      throw;
+    }
+    rows_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4, 0);
+    frame_.assign(rows_.size(), 0);
+  }
+
+  ~EglContext() override { release(); }
+
+  std::string_view backend_name() const override { return "egl"; }
+
+  std::string description() const override {
+    const auto text = [&](GLenum name) {
+      const auto* s = reinterpret_cast<const char*>(gl_.GetString(name));
+      return std::string(s == nullptr ? "?" : s);
+    };
+    return text(GL_VERSION) + ", " + text(GL_RENDERER) + " (EGL " + platform_ + ")";
+  }
+
+  void make_current() override {
+    // EGL skips binding a context it believes current; another library (OSMesa shares Mesa's GL
+    // dispatch) may have made its own current since, so bind again from scratch.
+    if (eglGetCurrentContext() == context_)
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+    if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) != EGL_TRUE)
+      throw RenderError("EGL could not make its context current without a surface (" +
+                        egl_error_text() + ")");
+  }
+
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  int samples() const override { return samples_; }
+  const GlApi& gl() const override { return gl_; }
+  unsigned frame_framebuffer() const override {
+    return target_ ? target_->framebuffer() : resolved_->framebuffer();
+  }
+
+  ImageView read_frame() override {
+    if (target_) target_->resolve_into(resolved_->framebuffer());
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_->framebuffer());
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    gl_.check("reading the frame");
+    // GL's rows run bottom-up; frames are top-down.
+    const std::size_t row = static_cast<std::size_t>(width_) * 4;
+    for (int y = 0; y < height_; ++y)
+      std::memcpy(frame_.data() + static_cast<std::size_t>(y) * row,
+                  rows_.data() + static_cast<std::size_t>(height_ - 1 - y) * row, row);
+    return ImageView{frame_.data(), width_, height_, static_cast<std::ptrdiff_t>(row)};
+  }
+
+ private:
+  void release() {
+    if (display_ == EGL_NO_DISPLAY) return;
+    if (context_ != EGL_NO_CONTEXT) {
+      // GL objects must go while their context is current.
+      if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE) {
+        target_.reset();
+        resolved_.reset();
+      }
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      eglDestroyContext(display_, context_);
+      context_ = EGL_NO_CONTEXT;
+    }
+    release_display(display_);
+    display_ = EGL_NO_DISPLAY;
+  }
+
+  int width_;
+  int height_;
+  int samples_;
+  std::string platform_;
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+  GlApi gl_;
+  std::unique_ptr<SingleSampleTarget> resolved_;
+  std::unique_ptr<MultisampleTarget> target_;
+  std::vector<std::uint8_t> rows_;   // as read, bottom-up
+  std::vector<std::uint8_t> frame_;  // top-down
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> make_egl_context(const GlContextOptions& options) {
+  return std::make_unique<EglContext>(options);
 }
 
 }  // namespace fl::render

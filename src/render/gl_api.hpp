@@ -63,6 +63,7 @@ namespace fl::render {
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                       \
   X(PFNGLPOLYGONOFFSETPROC, PolygonOffset)                                   \
   X(PFNGLREADBUFFERPROC, ReadBuffer)                                         \
+  X(PFNGLREADPIXELSPROC, ReadPixels)                                         \
   X(PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC, RenderbufferStorageMultisample) \
   X(PFNGLSCISSORPROC, Scissor)                                               \
   X(PFNGLSHADERSOURCEPROC, ShaderSource)                                     \

@@ -10,8 +10,9 @@ namespace fl::render {
 namespace {
 
 constexpr std::array<std::string_view, 3> kNames = {"osmesa", "egl", "auto"};
-// The order "auto" tries: software first, since it works everywhere.
-constexpr std::array<GlBackend, 2> kAutoOrder = {GlBackend::kOsmesa, GlBackend::kEgl};
+// The order "auto" tries: EGL first, which finds a GPU where there is one (and llvmpipe where
+// there is none), then OSMesa, which works everywhere but is software only.
+constexpr std::array<GlBackend, 2> kAutoOrder = {GlBackend::kEgl, GlBackend::kOsmesa};
 
 std::string valid_names() {
   std::string out;
@@ -37,7 +38,9 @@ std::unique_ptr<GlContext> make_backend(GlBackend backend, const GlContextOption
 void throw_without_osmesa(std::string_view what, std::string_view component) {
   std::string how = "GL back ends in this build: " + compiled_gl_backends() + "; configure with ";
   if (!kHasRender) how += "-DFRICTIONLAB_WITH_RENDER=ON ";
-  how += "-DFRICTIONLAB_WITH_OSMESA=ON after apt-get install libosmesa6-dev";
+  how +=
+      "-DFRICTIONLAB_WITH_OSMESA=ON after apt-get install libosmesa6-dev (or "
+      "-DFRICTIONLAB_WITH_EGL=ON after apt-get install libegl-dev)";
   if (!kHasRender) how += " libpng-dev libstb-dev libgl-dev fonts-dejavu-core";
   throw_missing(what, component, how);
 }
@@ -55,7 +58,7 @@ bool gl_backend_compiled(GlBackend backend) {
     case GlBackend::kOsmesa:
       return kHasOsmesa;
     case GlBackend::kEgl:
-      return false;
+      return kHasEgl;
   }
   return false;
 }
@@ -77,7 +80,8 @@ GlBackendRequest gl_backend_request(std::string_view requested) {
   return {"auto", "default"};
 }
 
-std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options) {
+std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options, std::string* note) {
+  if (note != nullptr) note->clear();
   GlBackendRequest request{options.backend, options.source};
   if (request.name.empty()) request = gl_backend_request();
   if (options.width <= 0 || options.height <= 0 || options.width > 16384 || options.height > 16384)
@@ -92,12 +96,20 @@ std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options) {
   }
   if (request.name == "auto") {
     std::string failures;
+    std::string first_failure;
     for (const GlBackend backend : kAutoOrder) {
       if (!gl_backend_compiled(backend)) continue;
       try {
-        return make_backend(backend, options);
+        auto context = make_backend(backend, options);
+        // A back end that did not start before the one that did: say which and why, once.
+        if (note != nullptr && !first_failure.empty())
+          *note = first_failure + "; using " + std::string(gl_backend_name(backend));
+        return context;
       } catch (const RenderError& e) {
         failures += "\n  " + std::string(gl_backend_name(backend)) + ": " + e.what();
+        if (first_failure.empty())
+          first_failure = "GL back end " + std::string(gl_backend_name(backend)) +
+                          " did not start (" + e.what() + ")";
       }
     }
     // No back end compiled in: say so, never hand out a context that draws nothing.

@@ -1,8 +1,9 @@
 // The GL back end behind one small interface. A GlContext is an OpenGL 3.3+ core context with
 // a frame of a fixed size: the renderer draws into frame_framebuffer() (multisampled when
 // samples() > 1) and read_frame() resolves it and returns the finished pixels, rows top-down.
-// Back ends: "osmesa" (software, llvmpipe; FRICTIONLAB_WITH_OSMESA) and "egl" (GPU; not
-// implemented yet). A build without any makes no context: make_gl_context says which it has.
+// Back ends: "osmesa" (software, llvmpipe; FRICTIONLAB_WITH_OSMESA) and "egl" (no display:
+// Mesa's surfaceless platform or an EGL device; FRICTIONLAB_WITH_EGL). A build without any makes
+// no context: make_gl_context says which it has.
 // Adding one means a class deriving from GlContext and a line in make_gl_context; the renderer
 // does not change.
 #pragma once
@@ -26,7 +27,7 @@ std::string_view gl_backend_name(GlBackend backend);
 std::span<const std::string_view> gl_backend_names();
 // Whether this build has the back end compiled in.
 bool gl_backend_compiled(GlBackend backend);
-// The back ends this build has compiled in, in the order "auto" tries them ("osmesa"), or
+// The back ends this build has compiled in, in the order "auto" tries them ("egl, osmesa"), or
 // "none".
 std::string compiled_gl_backends();
 
@@ -78,7 +79,10 @@ class GlContext {
 
 // Makes a context of the chosen back end. Throws RenderError for an unknown name (listing the
 // valid ones) or a back end that fails to start, MissingComponent for one not compiled in (and
-// for "auto" when none is), naming the back ends this build has.
-std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options);
+// for "auto" when none is), naming the back ends this build has. "auto" tries EGL, then OSMesa;
+// when one did not start before the one made, `note` (if given) says so in one line, e.g.
+// "GL back end egl did not start (...); using osmesa", and is empty otherwise.
+std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options,
+                                           std::string* note = nullptr);
 
 }  // namespace fl::render

@@ -37,27 +37,52 @@ std::string measured_text(const Measured& m) {
                      m.uncertainty_decimals);
 }
 
+const Color kLearning{0.62f, 0.66f, 0.72f, 1.0f};  // a pulse the estimator learned from
+
+// "1st", "2nd", "3rd", "4th", ...
+std::string ordinal(int n) {
+  const int tens = n % 100;
+  const char* suffix = "th";
+  if (tens < 11 || tens > 13) {
+    if (n % 10 == 1) suffix = "st";
+    if (n % 10 == 2) suffix = "nd";
+    if (n % 10 == 3) suffix = "rd";
+  }
+  return std::to_string(n) + suffix;
+}
+
+std::string plural(int n, const char* word) {
+  return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
+}
+
+// A legend entry right-aligned at `right`: a dot and a word. Returns the entry's left end.
+float legend(Overlay& o, float right, float y, float s, const char* word, const Color& color) {
+  o.text(word, Eigen::Vector2f(right, y), 12 * s, color, TextAlign::kRight);
+  const Rect box = o.measure_text(word, 12 * s);
+  const float dot_x = right - box.width - 6 * s;
+  o.dot(Eigen::Vector2f(dot_x, y + box.height / 2.0f), 3.0f * s, color);
+  return dot_x - 3.0f * s;
+}
+
 void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayState& state) {
   o.rect(panel, kPanel);
-  o.text(fmt::format("Hall sensor (ADC counts), last {:g} s", state.hall_window),
-         Eigen::Vector2f(panel.x + 6 * s, panel.y + 4 * s), 12 * s, kSoft);
-  o.text("pulse", Eigen::Vector2f(panel.x + panel.width - 6 * s, panel.y + 4 * s), 12 * s, kPulse,
-         TextAlign::kRight);
-  const Rect word = o.measure_text("pulse", 12 * s);
-  o.dot(Eigen::Vector2f(panel.x + panel.width - 6 * s - word.width - 6 * s,
-                        panel.y + 4 * s + word.height / 2.0f),
-        3.0f * s, kPulse);
+  o.text("Hall sensor: ADC counts against t (s)", Eigen::Vector2f(panel.x + 6 * s, panel.y + 4 * s),
+         12 * s, kSoft);
+  const double t0 = state.t - state.hall_window;
+  const auto visible = [&](double t) { return t >= t0 && t <= state.t; };
+  const bool learning_shown =
+      std::any_of(state.learning_pulses.begin(), state.learning_pulses.end(), visible);
+  float right = legend(o, panel.x + panel.width - 6 * s, panel.y + 4 * s, s, "pulse", kPulse);
+  if (learning_shown) legend(o, right - 6 * s, panel.y + 4 * s, s, "learning", kLearning);
 
-  const Rect area{panel.x + 6 * s, panel.y + 22 * s, panel.width - 12 * s, panel.height - 28 * s};
+  // Room on the left for the counts and below for the times.
+  const Rect area{panel.x + 32 * s, panel.y + 21 * s, panel.width - 38 * s, panel.height - 36 * s};
   o.rect_outline(area, 1.0f, kGrid);
-  o.line(Eigen::Vector2f(area.x, area.y + area.height / 2.0f),
-         Eigen::Vector2f(area.x + area.width, area.y + area.height / 2.0f), 1.0f, kGrid);
   if (!state.has_sensor) {
     o.text("no Hall sensor in this scene", Eigen::Vector2f(area.x + 6 * s, area.y + 6 * s), 12 * s,
            kSoft);
     return;
   }
-  const double t0 = state.t - state.hall_window;
   const auto x_of = [&](double t) {
     return area.x + area.width * static_cast<float>((t - t0) / state.hall_window);
   };
@@ -68,6 +93,20 @@ void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayStat
     const double f = std::clamp((adc - range[0]) / span, 0.0, 1.0);
     return area.y + area.height - 2.0f * s - static_cast<float>(f) * (area.height - 4.0f * s);
   };
+  // The axes' values: counts on the left, simulated time below, with faint grid lines.
+  for (const AxisTick& tick : hall_adc_ticks(range[0], range[1])) {
+    const float y = y_of(tick.value);
+    o.line(Eigen::Vector2f(area.x, y), Eigen::Vector2f(area.x + area.width, y), 1.0f, kGrid);
+    o.text(tick.label, Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 11 * s, kSoft,
+           TextAlign::kRight);
+  }
+  for (const AxisTick& tick : hall_time_ticks(t0, state.t)) {
+    const float x = x_of(tick.value);
+    o.line(Eigen::Vector2f(x, area.y + area.height),
+           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, kSoft);
+    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, kSoft,
+           TextAlign::kCenter);
+  }
   // Thousands of samples to a point every two pixels (at 640x360 and above), keeping the pulses:
   // in each column the sample that makes the largest triangle with the point chosen before it
   // and the next column's mean ("largest triangle three buckets").
@@ -124,52 +163,125 @@ void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayStat
     o.text("discarded period", Eigen::Vector2f(area.x + 4 * s, area.y + 3 * s), 11 * s,
            Color{kDiscarded.r, kDiscarded.g, kDiscarded.b, 1.0f});
   o.polyline(trace, 1.5f * s, kTrace);
-  for (const double pulse : state.pulses) {
-    if (pulse < t0 || pulse > state.t) continue;
+  // Every pulse the panel counts is marked: those the estimator times in green, those it learned
+  // the signal from in grey.
+  const auto mark = [&](double pulse, const Color& color) {
     const float x = x_of(pulse);
     o.line(Eigen::Vector2f(x, area.y + 1.0f), Eigen::Vector2f(x, area.y + area.height - 1.0f),
-           1.0f * s, Color{kPulse.r, kPulse.g, kPulse.b, 0.55f});
-    o.dot(Eigen::Vector2f(x, area.y + 5.0f * s), 3.0f * s, kPulse);
-  }
+           1.0f * s, Color{color.r, color.g, color.b, 0.55f});
+    o.dot(Eigen::Vector2f(x, area.y + 5.0f * s), 3.0f * s, color);
+  };
+  for (const double pulse : state.learning_pulses)
+    if (visible(pulse)) mark(pulse, kLearning);
+  for (const double pulse : state.pulses)
+    if (visible(pulse)) mark(pulse, kPulse);
 }
 
 void draw_results(Overlay& o, const Rect& panel, float s, const RigOverlayState& state) {
   o.rect(panel, kPanel);
-  const EstimatorValues& e = state.estimator;
+  const ResultsText text = results_text(state);
   float y = panel.y + 6 * s;
   const float x = panel.x + 8 * s;
-  if (!state.has_sensor) {
-    o.text("no sensor: no period measured", Eigen::Vector2f(x, y), 14 * s, kWhite);
-    y += 22 * s;
-  } else if (e.period) {
-    const Rect r = o.text("T = " + format_plus_minus(*e.period, e.period_std.value_or(0.0)) + " s",
-                          Eigen::Vector2f(x, y), 17 * s, kWhite);
-    o.text(e.periods_discarded > 0
-               ? fmt::format("(N = {}, {} discarded)", e.periods, e.periods_discarded)
-               : fmt::format("({} period{})", e.periods, e.periods == 1 ? "" : "s"),
-           Eigen::Vector2f(r.x + r.width + 6 * s, y + 4 * s), 12 * s, kSoft);
-    y += 22 * s;
-    if (e.mu_k)
-      o.text("\xce\xbc\xe2\x82\x96 = " + format_plus_minus(*e.mu_k, e.mu_k_err.value_or(0.0)),
-             Eigen::Vector2f(x, y), 15 * s, kWhite);
-    y += 20 * s;
-  } else {
-    o.text("T: measuring\xe2\x80\xa6", Eigen::Vector2f(x, y), 17 * s, kWhite);
-    y += 22 * s;
-    o.text(fmt::format("{} pulse{} so far", e.pulses, e.pulses == 1 ? "" : "s"),
-           Eigen::Vector2f(x, y), 13 * s, kSoft);
-    y += 20 * s;
-  }
-  if (state.paper_period && state.paper_mu_k) {
-    o.text("paper: T = " + measured_text(*state.paper_period) +
-               " s, \xce\xbc\xe2\x82\x96 = " + measured_text(*state.paper_mu_k),
-           Eigen::Vector2f(x, y), 12 * s, kSoft);
-  } else {
-    o.text("(no paper value for this material)", Eigen::Vector2f(x, y), 12 * s, kSoft);
-  }
+  const bool value = state.has_sensor && (state.estimator.period.has_value() ||
+                                          state.estimator.provisional_period.has_value());
+  const Rect r =
+      o.text(text.period, Eigen::Vector2f(x, y), state.has_sensor ? 17 * s : 14 * s, kWhite);
+  if (!text.note.empty())
+    o.text(text.note, Eigen::Vector2f(r.x + r.width + 6 * s, y + 4 * s), 12 * s, kSoft);
+  y += 22 * s;
+  // mu_k as large as the values; what the estimator waits for, or why a value is provisional,
+  // smaller.
+  const bool provisional = !state.estimator.period && value;
+  if (!text.detail.empty())
+    o.text(text.detail, Eigen::Vector2f(x, y), value && !provisional ? 15 * s : 13 * s,
+           value && !provisional ? kWhite : kSoft);
+  y += 20 * s;
+  o.text(text.paper, Eigen::Vector2f(x, y), 12 * s, kSoft);
 }
 
 }  // namespace
+
+std::string rig_heading(const Scene& scene, const std::string& material) {
+  std::string heading =
+      material + " on " +
+      (scene.rollers.material == "pvc" ? std::string("PVC") : scene.rollers.material) + " rollers";
+  if (scene.friction.temperature_set)
+    heading += fmt::format("  \xc2\xb7  {}{:.0f} K", scene.friction.warming ? "from " : "",
+                           scene.friction.temperature);
+  heading += fmt::format("  \xc2\xb7  l = {:.0f} mm", scene.rollers.spacing * 1e3);
+  return heading;
+}
+
+ResultsText results_text(const RigOverlayState& state) {
+  ResultsText out;
+  out.paper = state.paper_period && state.paper_mu_k
+                  ? "paper: T = " + measured_text(*state.paper_period) +
+                        " s, \xce\xbc\xe2\x82\x96 = " + measured_text(*state.paper_mu_k)
+                  : "(no paper value for this material)";
+  const EstimatorValues& e = state.estimator;
+  if (!state.has_sensor) {
+    out.period = "no sensor: no period measured";
+    return out;
+  }
+  // One period has no spread: T alone, never "± 0".
+  const auto value = [](double mean, std::optional<double> spread, int n) {
+    return n >= 2 ? format_plus_minus(mean, spread.value_or(0.0)) : fmt::format("{:.3f}", mean);
+  };
+  if (e.period && e.periods > 0) {
+    out.period = "T = " + value(*e.period, e.period_std, e.periods) + " s";
+    out.note = e.periods_discarded > 0
+                   ? fmt::format("(N = {}, {} discarded)", e.periods, e.periods_discarded)
+                   : fmt::format("(N = {})", e.periods);
+    if (e.mu_k)
+      out.detail = "\xce\xbc\xe2\x82\x96 = " + format_plus_minus(*e.mu_k, e.mu_k_err.value_or(0.0));
+    return out;
+  }
+  if (e.provisional_period && e.provisional_periods > 0) {
+    // The estimator recognises one pulse or a pair per period from five pulses in a row; until
+    // then the intervals of the pulses it timed give the period, and say so.
+    out.period = "T \xe2\x89\x88 " +
+                 value(*e.provisional_period, e.provisional_std, e.provisional_periods) + " s";
+    out.note = fmt::format("(N = {})", e.provisional_periods);
+    out.detail = "provisional until 5 timed pulses";
+    return out;
+  }
+  out.period = "T: measuring\xe2\x80\xa6";
+  const int shown = e.learning_pulses + e.pulses;  // every pulse the plot marks
+  if (!e.signal_learned)
+    out.detail = "learning the signal from its first pulses";
+  else if (!e.geometry_known)
+    out.detail = fmt::format("{} so far, waiting for the {} timed", plural(shown, "pulse"),
+                             ordinal(e.pulses + 1));
+  else
+    out.detail = fmt::format("{} so far, waiting for a period that passes the checks",
+                             plural(shown, "pulse"));
+  return out;
+}
+
+std::vector<AxisTick> hall_time_ticks(double t0, double t1) {
+  std::vector<AxisTick> ticks;
+  const double step = t1 - t0 > 5.0 ? 1.0 : 0.5;
+  for (double k = std::ceil(std::max(0.0, t0) / step - 1e-9); k * step <= t1 + 1e-9; k += 1.0)
+    ticks.push_back({k * step + 0.0, fmt::format("{:.1f}", k * step + 0.0)});  // + 0: no "-0.0"
+  return ticks;
+}
+
+std::vector<AxisTick> hall_adc_ticks(double bottom, double top) {
+  std::vector<AxisTick> ticks;
+  const double span = top - bottom;
+  if (!(span > 0.0) || !std::isfinite(span)) return ticks;
+  // The smallest of 1, 2, 5 x 10^k that leaves at most four ticks.
+  double step = std::pow(10.0, std::floor(std::log10(span / 4.0)));
+  for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+    if (span / (m * step) <= 4.0) {
+      step *= m;
+      break;
+    }
+  }
+  for (double k = std::ceil(bottom / step - 1e-9); k * step <= top + 1e-9; k += 1.0)
+    ticks.push_back({k * step + 0.0, fmt::format("{:.0f}", k * step + 0.0)});
+  return ticks;
+}
 
 std::string format_plus_minus(double value, double uncertainty) {
   int decimals = 3;
@@ -271,7 +383,8 @@ void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, f
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
   const float a = std::clamp(opacity, 0.0f, 1.0f);
-  o.rect(Rect{0, 0, w, h}, Color{0.04f, 0.06f, 0.09f, 0.84f * a});
+  // Opaque at full strength: the panels drawn before it must not show through.
+  o.rect(Rect{0, 0, w, h}, Color{0.04f, 0.06f, 0.09f, a});
   const auto faded = [a](Color c) {
     c.a *= a;
     return c;

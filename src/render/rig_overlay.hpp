@@ -25,13 +25,22 @@ struct HallPoint {
 
 // The estimator's running values (the rig's estimator, as the Arduino computes them).
 struct EstimatorValues {
-  int pulses = 0;
+  int pulses = 0;   // timed
   int periods = 0;  // periods averaged
   int periods_discarded = 0;
   std::optional<double> period;      // s, mean
   std::optional<double> period_std;  // s, standard deviation of the periods
   std::optional<double> mu_k;
   std::optional<double> mu_k_err;  // worst case, the paper's d mu/mu = dl/l + 2 dT/T
+  // Before its first period: what it is doing.
+  int learning_pulses = 0;      // pulses it learned the signal from (not timed)
+  bool signal_learned = false;  // it times pulses
+  bool geometry_known = false;  // it has recognised one pulse or a pair per period
+  // The periods the timed pulses give until the geometry is known (lab/hall_estimator.hpp):
+  // their number, mean and standard deviation [s].
+  int provisional_periods = 0;
+  std::optional<double> provisional_period;
+  std::optional<double> provisional_std;
 };
 
 struct RigOverlayState {
@@ -45,7 +54,8 @@ struct RigOverlayState {
   std::span<const HallPoint> hall;
   double hall_window = 2.5;                         // s of simulated time the plot spans
   std::optional<std::array<double, 2>> hall_range;  // ADC counts shown, bottom to top
-  std::span<const double> pulses;                   // s
+  std::span<const double> pulses;                   // s, timed by the estimator
+  std::span<const double> learning_pulses;          // s, those it learned the signal from
   // The periods the estimator discarded, from, to [s]: shaded on the plot.
   std::span<const std::array<double, 2>> discarded;
   bool has_sensor = true;
@@ -71,11 +81,36 @@ struct TitleCard {
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
                           int fps);
 
+// The top bar's heading: "LEGO blocks on PVC rollers · 77 K · l = 89 mm" (the temperature when
+// the scene names one; "from 77 K" when the rollers warm).
+std::string rig_heading(const Scene& scene, const std::string& material);
+
+// The results panel's text: T (or what the estimator is waiting for), mu_k, the paper's values.
+struct ResultsText {
+  std::string period;  // "T = 0.7767 ± 0.0002 s", "T = 0.777 s" (one period), "T: measuring…"
+  std::string note;    // beside it: "(N = 4)", "(N = 1)", "(N = 2, provisional)"
+  std::string detail;  // the line below: mu_k, or what the estimator is waiting for
+  std::string paper;   // what the paper measured, or that it has no value
+};
+ResultsText results_text(const RigOverlayState& state);
+
+// A labelled tick of the Hall plot's axes.
+struct AxisTick {
+  double value = 0.0;  // s or ADC counts
+  std::string label;
+};
+// The time axis from t0 to t1 [s]: every 0.5 s (1 s for windows over 5 s), none before t = 0.
+std::vector<AxisTick> hall_time_ticks(double t0, double t1);
+// The ADC axis over [bottom, top] counts: every 1, 2 or 5 times a power of ten, at most five
+// ticks.
+std::vector<AxisTick> hall_adc_ticks(double bottom, double top);
+
 // Draws the running overlay (time, speeds, Hall plot, T and mu_k) into a width x height frame.
 // Frames smaller than 320x180 get none (its text would be under 6 px), nor a title card.
 void draw_rig_overlay(Overlay& overlay, int width, int height, const RigOverlayState& state);
 
-// Draws the title card over the frame; `opacity` 0..1 fades it.
+// Draws the title card over the frame; `opacity` 0..1 fades it. At 1 it is opaque: nothing drawn
+// before it shows through.
 void draw_title_card(Overlay& overlay, int width, int height, const TitleCard& card, float opacity);
 
 // "0.794 ± 0.006": the uncertainty to one significant digit (two when it starts with 1 or 2),

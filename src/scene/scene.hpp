@@ -134,8 +134,9 @@ struct FrictionDesc {
   std::optional<double> v_s;   // m/s, the Stribeck speed (stribeck; needed when mu_s > mu_k)
   double beta = 0.0;           // s/m, the kinetic coefficient's slope (stribeck)
   bool from_paper = false;
-  std::string paper_material;  // the Table I key used, when from_paper
-  double temperature = 300.0;  // K (at the start, when the rollers warm)
+  std::string paper_material;    // the Table I key used, when from_paper
+  double temperature = 300.0;    // K (at the start, when the rollers warm)
+  bool temperature_set = false;  // the scene named the temperature (videos show it then)
   std::optional<WarmingDesc> warming;
   // What the paper measured for that material and temperature, when from_paper.
   std::optional<Measured> paper_period;  // T +- dT [s]

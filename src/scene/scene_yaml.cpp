@@ -137,7 +137,10 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
   }
   if (auto v = n.find("beta")) f.beta = v->quantity(Dimension::kInverseSpeed);
   if (auto v = n.find("mu_s")) f.mu_s = v->quantity(Dimension::kDimensionless);
-  if (auto v = n.find("temperature")) f.temperature = v->quantity(Dimension::kTemperature);
+  if (auto v = n.find("temperature")) {
+    f.temperature = v->quantity(Dimension::kTemperature);
+    f.temperature_set = true;
+  }
   const auto mu = n.find("mu_k");
   if (!mu)
     n.fail("the key 'mu_k' is required: a number, \"paper\" or one of the paper's materials");

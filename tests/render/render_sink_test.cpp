@@ -1,5 +1,6 @@
 // Frame sinks: PNG frames with exactly the expected names that read back to the same pixels,
-// and an MP4 that ffprobe reports as H.264, yuv420p, N frames, N/30 s.
+// an MP4 that ffprobe reports as H.264, yuv420p, N frames, N/30 s; WebM (VP9) and GIF likewise by
+// the file's extension.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -163,6 +164,85 @@ TEST(RenderMp4Errors, AnOddSizeAndAnUnfinishedVideoFailCleanly) {
   options.preset = "warp-speed";
   auto sink = make_mp4_sink(options);
   EXPECT_THROW(sink->write(test_frame(160, 90, 0).view()), RenderError);
+}
+
+// The sink the file's extension picks: WebM (VP9) and GIF, each frame counted by ffprobe, the
+// duration exact, the size kept.
+struct FormatCase {
+  std::string extension;
+  std::string codec;
+  int frames;
+  int fps;
+};
+
+class RenderVideoFormat : public ::testing::TestWithParam<FormatCase> {};
+
+TEST_P(RenderVideoFormat, FfprobeSeesTheCodecAllFramesTheSizeAndTheDuration) {
+  FL_REQUIRE_VIDEO();
+  if (fl::test::run_command("ffprobe -version").status != 0)
+    GTEST_SKIP() << "ffprobe is not installed (apt-get install ffmpeg)";
+  const FormatCase c = GetParam();
+  const auto dir = fl::test::render_output_dir("format_" + c.extension);
+  const std::string file = (dir / ("test." + c.extension)).string();
+  VideoOptions options;
+  options.path = file;
+  options.fps = c.fps;
+  auto sink = make_video_sink(options);
+  for (int i = 0; i < c.frames; ++i) sink->write(test_frame(160, 90, i).view());
+  sink->finish();
+  EXPECT_EQ(sink->frame_count(), static_cast<std::size_t>(c.frames));
+  EXPECT_EQ(file_names(dir), std::set<std::string>{"test." + c.extension});
+  const std::string stream = probe(file, "stream=codec_name,nb_read_frames,width,height");
+  EXPECT_NE(stream.find("codec_name=" + c.codec + "\n"), std::string::npos) << stream;
+  EXPECT_NE(stream.find("nb_read_frames=" + std::to_string(c.frames) + "\n"), std::string::npos)
+      << stream;
+  EXPECT_NE(stream.find("width=160\n"), std::string::npos) << stream;
+  EXPECT_NE(stream.find("height=90\n"), std::string::npos) << stream;
+  const std::string format = probe(file, "format=duration");
+  const auto at = format.find("duration=");
+  ASSERT_NE(at, std::string::npos) << format;
+  // WebM counts time in milliseconds and a GIF in hundredths of a second: at 10 and 25 fps
+  // both hold every frame's start exactly.
+  EXPECT_NEAR(std::stod(format.substr(at + 9)), static_cast<double>(c.frames) / c.fps, 1e-6)
+      << format;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Formats, RenderVideoFormat,
+    ::testing::Values(FormatCase{"webm", "vp9", 45, 25}, FormatCase{"gif", "gif", 30, 10},
+                      FormatCase{"GIF", "gif", 1, 10}, FormatCase{"mp4", "h264", 12, 30}),
+    [](const auto& param_info) {
+      return param_info.param.extension + "_" + std::to_string(param_info.param.frames);
+    });
+
+TEST(RenderVideoFormatErrors, AnUnknownExtensionAndAnAbandonedGifLeaveNothing) {
+  FL_REQUIRE_VIDEO();
+  const auto dir = fl::test::render_output_dir("format_errors");
+  VideoOptions options;
+  options.path = (dir / "x.avi").string();
+  try {
+    make_video_sink(options);
+    FAIL() << "an .avi was accepted";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find(".mp4, .gif or .webm"), std::string::npos) << e.what();
+  }
+  options.path = (dir / "abandoned.gif").string();
+  options.queue_frames = 0;
+  {
+    auto sink = make_video_sink(options);
+    sink->write(test_frame(160, 90, 0).view());
+    sink->write(test_frame(160, 90, 1).view());
+  }  // destroyed without finish(): nothing left behind
+  options.path = (dir / "abandoned.webm").string();
+  {
+    auto sink = make_video_sink(options);
+    sink->write(test_frame(160, 90, 0).view());
+  }
+  EXPECT_TRUE(file_names(dir).empty());
+  // A GIF's delays are whole hundredths of a second: past 50 fps it cannot keep the rate.
+  options.path = (dir / "fast.gif").string();
+  options.fps = 60;
+  EXPECT_THROW(make_video_sink(options), RenderError);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"
 #include "scene/drive_layout.hpp"
+#include "scene/video_format.hpp"
 
 namespace fl::render {
 namespace {
@@ -260,6 +261,134 @@ TEST(RigOverlay, TheTitleCardNamesTheMaterialAndTheSetUp) {
                              "4"),
             std::string::npos)
       << card.footer;
+}
+
+// What the results panel says as the estimator goes: learning the signal, waiting for pulses, a
+// provisional period from the timed pulses, then the estimator's own, with N.
+TEST(RigOverlay, TheResultsSayWhatIsMeasuredOrAwaited) {
+  RigOverlayState state;
+  EstimatorValues& e = state.estimator;
+  auto text = results_text(state);
+  EXPECT_EQ(text.period, "T: measuring\xe2\x80\xa6");
+  EXPECT_EQ(text.detail, "learning the signal from its first pulses");
+  EXPECT_EQ(text.paper, "(no paper value for this material)");
+  // Learned from two pulses (marked on the plot), none timed yet.
+  e.signal_learned = true;
+  e.learning_pulses = 2;
+  text = results_text(state);
+  EXPECT_EQ(text.detail, "2 pulses so far, waiting for the 1st timed");
+  e.pulses = 1;
+  text = results_text(state);
+  EXPECT_EQ(text.detail, "3 pulses so far, waiting for the 2nd timed");
+  // Two timed pulses: one period, shown alone (no spread to show, never "± 0").
+  e.pulses = 2;
+  e.provisional_periods = 1;
+  e.provisional_period = 0.77661;
+  text = results_text(state);
+  EXPECT_EQ(text.period, "T \xe2\x89\x88 0.777 s");
+  EXPECT_EQ(text.note, "(N = 1)");
+  EXPECT_EQ(text.detail, "provisional until 5 timed pulses");
+  EXPECT_EQ(text.period.find("\xc2\xb1"), std::string::npos);
+  // Two periods: their spread.
+  e.pulses = 3;
+  e.provisional_periods = 2;
+  e.provisional_period = 0.7766;
+  e.provisional_std = 0.0004;
+  text = results_text(state);
+  EXPECT_EQ(text.period, "T \xe2\x89\x88 0.7766 \xc2\xb1 0.0004 s");
+  EXPECT_EQ(text.note, "(N = 2)");
+  // The estimator's own: one period alone, then several with their spread, and mu_k.
+  e.geometry_known = true;
+  e.periods = 1;
+  e.period = 0.7767;
+  e.period_std = 0.0;
+  e.mu_k = 0.2968;
+  e.mu_k_err = 0.0067;
+  text = results_text(state);
+  EXPECT_EQ(text.period, "T = 0.777 s");
+  EXPECT_EQ(text.note, "(N = 1)");
+  EXPECT_EQ(text.detail, "\xce\xbc\xe2\x82\x96 = 0.297 \xc2\xb1 0.007");
+  e.periods = 4;
+  e.period_std = 0.00017;
+  e.periods_discarded = 1;
+  text = results_text(state);
+  EXPECT_EQ(text.period, "T = 0.77670 \xc2\xb1 0.00017 s");
+  EXPECT_EQ(text.note, "(N = 4, 1 discarded)");
+  // Geometry known but every period refused so far.
+  e.periods = 0;
+  e.period.reset();
+  e.provisional_period.reset();
+  e.provisional_periods = 0;
+  text = results_text(state);
+  EXPECT_EQ(text.period, "T: measuring\xe2\x80\xa6");
+  EXPECT_EQ(text.detail, "5 pulses so far, waiting for a period that passes the checks");
+  state.has_sensor = false;
+  EXPECT_EQ(results_text(state).period, "no sensor: no period measured");
+}
+
+TEST(RigOverlay, TheHallPlotsAxesCarryValues) {
+  const auto labels = [](const std::vector<AxisTick>& ticks) {
+    std::string out;
+    for (const AxisTick& t : ticks) out += t.label + " ";
+    return out;
+  };
+  // The last 2.5 s at t = 3.2 s: every 0.5 s; none before the run's start.
+  EXPECT_EQ(labels(hall_time_ticks(0.7, 3.2)), "1.0 1.5 2.0 2.5 3.0 ");
+  EXPECT_EQ(labels(hall_time_ticks(-2.5, 0.6)), "0.0 0.5 ");
+  EXPECT_EQ(labels(hall_time_ticks(0.0, 10.0)), "0.0 1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0 ");
+  // Counts: 1, 2 or 5 times a power of ten, inside the range.
+  EXPECT_EQ(labels(hall_adc_ticks(474.0, 746.0)), "500 600 700 ");
+  EXPECT_EQ(labels(hall_adc_ticks(492.0, 532.0)), "500 510 520 530 ");
+  EXPECT_EQ(labels(hall_adc_ticks(0.0, 1023.0)), "0 500 1000 ");
+  EXPECT_TRUE(hall_adc_ticks(5.0, 5.0).empty());
+}
+
+TEST(RigOverlay, TheTopBarNamesTheTemperatureTheSceneSets) {
+  Scene scene = test::paper_rig();
+  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+            "LEGO blocks on PVC rollers  \xc2\xb7  300 K  \xc2\xb7  l = 89 mm");
+  scene.friction.temperature = 77.0;
+  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+            "LEGO blocks on PVC rollers  \xc2\xb7  77 K  \xc2\xb7  l = 89 mm");
+  scene.friction.warming = WarmingDesc{};
+  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+            "LEGO blocks on PVC rollers  \xc2\xb7  from 77 K  \xc2\xb7  l = 89 mm");
+  scene.friction.temperature_set = false;  // a scene that names none
+  EXPECT_EQ(rig_heading(scene, "LEGO blocks"), "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm");
+}
+
+// The file's extension picks the format; a GIF is drawn small unless asked otherwise.
+TEST(VideoFormat, TheExtensionPicksTheFormatAndAnyOtherIsRefused) {
+  EXPECT_EQ(video_format_of("out/rig.mp4"), VideoFormat::kMp4);
+  EXPECT_EQ(video_format_of("RIG.GIF"), VideoFormat::kGif);
+  EXPECT_EQ(video_format_of("a.b/rig.webm"), VideoFormat::kWebm);
+  EXPECT_FALSE(video_format_of("rig.avi"));
+  EXPECT_FALSE(video_format_of("mp4"));
+  EXPECT_FALSE(video_format_of("out.mp4/rig"));
+  EXPECT_EQ(video_file_problem("rig.mp4"), "");
+  EXPECT_NE(video_file_problem("rig.avi").find("expected a video file ending in .mp4, .gif or "
+                                               ".webm"),
+            std::string::npos);
+  Scene scene = test::paper_rig();  // 1280x720 at 30 fps
+  VideoRequest request;
+  request.video = "rig.gif";
+  VideoDesc v = effective_video(scene, request);
+  EXPECT_EQ(v.width, kGifMaxWidth);
+  EXPECT_EQ(v.height, kGifMaxHeight);
+  EXPECT_EQ(v.fps, kGifMaxFps);
+  request.size = std::array<int, 2>{320, 180};
+  request.fps = 20;
+  v = effective_video(scene, request);
+  EXPECT_EQ(v.width, 320);
+  EXPECT_EQ(v.fps, 20);
+  request.video = "rig.mp4";
+  request.size.reset();
+  request.fps.reset();
+  v = effective_video(scene, request);
+  EXPECT_EQ(v.width, 1280);
+  EXPECT_EQ(v.fps, 30);
+  request.video = "rig.avi";
+  EXPECT_THROW(effective_video(scene, request), InputError);
 }
 
 TEST(VideoClock, FramesFollowTheVideosClock) {

@@ -1,6 +1,6 @@
-// The paper's rig drawn on OSMesa: a frame is not blank, the plate's pixels lie where the
-// projection of its pose says, two poses give two pictures, the overlay's text shows, and each
-// camera preset matches its golden image.
+// The paper's rig drawn on each GL back end (OSMesa, EGL): a frame is not blank, the plate's pixels
+// lie where the projection of its pose says, two poses give two pictures, the overlay's text shows,
+// and each camera preset matches its golden image.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,14 +17,6 @@
 
 namespace fl::render {
 namespace {
-
-std::unique_ptr<GlContext> osmesa(int width, int height) {
-  GlContextOptions options;
-  options.width = width;
-  options.height = height;
-  options.backend = "osmesa";
-  return make_gl_context(options);
-}
 
 using test::paper_rig_model;
 
@@ -69,18 +61,19 @@ Centroid difference_centroid(const ImageView& a, const ImageView& b) {
   return c;
 }
 
-class RigRender : public ::testing::Test {
+// Each test on each GL back end.
+class RigRender : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
-    FL_REQUIRE_GL();
+    FL_REQUIRE_BACKEND(GetParam());
     if (!assets::kHasAssets) GTEST_SKIP() << "built without FRICTIONLAB_WITH_ASSETS (assimp)";
   }
 };
 
-TEST_F(RigRender, TheRigIsDrawnAndThePlateLandsWhereItsPoseSays) {
+TEST_P(RigRender, TheRigIsDrawnAndThePlateLandsWhereItsPoseSays) {
   constexpr int kWidth = 480;
   constexpr int kHeight = 270;
-  const auto context = osmesa(kWidth, kHeight);
+  const auto context = test::gl_context(GetParam(), kWidth, kHeight);
   // No shadows: the plate's silhouette is then all that changes when it is left out.
   RendererOptions options;
   options.shadows = false;
@@ -121,8 +114,8 @@ TEST_F(RigRender, TheRigIsDrawnAndThePlateLandsWhereItsPoseSays) {
   }
 }
 
-TEST_F(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
-  const auto context = osmesa(320, 180);
+TEST_P(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
+  const auto context = test::gl_context(GetParam(), 320, 180);
   Renderer renderer(*context);
   const RigView view(renderer, paper_rig_model());
   VideoDesc video;
@@ -140,8 +133,8 @@ TEST_F(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
   EXPECT_GT(difference_centroid(a.view(), b.view()).pixels, 200u);
 }
 
-TEST_F(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
-  const auto context = osmesa(640, 360);
+TEST_P(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
+  const auto context = test::gl_context(GetParam(), 640, 360);
   Renderer renderer(*context);
   const RigView view(renderer, paper_rig_model());
   VideoDesc video;
@@ -199,8 +192,8 @@ TEST_F(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
 // Each camera preset at 160x90, the rig at a fixed pose (no overlay), against
 // tests/render/golden/rig_<preset>_160x90.png. Refresh on purpose, after a deliberate change of
 // the look, with FRICTIONLAB_UPDATE_GOLDEN=1, and look at the new PNGs before committing them.
-TEST_F(RigRender, EachCameraPresetMatchesItsGoldenImage) {
-  const auto context = osmesa(160, 90);
+TEST_P(RigRender, EachCameraPresetMatchesItsGoldenImage) {
+  const auto context = test::gl_context(GetParam(), 160, 90);
   Renderer renderer(*context);
   const RigView view(renderer, paper_rig_model());
   RigPose pose = pose_at(0.012, 0.4);
@@ -213,6 +206,7 @@ TEST_F(RigRender, EachCameraPresetMatchesItsGoldenImage) {
     video.camera = std::string(preset);
     const Image frame = draw(renderer, view, rig_camera(view.model(), video), pose);
     const std::string name = "rig_" + std::string(preset) + "_160x90";
+    const std::string kept = name + "_" + GetParam();
     const std::string golden =
         std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/tests/render/golden/" + name + ".png";
     if (update != nullptr && std::string(update) == "1") {
@@ -225,16 +219,46 @@ TEST_F(RigRender, EachCameraPresetMatchesItsGoldenImage) {
     const double rms = rms_difference(frame.view(), expected.view());
     constexpr double kTolerance = 3.0;  // as the demo scene's golden image
     if (rms > kTolerance) {
-      fl::test::keep_frame(name + "_actual", frame.view());
-      fl::test::keep_frame(name + "_difference",
+      fl::test::keep_frame(kept + "_actual", frame.view());
+      fl::test::keep_frame(kept + "_difference",
                            difference_image(frame.view(), expected.view()).view());
     }
     EXPECT_LE(rms, kTolerance) << preset << ": RMS difference " << rms
-                               << " from the golden image; see render-test-output/" << name
+                               << " from the golden image; see render-test-output/" << kept
                                << "_actual.png and _difference.png in the build folder";
   }
   if (update != nullptr && std::string(update) == "1") GTEST_SKIP() << "wrote the golden images";
 }
+
+// The title card at full strength hides the panels drawn before it: where the results panel and
+// the speeds' panel are, the card shows its own colour, as where no panel is.
+TEST_P(RigRender, TheTitleCardIsOpaque) {
+  const auto context = test::gl_context(GetParam(), 640, 360);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  VideoDesc video;
+  video.width = 640;
+  video.height = 360;
+  RigOverlayState state;
+  state.heading = "LEGO blocks on PVC rollers";
+  state.estimator.pulses = 2;
+  const TitleCard card = make_title_card(compile_rig(test::paper_rig()), "LEGO blocks", 1.0, 30);
+  renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+  view.draw(pose_at(0.0, 0.0), 0.0);
+  draw_rig_overlay(renderer.overlay(), 640, 360, state);
+  draw_title_card(renderer.overlay(), 640, 360, card, 1.0f);
+  const Image frame = copy_image(renderer.end_frame());
+  fl::test::keep_frame("rig_title_card_" + GetParam(), frame.view());
+  // A pixel of the card over no panel (and over the rig), and over the panels' corners.
+  const auto card_colour = frame.at(320, 250);
+  for (const auto& [x, y] : {std::pair{630, 352}, std::pair{12, 32}, std::pair{12, 352},
+                             std::pair{400, 250}, std::pair{20, 180}})
+    for (std::size_t k = 0; k < 3; ++k)
+      EXPECT_EQ(frame.at(x, y)[k], card_colour[k]) << "at " << x << ", " << y;
+}
+
+INSTANTIATE_TEST_SUITE_P(BackEnds, RigRender, ::testing::ValuesIn(test::kGlBackends),
+                         test::backend_test_name);
 
 }  // namespace
 }  // namespace fl::render

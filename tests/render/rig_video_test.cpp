@@ -25,8 +25,8 @@ namespace fs = std::filesystem;
 const std::string kExe = FRICTIONLAB_EXE;
 const std::string kScenes = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/";
 const std::string kRig = kScenes + "paper-rig.yaml";
-// Whether this build draws frames: the drawing layer and a GL back end (today OSMesa).
-constexpr bool kDraws = render::kHasRender && render::kHasOsmesa;
+// Whether this build draws frames: the drawing layer and a GL back end (OSMesa or EGL).
+constexpr bool kDraws = render::kHasRender && (render::kHasOsmesa || render::kHasEgl);
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir = fs::path(FRICTIONLAB_TEST_BINARY_DIR) / "rig-video-test" / name;
@@ -98,6 +98,106 @@ TEST(RigVideo, TheMp4HasTheFramesOfTheVideosClock) {
         << r.out;
     EXPECT_FALSE(fs::exists(file.string() + ".part"));
   }
+}
+
+// The file's extension picks the format: each written by a short run and read back by ffprobe.
+TEST(RigVideo, EachFormatHasItsCodecFramesSizeAndDuration) {
+  FL_REQUIRE_VIDEO_RUN();
+  const fs::path dir = fresh_dir("formats");
+  struct Case {
+    std::string file;
+    std::string args;
+    std::string codec;
+    int width, height, frames;
+    double duration;  // s
+  };
+  const std::string short_run = "--duration 0.5s --fps 10 --size 320x180 --set video.title=false";
+  for (const Case& c : {
+           Case{"rig.mp4", short_run, "h264", 320, 180, 5, 0.5},
+           Case{"rig.webm", short_run, "vp9", 320, 180, 5, 0.5},
+           Case{"rig.gif", short_run, "gif", 320, 180, 5, 0.5},
+           // A GIF without --size and --fps: the scene's 1280x720 at 30 fps drawn at 640x360
+           // and 10 fps; 1 s and the 2 s title card: 30 frames.
+           Case{"title.gif", "--duration 1s", "gif", 640, 360, 30, 3.0},
+       }) {
+    const fs::path file = dir / c.file;
+    const auto r = lab("run " + kRig + " " + c.args + " --video " + file.string());
+    ASSERT_EQ(r.status, 0) << c.file << "\n" << r.err;
+    const auto j = probe(file);
+    const auto& s = j["streams"][0];
+    EXPECT_EQ(s["codec_name"], c.codec) << c.file;
+    EXPECT_EQ(s["width"], c.width) << c.file;
+    EXPECT_EQ(s["height"], c.height) << c.file;
+    EXPECT_EQ(std::stoi(s["nb_read_frames"].get<std::string>()), c.frames) << c.file;
+    EXPECT_NEAR(std::stod(j["format"]["duration"].get<std::string>()), c.duration, 1e-3) << c.file;
+    EXPECT_FALSE(fs::exists(file.string() + ".part"));
+  }
+}
+
+// An extension it cannot write is refused before anything is loaded, run or created: status 2,
+// the accepted extensions named, the file's folder not even made.
+TEST(RigVideo, AnUnknownVideoFormatIsRefusedBeforeAnyWork) {
+  const fs::path dir = fresh_dir("refused");
+  for (const std::string name : {"new/rig.avi", "new/rig", "new/rig.mp4.txt"}) {
+    const auto r = lab("run " + kRig + " --duration 600s --video " + (dir / name).string());
+    EXPECT_EQ(r.status, 2) << name;
+    EXPECT_NE(r.err.find("--video: error: expected a video file ending in .mp4, .gif or .webm"),
+              std::string::npos)
+        << r.err;
+    EXPECT_EQ(r.out, "") << name;  // no run, no summary
+    EXPECT_FALSE(fs::exists(dir / "new")) << name;
+  }
+}
+
+// Ctrl-C during a run with a video: the video up to its last frame, playable, in every format.
+TEST(RigVideo, AnInterruptedRunClosesAPlayableVideoInEveryFormat) {
+  FL_REQUIRE_VIDEO_RUN();
+  const fs::path dir = fresh_dir("interrupted");
+  for (const std::string extension : {"mp4", "webm", "gif"}) {
+    const fs::path file = dir / ("rig." + extension);
+    const auto r = test::run_command(
+        "(LSAN_OPTIONS=suppressions=" FRICTIONLAB_TEST_SOURCE_DIR "/tests/render/lsan.supp " +
+        kExe + " run " + kRig + " --duration 600s --fps 10 --size 320x180 " +
+        "--set video.title=false --video " + file.string() +
+        " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo status $?)");
+    EXPECT_NE(r.out.find("status 130"), std::string::npos) << extension << "\n" << r.out << r.err;
+    ASSERT_TRUE(fs::exists(file)) << extension << "\n" << r.err;
+    EXPECT_FALSE(fs::exists(file.string() + ".part"));
+    const auto j = probe(file);
+    const int frames = std::stoi(j["streams"][0]["nb_read_frames"].get<std::string>());
+    EXPECT_GT(frames, 0) << extension;
+    // As many frames as the run reported writing.
+    EXPECT_NE(r.out.find("video                  " + std::to_string(frames) + " frames"),
+              std::string::npos)
+        << extension << "\n"
+        << r.out;
+  }
+}
+
+// --gl egl draws on EGL; auto takes EGL where it starts, and where it does not (here: glvnd
+// given no vendor library) draws on OSMesa with a one-line note saying why.
+TEST(RigVideo, TheEglBackEndDrawsAndAutoFallsBackToOsmesaWithANote) {
+  if (!kDraws || !render::kHasEgl || !render::kHasOsmesa)
+    GTEST_SKIP() << "built without both GL back ends";
+  const fs::path dir = fresh_dir("egl");
+  const std::string still = " --duration 0.2s --size 160x90 --still ";
+  auto r = lab("run " + kRig + still + (dir / "egl.png").string() + " --gl egl");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("note:"), std::string::npos) << r.err;
+  r = lab("run " + kRig + still + (dir / "osmesa.png").string() + " --gl osmesa");
+  ASSERT_EQ(r.status, 0) << r.err;
+  // One renderer (llvmpipe) behind both: the same picture.
+  EXPECT_EQ(test::read_text(dir / "egl.png"), test::read_text(dir / "osmesa.png"));
+  const std::string no_vendor = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";
+  r = lab("run " + kRig + still + (dir / "x.png").string() + " --gl egl", no_vendor);
+  if (r.status == 0) GTEST_SKIP() << "this libEGL is not glvnd's: EGL cannot be made to fail";
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("error: EGL"), std::string::npos) << r.err;
+  r = lab("run " + kRig + still + (dir / "auto.png").string(), no_vendor);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("note: GL back end egl did not start ("), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("); using osmesa\n"), std::string::npos) << r.err;
+  EXPECT_EQ(test::read_text(dir / "auto.png"), test::read_text(dir / "osmesa.png"));
 }
 
 TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
@@ -223,8 +323,8 @@ TEST(RigVideo, ARunWithoutFramesLoadsNoRenderer) {
         "run " + kRig + " --duration 0.2s"}) {
     const std::string objects = loaded_objects(args);
     EXPECT_NE(objects.find("libyaml-cpp"), std::string::npos) << args << ":\n" << objects;
-    for (const char* name : {"frictionlab-video", "libOSMesa", "libLLVM", "libavcodec",
-                             "libavformat", "libswscale", "libassimp", "libpng"})
+    for (const char* name : {"frictionlab-video", "libOSMesa", "libEGL", "libLLVM", "libavcodec",
+                             "libavformat", "libavfilter", "libswscale", "libassimp", "libpng"})
       EXPECT_EQ(objects.find(name), std::string::npos) << args << " loaded " << name;
   }
   if (!kDraws) return;
@@ -233,7 +333,12 @@ TEST(RigVideo, ARunWithoutFramesLoadsNoRenderer) {
   const std::string objects = loaded_objects("run " + kScenes + "minimal.yaml --duration 0.1s " +
                                              "--size 160x90 --still " + (dir / "x.png").string());
   EXPECT_NE(objects.find("frictionlab-video.so"), std::string::npos) << objects;
-  EXPECT_NE(objects.find("libOSMesa"), std::string::npos) << objects;
+  if (render::kHasOsmesa) {
+    EXPECT_NE(objects.find("libOSMesa"), std::string::npos) << objects;
+  }
+  if (render::kHasEgl) {
+    EXPECT_NE(objects.find("libEGL"), std::string::npos) << objects;
+  }
 }
 
 TEST(RigVideo, AMissingOrForeignVideoModuleIsNamedWithStatusTwo) {

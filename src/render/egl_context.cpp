@@ -14,7 +14,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -71,27 +70,16 @@ bool has_extension(const char* list, std::string_view name) {
   return false;
 }
 
-// EGL displays are one per platform and device in a process, and eglTerminate ends them for
-// every context: each is terminated when its last context goes.
-std::mutex display_mutex;
-std::map<EGLDisplay, int> display_users;
-
-void release_display(EGLDisplay display) {
-  const std::lock_guard lock(display_mutex);
-  if (--display_users[display] == 0) {
-    display_users.erase(display);
-    eglTerminate(display);
-  }
-}
-
-// Initialises `display`; true when it starts (and counts this user).
+// EGL displays are one per platform and device in a process, shared by every context on them:
+// eglTerminate would end a display under the other contexts, and unload Mesa's driver. So each
+// display is initialised once and stays for the process's life (eglInitialize on an initialised
+// display only counts it again).
 bool start_display(EGLDisplay display) {
   if (display == EGL_NO_DISPLAY) return false;
-  const std::lock_guard lock(display_mutex);
+  static std::mutex mutex;
+  const std::lock_guard lock(mutex);
   EGLint major = 0, minor = 0;
-  if (eglInitialize(display, &major, &minor) != EGL_TRUE) return false;
-  ++display_users[display];
-  return true;
+  return eglInitialize(display, &major, &minor) == EGL_TRUE;
 }
 
 // The surfaceless display, else the first device's that starts. Throws RenderError saying what
@@ -282,8 +270,7 @@ class EglContext final : public GlContext {
       eglDestroyContext(display_, context_);
       context_ = EGL_NO_CONTEXT;
     }
-    release_display(display_);
-    display_ = EGL_NO_DISPLAY;
+    display_ = EGL_NO_DISPLAY;  // initialised for the process's life (start_display)
   }
 
   int width_;

@@ -115,14 +115,10 @@ class GifEncoder final : public FrameSink {
     av_check(avcodec_open2(context_, encoder_, nullptr), "opening the GIF encoder");
     // loop 0: the GIF plays on and on, as a teaching clip on a slide should.
     AVDictionary* muxer_options = nullptr;
+    const std::unique_ptr<AVDictionary*, void (*)(AVDictionary**)> free_options(&muxer_options,
+                                                                                &av_dict_free);
     av_dict_set(&muxer_options, "loop", "0", 0);
-    try {
-      output_->open(c, &muxer_options);
-    } catch (...) {
-      av_dict_free(&muxer_options);
-      throw;
-    }
-    av_dict_free(&muxer_options);
+    output_->open(c, &muxer_options);
     make_graph();
   }
 

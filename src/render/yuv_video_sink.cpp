@@ -103,13 +103,9 @@ class YuvVideoEncoder final : public FrameSink {
     c.colorspace = AVCOL_SPC_BT709;
     c.color_range = AVCOL_RANGE_MPEG;
     if (output_->format().flags & AVFMT_GLOBALHEADER) c.flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-    AVDictionary* muxer_options = nullptr;
     if (codec_.format == VideoFormat::kMp4) {
       set("preset", options_.preset);
       set("crf", std::to_string(options_.crf));
-      // The movie's time scale (1000 by default) must count whole frames too, or the
-      // container's duration is rounded to the millisecond (1 frame at 30 fps: 0.034 s).
-      av_dict_set_int(&muxer_options, "movie_timescale", 1000L * options_.fps, 0);
     } else {
       // Constant quality (crf with no bit-rate target); "realtime" with cpu-used 8 and rows in
       // parallel keeps VP9 about as fast as drawing the frames (docs/rendering.md).
@@ -121,14 +117,16 @@ class YuvVideoEncoder final : public FrameSink {
     }
     av_check(avcodec_open2(context_, encoder_, nullptr),
              std::string("opening the ") + codec_.encoder + " encoder");
-    const auto free_options = [&] { av_dict_free(&muxer_options); };
-    try {
-      output_->open(c, &muxer_options);
-    } catch (...) {
-      free_options();
-      throw;
+    // The muxer's options, freed however open() ends.
+    AVDictionary* muxer_options = nullptr;
+    const std::unique_ptr<AVDictionary*, void (*)(AVDictionary**)> free_options(&muxer_options,
+                                                                                &av_dict_free);
+    if (codec_.format == VideoFormat::kMp4) {
+      // The movie's time scale (1000 by default) must count whole frames too, or the
+      // container's duration is rounded to the millisecond (1 frame at 30 fps: 0.034 s).
+      av_dict_set_int(&muxer_options, "movie_timescale", 1000L * options_.fps, 0);
     }
-    free_options();
+    output_->open(c, &muxer_options);
 
     yuv_ = av_frame_alloc();
     packet_ = av_packet_alloc();

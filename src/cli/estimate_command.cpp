@@ -231,7 +231,14 @@ int run_estimate(const EstimateOptions& o) {
   if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
   if (!o.mc_plot.empty()) prepare_output_file(o.mc_plot, "--mc-plot");
   const HallLog log = read_hall_log(o.log, reading);
-  const LogEstimate est = estimate_log(log, set_up, !o.plot.empty());
+  // The log's sidecar, as for a table of logs: its rig over the command line's.
+  LogSetUp log_set_up = set_up;
+  if (const std::optional<LogSidecar> side = read_log_sidecar(log.file)) {
+    apply_log_sidecar(*side, log_set_up);
+    fmt::print(stderr, "note: the rig from {}: l = {:.1f} +- {:.1f} mm, g = {} m/s^2\n", side->file,
+               log_set_up.spacing * 1e3, log_set_up.spacing_err * 1e3, log_set_up.gravity);
+  }
+  const LogEstimate est = estimate_log(log, log_set_up, !o.plot.empty());
   std::string plot_note;
   std::string plot_failure;
   if (!o.plot.empty()) {
@@ -256,9 +263,9 @@ int run_estimate(const EstimateOptions& o) {
   std::optional<AnalyticReport> mc_report;
   if (mc) {
     AnalyticSetUp mc_set_up;
-    mc_set_up.spacing = set_up.spacing;
-    mc_set_up.spacing_err = set_up.spacing_err;
-    mc_set_up.gravity = set_up.gravity;
+    mc_set_up.spacing = log_set_up.spacing;
+    mc_set_up.spacing_err = log_set_up.spacing_err;
+    mc_set_up.gravity = log_set_up.gravity;
     mc_set_up.h_c = h_c;
     mc_set_up.h_c_err = h_c_err;
     mc_report = analytic_for_period(mc_set_up, est.stats.period_s, est.stats.period_std_s);

@@ -6,7 +6,6 @@
 
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
-#include "io/log_sidecar.hpp"
 #include "lab/geometry_check.hpp"
 
 namespace fl {
@@ -36,6 +35,13 @@ std::string number(const std::optional<double>& v) {
 
 }  // namespace
 
+void apply_log_sidecar(const LogSidecar& side, LogSetUp& set_up) {
+  if (side.spacing) set_up.spacing = *side.spacing;
+  if (side.spacing_err) set_up.spacing_err = *side.spacing_err;
+  if (side.gravity) set_up.gravity = *side.gravity;
+  if (side.geometry) set_up.geometry = geometry_from(*side.geometry);
+}
+
 LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults) {
   LogTableRow row;
   row.log = log;
@@ -47,10 +53,7 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
     if (const std::optional<LogSidecar> side = read_log_sidecar(log)) {
       row.sidecar = side->file;
       if (side->label) row.label = *side->label;
-      if (side->spacing) row.set_up.spacing = *side->spacing;
-      if (side->spacing_err) row.set_up.spacing_err = *side->spacing_err;
-      if (side->gravity) row.set_up.gravity = *side->gravity;
-      if (side->geometry) row.set_up.geometry = geometry_from(*side->geometry);
+      apply_log_sidecar(*side, row.set_up);
       if (side->material) row.material = side->material;
       if (side->temperature) row.temperature = side->temperature;
     }

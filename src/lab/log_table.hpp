@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/hall_log.hpp"
+#include "io/log_sidecar.hpp"
 #include "lab/log_estimate.hpp"
 
 namespace fl {
@@ -43,6 +44,9 @@ struct LogTableDefaults {
   std::optional<double> temperature;  // K
   HallLogOptions reading;
 };
+
+// What a sidecar says of the rig (spacing, dl, g, geometry) over `set_up`.
+void apply_log_sidecar(const LogSidecar& sidecar, LogSetUp& set_up);
 
 // One log's row; never throws for what is wrong with the log or its sidecar (the row says it).
 LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults);

@@ -209,5 +209,17 @@ TEST_F(EstimateMany, MonteCarloOfOneLogMatchesTheQuadratureRuleAndIsSeeded) {
   EXPECT_NE(many.err.find("give one log"), std::string::npos) << many.err;
 }
 
+// One log with a sidecar: its rig from the sidecar, as in a table, and a note that says so.
+TEST_F(EstimateMany, OneLogReadsItsSidecarToo) {
+  const std::string log = write_log("logs/a.csv", 0.79, 5);
+  write("logs/a.yaml", "spacing: 70 mm\nspacing_err: 0.5 mm\n");
+  const auto r = lab(log + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_DOUBLE_EQ(j["spacing_m"].get<double>(), 0.070);
+  EXPECT_DOUBLE_EQ(j["spacing_err_m"].get<double>(), 0.0005);
+  EXPECT_NE(r.err.find("note: the rig from "), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace fl

@@ -236,9 +236,7 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
     print_report(report);
     if (!o.plot.empty() && plot_failure.empty()) fmt::print("  plot: {}\n", o.plot);
   }
-  if (plot_failure.empty()) return 0;
-  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
-  return 1;
+  return plot_failure_status(plot_failure);
 }
 
 }  // namespace

@@ -33,9 +33,7 @@ struct CompareCommandOptions {
   std::string measured;
   std::string log;
   std::string geometry;
-  std::string columns;
-  std::string rate;
-  std::string time_unit;
+  LogReadingOptions reading;
   std::vector<std::string> overrides;
   std::string duration;
   int workers = 0;
@@ -164,7 +162,7 @@ void print_log_report(const LogAgainstRig& r, const std::string& written) {
 }
 
 int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
-  const HallLog log = read_hall_log(o.log, log_reading(o.columns, o.rate, o.time_unit));
+  const HallLog log = read_hall_log(o.log, log_reading(o.reading));
   LogSetUp set_up;
   set_up.geometry = parse_geometry(o.geometry.empty() ? "auto" : o.geometry);
   {
@@ -194,15 +192,12 @@ int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
     fmt::print("{}\n", j.dump(2));
   else
     print_log_report(r, written);
-  if (plot_failure.empty()) return 0;
-  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
-  return 1;
+  return plot_failure_status(plot_failure);
 }
 
 int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
   const std::string asset_dir = resolve_asset_dir(global.asset_dir);
-  if (o.log.empty() &&
-      (!o.geometry.empty() || !o.columns.empty() || !o.rate.empty() || !o.time_unit.empty()))
+  if (o.log.empty() && (!o.geometry.empty() || o.reading.any()))
     throw InputError({},
                      "--geometry, --columns, --rate and --time-unit say how to read a log; "
                      "they go with --log LOG");
@@ -305,11 +300,7 @@ Command add_compare_command(CLI::App& app, const GlobalOptions& global) {
                   "and set the two signals side by side (compare-log.json, --plot)");
   sub->add_option("--geometry", options->geometry,
                   "With --log: pulses per period, auto, one or pair (as for estimate)");
-  sub->add_option("--columns", options->columns,
-                  "With --log: the log's fields in order (as for estimate)");
-  sub->add_option("--rate", options->rate, "With --log: the sample rate of a log without times");
-  sub->add_option("--time-unit", options->time_unit,
-                  "With --log: the unit of the log's time column (us, ms or s)");
+  add_log_reading_options(*sub, options->reading, "With --log: ");
   sub->add_option("--set", options->overrides,
                   "Override a scene key, e.g. --set plate.thickness=5mm (repeatable)");
   sub->add_option("--duration", options->duration,

@@ -50,9 +50,7 @@ struct EstimateOptions {
   std::string spacing_err = "2 mm";
   std::string gravity = "9.81 m/s^2";
   std::string geometry = "auto";
-  std::string columns;
-  std::string rate;
-  std::string time_unit;
+  LogReadingOptions reading;
   std::string plot;
   bool json = false;
   std::string follow;
@@ -83,10 +81,6 @@ LogSetUp set_up_from(const EstimateOptions& o) {
   return set_up;
 }
 
-HallLogOptions reading_from(const EstimateOptions& o) {
-  return log_reading(o.columns, o.rate, o.time_unit);
-}
-
 void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& png) {
   run_plot_script_on("plot_hall.py", hall_plot_data(log, est), png);
 }
@@ -95,14 +89,17 @@ void draw_histogram(const AnalyticReport& report, const std::string& png) {
   run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
 }
 
-// Whether the logs named are many (a table) or one (today's report): more than one argument, a
-// pattern, or a folder of several logs.
-bool names_many_logs(const std::vector<std::string>& logs) {
-  if (logs.size() > 1) return true;
-  if (logs.empty() || logs.front() == "-") return false;
-  if (is_log_pattern(logs.front())) return true;
+// The logs named when they are many (a table): more than one argument, a pattern, or a folder of
+// several logs; nothing when they are one (its own report).
+std::optional<std::vector<std::string>> many_logs(const std::vector<std::string>& logs) {
+  if (logs.empty() || (logs.size() == 1 && logs.front() == "-")) return std::nullopt;
   std::error_code ec;
-  return std::filesystem::is_directory(logs.front(), ec) && expand_log_arguments(logs).size() > 1;
+  if (logs.size() == 1 && !is_log_pattern(logs.front()) &&
+      !std::filesystem::is_directory(logs.front(), ec))
+    return std::nullopt;
+  std::vector<std::string> found = expand_log_arguments(logs);
+  if (logs.size() == 1 && !is_log_pattern(logs.front()) && found.size() <= 1) return std::nullopt;
+  return found;
 }
 
 void print_log_table(const std::vector<LogTableRow>& rows) {
@@ -127,7 +124,8 @@ void print_log_table(const std::vector<LogTableRow>& rows) {
       "them\n");
 }
 
-int run_many_logs(const EstimateOptions& o, const LogSetUp& set_up, const HallLogOptions& reading) {
+int run_many_logs(const EstimateOptions& o, const std::vector<std::string>& logs,
+                  const LogSetUp& set_up, const HallLogOptions& reading) {
   if (!o.plot.empty())
     throw InputError({},
                      "--plot draws one log's signal; with several logs give --out DIR for "
@@ -146,8 +144,7 @@ int run_many_logs(const EstimateOptions& o, const LogSetUp& set_up, const HallLo
   if (!o.temperature.empty())
     defaults.temperature = option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
   std::vector<LogTableRow> rows;
-  for (const std::string& log : expand_log_arguments(o.logs))
-    rows.push_back(estimate_log_row(log, defaults));
+  for (const std::string& log : logs) rows.push_back(estimate_log_row(log, defaults));
   const nlohmann::json j = log_table_json(rows);
   std::string written;
   if (!o.out.empty()) {
@@ -173,15 +170,15 @@ int run_many_logs(const EstimateOptions& o, const LogSetUp& set_up, const HallLo
 
 int run_estimate(const EstimateOptions& o) {
   const LogSetUp set_up = set_up_from(o);
-  const HallLogOptions reading = reading_from(o);
+  const HallLogOptions reading = log_reading(o.reading);
   const bool monte_carlo =
       !o.monte_carlo.draws.empty() || !o.h_c.empty() || !o.h_c_err.empty() || !o.mc_plot.empty();
-  const bool many = names_many_logs(o.logs);
+  const std::optional<std::vector<std::string>> many = many_logs(o.logs);
   if (monte_carlo && (many || !o.follow.empty()))
     throw InputError({},
                      "--mc and its options estimate one log's mu_k by Monte Carlo; give one "
                      "log (not several, nor --follow)");
-  if (many) return run_many_logs(o, set_up, reading);
+  if (many) return run_many_logs(o, *many, set_up, reading);
   if (!o.out.empty())
     throw InputError({},
                      "--out writes the table of several logs; for one log use --json (or "
@@ -249,11 +246,6 @@ int run_estimate(const EstimateOptions& o) {
       plot_failure = e.what();
     }
   }
-  const auto plot_failed = [&] {
-    if (plot_failure.empty()) return 0;
-    fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
-    return 1;
-  };
   require_periods(log, est, plot_note);
   const GeometryCheck check = check_geometry(log, est);
   require_geometry(log, est, check, plot_note);
@@ -283,11 +275,11 @@ int run_estimate(const EstimateOptions& o) {
     j["monte_carlo"] =
         mc_report ? monte_carlo_json(*mc_report->monte_carlo) : nlohmann::json(nullptr);
     fmt::print("{}\n", j.dump(2));
-    return plot_failed();
+    return plot_failure_status(plot_failure);
   }
   print_estimate(log, est, check, plot_failure.empty() ? o.plot : "");
   if (mc_report) print_mu_k_monte_carlo(*mc_report, 19, o.mc_plot);
-  return plot_failed();
+  return plot_failure_status(plot_failure);
 }
 
 }  // namespace
@@ -303,15 +295,7 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
                   "The log: a file, a folder holding one (a run's hall.csv), or - for standard "
                   "input. Several logs, a folder of logs or a pattern (logs/*.csv) give a table, "
                   "one row per log");
-  sub->add_option("--columns", options->columns,
-                  "The log's fields in order, for a log without a header (or to override it): "
-                  "t_us,adc, millis,sensorValue, _,t_ms,adc (_ skips a field)");
-  sub->add_option("--rate", options->rate,
-                  "Sample rate (1kHz): time the samples by their count, for a log without a time "
-                  "column (or whose times repeat)");
-  sub->add_option("--time-unit", options->time_unit,
-                  "Unit of the time column when its name gives none: us, ms or s (default: the "
-                  "unit that makes the sample rate 20 Hz to 20 kHz)");
+  add_log_reading_options(*sub, options->reading, "");
   sub->add_option("--spacing", options->spacing, "Roller spacing l")->capture_default_str();
   sub->add_option("--spacing-err", options->spacing_err, "Uncertainty dl of the spacing")
       ->capture_default_str();

@@ -264,9 +264,7 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
       fmt::print("\n  written: {}\n", list);
     }
   }
-  if (plot_failure.empty()) return 0;
-  fmt::print(stderr, "error: no plot: {}; the results above are complete\n", plot_failure);
-  return 1;
+  return plot_failure_status(plot_failure);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "estimator/period_estimator.h"
 #include "io/hall_log_reader.hpp"
 
@@ -12,9 +14,21 @@ namespace fl::cli {
 // --geometry: auto, one or pair. Throws InputError for anything else.
 fl_estimator::Geometry parse_geometry(const std::string& text);
 
-// --columns, --rate, --time-unit as the reader takes them ("" for an option not given). Throws
-// InputError for a rate that is not a positive frequency.
-HallLogOptions log_reading(const std::string& columns, const std::string& rate,
-                           const std::string& time_unit);
+// --columns, --rate and --time-unit as given ("" for an option not given).
+struct LogReadingOptions {
+  std::string columns;
+  std::string rate;
+  std::string time_unit;
+
+  bool any() const { return !columns.empty() || !rate.empty() || !time_unit.empty(); }
+};
+
+// Adds the three options to a command; `with` starts each help text ("With --log: " or "").
+void add_log_reading_options(CLI::App& command, LogReadingOptions& options,
+                             const std::string& with);
+
+// The options as the reader takes them. Throws InputError for a rate that is not a positive
+// frequency.
+HallLogOptions log_reading(const LogReadingOptions& options);
 
 }  // namespace fl::cli

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,12 @@ void run_plot_script(const std::string& script, const std::vector<std::string>& 
   if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("the plotting script tools/" + script + " failed (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+}
+
+int plot_failure_status(const std::string& failure) {
+  if (failure.empty()) return 0;
+  std::fprintf(stderr, "error: no plot: %s; the results above are complete\n", failure.c_str());
+  return 1;
 }
 
 void run_plot_script_on(const std::string& script, const nlohmann::json& data,

@@ -15,6 +15,11 @@ std::string tools_dir();
 // and its exit status if it fails.
 void run_plot_script(const std::string& script, const std::vector<std::string>& args);
 
+// The exit status of a command whose results are printed (and written) but whose plot failed: 0
+// without a failure; else 1, after "error: no plot: FAILURE; the results above are complete" on
+// stderr.
+int plot_failure_status(const std::string& failure);
+
 // Writes `data` to a temporary JSON file, runs `python3 tools/<script> that.json png`, and
 // removes the file whatever happens. Throws std::runtime_error as run_plot_script does.
 void run_plot_script_on(const std::string& script, const nlohmann::json& data,

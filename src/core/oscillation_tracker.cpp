@@ -66,6 +66,7 @@ LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y) {
       const double r = y[i] - (fit.intercept + fit.slope * x[i]);
       ss += r * r;
     }
+    fit.residual_sd = std::sqrt(ss / (n - 2.0));
     fit.slope_std_error = std::sqrt(ss / (n - 2.0) / sxx);
   }
   return fit;

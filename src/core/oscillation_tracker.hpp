@@ -14,10 +14,12 @@ struct LinearFit {
   double slope = 0.0;
   double intercept = 0.0;
   double slope_std_error = 0.0;
+  double residual_sd = 0.0;  // the residuals' standard deviation, sqrt(sum r^2 / (n - 2))
   std::size_t n = 0;
 };
 
-// Least-squares line through (x_i, y_i); slope_std_error from the residuals (0 for n <= 2).
+// Least-squares line through (x_i, y_i); slope_std_error and residual_sd from the residuals (0 for
+// n <= 2).
 LinearFit fit_line(const std::vector<double>& x, const std::vector<double>& y);
 
 class OscillationTracker {

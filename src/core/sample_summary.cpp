@@ -18,6 +18,13 @@ double quantile_of_sorted(std::span<const double> sorted, double p) {
   return sorted[below] + fraction * (sorted[above] - sorted[below]);
 }
 
+double median_of(std::vector<double> v) {
+  require_domain(!v.empty(), "a median of no samples");
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
 SampleSummary summarise_samples(std::span<const double> samples) {
   require_domain(!samples.empty(), "a summary of no samples");
   SampleSummary out;

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace fl {
 
@@ -20,6 +21,10 @@ SampleSummary summarise_samples(std::span<const double> samples);
 // The p-quantile (0 <= p <= 1) of sorted samples, linear between order statistics
 // (x[(n - 1) p]: Hyndman and Fan's type 7, numpy's default).
 double quantile_of_sorted(std::span<const double> sorted, double p);
+
+// The median: the middle sample, or the mean of the two middle ones. Refuses an empty set with
+// fl::DomainError.
+double median_of(std::vector<double> samples);
 
 // Pearson's correlation of paired samples; absent below 2 pairs or when either has no spread.
 std::optional<double> sample_correlation(std::span<const double> a, std::span<const double> b);

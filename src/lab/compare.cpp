@@ -119,7 +119,9 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptio
 // amplitude), before any simulation.
 struct RowRig {
   Scene scene;
-  double amplitude = 0.0;
+  double amplitude = 0.0;  // m
+  double h_c = 0.0;        // m
+  double gravity = 0.0;    // m/s^2
 };
 
 CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
@@ -193,8 +195,11 @@ std::string without_location(const std::string& diagnostic) {
 // any simulation.
 RowRig build_row_rig(const Rig& rig, const MeasuredRow& measured, double duration) {
   try {
-    RowRig out{rig.scene(measured, duration), 0.0};
-    out.amplitude = compile_rig(out.scene).amplitude_initial;
+    RowRig out{rig.scene(measured, duration)};
+    const CompiledRig compiled = compile_rig(out.scene);
+    out.amplitude = compiled.amplitude_initial;
+    out.h_c = compiled.plate.h_c;
+    out.gravity = compiled.gravity;
     return out;
   } catch (const InputError& e) {
     // An error in one of the row's keys is located at its cell; any other at the row's line.
@@ -253,13 +258,12 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     row.spacing_err = m.spacing_err;
     row.duration = std::max(result.duration, options.min_periods * m.period.value);
     RowRig row_rig = build_row_rig(rig, m, row.duration);
-    const CompiledRig compiled = compile_rig(row_rig.scene);
     row.material = row_rig.scene.plate.material;
     row.temperature = row_rig.scene.friction.temperature;
     row.mu_k_simulated = row_rig.scene.friction.mu_k;
     row.spacing = row_rig.scene.rollers.spacing;
-    row.h_c = compiled.plate.h_c;
-    row.gravity = compiled.gravity;
+    row.h_c = row_rig.h_c;
+    row.gravity = row_rig.gravity;
     rows.push_back(std::move(row));
     rigs.push_back(std::move(row_rig));
   }

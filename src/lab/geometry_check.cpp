@@ -6,17 +6,12 @@
 
 #include <fmt/format.h>
 
+#include "core/sample_summary.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
 
 namespace fl {
 namespace {
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The periods' alternation over independent triples of consecutive accepted periods.
 void measure_alternation(const LogEstimate& est, GeometryCheck* check) {
@@ -125,8 +120,8 @@ void measure_shape(const HallLog& log, const LogEstimate& est, GeometryCheck* ch
   }
   check->shape_pulses = static_cast<int>(ratios.size());
   if (ratios.empty()) return;
-  check->shape_ratio = median(ratios);
-  check->samples_across = median(across);
+  check->shape_ratio = median_of(ratios);
+  check->samples_across = median_of(across);
   check->clipped = 2 * clipped > static_cast<int>(ratios.size());
 }
 

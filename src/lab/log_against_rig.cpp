@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "core/oscillation_tracker.hpp"
+#include "core/sample_summary.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
 #include "lab/experiment.hpp"
@@ -16,12 +18,9 @@
 namespace fl {
 namespace {
 
-double median(std::vector<double> v) {
-  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+// The median, NaN without samples (a signal whose pulses were all bent).
+double median_or_nan(std::vector<double> v) {
+  return v.empty() ? std::numeric_limits<double>::quiet_NaN() : median_of(std::move(v));
 }
 
 TraceFacts facts_of(const LogEstimate& est) {
@@ -39,8 +38,8 @@ TraceFacts facts_of(const LogEstimate& est) {
     widths.push_back(p.fall - p.rise);
     heights.push_back(p.peak);
   }
-  f.pulse_width = median(widths);
-  f.pulse_height = median(heights);
+  f.pulse_width = median_or_nan(widths);
+  f.pulse_height = median_or_nan(heights);
   f.baseline_first =
       est.pulse_baseline.empty() ? est.baseline : static_cast<double>(est.pulse_baseline.front());
   f.baseline_last = est.baseline;
@@ -51,29 +50,11 @@ TraceFacts facts_of(const LogEstimate& est) {
       t.push_back(0.5 * (e.start + e.end));
       p.push_back(e.period);
     }
-  if (t.size() >= 3) {
-    const double n = static_cast<double>(t.size());
-    double tm = 0, pm = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      tm += t[i] / n;
-      pm += p[i] / n;
-    }
-    double sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < t.size(); ++i) {
-      sxx += (t[i] - tm) * (t[i] - tm);
-      sxy += (t[i] - tm) * (p[i] - pm);
-    }
-    if (sxx > 0) {
-      const double slope = sxy / sxx;
-      double rss = 0;
-      for (std::size_t i = 0; i < t.size(); ++i) {
-        const double r = p[i] - pm - slope * (t[i] - tm);
-        rss += r * r;
-      }
-      f.period_drift = slope;
-      f.period_drift_err = std::sqrt(rss / (n - 2.0) / sxx);
-      f.period_scatter_about_trend = std::sqrt(rss / (n - 2.0));
-    }
+  if (t.size() >= 3 && t.front() < t.back()) {
+    const LinearFit line = fit_line(t, p);
+    f.period_drift = line.slope;
+    f.period_drift_err = line.slope_std_error;
+    f.period_scatter_about_trend = line.residual_sd;
   }
   return f;
 }

@@ -66,6 +66,13 @@ const char* geometry_name(fl_estimator::Geometry geometry) {
                                                 : "unknown";
 }
 
+std::optional<fl_estimator::Geometry> geometry_from_option(std::string_view text) {
+  if (text == "auto") return fl_estimator::kAutoGeometry;
+  if (text == "one") return fl_estimator::kOnePulse;
+  if (text == "pair") return fl_estimator::kPulsePair;
+  return std::nullopt;
+}
+
 LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces) {
   HostEstimator host(set_up.config(), log.t_s.front());
   LogEstimate out;

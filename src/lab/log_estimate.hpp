@@ -3,7 +3,9 @@
 // no period, and the data tools/plot_hall.py draws.
 #pragma once
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -57,6 +59,9 @@ void require_periods(const HallLog& log, const LogEstimate& estimate, const std:
 // "accepted", "outlier", "broken"; "one-pulse", "pair", "unknown".
 const char* period_status_name(std::uint8_t status);
 const char* geometry_name(fl_estimator::Geometry geometry);
+// The pulses per period as a user names them (--geometry, a sidecar's geometry): "auto", "one" or
+// "pair"; nothing for any other text.
+std::optional<fl_estimator::Geometry> geometry_from_option(std::string_view text);
 
 // How the log was read and what was left out of it (docs/cli.md, `estimate --json`).
 nlohmann::json log_reading_json(const HallLog& log);

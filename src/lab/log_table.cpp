@@ -11,12 +11,6 @@
 namespace fl {
 namespace {
 
-fl_estimator::Geometry geometry_from(const std::string& text) {
-  return text == "one"    ? fl_estimator::kOnePulse
-         : text == "pair" ? fl_estimator::kPulsePair
-                          : fl_estimator::kAutoGeometry;
-}
-
 // A CSV cell: quoted when it holds a comma, a quote or a line break.
 std::string cell(const std::string& text) {
   if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
@@ -39,7 +33,9 @@ void apply_log_sidecar(const LogSidecar& side, LogSetUp& set_up) {
   if (side.spacing) set_up.spacing = *side.spacing;
   if (side.spacing_err) set_up.spacing_err = *side.spacing_err;
   if (side.gravity) set_up.gravity = *side.gravity;
-  if (side.geometry) set_up.geometry = geometry_from(*side.geometry);
+  // The sidecar reader accepts only the names geometry_from_option knows.
+  if (side.geometry)
+    set_up.geometry = geometry_from_option(*side.geometry).value_or(fl_estimator::kAutoGeometry);
 }
 
 LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults) {

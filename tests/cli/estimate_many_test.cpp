@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_folder.hpp"
 #include "core/analytic_model.hpp"
 #include "estimator/synthetic_hall.hpp"
 
@@ -23,20 +24,12 @@ namespace {
 namespace fs = std::filesystem;
 const std::string kExe = FRICTIONLAB_EXE;
 
-class EstimateMany : public ::testing::Test {
+class EstimateMany : public test::TempFolderTest {
  protected:
+  EstimateMany() : TempFolderTest("fl-estimate-many") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("fl-estimate-many-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_ / "logs");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
+    TempFolderTest::SetUp();
+    std::filesystem::create_directories(dir_ / "logs");
   }
 
   // A log of a synthetic signal with period `period` (the firmware's t_us,adc format).
@@ -59,8 +52,6 @@ class EstimateMany : public ::testing::Test {
   test::CommandResult lab(const std::string& args) {
     return test::run_command(kExe + " estimate " + args);
   }
-
-  fs::path dir_;
 };
 
 TEST_F(EstimateMany, OneRowPerLogWithEachLogsOwnSpacingFromItsSidecar) {

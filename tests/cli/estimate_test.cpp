@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_folder.hpp"
 #include "core/analytic_model.hpp"
 #include "estimator/synthetic_hall.hpp"
 
@@ -19,21 +20,9 @@ namespace {
 
 const std::string kExe = FRICTIONLAB_EXE;
 
-class Estimate : public ::testing::Test {
+class Estimate : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("fl-estimate-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
+  Estimate() : TempFolderTest("fl-estimate") {}
 
   // The samples as a CSV with the given header; the time in microseconds or seconds.
   std::string write_csv(const std::string& name, const test::HallSamples& s,
@@ -59,8 +48,6 @@ class Estimate : public ::testing::Test {
     EXPECT_EQ(r.status, 0) << r.err;
     return nlohmann::json::parse(r.out);
   }
-
-  std::filesystem::path dir_;
 };
 
 test::HallSignal rig() {

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_folder.hpp"
 #include "core/analytic_model.hpp"
 
 namespace fl {
@@ -23,21 +24,9 @@ const std::string kExe = FRICTIONLAB_EXE;
 constexpr double kMuK = 0.29;
 constexpr double kHc = 0.0036;
 
-class Fit : public ::testing::Test {
+class Fit : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("fl-fit-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
+  Fit() : TempFolderTest("fl-fit") {}
 
   // Periods from the closed form at 60 to 120 mm, written with 17 digits in seconds, spacings
   // in millimetres.
@@ -56,8 +45,6 @@ class Fit : public ::testing::Test {
     EXPECT_EQ(r.status, 0) << r.err;
     return nlohmann::json::parse(r.out);
   }
-
-  std::filesystem::path dir_;
 };
 
 TEST_F(Fit, AnExactSeriesGivesBackItsMuKAndHc) {

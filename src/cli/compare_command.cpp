@@ -163,15 +163,8 @@ void print_log_report(const LogAgainstRig& r, const std::string& written) {
 
 int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
   const HallLog log = read_hall_log(o.log, log_reading(o.reading));
-  LogSetUp set_up;
-  set_up.geometry = parse_geometry(o.geometry.empty() ? "auto" : o.geometry);
-  {
-    const Scene scene =
-        load_scene_file(options.scene_file, options.overrides, options.paper, options.parts);
-    set_up.spacing = scene.rollers.spacing;
-    set_up.gravity = scene.world.gravity;
-  }
-  const LogAgainstRig r = compare_log_with_rig(log, set_up, options);
+  const LogAgainstRig r =
+      compare_log_with_rig(log, parse_geometry(o.geometry.empty() ? "auto" : o.geometry), options);
   const nlohmann::json j = log_against_rig_json(r);
   const std::string report = o.out + "/compare-log.json";
   const std::string traces = o.out + "/compare-log-traces.json";

@@ -164,10 +164,12 @@ nlohmann::json facts_json(const TraceFacts& f) {
 
 }  // namespace
 
-LogAgainstRig compare_log_with_rig(const HallLog& log, const LogSetUp& set_up,
+LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry geometry,
                                    const CompareOptions& options) {
   LogAgainstRig r;
   r.log = log.path;
+  LogSetUp set_up;
+  set_up.geometry = geometry;
   const LogEstimate measured = estimate_log(log, set_up, false);
   require_periods(log, measured, "");
   require_geometry(log, measured, check_geometry(log, measured), "");

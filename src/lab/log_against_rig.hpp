@@ -61,9 +61,11 @@ struct LogAgainstRig {
   std::vector<double> adc_simulated;
 };
 
-// Throws InputError when the log gives no period (as estimate does), or the scene or its refit
-// cannot be run.
-LogAgainstRig compare_log_with_rig(const HallLog& log, const LogSetUp& set_up,
+// `geometry`: the log's pulses per period (auto: recognised, as estimate does). The spacing and
+// gravity the estimator is given set only its mu_k, which the comparison does not use. Throws
+// InputError when the log gives no period (as estimate does), or the scene or its refit cannot be
+// run.
+LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry geometry,
                                    const CompareOptions& options);
 
 nlohmann::json log_against_rig_json(const LogAgainstRig& r);

@@ -43,9 +43,7 @@ LogAgainstRig against(const HallLog& log, const std::string& scene_file,
   options.scene_file = kScenes + scene_file;
   options.paper = kPaper;
   options.parts = kParts;
-  LogSetUp set_up;
-  set_up.geometry = geometry;
-  return compare_log_with_rig(log, set_up, options);
+  return compare_log_with_rig(log, geometry, options);
 }
 
 bool found(const LogAgainstRig& r, const std::string& what) {

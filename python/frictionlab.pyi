@@ -266,6 +266,7 @@ class WarmingReport:
 class VideoReport:
     frames: int
     title_frames: int
+    ending_frames: int
     width: int
     height: int
     fps: int

@@ -44,9 +44,10 @@ struct RunCommandOptions {
 
 void print_video(const VideoReport& v, const VideoRequest& request) {
   fmt::print(
-      "  video                  {} frames ({} title), {}x{} at {} fps, slow motion x{:g}, "
+      "  video                  {} frames ({} title, {} ending), {}x{} at {} fps, slow motion "
+      "x{:g}, "
       "camera {}\n",
-      v.frames, v.title_frames, v.width, v.height, v.fps, v.slow_motion, v.camera);
+      v.frames, v.title_frames, v.ending_frames, v.width, v.height, v.fps, v.slow_motion, v.camera);
   fmt::print(
       "  rendering              {:.2f} s drawing, {:.2f} s set-up, {:.2f} s to finish; "
       "{} triangles a frame (LEGO frame {} of {})\n",
@@ -175,7 +176,8 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     summary = run_experiment(rig, options, &recording);
     if (shown > 0.0) fmt::print(stderr, "\r\033[K");
     // The video up to its last frame, playable, even when the run was interrupted.
-    if (recorder) video = recorder->finish();
+    if (recorder)
+      video = recorder->finish(VideoEnding{summary.failure.value_or(""), summary.duration});
   }
   if (!o.out.empty()) write_run_outputs(o.out, rig, summary, recording);
   if (o.json) {

@@ -177,10 +177,12 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   if (options.record_trajectory && recording != nullptr)
     recording->trajectory.push_back({0.0, state, world.contacts()});
   // The observer sees the world after each step.
-  const auto observe = [&](double t, const PlateState& plate) {
+  const auto observe = [&](double t, const PlateState& plate,
+                           const std::array<RollerContact, 2>& contacts) {
     if (!options.observer) return;
     view.t = t;
     view.plate = plate;
+    view.contacts = contacts;
     view.roller_angles = world.roller_angles();
     view.roller_speeds = world.roller_speeds();
     view.drive = world.drive();
@@ -190,7 +192,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     options.observer(view);
     view.new_samples.clear();
   };
-  observe(0.0, state);
+  observe(0.0, state, world.contacts());
 
   const long long steps = std::llround(scene.world.duration / scene.world.time_step);
   out.min_normal_force = std::numeric_limits<double>::infinity();
@@ -228,7 +230,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
     if (options.record_trajectory && recording != nullptr)
       recording->trajectory.push_back({t, state, contacts});
-    observe(t, state);
+    observe(t, state, contacts);
     out.plate_speed_max = std::max(out.plate_speed_max, std::fabs(state.vx));
     if (const auto d = world.drive()) drive_stats.add(*d, contacts, scene.rollers.radius);
     for (const RollerContact& c : contacts) {

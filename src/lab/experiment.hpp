@@ -4,6 +4,7 @@
 // model.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -48,6 +49,7 @@ struct StepView {
   std::array<double, 2> roller_speeds{};     // rad/s about +y
   std::optional<DriveState> drive;           // the motor and gears, when the scene has a drive
   std::vector<ShaftState> shafts;            // the drive layout's shafts (scene/drive_layout.hpp)
+  std::array<RollerContact, 2> contacts{};   // each roller's contact with the plate, as solved
   std::vector<HallSample> new_samples;       // the Hall samples taken during this step
   const HallEstimator* estimator = nullptr;  // the rig's estimator, live (null without a sensor)
   const RegimeMonitor* monitor = nullptr;    // the run's regime diagnosis, live

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "assets/mesh_library.hpp"
 #include "assets/part_catalog.hpp"
 #include "io/missing_component.hpp"
@@ -61,7 +63,7 @@ std::string material_name(const Scene& scene, const std::string& asset_dir) {
 struct RigVideo final : public VideoEngine {
   RigVideo(const Scene& s, const VideoRequest& r);
   void observe(const VideoStep& step) override;
-  VideoReport finish() override;
+  VideoReport finish(const VideoEnding& ending) override;
   std::string note() const override { return backend_note; }
 
   const CompiledRig rig;  // the scene compiled once, for the model, the pose and the title
@@ -99,12 +101,24 @@ struct RigVideo final : public VideoEngine {
   double roller_speed = 0.0;
   std::string regime;  // the run's diagnosis so far
   bool has_sensor = false;
+  // The forces of the step shown, to the video's one scale; arrows only where the camera sees
+  // the contacts (not in the sensor's close-up).
+  render::PlateForces forces;
+  render::ForceScale force_scale;
+  bool force_arrows = true;
+  // x(t): the steps' (t, x), the theory from the first step, the estimator's turning points.
+  std::vector<Eigen::Vector2d> motion;
+  std::optional<render::ThickPlateCurve> theory;
+  std::string theory_label;
+  double x_range = 0.0;
+  std::vector<double> turning_points;
 
   VideoReport report;
   std::string backend_note;  // why "auto" chose the back end it did, when it had to fall back
 
   void take_samples(const VideoStep& step);
   void take_estimator(const VideoStep& step);
+  void take_motion(const VideoStep& step);
   void draw(const render::RigPose& pose, double t, double video_time, float title_opacity);
   void emit();
   render::RigOverlayState overlay_state(double t) const;
@@ -147,10 +161,16 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     assets::MeshLibrary meshes;
     if (render::scene_uses_parts(scene))
       catalog = assets::load_part_catalog(assets::part_catalog_path(request.asset_dir));
-    render::RigModel model = render::build_rig_model(rig, catalog ? &*catalog : nullptr, &meshes);
+    // The front camera looks through the near wall: it is cut away, so the rollers show.
+    const bool cut_away = !video.placed && video.camera == "front";
+    render::RigModel model =
+        render::build_rig_model(rig, catalog ? &*catalog : nullptr, &meshes, cut_away);
     report.frame_triangles = model.stats.frame_triangles_drawn;
     report.frame_triangles_full = model.stats.frame_triangles_full;
     camera = render::rig_camera(model, video);
+    force_scale = render::force_scale(camera, video.width, video.height, Eigen::Vector3f::Zero(),
+                                      rig.spacing, rig.plate.mass * rig.gravity);
+    force_arrows = video.placed || video.camera != "sensor";
     // A camera that stays put never sees the frame's back faces: leave them out.
     if (video.orbit == 0.0) render::cull_back_faces(model, camera.position);
     view = std::make_unique<render::RigView>(*renderer, std::move(model));
@@ -232,6 +252,39 @@ void RigVideo::take_estimator(const VideoStep& step) {
   }
   estimator.periods_discarded = r.periods_discarded;
   discarded = r.discarded;
+  turning_points = r.turning_points;
+}
+
+void RigVideo::take_motion(const VideoStep& step) {
+  // The arrows start on the plate's near edge (the side the cameras look from, -y), where the
+  // contact lines end.
+  const float near_y = static_cast<float>(-0.5 * scene.plate.width);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const VideoContact& c = step.contacts[k];
+    forces.rollers[k] = render::ContactForce{
+        c.touching, c.normal_force, c.friction_force,
+        Eigen::Vector3f(static_cast<float>(c.point_x), near_y, static_cast<float>(c.point_z))};
+  }
+  forces.centre =
+      Eigen::Vector3f(static_cast<float>(step.plate_x), near_y, static_cast<float>(step.plate_z));
+  if (motion.empty()) {
+    // The theory starts where the run does.
+    if (rig.omega) theory = render::ThickPlateCurve{step.plate_x, step.plate_vx, *rig.omega};
+    theory_label =
+        rig.omega && rig.period_thick
+            ? fmt::format("theory: thick plate, \xce\xbc\xe2\x82\x96 = {:.3g}, T = {:.4f} s",
+                          rig.mu_k, *rig.period_thick)
+            : std::string("no theory: the rollers do not restore the plate");
+    x_range = std::max({1e-3, 1.15 * std::fabs(step.plate_x), 1.15 * rig.amplitude_initial});
+  }
+  motion.emplace_back(step.t, step.plate_x);
+  // Keep what the strip shows (and a little more), dropping old points in blocks.
+  const double keep_from = step.t - 2.5 - 0.5;
+  if (motion.front().x() < keep_from - 1.0) {
+    const auto first = std::find_if(motion.begin(), motion.end(),
+                                    [&](const Eigen::Vector2d& p) { return p.x() >= keep_from; });
+    motion.erase(motion.begin(), first);
+  }
 }
 
 render::RigOverlayState RigVideo::overlay_state(double t) const {
@@ -258,6 +311,17 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   o.paper_period = scene.friction.paper_period;
   o.paper_mu_k = scene.friction.paper_mu_k;
   o.regime = regime;
+  o.forces = forces;
+  o.force_scale = force_scale;
+  render::MotionStripState m;
+  m.t = t;
+  m.window = 2.5;
+  m.simulated = motion;
+  m.theory = theory;
+  m.theory_label = theory_label;
+  m.turning_points = turning_points;
+  m.x_range = x_range;
+  o.motion = m;
   return o;
 }
 
@@ -265,6 +329,12 @@ void RigVideo::draw(const render::RigPose& pose, double t, double video_time, fl
   renderer->begin_frame(render::orbit_camera(camera, video.orbit * video_time),
                         render::rig_light());
   view->draw(pose, exposure);
+  const float scale = render::overlay_scale(video.width, video.height);
+  if (force_arrows && scale >= render::kSmallestOverlayScale)
+    render::draw_force_arrows(
+        renderer->overlay(), scale,
+        render::force_arrows(render::orbit_camera(camera, video.orbit * video_time), video.width,
+                             video.height, forces, force_scale));
   render::draw_rig_overlay(renderer->overlay(), video.width, video.height, overlay_state(t));
   if (title_opacity > 0.0f)
     render::draw_title_card(renderer->overlay(), video.width, video.height, title, title_opacity);
@@ -282,6 +352,7 @@ void RigVideo::observe(const VideoStep& step) {
   const auto start = Clock::now();
   take_samples(step);
   take_estimator(step);
+  take_motion(step);
   const render::RigPose current = pose_of(step);
   const bool sinks = encoder || png;
   if (!started) {
@@ -312,9 +383,38 @@ void RigVideo::observe(const VideoStep& step) {
   report.render_seconds += seconds_since(start);
 }
 
-VideoReport RigVideo::finish() {
+VideoReport RigVideo::finish(const VideoEnding& ending) {
+  const std::string stopped =
+      ending.stopped_by.empty()
+          ? std::string()
+          : fmt::format("stopped at t = {:.3f} s: {}", ending.stopped_at, ending.stopped_by);
+  const std::size_t before_ending = video_frame;
+  if (started && (encoder || png)) {
+    // A run a guard stopped: its last frame held, with a banner saying why.
+    for (std::size_t i = 0; !stopped.empty() && i < guard_banner_frame_count(video); ++i) {
+      draw(previous, previous_t, static_cast<double>(video_frame) / video.fps, 0.0f);
+      render::draw_guard_banner(renderer->overlay(), video.width, video.height, stopped);
+      emit();
+    }
+    // The end card fades in over the last frame in 0.4 s.
+    const std::size_t end_frames = end_card_frame_count(video);
+    if (end_frames > 0) {
+      const render::TitleCard card =
+          render::make_end_card(overlay_state(previous_t), theory_label, stopped);
+      for (std::size_t i = 0; i < end_frames; ++i) {
+        const double shown = static_cast<double>(i) / video.fps;
+        draw(previous, previous_t, static_cast<double>(video_frame) / video.fps, 0.0f);
+        render::draw_title_card(renderer->overlay(), video.width, video.height, card,
+                                static_cast<float>(std::clamp(shown / 0.4, 0.0, 1.0)));
+        emit();
+      }
+    }
+  }
+  report.ending_frames = video_frame - before_ending;
   if (!request.still.empty() && started) {
     draw(previous, previous_t, static_cast<double>(video_frame) / video.fps, 0.0f);
+    if (!stopped.empty())
+      render::draw_guard_banner(renderer->overlay(), video.width, video.height, stopped);
     render::write_png(request.still, renderer->end_frame());
     report.triangles = renderer->last_frame_stats().triangles;
   }

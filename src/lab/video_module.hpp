@@ -44,6 +44,8 @@ struct VideoEstimate {
   // The periods the estimator discarded so far (a jump bent a pulse, a pulse went missing): from,
   // to [s].
   std::vector<std::array<double, 2>> discarded;
+  // s, the turning points its periods run between (the midpoints of its pulse groups), in order.
+  std::vector<double> turning_points;
 };
 
 // One Hall sample: time and ADC counts.
@@ -52,14 +54,25 @@ struct VideoHallSample {
   double adc = 0.0;  // counts
 };
 
+// One roller's contact with the plate as the solver left it (physics/rig_world.hpp).
+struct VideoContact {
+  bool touching = false;
+  double normal_force = 0.0;    // N, pushing the plate up
+  double friction_force = 0.0;  // N, along +x on the plate
+  double point_x = 0.0;         // m, where the roller touches the plate, world x
+  double point_z = 0.0;         // m, world z
+};
+
 // What a frame needs of one physics step.
 struct VideoStep {
-  double t = 0.0;        // s
-  double plate_x = 0.0;  // m, the plate's centre of mass
-  double plate_y = 0.0;  // m
-  double plate_z = 0.0;  // m
-  double pitch = 0.0;    // rad about +y
-  double yaw = 0.0;      // rad about +z
+  double t = 0.0;                          // s
+  double plate_x = 0.0;                    // m, the plate's centre of mass
+  double plate_y = 0.0;                    // m
+  double plate_z = 0.0;                    // m
+  double pitch = 0.0;                      // rad about +y
+  double yaw = 0.0;                        // rad about +z
+  double plate_vx = 0.0;                   // m/s, the centre of mass's speed along x
+  std::array<VideoContact, 2> contacts{};  // roller 0 (at x = -l/2), roller 1
   // Every shaft's angle (unwrapped) and speed about +y, in drive_layout order (rollers first);
   // for a scene without a drive the two rollers.
   std::vector<double> shaft_angles;          // rad
@@ -81,8 +94,9 @@ class VideoEngine {
 
   // Takes each step (and the one at t = 0) and draws every frame whose time it has passed.
   virtual void observe(const VideoStep& step) = 0;
-  // Writes the still, flushes and closes the video and the frames. Called once, after the run.
-  virtual VideoReport finish() = 0;
+  // Draws the ending (a guard's banner, the end card), writes the still, flushes and closes the
+  // video and the frames. Called once, after the run.
+  virtual VideoReport finish(const VideoEnding& ending) = 0;
   // A line worth telling before the run, or empty: the GL back end "auto" fell back to and why.
   virtual std::string note() const = 0;
 };
@@ -93,7 +107,7 @@ class VideoEngine {
 std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request);
 
 // Raise when anything that crosses the seam changes.
-inline constexpr int kVideoModuleVersion = 2;
+inline constexpr int kVideoModuleVersion = 3;
 
 struct VideoModuleAbi {
   int version = kVideoModuleVersion;
@@ -101,6 +115,7 @@ struct VideoModuleAbi {
   std::size_t request_size = sizeof(VideoRequest);
   std::size_t step_size = sizeof(VideoStep);
   std::size_t report_size = sizeof(VideoReport);
+  std::size_t ending_size = sizeof(VideoEnding);
 
   bool operator==(const VideoModuleAbi&) const = default;
 };

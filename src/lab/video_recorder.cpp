@@ -19,6 +19,12 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   out.plate_z = view.plate.z;
   out.pitch = view.plate.pitch;
   out.yaw = view.plate.yaw;
+  out.plate_vx = view.plate.vx;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const RollerContact& c = view.contacts[k];
+    out.contacts[k] =
+        VideoContact{c.touching, c.normal_force, c.friction_force, c.point_x, c.point_z};
+  }
   out.shaft_angles.clear();
   out.shaft_speeds.clear();
   if (!view.shafts.empty()) {
@@ -66,8 +72,14 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   e.provisional_periods = view.estimator->provisional_periods();
   e.periods_discarded = r.periods_discarded;
   e.discarded.clear();
-  for (const EstimatedPeriod& p : view.estimator->judged_periods())
+  e.turning_points.clear();
+  for (const EstimatedPeriod& p : view.estimator->judged_periods()) {
     if (p.status != fl_estimator::kAccepted) e.discarded.push_back({p.start, p.end});
+    // Successive periods share their turning point.
+    if (e.turning_points.empty() || e.turning_points.back() < p.start - 1e-9)
+      e.turning_points.push_back(p.start);
+    e.turning_points.push_back(p.end);
+  }
 }
 
 }  // namespace
@@ -91,8 +103,8 @@ void VideoRecorder::observe(const StepView& view) {
   impl_->engine->observe(impl_->step);
 }
 
-VideoReport VideoRecorder::finish() {
-  return impl_->engine->finish();
+VideoReport VideoRecorder::finish(const VideoEnding& ending) {
+  return impl_->engine->finish(ending);
 }
 
 std::string VideoRecorder::note() const {

@@ -32,7 +32,7 @@ class VideoRecorder {
   // The run's observer: takes each step and draws every frame whose time it has passed.
   void observe(const StepView& view);
   // Writes the still, flushes and closes the video and the frames. Call once, after the run.
-  VideoReport finish();
+  VideoReport finish(const VideoEnding& ending);
   // A line worth telling before the run, or empty: e.g. that the GL back end "auto" chose OSMesa
   // because EGL did not start, and why.
   std::string note() const;

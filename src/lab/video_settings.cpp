@@ -64,4 +64,12 @@ std::size_t title_frame_count(const VideoDesc& video) {
   return video.title ? static_cast<std::size_t>(std::lround(kTitleSeconds * video.fps)) : 0;
 }
 
+std::size_t end_card_frame_count(const VideoDesc& video) {
+  return video.end_card ? static_cast<std::size_t>(std::lround(kEndCardSeconds * video.fps)) : 0;
+}
+
+std::size_t guard_banner_frame_count(const VideoDesc& video) {
+  return static_cast<std::size_t>(std::lround(kGuardBannerSeconds * video.fps));
+}
+
 }  // namespace fl

@@ -52,10 +52,22 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request);
 std::size_t run_frame_count(const VideoDesc& video, double duration);
 // Frames of the title card (0 without one).
 std::size_t title_frame_count(const VideoDesc& video);
+// Frames of the end card (0 without one), and of the banner after a run a guard stopped.
+std::size_t end_card_frame_count(const VideoDesc& video);
+std::size_t guard_banner_frame_count(const VideoDesc& video);
+
+// How the run ended, for the video's last frames.
+struct VideoEnding {
+  // Why a guard stopped the run (lab/run_summary.hpp RunSummary::failure), empty when it ran to
+  // its end or was interrupted.
+  std::string stopped_by;
+  double stopped_at = 0.0;  // s, when
+};
 
 struct VideoReport {
-  std::size_t frames = 0;        // written to the video and/or the folder, title included
-  std::size_t title_frames = 0;  // of which the title card
+  std::size_t frames = 0;         // written to the video and/or the folder, title included
+  std::size_t title_frames = 0;   // of which the title card
+  std::size_t ending_frames = 0;  // and the guard's banner and the end card
   int width = 0;
   int height = 0;
   int fps = 0;

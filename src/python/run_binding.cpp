@@ -144,7 +144,8 @@ RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& 
     }
     const CompiledRig rig = compile_rig(scene);
     static_cast<RunSummary&>(result) = run_experiment(rig, options, &recording);
-    if (recorder) result.video = recorder->finish();
+    if (recorder)
+      result.video = recorder->finish(VideoEnding{result.failure.value_or(""), result.duration});
     if (out) write_run_outputs(*out, rig, result, recording);
   }
   if (record) {
@@ -226,6 +227,7 @@ void bind_reports(py::module_& m) {
   py::class_<VideoReport>(m, "VideoReport", "The frames a run drew.")
       .def_readonly("frames", &VideoReport::frames, "title card included")
       .def_readonly("title_frames", &VideoReport::title_frames)
+      .def_readonly("ending_frames", &VideoReport::ending_frames)
       .def_readonly("width", &VideoReport::width)
       .def_readonly("height", &VideoReport::height)
       .def_readonly("fps", &VideoReport::fps)

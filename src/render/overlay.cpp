@@ -1,5 +1,6 @@
 #include "render/overlay.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -54,6 +55,21 @@ void Overlay::line(const Eigen::Vector2f& a, const Eigen::Vector2f& b, float wid
   const Eigen::Vector2f p3 = a - along - across;
   triangle(p0, p1, p2, color);
   triangle(p0, p2, p3, color);
+}
+
+void Overlay::arrow(const Eigen::Vector2f& from, const Eigen::Vector2f& to, float width, float head,
+                    const Color& color) {
+  const Eigen::Vector2f d = to - from;
+  const float length = d.norm();
+  if (length < 1.0f) return;
+  const Eigen::Vector2f along = d / length;
+  const Eigen::Vector2f across(-along.y(), along.x());
+  // A short arrow is all head.
+  const float head_length = std::min(head, length);
+  const Eigen::Vector2f base = to - along * head_length;
+  if (length > head_length) line(from, base, width, color);
+  const float half = std::max(0.5f * head_length, 0.75f * width);
+  triangle(to, base + across * half, base - across * half, color);
 }
 
 void Overlay::polyline(std::span<const Eigen::Vector2f> points, float width, const Color& color) {

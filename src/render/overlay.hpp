@@ -53,6 +53,10 @@ class Overlay {
   void line(const Eigen::Vector2f& a, const Eigen::Vector2f& b, float width, const Color& color);
   // Joined segments through the points (a plot trace).
   void polyline(std::span<const Eigen::Vector2f> points, float width, const Color& color);
+  // An arrow from `from` to `to`: a shaft `width` pixels wide and a head `head` pixels long whose
+  // point is exactly `to`. Nothing for an arrow shorter than a pixel.
+  void arrow(const Eigen::Vector2f& from, const Eigen::Vector2f& to, float width, float head,
+             const Color& color);
   // A filled disc (a marker).
   void dot(const Eigen::Vector2f& centre, float radius, const Color& color);
 

@@ -13,20 +13,33 @@ namespace {
 // overlay leaves free (x from 3 % to 97 %, y from `top` to `bottom`, as fractions of the
 // height from the top), as close as that allows: the target is moved down the picture so that
 // the box's centre lands in the middle of that region.
+// A part of the picture a panel of the overlay covers: fractions of the width (x) and the height
+// (y) from the top-left corner.
+struct Covered {
+  float x0, y0, x1, y1;
+};
+
+// With `covered` panels, the region's middle may also move sideways (by up to 12 % of the
+// width, either way): the closest camera that keeps the box off the panels wins.
 Camera fit_camera(const std::vector<Eigen::Vector3f>& points, const Eigen::Vector3f& direction,
-                  float fov_y, int width, int height, float top, float bottom) {
+                  float fov_y, int width, int height, float top, float bottom,
+                  const std::vector<Covered>& covered = {}) {
   Camera c;
   c.fov_y_degrees = fov_y;
   Eigen::AlignedBox3f box;
   for (const auto& p : points) box.extend(p);
   const Eigen::Vector3f centre = box.center();
-  // The picture's up, in the world: the camera's up vector made orthogonal to the view.
+  // The picture's up and right, in the world: the camera's up vector made orthogonal to the view.
   const Eigen::Vector3f up = (c.up - c.up.dot(direction) * direction).normalized();
+  const Eigen::Vector3f right = up.cross(direction).normalized();
   const float tan_half = std::tan(fov_y * static_cast<float>(rig::kPi) / 360.0f);
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
   // The region's middle, in normalised device y (1 at the top).
   const float region_y = 1.0f - (top + bottom);
+  float region_x = 0.0f;  // normalised device x of the box's centre
   const auto place = [&](float distance) {
-    c.target = centre - up * (region_y * tan_half * distance);
+    c.target = centre - up * (region_y * tan_half * distance) -
+               right * (region_x * tan_half * aspect * distance);
     c.position = c.target + direction * distance;
   };
   const auto fits = [&](float distance) {
@@ -37,16 +50,36 @@ Camera fit_camera(const std::vector<Eigen::Vector3f>& points, const Eigen::Vecto
           p->x() > 0.97f * static_cast<float>(width) || p->y() < top * static_cast<float>(height) ||
           p->y() > bottom * static_cast<float>(height))
         return false;
+      const float fx = p->x() / static_cast<float>(width);
+      const float fy = p->y() / static_cast<float>(height);
+      for (const Covered& panel : covered)
+        if (fx > panel.x0 && fx < panel.x1 && fy > panel.y0 && fy < panel.y1) return false;
     }
     return true;
   };
-  float lo = 0.01f, hi = 0.05f;
-  while (!fits(hi) && hi < 50.0f) hi *= 2.0f;
-  for (int i = 0; i < 40; ++i) {
-    const float mid = 0.5f * (lo + hi);
-    (fits(mid) ? hi : lo) = mid;
+  const auto closest = [&] {
+    float lo = 0.01f, hi = 0.05f;
+    while (!fits(hi) && hi < 50.0f) hi *= 2.0f;
+    for (int i = 0; i < 40; ++i) {
+      const float mid = 0.5f * (lo + hi);
+      (fits(mid) ? hi : lo) = mid;
+    }
+    return hi;
+  };
+  float best_x = 0.0f;
+  float best = closest();
+  if (!covered.empty()) {
+    for (const float x : {-0.24f, -0.16f, -0.08f, 0.08f, 0.16f, 0.24f}) {
+      region_x = x;
+      const float distance = closest();
+      if (distance < best) {
+        best = distance;
+        best_x = x;
+      }
+    }
   }
-  place(hi);
+  region_x = best_x;
+  place(best);
   return c;
 }
 
@@ -72,8 +105,11 @@ Camera rig_camera(const RigModel& model, const VideoDesc& video) {
     c = fit_camera(model.outline, Eigen::Vector3f(0.0f, -0.30f, 1.0f).normalized(), 32.0f,
                    video.width, video.height, 0.08f, 0.70f);
   } else {
+    // Clear of the motion strip (top right) and the weight panel (left): the overlay's layout at
+    // 16:9 (rig_overlay.cpp).
     c = fit_camera(model.outline, Eigen::Vector3f(0.30f, -1.0f, 0.75f).normalized(), 30.0f,
-                   video.width, video.height, 0.08f, 0.70f);
+                   video.width, video.height, 0.08f, 0.70f,
+                   {{0.56f, 0.0f, 1.0f, 0.33f}, {0.0f, 0.0f, 0.24f, 0.56f}});
   }
   const float distance = (c.position - c.target).norm();
   c.near_plane = std::max(0.005f, 0.05f * distance);

@@ -53,6 +53,7 @@ struct RigModelStats {
   std::size_t frame_triangles_drawn = 0;  // after leaving out what no camera can see
   std::size_t moving_triangles = 0;       // plate, rollers, gears, axles (at rest)
   std::size_t meshes_read = 0;            // LEGO mesh files opened
+  std::size_t cut_away_parts = 0;         // frame parts left out of a cutaway
 };
 
 struct RigModel {
@@ -76,8 +77,12 @@ struct RigModel {
 // come from `meshes` through `catalog`; a scene that names no LEGO part needs neither (pass
 // nullptr) and opens no file. Throws std::invalid_argument if a part is missing from the
 // catalogue, and whatever MeshLibrary throws for a mesh file it cannot read.
+//
+// `cut_away_near_side`: the frame's parts wholly on the near side of the plate (y below the
+// plate's near edge, where the front camera looks from) are left out, as in a cutaway drawing,
+// so the rollers show; the model's stats count them in cut_away_parts.
 RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
-                         assets::MeshLibrary* meshes);
+                         assets::MeshLibrary* meshes, bool cut_away_near_side = false);
 
 // Whether the scene names LEGO parts (a frame, blocks on the plate, a gear train).
 bool scene_uses_parts(const Scene& scene);

@@ -56,8 +56,8 @@ double direction_about_y(double x0, double z0, double x1, double z1) {
 class ModelBuilder {
  public:
   ModelBuilder(const CompiledRig& rig, const assets::PartCatalog* catalog,
-               assets::MeshLibrary* meshes)
-      : rig_(rig), scene_(rig.scene), catalog_(catalog), meshes_(meshes) {}
+               assets::MeshLibrary* meshes, bool cut_away)
+      : rig_(rig), scene_(rig.scene), catalog_(catalog), meshes_(meshes), cut_away_(cut_away) {}
 
   RigModel build();
 
@@ -82,6 +82,7 @@ class ModelBuilder {
   const Scene& scene_;
   const assets::PartCatalog* catalog_;
   assets::MeshLibrary* meshes_;
+  bool cut_away_ = false;  // leave out the frame's parts on the near side
   RigModel model_;
   const DriveLayout* layout_ = nullptr;
   MeshData static_extra_;  // the sensor's board, stands, the motor: merged with the frame
@@ -102,6 +103,7 @@ void ModelBuilder::add_shafts() {
 void ModelBuilder::add_static() {
   // The frame's LEGO parts, merged into one mesh.
   std::vector<LegoPlacement> parts;
+  const float near_edge = static_cast<float>(-0.5 * scene_.plate.width) + 1e-4f;
   if (scene_.frame) {
     for (const FramePart& fp : scene_.frame->parts) {
       const assets::PartSpec& spec = need_part(catalog_, fp.part);
@@ -111,6 +113,14 @@ void ModelBuilder::add_static() {
       p.pose = translation(vec(fp.position)) * about_z(degrees_to_radians(fp.turn));
       p.color = rgb(fp.color);
       if (auto body = rig::body_box(spec)) p.body = rig::moved(*body, p.pose);
+      if (cut_away_) {
+        float far_y = -std::numeric_limits<float>::max();
+        for (const auto& v : p.mesh->positions) far_y = std::max(far_y, (p.pose * v).y());
+        if (far_y < near_edge) {
+          ++model_.stats.cut_away_parts;
+          continue;
+        }
+      }
       parts.push_back(std::move(p));
     }
   }
@@ -374,8 +384,8 @@ bool scene_uses_parts(const Scene& scene) {
 }
 
 RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
-                         assets::MeshLibrary* meshes) {
-  return ModelBuilder(rig, catalog, meshes).build();
+                         assets::MeshLibrary* meshes, bool cut_away_near_side) {
+  return ModelBuilder(rig, catalog, meshes, cut_away_near_side).build();
 }
 
 }  // namespace fl::render

@@ -18,13 +18,6 @@ const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shad
 const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
 
 constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
-// Below half the 640x360 layout (320x180) the text would be too small to read: no overlay.
-constexpr float kSmallestScale = 0.5f;
-
-// The frame's scale against the 640x360 layout.
-float layout_scale(int width, int height) {
-  return std::min(static_cast<float>(width) / 640.0f, static_cast<float>(height) / 360.0f);
-}
 
 std::string slow_motion_text(double factor) {
   if (std::fabs(factor - 1.0) < 1e-9) return "real time";
@@ -201,6 +194,10 @@ void draw_results(Overlay& o, const Rect& panel, float s, const RigOverlayState&
 
 }  // namespace
 
+float overlay_scale(int width, int height) {
+  return std::min(static_cast<float>(width) / 640.0f, static_cast<float>(height) / 360.0f);
+}
+
 std::string rig_heading(const Scene& scene, const std::string& material) {
   std::string heading =
       material + " on " +
@@ -338,9 +335,35 @@ TitleCard make_title_card(const CompiledRig& rig, const std::string& material, d
   return card;
 }
 
+TitleCard make_end_card(const RigOverlayState& state, const std::string& theory,
+                        const std::string& stopped) {
+  TitleCard card;
+  card.title = "What the run measured";
+  const ResultsText text = results_text(state);
+  card.subtitle = text.note.empty() ? text.period : text.period + "  " + text.note;
+  if (!text.detail.empty()) card.lines.push_back(text.detail);
+  if (!theory.empty()) card.lines.push_back(theory);
+  card.lines.push_back(text.paper);
+  if (!state.regime.empty()) card.lines.push_back("the plate: " + state.regime);
+  if (!stopped.empty()) card.lines.push_back(stopped);
+  card.footer =
+      "T from the rig's Hall estimator; \xce\xbc\xe2\x82\x96 = 2\xcf\x80\xc2\xb2 l / (g T\xc2\xb2)";
+  return card;
+}
+
+void draw_guard_banner(Overlay& o, int width, int height, const std::string& text) {
+  const float s = overlay_scale(width, height);
+  if (s < kSmallestOverlayScale) return;
+  const float w = static_cast<float>(width);
+  const float h = static_cast<float>(height);
+  const Rect bar{0, 0.42f * h, w, 30 * s};
+  o.rect(bar, Color{0.62f, 0.08f, 0.08f, 0.92f});
+  o.text(text, Eigen::Vector2f(w / 2, bar.y + 7 * s), 14 * s, kWhite, TextAlign::kCenter);
+}
+
 void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& state) {
-  const float s = layout_scale(width, height);
-  if (s < kSmallestScale) return;
+  const float s = overlay_scale(width, height);
+  if (s < kSmallestOverlayScale) return;
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
   // The top bar: what is on screen, and the clock.
@@ -371,15 +394,24 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
     const Rect regime{8 * s, speeds.y + speeds.height + 4 * s, wide, 23 * s};
     o.rect(regime, kPanel);
     o.text(state.regime, Eigen::Vector2f(regime.x + 6 * s, regime.y + 4 * s), 13 * s, kWhite);
+    y = regime.y + regime.height;
+  } else {
+    y = speeds.y + speeds.height;
   }
+  // How the weight is shared, under them.
+  if (state.forces)
+    draw_weight_share(o, Eigen::Vector2f(8 * s, y + 4 * s), s, *state.forces, state.force_scale);
+  // The motion against theory, top right.
+  if (state.motion)
+    draw_motion_strip(o, Rect{w - 276 * s, 28 * s, 268 * s, 88 * s}, s, *state.motion);
 
   draw_hall_plot(o, Rect{8 * s, h - 104 * s, 300 * s, 96 * s}, s, state);
   draw_results(o, Rect{w - 276 * s, h - 76 * s, 268 * s, 68 * s}, s, state);
 }
 
 void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, float opacity) {
-  const float s = layout_scale(width, height);
-  if (s < kSmallestScale) return;
+  const float s = overlay_scale(width, height);
+  if (s < kSmallestOverlayScale) return;
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
   const float a = std::clamp(opacity, 0.0f, 1.0f);

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "core/units.hpp"
+#include "render/force_overlay.hpp"
+#include "render/motion_strip.hpp"
 #include "render/overlay.hpp"
 #include "scene/compiled_rig.hpp"
 
@@ -67,6 +69,12 @@ struct RigOverlayState {
   // The regime the run has diagnosed so far, with when it began ("clipped since t = 0.130 s");
   // empty: none drawn.
   std::string regime;
+  // The contact forces: the weight-share panel below the regime (force_overlay.hpp). None: no
+  // panel.
+  std::optional<PlateForces> forces;
+  ForceScale force_scale;
+  // x(t) against theory, top right (motion_strip.hpp). None: no strip.
+  std::optional<MotionStripState> motion;
 };
 
 struct TitleCard {
@@ -80,6 +88,15 @@ struct TitleCard {
 // `material` is the material's name as the paper writes it ("LEGO blocks").
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
                           int fps);
+
+// The end card: what the run measured (the estimator's T and mu_k as the results panel gives
+// them), the thick-plate theory's period, what the paper measured, the regime, and why a guard
+// stopped the run when one did (`stopped`, empty otherwise). Drawn with draw_title_card.
+TitleCard make_end_card(const RigOverlayState& state, const std::string& theory,
+                        const std::string& stopped);
+
+// A red banner across the frame saying why a guard stopped the run.
+void draw_guard_banner(Overlay& overlay, int width, int height, const std::string& text);
 
 // The top bar's heading: "LEGO blocks on PVC rollers · 77 K · l = 89 mm" (the temperature when
 // the scene names one; "from 77 K" when the rollers warm).
@@ -104,6 +121,11 @@ std::vector<AxisTick> hall_time_ticks(double t0, double t1);
 // The ADC axis over [bottom, top] counts: every 1, 2 or 5 times a power of ten, at most five
 // ticks.
 std::vector<AxisTick> hall_adc_ticks(double bottom, double top);
+
+// The frame's scale against the 640x360 layout; below kSmallestOverlayScale (320x180) the text
+// would be too small to read, and nothing of the overlay is drawn.
+float overlay_scale(int width, int height);
+inline constexpr float kSmallestOverlayScale = 0.5f;
 
 // Draws the running overlay (time, speeds, Hall plot, T and mu_k) into a width x height frame.
 // Frames smaller than 320x180 get none (its text would be under 6 px), nor a title card.

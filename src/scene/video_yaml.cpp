@@ -72,7 +72,7 @@ std::string video_camera_problem(std::string_view preset) {
 
 VideoDesc read_video(const YamlNode& node) {
   node.expect_map();
-  node.allow_keys({"size", "fps", "slow_motion", "camera", "orbit", "title"});
+  node.allow_keys({"size", "fps", "slow_motion", "camera", "orbit", "title", "end_card"});
   VideoDesc v;
   if (auto size = node.find("size")) {
     if (size->is_sequence()) {
@@ -129,6 +129,7 @@ VideoDesc read_video(const YamlNode& node) {
       orbit->fail("expected an orbit of at most 360 deg/s (e.g. \"10 deg/s\")");
   }
   if (auto title = node.find("title")) v.title = title->boolean();
+  if (auto end_card = node.find("end_card")) v.end_card = end_card->boolean();
   return v;
 }
 

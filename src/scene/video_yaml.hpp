@@ -30,18 +30,24 @@ struct VideoDesc {
   std::optional<VideoCameraPlacement> placed;  // a placed camera instead of the preset
   double orbit = 0.0;                          // rad per second of video, about the vertical
                                                // through the camera's target
-  bool title = false;  // a title card (kTitleSeconds of video) before the run
+  bool title = false;     // a title card (kTitleSeconds of video) before the run
+  bool end_card = false;  // an end card (kEndCardSeconds) with the run's T, mu_k and regime
 };
 
 // Seconds of video the title card lasts (frames rendered before the run's first frame).
 inline constexpr double kTitleSeconds = 2.0;
+// Seconds of video the end card lasts, and the banner over the last frame of a run a guard
+// stopped (both after the run's last frame).
+inline constexpr double kEndCardSeconds = 3.0;
+inline constexpr double kGuardBannerSeconds = 2.0;
 
 // The camera presets: the whole rig from the front (from -y, a little above and to the right),
 // from above, and a close-up on the Hall sensor and the magnet that passes under it.
 inline constexpr std::array<std::string_view, 3> kCameraPresets = {"front", "top", "sensor"};
 
 // Reads `video:`; every error is located at its key. Keys: size ("1280x720" or [1280, 720]),
-// fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title.
+// fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title,
+// end_card.
 VideoDesc read_video(const YamlNode& node);
 
 // "1280x720" -> {1280, 720}; nothing for anything else.

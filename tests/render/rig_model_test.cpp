@@ -12,6 +12,8 @@
 #include "../support/rig_fixture.hpp"
 #include "io/input_error.hpp"
 #include "lab/video_settings.hpp"
+#include "render/force_overlay.hpp"
+#include "render/motion_strip.hpp"
 #include "render/rig_camera.hpp"
 #include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"
@@ -220,6 +222,138 @@ TEST(RigModel, CameraPresetsFrameTheWholeRig) {
               1e-5);
   EXPECT_NEAR(turned.position.z(), camera.position.z(), 1e-6);
   EXPECT_GT((turned.position - camera.position).norm(), 0.05f);
+}
+
+// The front camera looks from -y through the near wall: a cutaway leaves out exactly the frame's
+// parts wholly on that side of the plate, and the camera then sees both rollers' near ends
+// nearer than anything of the frame.
+TEST(RigModel, TheFrontCutawayLeavesOutTheNearWallOnly) {
+  FL_REQUIRE_ASSETS();
+  const Scene& scene = test::paper_rig();
+  assets::MeshLibrary meshes;
+  const RigModel cut = build_rig_model(compile_rig(scene), &test::part_catalog(), &meshes, true);
+  const double near_edge = -0.5 * scene.plate.width;
+  std::size_t near_parts = 0;
+  for (const FramePart& part : scene.frame->parts) {
+    const assets::PartSpec* spec = test::part_catalog().find(part.part);
+    ASSERT_NE(spec, nullptr);
+    // A part's far face: its origin plus its mesh's extent along y (turned parts stand at +y).
+    if (part.turn == 0 && part.position[1] + spec->bounds.max[1] < near_edge) ++near_parts;
+  }
+  EXPECT_GT(near_parts, 0u);
+  EXPECT_EQ(cut.stats.cut_away_parts, near_parts);
+  EXPECT_EQ(paper_rig_model().stats.cut_away_parts, 0u);
+}
+
+// The front preset keeps the rig off the motion strip (top right) and the weight panel (left).
+TEST(RigModel, TheFrontCameraKeepsTheRigOffThePanels) {
+  FL_REQUIRE_ASSETS();
+  assets::MeshLibrary meshes;
+  const RigModel model =
+      build_rig_model(compile_rig(test::paper_rig()), &test::part_catalog(), &meshes, true);
+  VideoDesc video;
+  video.width = 1280;
+  video.height = 720;
+  const Camera camera = rig_camera(model, video);
+  const float s = overlay_scale(1280, 720);
+  const Rect strip{1280 - 276 * s, 28 * s, 268 * s, 88 * s};
+  int inside = 0, seen = 0;
+  for (const Eigen::Vector3f& point : model.outline) {
+    const auto p = project_to_pixel(camera, 1280, 720, point);
+    ASSERT_TRUE(p);
+    ++seen;
+    if (p->x() > strip.x && p->y() < strip.y + strip.height) ++inside;
+  }
+  EXPECT_GT(seen, 100);
+  EXPECT_EQ(inside, 0);
+}
+
+TEST(ForceOverlay, WeightSharesAreEachRollersPartOfTheLoad) {
+  PlateForces forces;
+  forces.rollers[0] = ContactForce{true, 0.3, 0.09, Eigen::Vector3f::Zero()};
+  forces.rollers[1] = ContactForce{true, 0.1, -0.03, Eigen::Vector3f::Zero()};
+  const auto shares = weight_shares(forces);
+  ASSERT_TRUE(shares);
+  EXPECT_DOUBLE_EQ((*shares)[0], 0.75);
+  EXPECT_DOUBLE_EQ((*shares)[1], 0.25);
+  // A plate off roller 1 rests wholly on roller 0; off both, it is in the air.
+  forces.rollers[1].touching = false;
+  EXPECT_DOUBLE_EQ((*weight_shares(forces))[0], 1.0);
+  forces.rollers[0].touching = false;
+  EXPECT_FALSE(weight_shares(forces));
+}
+
+// The arrows: the normal forces up the picture, each roller's friction toward the middle (the
+// rollers' tops turn inward), the net friction the sum of the two, all to one scale.
+TEST(ForceOverlay, ArrowsPointAlongTheirForcesToOneScale) {
+  Camera camera;  // the default: from the front, right and above
+  PlateForces forces;
+  forces.rollers[0] = ContactForce{true, 0.3, 0.087, Eigen::Vector3f(-0.0445f, -0.024f, 0.0f)};
+  forces.rollers[1] = ContactForce{true, 0.1, -0.029, Eigen::Vector3f(0.0445f, -0.024f, 0.0f)};
+  forces.centre = Eigen::Vector3f(-0.02f, -0.024f, 0.0036f);
+  const ForceScale scale = force_scale(camera, 1280, 720, Eigen::Vector3f::Zero(), 0.089, 0.4);
+  const double per_newton = static_cast<double>(scale.pixels_per_newton);
+  // 0.1 N: the largest of 1, 2, 5 x 10^k at most a quarter of the 0.4 N weight.
+  EXPECT_DOUBLE_EQ(scale.reference_force, 0.1);
+  EXPECT_DOUBLE_EQ(
+      force_scale(camera, 1280, 720, Eigen::Vector3f::Zero(), 0.089, 4.1).reference_force, 1.0);
+  EXPECT_DOUBLE_EQ(
+      force_scale(camera, 1280, 720, Eigen::Vector3f::Zero(), 0.089, 0.9).reference_force, 0.2);
+  const std::vector<ForceArrow> arrows = force_arrows(camera, 1280, 720, forces, scale);
+  ASSERT_EQ(arrows.size(), 5u);
+  const auto length = [](const ForceArrow& a) {
+    return static_cast<double>((a.to - a.from).norm());
+  };
+  const auto dx = [](const ForceArrow& a) { return static_cast<double>(a.to.x() - a.from.x()); };
+  // F0, F1, the net friction, N0, N1.
+  EXPECT_GT(dx(arrows[0]), 0.0);                    // F0 toward +x
+  EXPECT_LT(dx(arrows[1]), 0.0);                    // F1 toward -x
+  EXPECT_LT(arrows[3].to.y(), arrows[3].from.y());  // N0 up the picture
+  EXPECT_LT(arrows[4].to.y(), arrows[4].from.y());  // N1
+  EXPECT_NEAR(length(arrows[3]) / length(arrows[4]), 3.0, 1e-4);
+  EXPECT_NEAR(length(arrows[3]), 0.3 * per_newton, 1e-3);
+  EXPECT_NEAR(length(arrows[2]), (0.087 - 0.029) * per_newton, 1e-3);
+  EXPECT_EQ(arrows[2].label, "F\xe2\x82\x80 + F\xe2\x82\x81");
+  // Half the weight spans 0.35 of the spacing's projection.
+  const auto a = project_to_pixel(camera, 1280, 720, Eigen::Vector3f(-0.0445f, 0.0f, 0.0f));
+  const auto b = project_to_pixel(camera, 1280, 720, Eigen::Vector3f(0.0445f, 0.0f, 0.0f));
+  EXPECT_NEAR(0.2 * per_newton, 0.35 * static_cast<double>((*b - *a).norm()), 1e-2);
+}
+
+// The strip's theory: x0 cos(omega t) + v0 / omega sin(omega t), and the simulated curve read
+// between its samples.
+TEST(MotionStrip, TheTheoryIsTheThickPlatesHarmonicMotion) {
+  const double omega = 2.0 * kPi / 0.7766;
+  const ThickPlateCurve released{0.03, 0.0, omega};
+  EXPECT_NEAR(released.at(0.7766), 0.03, 1e-12);
+  EXPECT_NEAR(released.at(0.7766 / 2.0), -0.03, 1e-12);
+  EXPECT_NEAR(released.at(0.7766 / 4.0), 0.0, 1e-12);
+  const ThickPlateCurve pushed{0.0, 0.2, omega};
+  EXPECT_NEAR(pushed.at(0.7766 / 4.0), 0.2 / omega, 1e-12);  // its amplitude v0 / omega
+  const std::vector<Eigen::Vector2d> samples{{0.0, 0.01}, {0.1, 0.02}, {0.2, 0.0}};
+  EXPECT_NEAR(*position_at(samples, 0.05), 0.015, 1e-12);
+  EXPECT_NEAR(*position_at(samples, 0.15), 0.01, 1e-12);
+  EXPECT_EQ(*position_at(samples, -1.0), 0.01);
+  EXPECT_EQ(*position_at(samples, 9.0), 0.0);
+  EXPECT_FALSE(position_at({}, 0.0));
+}
+
+// The end card says what the run measured and why a guard stopped it.
+TEST(RigOverlay, TheEndCardGivesThePeriodMuKAndTheStop) {
+  RigOverlayState state;
+  state.estimator.periods = 12;
+  state.estimator.period = 0.7767;
+  state.estimator.period_std = 0.0004;
+  state.estimator.mu_k = 0.2896;
+  state.estimator.mu_k_err = 0.011;
+  state.regime = "oscillates";
+  const TitleCard card = make_end_card(state, "theory: T = 0.7766 s", "");
+  EXPECT_EQ(card.subtitle, "T = 0.7767 \xc2\xb1 0.0004 s  (N = 12)");
+  ASSERT_GE(card.lines.size(), 3u);
+  EXPECT_EQ(card.lines[0], "\xce\xbc\xe2\x82\x96 = 0.290 \xc2\xb1 0.011");
+  EXPECT_EQ(card.lines[1], "theory: T = 0.7766 s");
+  const TitleCard stopped = make_end_card(state, "", "stopped at t = 1.200 s: the plate fell");
+  EXPECT_EQ(stopped.lines.back(), "stopped at t = 1.200 s: the plate fell");
 }
 
 TEST(RigModel, PosesInterpolatePartByPart) {

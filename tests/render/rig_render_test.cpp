@@ -196,6 +196,8 @@ TEST_P(RigRender, EachCameraPresetMatchesItsGoldenImage) {
   const auto context = test::gl_context(GetParam(), 160, 90);
   Renderer renderer(*context);
   const RigView view(renderer, paper_rig_model());
+  // The front camera's videos cut the near wall away.
+  const RigView cutaway(renderer, paper_rig_model(true));
   RigPose pose = pose_at(0.012, 0.4);
   for (std::size_t s = 2; s < pose.shaft_angles.size(); ++s) pose.shaft_angles[s] = 0.1 * s;
   const char* update = std::getenv("FRICTIONLAB_UPDATE_GOLDEN");
@@ -204,7 +206,8 @@ TEST_P(RigRender, EachCameraPresetMatchesItsGoldenImage) {
     video.width = 160;
     video.height = 90;
     video.camera = std::string(preset);
-    const Image frame = draw(renderer, view, rig_camera(view.model(), video), pose);
+    const RigView& shown = preset == "front" ? cutaway : view;
+    const Image frame = draw(renderer, shown, rig_camera(shown.model(), video), pose);
     const std::string name = "rig_" + std::string(preset) + "_160x90";
     const std::string kept = name + "_" + GetParam();
     const std::string golden =

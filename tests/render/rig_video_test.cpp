@@ -9,12 +9,15 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "../support/run_command.hpp"
 #include "render/components.hpp"
+#include "render/force_overlay.hpp"
 #include "render/png.hpp"
 
 namespace fl {
@@ -74,11 +77,15 @@ TEST(RigVideo, TheMp4HasTheFramesOfTheVideosClock) {
   };
   for (const Case& c : {
            // 1 s simulated at 10 fps, 2x slow motion: 20 frames, 2 s of video.
-           Case{"--duration 1s --fps 10 --slow-motion 2 --set video.title=false", 20, 2.0},
-           // With the scene's title card: 2 s x 10 fps more in front.
-           Case{"--duration 1s --fps 10 --slow-motion 2", 40, 4.0},
+           Case{"--duration 1s --fps 10 --slow-motion 2 --set video.title=false --set "
+                "video.end_card=false",
+                20, 2.0},
+           // With the scene's title card (2 s x 10 fps more in front) and end card (3 s x 10 fps
+           // after).
+           Case{"--duration 1s --fps 10 --slow-motion 2", 70, 7.0},
            // Real time at 24 fps: 0.5 s -> 12 frames.
-           Case{"--duration 0.5s --fps 24 --set video.title=false", 12, 0.5},
+           Case{"--duration 0.5s --fps 24 --set video.title=false --set video.end_card=false", 12,
+                0.5},
        }) {
     const fs::path file = dir / "rig.mp4";
     fs::remove(file);
@@ -111,14 +118,15 @@ TEST(RigVideo, EachFormatHasItsCodecFramesSizeAndDuration) {
     int width, height, frames;
     double duration;  // s
   };
-  const std::string short_run = "--duration 0.5s --fps 10 --size 320x180 --set video.title=false";
+  const std::string short_run =
+      "--duration 0.5s --fps 10 --size 320x180 --set video.title=false --set video.end_card=false";
   for (const Case& c : {
            Case{"rig.mp4", short_run, "h264", 320, 180, 5, 0.5},
            Case{"rig.webm", short_run, "vp9", 320, 180, 5, 0.5},
            Case{"rig.gif", short_run, "gif", 320, 180, 5, 0.5},
            // A GIF without --size and --fps: the scene's 1280x720 at 30 fps drawn at 640x360
-           // and 10 fps; 1 s and the 2 s title card: 30 frames.
-           Case{"title.gif", "--duration 1s", "gif", 640, 360, 30, 3.0},
+           // and 10 fps; 1 s, the 2 s title card and the 3 s end card: 60 frames.
+           Case{"title.gif", "--duration 1s", "gif", 640, 360, 60, 6.0},
        }) {
     const fs::path file = dir / c.file;
     const auto r = lab("run " + kRig + " " + c.args + " --video " + file.string());
@@ -158,7 +166,7 @@ TEST(RigVideo, AnInterruptedRunClosesAPlayableVideoInEveryFormat) {
     const auto r = test::run_command(
         "(LSAN_OPTIONS=suppressions=" FRICTIONLAB_TEST_SOURCE_DIR "/tests/render/lsan.supp " +
         kExe + " run " + kRig + " --duration 600s --fps 10 --size 320x180 " +
-        "--set video.title=false --video " + file.string() +
+        "--set video.title=false --set video.end_card=false --video " + file.string() +
         " & pid=$!; sleep 4; kill -INT $pid; wait $pid; echo status $?)");
     EXPECT_NE(r.out.find("status 130"), std::string::npos) << extension << "\n" << r.out << r.err;
     ASSERT_TRUE(fs::exists(file)) << extension << "\n" << r.err;
@@ -211,8 +219,10 @@ TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
     return out;
   };
   // 0.5 s at 10 fps: frames at t = 0, 0.1, ... 0.4 s.
-  auto r = lab("run " + kRig + " --duration 0.5s --fps 10 --size 160x90 --set video.title=false" +
-               " --frames " + frames.string() + " --still " + still.string());
+  auto r = lab(
+      "run " + kRig +
+      " --duration 0.5s --fps 10 --size 160x90 --set video.title=false --set video.end_card=false" +
+      " --frames " + frames.string() + " --still " + still.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(names(),
             (std::set<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png",
@@ -223,8 +233,10 @@ TEST(RigVideo, FramesWritesExactlyTheExpectedFilesAndAStill) {
   const render::Image end = render::read_png(still.string());
   EXPECT_EQ(end.width, 160);
   // A second run into the same folder replaces the first one's frames: 3 frames now.
-  r = lab("run " + kRig + " --duration 0.3s --fps 10 --size 160x90 --set video.title=false" +
-          " --frames " + frames.string());
+  r = lab(
+      "run " + kRig +
+      " --duration 0.3s --fps 10 --size 160x90 --set video.title=false --set video.end_card=false" +
+      " --frames " + frames.string());
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(names(),
             (std::set<std::string>{"frame_000000.png", "frame_000001.png", "frame_000002.png"}));
@@ -255,6 +267,113 @@ TEST(RigVideo, TheHallPlotShadesTheDiscardedPeriods) {
   // Measured: about 4900 shaded pixels of the plot's 25 700 with the jumps, none without.
   EXPECT_GT(reddish("0.45mm"), 1000);
   EXPECT_EQ(reddish("0mm"), 0);
+}
+
+// The pixels of one colour (within 3 of each channel), as 4-connected groups: their sizes and
+// their longest extents (the largest distance between two of their pixels).
+struct PixelGroup {
+  int pixels = 0;
+  double extent = 0.0;  // px
+  double min_x = 1e9;   // px
+};
+std::vector<PixelGroup> colour_groups(const render::Image& image, const render::Color& colour,
+                                      int x0, int x1, int y0, int y1) {
+  const auto matches = [&](int x, int y) {
+    const auto p = image.view().at(x, y);
+    const float want[3] = {colour.r, colour.g, colour.b};
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(static_cast<int>(p[c]) - static_cast<int>(std::lround(want[c] * 255.0f))) > 3)
+        return false;
+    return true;
+  };
+  std::vector<int> seen(static_cast<std::size_t>(image.width * image.height), 0);
+  std::vector<PixelGroup> groups;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      if (seen[static_cast<std::size_t>(y * image.width + x)] || !matches(x, y)) continue;
+      std::vector<std::array<int, 2>> members, todo{{x, y}};
+      seen[static_cast<std::size_t>(y * image.width + x)] = 1;
+      while (!todo.empty()) {
+        const auto [px, py] = todo.back();
+        todo.pop_back();
+        members.push_back({px, py});
+        for (const auto [dx, dy] : {std::array{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+          const int nx = px + dx, ny = py + dy;
+          if (nx < x0 || nx >= x1 || ny < y0 || ny >= y1) continue;
+          auto& mark = seen[static_cast<std::size_t>(ny * image.width + nx)];
+          if (mark || !matches(nx, ny)) continue;
+          mark = 1;
+          todo.push_back({nx, ny});
+        }
+      }
+      PixelGroup g;
+      g.pixels = static_cast<int>(members.size());
+      for (const auto& a : members) {
+        g.min_x = std::min(g.min_x, static_cast<double>(a[0]));
+        for (const auto& b : members)
+          g.extent = std::max(g.extent, std::hypot(a[0] - b[0], a[1] - b[1]));
+      }
+      groups.push_back(g);
+    }
+  return groups;
+}
+
+// The forces on screen are the solver's: a run stopped with the plate off centre, the still's
+// weight bars and normal-force arrows measured in pixels against the contact forces the
+// trajectory file holds for the same last step.
+TEST(RigVideo, TheForceArrowsAndWeightBarsFollowTheTrajectorysContactForces) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("forces");
+  const fs::path still = dir / "still.png";
+  // At 0.25 s the plate (released 30 mm off centre, T = 0.78 s) is 13 mm on roller 0's side:
+  // roller 0 carries about 1.8 times roller 1's load.
+  const auto r = lab("run " + kRig + " --duration 0.25s --size 1280x720 --still " + still.string() +
+                     " --out " + (dir / "out").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream trajectory(dir / "out" / "trajectory.csv");
+  std::string line, last;
+  while (std::getline(trajectory, line))
+    if (!line.empty()) last = line;
+  std::vector<double> row;
+  std::stringstream cells(last);
+  for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+  ASSERT_EQ(row.size(), 11u) << last;
+  const double n0 = row[7], n1 = row[9];  // normal0_n, normal1_n
+  ASSERT_GT(n0, 1.5 * n1) << "the plate is not where the test expects it";
+  ASSERT_GT(n1, 0.0);
+
+  const render::Image image = render::read_png(still.string());
+  // The weight bars: the normal force's colour in the left quarter, two tall groups (the labels'
+  // glyphs are small).
+  const render::WeightBars bars = render::weight_bars(Eigen::Vector2f(0.0f, 0.0f), 2.0f);
+  const double full = bars.full[0].height;  // px, a share of 1 at 1280x720
+  auto left = colour_groups(image, render::kNormalForceColor, 0, 320, 40, 500);
+  std::erase_if(left, [](const PixelGroup& g) { return g.pixels < 500; });
+  ASSERT_EQ(left.size(), 2u);
+  std::sort(left.begin(), left.end(),
+            [](const PixelGroup& a, const PixelGroup& b) { return a.min_x < b.min_x; });
+  const double width = bars.full[0].width;
+  const double tall0 = left[0].pixels / width, tall1 = left[1].pixels / width;
+  EXPECT_NEAR(tall0, n0 / (n0 + n1) * full, 1.5);
+  EXPECT_NEAR(tall1, n1 / (n0 + n1) * full, 1.5);
+
+  // The arrows N0 and N1 over the rig: the two largest groups of that colour right of the
+  // panels longer than a label's glyph (about 20 px); their lengths in pixels stand as the forces
+  // do (one scale for every arrow).
+  auto arrows = colour_groups(image, render::kNormalForceColor, 320, 1280, 40, 560);
+  std::erase_if(arrows, [](const PixelGroup& g) { return g.extent < 30.0; });
+  std::sort(arrows.begin(), arrows.end(),
+            [](const PixelGroup& a, const PixelGroup& b) { return a.pixels > b.pixels; });
+  ASSERT_GE(arrows.size(), 2u);
+  arrows.resize(2);
+  std::sort(arrows.begin(), arrows.end(),
+            [](const PixelGroup& a, const PixelGroup& b) { return a.min_x < b.min_x; });
+  // Roller 0 is on the left. A group's extent is the arrow's length plus half its shaft's width
+  // (the square end behind its start), within a pixel at each end.
+  const double shaft = 2.2;  // px: half of 2 x 2.2 px
+  const double l0 = arrows[0].extent - shaft, l1 = arrows[1].extent - shaft;
+  EXPECT_NEAR(l0 / l1, n0 / n1, (n0 / n1) * (2.0 / l0 + 2.0 / l1))
+      << "arrow lengths " << l0 << " and " << l1 << " px for " << n0 << " and " << n1 << " N";
 }
 
 TEST(RigVideo, ARunWithoutFramesNeverStartsGl) {

@@ -17,10 +17,12 @@ inline const Scene& paper_rig() {
   return scene;
 }
 
-// The paper's rig's model, its meshes read through a library of its own.
-inline render::RigModel paper_rig_model() {
+// The paper's rig's model, its meshes read through a library of its own; `cut_away_near_side` as
+// the front camera's videos draw it (render/rig_model.hpp).
+inline render::RigModel paper_rig_model(bool cut_away_near_side = false) {
   assets::MeshLibrary meshes;
-  return render::build_rig_model(compile_rig(paper_rig()), &part_catalog(), &meshes);
+  return render::build_rig_model(compile_rig(paper_rig()), &part_catalog(), &meshes,
+                                 cut_away_near_side);
 }
 
 }  // namespace fl::test

@@ -269,9 +269,10 @@ void RigVideo::take_motion(const VideoStep& step) {
       Eigen::Vector3f(static_cast<float>(step.plate_x), near_y, static_cast<float>(step.plate_z));
   if (motion.empty()) {
     // The theory starts where the run does.
-    if (rig.omega) theory = render::ThickPlateCurve{step.plate_x, step.plate_vx, *rig.omega};
+    if (rig.restoring && scene.rollers.sense == RollerSense::kInward && rig.omega)
+      theory = render::ThickPlateCurve{step.plate_x, step.plate_vx, *rig.omega};
     theory_label =
-        rig.omega && rig.period_thick
+        theory && rig.period_thick
             ? fmt::format("theory: thick plate, \xce\xbc\xe2\x82\x96 = {:.3g}, T = {:.4f} s",
                           rig.mu_k, *rig.period_thick)
             : std::string("no theory: the rollers do not restore the plate");

@@ -356,9 +356,37 @@ void draw_guard_banner(Overlay& o, int width, int height, const std::string& tex
   if (s < kSmallestOverlayScale) return;
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
-  const Rect bar{0, 0.42f * h, w, 30 * s};
+  // "stopped at t = ...: why": the first part as the banner's heading, the reason below it,
+  // wrapped to the frame's width.
+  const std::size_t colon = text.find(": ");
+  const std::string heading = colon == std::string::npos ? text : text.substr(0, colon);
+  const std::string reason = colon == std::string::npos ? std::string() : text.substr(colon + 2);
+  std::vector<std::string> lines;
+  std::string current;
+  std::size_t at = 0;
+  while (at < reason.size()) {
+    std::size_t end = reason.find(' ', at);
+    if (end == std::string::npos) end = reason.size();
+    const std::string word = reason.substr(at, end - at);
+    const std::string longer = current.empty() ? word : current + " " + word;
+    if (!current.empty() && o.measure_text(longer, 12 * s).width > w - 24 * s) {
+      lines.push_back(current);
+      current = word;
+    } else {
+      current = longer;
+    }
+    at = end + 1;
+  }
+  if (!current.empty()) lines.push_back(current);
+  const Rect bar{0, 0.36f * h, w, (28 + 16 * static_cast<float>(lines.size())) * s};
   o.rect(bar, Color{0.62f, 0.08f, 0.08f, 0.92f});
-  o.text(text, Eigen::Vector2f(w / 2, bar.y + 7 * s), 14 * s, kWhite, TextAlign::kCenter);
+  o.text("The run " + heading, Eigen::Vector2f(w / 2, bar.y + 6 * s), 15 * s, kWhite,
+         TextAlign::kCenter);
+  float y = bar.y + 26 * s;
+  for (const std::string& line : lines) {
+    o.text(line, Eigen::Vector2f(w / 2, y), 12 * s, kWhite, TextAlign::kCenter);
+    y += 16 * s;
+  }
 }
 
 void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& state) {

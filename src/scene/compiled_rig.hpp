@@ -57,8 +57,9 @@ struct CompiledRig {
   // being the law at the start.
   std::optional<RollerWarming> warming;
 
-  // The analytic oscillator for this plate. `restoring` is false when the rollers turn outward
-  // or l <= 2 mu_k h_c; the thick-plate quantities are then absent.
+  // The analytic oscillator for this plate with its rollers turning inward. `restoring` is false
+  // when l <= 2 mu_k h_c; the thick-plate quantities are then absent. (It does not look at
+  // rollers.sense: a scene whose rollers turn outward keeps these values for comparison.)
   bool restoring = false;
   double period_thin = 0.0;                    // s, the paper's formula
   std::optional<double> period_thick;          // s

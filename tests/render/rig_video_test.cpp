@@ -376,6 +376,39 @@ TEST(RigVideo, TheForceArrowsAndWeightBarsFollowTheTrajectorysContactForces) {
       << "arrow lengths " << l0 << " and " << l1 << " px for " << n0 << " and " << n1 << " N";
 }
 
+// A run a guard stops (rollers turning outward push the plate off at t = 0.21 s) ends its video
+// on its last frame held for 2 s under a red banner; a run that ends normally has none.
+TEST(RigVideo, ARunAGuardStoppedEndsOnABannerSayingWhy) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("guard");
+  const auto red_rows = [](const render::Image& image) {
+    int rows = 0;
+    for (int y = 0; y < image.height; ++y) {
+      int red = 0;
+      for (int x = 0; x < image.width; ++x) {
+        const auto p = image.view().at(x, y);
+        if (p[0] > 130 && p[1] < 60 && p[2] < 60) ++red;
+      }
+      if (red > image.width / 2) ++rows;
+    }
+    return rows;
+  };
+  auto r = lab("run " + kScenes + "extreme/rollers-outward.yaml --duration 1s --fps 10 --size " +
+               "320x180 --frames " + (dir / "stopped").string());
+  EXPECT_EQ(r.status, 3) << r.err;
+  // Frames at t = 0, 0.1, 0.2 s, then 2 s x 10 fps of banner.
+  EXPECT_TRUE(fs::exists(dir / "stopped" / "frame_000022.png"));
+  EXPECT_FALSE(fs::exists(dir / "stopped" / "frame_000023.png"));
+  EXPECT_EQ(red_rows(render::read_png((dir / "stopped" / "frame_000002.png").string())), 0);
+  // The banner is about 30 px tall at 320x180; its text leaves 18 rows mostly red (measured).
+  EXPECT_GT(red_rows(render::read_png((dir / "stopped" / "frame_000022.png").string())), 10);
+  r = lab("run " + kRig + " --duration 0.3s --fps 10 --size 320x180 --set video.title=false " +
+          "--set video.end_card=false --frames " + (dir / "normal").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "normal" / "frame_000003.png"));
+  EXPECT_EQ(red_rows(render::read_png((dir / "normal" / "frame_000002.png").string())), 0);
+}
+
 TEST(RigVideo, ARunWithoutFramesNeverStartsGl) {
   // An unknown back end: a plain run does not care, a run that draws fails naming it.
   const std::string env = "FRICTIONLAB_GL=nonsense";

@@ -52,6 +52,8 @@ struct RigFrames {
   fl::VideoDesc video;
   std::vector<HallPoint> hall;
   std::vector<double> pulses;
+  std::vector<Eigen::Vector2d> motion;  // (t, x) for the strip
+  ForceScale force_scale;
   bool overlay = true;
 
   RigFrames(int width, int height, int samples, bool shadows, bool with_overlay,
@@ -68,8 +70,10 @@ struct RigFrames {
     renderer_options.shadows = shadows;
     renderer_options.shadow_map_size = shadow_map;
     renderer = std::make_unique<Renderer>(*context, renderer_options);
-    RigModel model = fl::test::paper_rig_model();
+    RigModel model = fl::test::paper_rig_model(true);  // as the front camera's videos draw it
     camera = rig_camera(model, video);
+    force_scale =
+        fl::render::force_scale(camera, width, height, Eigen::Vector3f::Zero(), 0.089, 0.413);
     cull_back_faces(model, camera.position);  // as the video recorder does without an orbit
     view = std::make_unique<RigView>(*renderer, std::move(model));
   }
@@ -120,6 +124,35 @@ struct RigFrames {
       state.estimator.mu_k_err = 0.008;
       state.paper_period = fl::test::paper_rig().friction.paper_period;
       state.paper_mu_k = fl::test::paper_rig().friction.paper_mu_k;
+      // The forces (the thin plate's load shift) and x(t) against the theory, as a video draws
+      // them.
+      const double x = 0.03 * std::cos(w * t);
+      const double load = 0.413;  // N, the plate's weight
+      PlateForces forces;
+      for (int k = 0; k < 2; ++k) {
+        const double side = k == 0 ? -1.0 : 1.0;
+        const double normal = load * (0.5 - side * x / 0.089);
+        forces.rollers[static_cast<std::size_t>(k)] =
+            ContactForce{true, normal, -side * 0.29 * normal,
+                         Eigen::Vector3f(static_cast<float>(side * 0.0445), -0.024f, 0.0f)};
+      }
+      forces.centre = Eigen::Vector3f(static_cast<float>(x), -0.024f, 0.0036f);
+      draw_force_arrows(renderer->overlay(), overlay_scale(video.width, video.height),
+                        force_arrows(camera, video.width, video.height, forces, force_scale));
+      state.forces = forces;
+      state.force_scale = force_scale;
+      motion.clear();
+      for (int k = 0; k < 2500; ++k) {
+        const double ts = t - 2.5 + k * 1e-3;
+        motion.emplace_back(ts, 0.03 * std::cos(w * ts));
+      }
+      MotionStripState strip;
+      strip.t = t;
+      strip.simulated = motion;
+      strip.theory = ThickPlateCurve{0.03, 0.0, w};
+      strip.theory_label = "theory: thick plate, \xce\xbc\xe2\x82\x96 = 0.29, T = 0.7766 s";
+      strip.turning_points = pulses;
+      state.motion = strip;
       draw_rig_overlay(renderer->overlay(), video.width, video.height, state);
     }
     return renderer->end_frame();

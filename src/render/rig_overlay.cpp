@@ -18,13 +18,6 @@ const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shad
 const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
 
 constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
-// Below half the 640x360 layout (320x180) the text would be too small to read: no overlay.
-constexpr float kSmallestScale = 0.5f;
-
-// The frame's scale against the 640x360 layout.
-float layout_scale(int width, int height) {
-  return std::min(static_cast<float>(width) / 640.0f, static_cast<float>(height) / 360.0f);
-}
 
 std::string slow_motion_text(double factor) {
   if (std::fabs(factor - 1.0) < 1e-9) return "real time";
@@ -201,6 +194,10 @@ void draw_results(Overlay& o, const Rect& panel, float s, const RigOverlayState&
 
 }  // namespace
 
+float layout_scale(int width, int height) {
+  return std::min(static_cast<float>(width) / 640.0f, static_cast<float>(height) / 360.0f);
+}
+
 std::string rig_heading(const Scene& scene, const std::string& material) {
   std::string heading =
       material + " on " +
@@ -295,10 +292,10 @@ std::string format_plus_minus(double value, double uncertainty) {
 }
 
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
-                          int fps) {
+                          int fps, const std::string& title) {
   const Scene& scene = rig.scene;
   TitleCard card;
-  card.title = "The friction (Timoshenko) oscillator";
+  card.title = title.empty() ? "The friction (Timoshenko) oscillator" : title;
   card.subtitle = fmt::format("{} on {} rollers, {:.0f} K", material,
                               scene.rollers.material == "pvc" ? "PVC" : scene.rollers.material,
                               scene.friction.temperature);
@@ -340,7 +337,7 @@ TitleCard make_title_card(const CompiledRig& rig, const std::string& material, d
 
 void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& state) {
   const float s = layout_scale(width, height);
-  if (s < kSmallestScale) return;
+  if (s < kSmallestLayoutScale) return;
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
   // The top bar: what is on screen, and the clock.
@@ -379,7 +376,7 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
 
 void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, float opacity) {
   const float s = layout_scale(width, height);
-  if (s < kSmallestScale) return;
+  if (s < kSmallestLayoutScale) return;
   const float w = static_cast<float>(width);
   const float h = static_cast<float>(height);
   const float a = std::clamp(opacity, 0.0f, 1.0f);
@@ -390,7 +387,10 @@ void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, f
     return c;
   };
   float y = h * 0.16f;
-  o.text(card.title, Eigen::Vector2f(w / 2, y), 28 * s, faded(kWhite), TextAlign::kCenter);
+  // A long title (run --title) shrinks to the frame's width less a margin.
+  const float title_width = o.measure_text(card.title, 28 * s).width;
+  const float title_size = 28 * s * std::min(1.0f, (w - 32 * s) / std::max(1.0f, title_width));
+  o.text(card.title, Eigen::Vector2f(w / 2, y), title_size, faded(kWhite), TextAlign::kCenter);
   y += 40 * s;
   o.text(card.subtitle, Eigen::Vector2f(w / 2, y), 18 * s, faded(kTrace), TextAlign::kCenter);
   y += 34 * s;

@@ -69,6 +69,11 @@ struct RigOverlayState {
   std::string regime;
 };
 
+// The frame's scale against the 640x360 layout: 1 at 640x360, 2 at 1280x720.
+float layout_scale(int width, int height);
+// Below half the 640x360 layout (320x180) text would be too small to read: no overlay is drawn.
+inline constexpr float kSmallestLayoutScale = 0.5f;
+
 struct TitleCard {
   std::string title;
   std::string subtitle;
@@ -77,9 +82,10 @@ struct TitleCard {
 };
 
 // The title card of a scene: the material, the rig's set-up and the video's settings.
-// `material` is the material's name as the paper writes it ("LEGO blocks").
+// `material` is the material's name as the paper writes it ("LEGO blocks"); `title` replaces the
+// default title ("The friction (Timoshenko) oscillator") unless empty.
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
-                          int fps);
+                          int fps, const std::string& title = {});
 
 // The top bar's heading: "LEGO blocks on PVC rollers · 77 K · l = 89 mm" (the temperature when
 // the scene names one; "from 77 K" when the rollers warm).
@@ -110,7 +116,7 @@ std::vector<AxisTick> hall_adc_ticks(double bottom, double top);
 void draw_rig_overlay(Overlay& overlay, int width, int height, const RigOverlayState& state);
 
 // Draws the title card over the frame; `opacity` 0..1 fades it. At 1 it is opaque: nothing drawn
-// before it shows through.
+// before it shows through. A title wider than the frame is drawn smaller to fit.
 void draw_title_card(Overlay& overlay, int width, int height, const TitleCard& card, float opacity);
 
 // "0.794 ± 0.006": the uncertainty to one significant digit (two when it starts with 1 or 2),

@@ -171,5 +171,16 @@ TEST(Captions, AFileHoldsTheListUnderCaptions) {
   std::filesystem::remove_all(dir);
 }
 
+// The example the docs run (examples/lesson-captions.yaml) reads, in order, within the paper
+// rig's 10 s.
+TEST(Captions, TheShippedExampleReads) {
+  const std::vector<Caption> c = load_captions_file(std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                                                    "/examples/lesson-captions.yaml");
+  ASSERT_GE(c.size(), 3u);
+  EXPECT_DOUBLE_EQ(c.front().at, 0.0);
+  ASSERT_TRUE(c.back().until.has_value());
+  EXPECT_LE(*c.back().until, 10.0);
+}
+
 }  // namespace
 }  // namespace fl

@@ -24,6 +24,7 @@
 #include "lab/run_outputs.hpp"
 #include "lab/step_choice.hpp"
 #include "lab/video_recorder.hpp"
+#include "scene/captions_yaml.hpp"
 #include "scene/video_format.hpp"
 
 namespace fl::cli {
@@ -40,6 +41,8 @@ struct RunCommandOptions {
   std::string size;
   std::string slow_motion;
   std::string camera;
+  std::string orbit;     // a rate, e.g. "10 deg/s"
+  std::string captions;  // a captions file
 };
 
 void print_video(const VideoReport& v, const VideoRequest& request) {
@@ -64,11 +67,11 @@ void print_video(const VideoReport& v, const VideoRequest& request) {
 // time step both set and picked.
 void refuse_ignored_options(const RunCommandOptions& o) {
   if (!o.video.any()) {
-    const std::pair<const char*, bool> frame_options[] = {{"--gl", !o.video.gl.empty()},
-                                                          {"--size", !o.size.empty()},
-                                                          {"--fps", o.video.fps.has_value()},
-                                                          {"--slow-motion", !o.slow_motion.empty()},
-                                                          {"--camera", !o.camera.empty()}};
+    const std::pair<const char*, bool> frame_options[] = {
+        {"--gl", !o.video.gl.empty()},          {"--size", !o.size.empty()},
+        {"--fps", o.video.fps.has_value()},     {"--slow-motion", !o.slow_motion.empty()},
+        {"--camera", !o.camera.empty()},        {"--orbit", !o.orbit.empty()},
+        {"--title", o.video.title.has_value()}, {"--captions", !o.captions.empty()}};
     for (const auto& [name, given] : frame_options)
       if (given)
         throw InputError(SourceLocation{name, 0, 0},
@@ -92,6 +95,11 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     const std::string problem = video_file_problem(o.video.video);
     if (!problem.empty()) throw InputError(SourceLocation{"--video", 0, 0}, problem);
   }
+  // --orbit and --captions are read before the scene: a mistake in them costs no loading.
+  VideoRequest request = o.video;
+  if (!o.orbit.empty())
+    request.orbit = option_quantity(o.orbit, Dimension::kAngularSpeed, "--orbit");
+  if (!o.captions.empty()) request.captions = load_captions_file(o.captions);
   Scene scene = load_scene_with_options(o.scene, global);
   if (!o.accuracy.empty()) {
     const double target = option_quantity(o.accuracy, Dimension::kDimensionless, "--accuracy");
@@ -128,7 +136,6 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.
   std::unique_ptr<VideoRecorder> recorder;
   if (o.video.any()) {
-    VideoRequest request = o.video;
     request.asset_dir = resolve_asset_dir(global.asset_dir);
     if (!o.size.empty()) {
       request.size = parse_video_size(o.size);
@@ -243,6 +250,14 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--slow-motion", options->slow_motion,
                   "Slow-motion factor: 4 renders 4 x fps frames per simulated second (default 1)");
   sub->add_option("--camera", options->camera, "Camera preset: front, top or sensor");
+  sub->add_option("--orbit", options->orbit,
+                  "Turn the camera about the rig at this rate of video time, e.g. \"10 deg/s\" "
+                  "(default: the scene's, 0)");
+  sub->add_option("--title", options->video.title,
+                  "The title card's title; turns the title card on");
+  sub->add_option("--captions", options->captions,
+                  "Captions from FILE (a YAML map with a `captions:` list, as the scene's "
+                  "video.captions), replacing the scene's");
   return Command{sub, [options, &global] { return run_run(*options, global); }};
 }
 

@@ -14,6 +14,7 @@
 #include "io/missing_component.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "lab/video_module.hpp"
+#include "render/caption_overlay.hpp"
 #include "render/components.hpp"
 #include "render/gl_context.hpp"
 #include "render/png.hpp"
@@ -189,7 +190,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     throw VideoUnavailable(std::string("the rig cannot be drawn: ") + e.what());
   }
   material = material_name(scene, request.asset_dir);
-  title = render::make_title_card(rig, material, video.slow_motion, video.fps);
+  title = render::make_title_card(rig, material, video.slow_motion, video.fps, video.title_text);
   heading = render::rig_heading(scene, material);
   report.width = video.width;
   report.height = video.height;
@@ -337,6 +338,8 @@ void RigVideo::draw(const render::RigPose& pose, double t, double video_time, fl
         render::force_arrows(render::orbit_camera(camera, video.orbit * video_time), video.width,
                              video.height, forces, force_scale));
   render::draw_rig_overlay(renderer->overlay(), video.width, video.height, overlay_state(t));
+  if (const auto caption = render::caption_at(video.captions, t))
+    render::draw_caption(renderer->overlay(), video.width, video.height, *caption);
   if (title_opacity > 0.0f)
     render::draw_title_card(renderer->overlay(), video.width, video.height, title, title_opacity);
 }

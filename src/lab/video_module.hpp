@@ -107,7 +107,7 @@ class VideoEngine {
 std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request);
 
 // Raise when anything that crosses the seam changes.
-inline constexpr int kVideoModuleVersion = 3;
+inline constexpr int kVideoModuleVersion = 4;
 
 struct VideoModuleAbi {
   int version = kVideoModuleVersion;

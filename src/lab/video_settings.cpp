@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/text.hpp"
 #include "io/input_error.hpp"
 #include "lab/video_settings.hpp"
 #include "scene/video_format.hpp"
@@ -37,6 +38,17 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
     v.camera = *request.camera;
     v.placed.reset();
   }
+  if (request.orbit) {
+    v.orbit = *request.orbit;
+    check("--orbit", video_orbit_problem(v.orbit));
+  }
+  if (request.title) {
+    if (trim(*request.title).empty())
+      check("--title", "expected the title card's title, found an empty text");
+    v.title = true;
+    v.title_text = *request.title;
+  }
+  if (request.captions) v.captions = *request.captions;
   if (!request.video.empty()) {
     check("--video", video_file_problem(request.video));
     // A GIF is drawn small unless the command line asks otherwise: its size is what keeps it

@@ -15,6 +15,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "scene/scene.hpp"
 
@@ -31,7 +32,10 @@ struct VideoRequest {
   std::optional<int> fps;
   std::optional<double> slow_motion;
   std::optional<std::string> camera;  // a preset: front, top, sensor
-  std::string asset_dir;              // LEGO meshes and the paper's table
+  std::optional<double> orbit;        // rad per second of video
+  std::optional<std::string> title;   // the title card's title; given, it turns the card on
+  std::optional<std::vector<Caption>> captions;  // replace the scene's (an empty list: none)
+  std::string asset_dir;                         // LEGO meshes and the paper's table
 
   bool any() const { return !video.empty() || !frames.empty() || !still.empty(); }
 };

@@ -292,10 +292,10 @@ std::string format_plus_minus(double value, double uncertainty) {
 }
 
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
-                          int fps) {
+                          int fps, const std::string& title) {
   const Scene& scene = rig.scene;
   TitleCard card;
-  card.title = "The friction (Timoshenko) oscillator";
+  card.title = title.empty() ? "The friction (Timoshenko) oscillator" : title;
   card.subtitle = fmt::format("{} on {} rollers, {:.0f} K", material,
                               scene.rollers.material == "pvc" ? "PVC" : scene.rollers.material,
                               scene.friction.temperature);
@@ -450,7 +450,10 @@ void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, f
     return c;
   };
   float y = h * 0.16f;
-  o.text(card.title, Eigen::Vector2f(w / 2, y), 28 * s, faded(kWhite), TextAlign::kCenter);
+  // A long title (run --title) shrinks to the frame's width less a margin.
+  const float title_width = o.measure_text(card.title, 28 * s).width;
+  const float title_size = 28 * s * std::min(1.0f, (w - 32 * s) / std::max(1.0f, title_width));
+  o.text(card.title, Eigen::Vector2f(w / 2, y), title_size, faded(kWhite), TextAlign::kCenter);
   y += 40 * s;
   o.text(card.subtitle, Eigen::Vector2f(w / 2, y), 18 * s, faded(kTrace), TextAlign::kCenter);
   y += 34 * s;

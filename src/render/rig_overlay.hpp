@@ -85,9 +85,10 @@ struct TitleCard {
 };
 
 // The title card of a scene: the material, the rig's set-up and the video's settings.
-// `material` is the material's name as the paper writes it ("LEGO blocks").
+// `material` is the material's name as the paper writes it ("LEGO blocks"); `title` replaces the
+// default title ("The friction (Timoshenko) oscillator") unless empty.
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
-                          int fps);
+                          int fps, const std::string& title = {});
 
 // The end card: what the run measured (the estimator's T and mu_k as the results panel gives
 // them), the thick-plate theory's period, what the paper measured, the regime, and why a guard
@@ -132,7 +133,7 @@ inline constexpr float kSmallestOverlayScale = 0.5f;
 void draw_rig_overlay(Overlay& overlay, int width, int height, const RigOverlayState& state);
 
 // Draws the title card over the frame; `opacity` 0..1 fades it. At 1 it is opaque: nothing drawn
-// before it shows through.
+// before it shows through. A title wider than the frame is drawn smaller to fit.
 void draw_title_card(Overlay& overlay, int width, int height, const TitleCard& card, float opacity);
 
 // "0.794 ± 0.006": the uncertainty to one significant digit (two when it starts with 1 or 2),

@@ -70,9 +70,16 @@ std::string video_camera_problem(std::string_view preset) {
          std::string(preset) + "\"";
 }
 
+std::string video_orbit_problem(double rad_per_second) {
+  if (!std::isfinite(rad_per_second) || std::fabs(rad_per_second) > 2.0 * std::numbers::pi)
+    return "expected an orbit of at most 360 deg/s (e.g. \"10 deg/s\")";
+  return {};
+}
+
 VideoDesc read_video(const YamlNode& node) {
   node.expect_map();
-  node.allow_keys({"size", "fps", "slow_motion", "camera", "orbit", "title", "end_card"});
+  node.allow_keys(
+      {"size", "fps", "slow_motion", "camera", "orbit", "title", "end_card", "captions"});
   VideoDesc v;
   if (auto size = node.find("size")) {
     if (size->is_sequence()) {
@@ -125,11 +132,11 @@ VideoDesc read_video(const YamlNode& node) {
   }
   if (auto orbit = node.find("orbit")) {
     v.orbit = orbit->quantity(Dimension::kAngularSpeed);
-    if (!std::isfinite(v.orbit) || std::fabs(v.orbit) > 2.0 * std::numbers::pi)
-      orbit->fail("expected an orbit of at most 360 deg/s (e.g. \"10 deg/s\")");
+    fail_if(*orbit, video_orbit_problem(v.orbit));
   }
   if (auto title = node.find("title")) v.title = title->boolean();
   if (auto end_card = node.find("end_card")) v.end_card = end_card->boolean();
+  if (auto captions = node.find("captions")) v.captions = read_captions(*captions);
   return v;
 }
 

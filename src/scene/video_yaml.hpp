@@ -1,13 +1,17 @@
 // The scene's `video` part: how `frictionlab run --video/--frames/--still` draws the rig (frame
-// size, frame rate, slow motion, camera, orbit, title card). Plain structs with their defaults,
-// and the strict reader of the YAML key. The command line's --size, --fps, --slow-motion and
-// --camera override these values and go through the same checks.
+// size, frame rate, slow motion, camera, orbit, title card, captions). Plain structs with their
+// defaults, and the strict reader of the YAML key. The command line's --size, --fps,
+// --slow-motion, --camera, --orbit, --title and --captions override these values and go through
+// the same checks.
 #pragma once
 
 #include <array>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "scene/captions_yaml.hpp"
 
 namespace fl {
 
@@ -30,8 +34,10 @@ struct VideoDesc {
   std::optional<VideoCameraPlacement> placed;  // a placed camera instead of the preset
   double orbit = 0.0;                          // rad per second of video, about the vertical
                                                // through the camera's target
-  bool title = false;     // a title card (kTitleSeconds of video) before the run
-  bool end_card = false;  // an end card (kEndCardSeconds) with the run's T, mu_k and regime
+  bool title = false;             // a title card (kTitleSeconds of video) before the run
+  std::string title_text;         // the card's title (run --title); empty: the default title
+  bool end_card = false;          // an end card (kEndCardSeconds) with the run's T, mu_k and regime
+  std::vector<Caption> captions;  // subtitles at simulated times (captions_yaml.hpp)
 };
 
 // Seconds of video the title card lasts (frames rendered before the run's first frame).
@@ -46,8 +52,8 @@ inline constexpr double kGuardBannerSeconds = 2.0;
 inline constexpr std::array<std::string_view, 3> kCameraPresets = {"front", "top", "sensor"};
 
 // Reads `video:`; every error is located at its key. Keys: size ("1280x720" or [1280, 720]),
-// fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title,
-// end_card.
+// fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title, end_card,
+// captions.
 VideoDesc read_video(const YamlNode& node);
 
 // "1280x720" -> {1280, 720}; nothing for anything else.
@@ -58,5 +64,6 @@ std::string video_size_problem(int width, int height);
 std::string video_fps_problem(int fps);
 std::string video_slow_motion_problem(double factor);
 std::string video_camera_problem(std::string_view preset);
+std::string video_orbit_problem(double rad_per_second);
 
 }  // namespace fl

@@ -168,6 +168,10 @@ TEST(CliRun, AnOptionTheCommandWouldIgnoreIsRefused) {
            Case{"run " + kMinimal + " --size 640x480", "--size: error:"},
            Case{"run " + kMinimal + " --gl osmesa", "--gl: error:"},
            Case{"run " + kMinimal + " --slow-motion 2", "--slow-motion: error:"},
+           Case{"run " + kMinimal + " --orbit 10deg/s", "--orbit: error: this option shapes"},
+           Case{"run " + kMinimal + " --title Friction", "--title: error: this option shapes"},
+           Case{"run " + kMinimal + " --captions /nonexistent/captions.yaml",
+                "--captions: error: this option shapes"},
            Case{"run " + kMinimal + " --accuracy 0.01% --set world.time_step=1ms",
                 "--accuracy picks the time step"},
            Case{"accuracy " + kMinimal + " --duration 2s", "give --periods N instead"},
@@ -182,6 +186,40 @@ TEST(CliRun, AnOptionTheCommandWouldIgnoreIsRefused) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << c.args << "\n" << r.out;
   }
+}
+
+// --captions, --orbit and --title with a mistake: status 2 and a message that says where, before
+// the run (no summary printed, the still's folder not made for a bad captions file).
+TEST(CliRun, BadCaptionsOrbitOrTitleAreRefusedBeforeTheRun) {
+  const auto dir = test_dir() / "frame-options";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string captions = (dir / "captions.yaml").string();
+  std::ofstream(captions) << "captions:\n"
+                             "  - {at: 2 s, text: The rollers turn toward each other.}\n"
+                             "  - {at: 1 s, text: The weight is shared.}\n";
+  const std::string still = " --still " + (dir / "new" / "still.png").string();
+  auto r = lab("run " + kMinimal + still + " --captions " + captions);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find(captions + ":3:10: error: captions[1].at: expected a time after the "
+                                  "previous caption's (2 s), found 1 s"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "new"));
+  r = lab("run " + kMinimal + still + " --captions " + (dir / "missing.yaml").string());
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("missing.yaml: error: no such file"), std::string::npos) << r.err;
+  for (const auto& [args, message] :
+       {std::pair{" --orbit 400deg/s", "--orbit: error: expected an orbit of at most 360 deg/s"},
+        std::pair{" --orbit 10mm", "--orbit: expected a"},
+        std::pair{" --title ''", "--title: error: expected the title card's title"}}) {
+    r = lab("run " + kMinimal + still + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(message), std::string::npos) << args << "\n" << r.err;
+    EXPECT_TRUE(r.out.empty()) << args << "\n" << r.out;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRun, NoNumberWithoutASource) {

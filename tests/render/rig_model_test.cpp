@@ -385,7 +385,14 @@ TEST(RigOverlay, ValuesCarryTheirUncertaintysDigits) {
 
 TEST(RigOverlay, TheTitleCardNamesTheMaterialAndTheSetUp) {
   const TitleCard card = make_title_card(compile_rig(test::paper_rig()), "LEGO blocks", 4.0, 30);
+  EXPECT_EQ(card.title, "The friction (Timoshenko) oscillator");
   EXPECT_EQ(card.subtitle, "LEGO blocks on PVC rollers, 300 K");
+  // run --title replaces the title and nothing else.
+  const TitleCard titled =
+      make_title_card(compile_rig(test::paper_rig()), "LEGO blocks", 4.0, 30, "Friction at 77 K");
+  EXPECT_EQ(titled.title, "Friction at 77 K");
+  EXPECT_EQ(titled.subtitle, card.subtitle);
+  EXPECT_EQ(titled.lines, card.lines);
   std::string all;
   for (const std::string& line : card.lines) all += line + "\n";
   for (const char* text : {"l = 89 mm", "1600 rpm", "8:1 gearbox", "4 LEGO bricks", "2 magnets",
@@ -582,6 +589,50 @@ TEST(VideoClock, TheCommandLineOverridesTheScene) {
   VideoRequest slow;
   slow.slow_motion = 0.0;
   EXPECT_NE(message(slow).find("--slow-motion"), std::string::npos);
+}
+
+// --orbit, --title and --captions: the orbit in rad per second of video and checked as the
+// scene's, a title that turns the card on, captions that replace the scene's (none: off).
+TEST(VideoClock, TheOrbitTitleAndCaptionsFromTheCommandLine) {
+  Scene scene = test::paper_rig();
+  scene.video->title = false;
+  scene.video->captions = {{0.0, std::nullopt, "the scene's"}};
+  VideoRequest request;
+  VideoDesc v = effective_video(scene, request);
+  EXPECT_EQ(v.orbit, 0.0);
+  EXPECT_FALSE(v.title);
+  EXPECT_TRUE(v.title_text.empty());
+  ASSERT_EQ(v.captions.size(), 1u);
+  request.orbit = 10.0 * kPi / 180.0;
+  request.title = "Friction at 77 K";
+  request.captions = std::vector<Caption>{{1.0, 2.0, "one"}, {3.0, std::nullopt, "two"}};
+  v = effective_video(scene, request);
+  EXPECT_NEAR(v.orbit, 10.0 * kPi / 180.0, 1e-15);
+  EXPECT_TRUE(v.title);
+  EXPECT_EQ(v.title_text, "Friction at 77 K");
+  ASSERT_EQ(v.captions.size(), 2u);
+  EXPECT_EQ(v.captions[1].text, "two");
+  EXPECT_EQ(title_frame_count(v), 60u);  // the card is on: 2 s at 30 fps
+  request.captions = std::vector<Caption>{};
+  EXPECT_TRUE(effective_video(scene, request).captions.empty());
+  const auto message = [&](VideoRequest r) -> std::string {
+    try {
+      effective_video(scene, r);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  VideoRequest fast;
+  fast.orbit = 7.0;  // rad/s, over 360 deg/s
+  EXPECT_NE(message(fast).find("--orbit: error: expected an orbit of at most 360 deg/s"),
+            std::string::npos)
+      << message(fast);
+  VideoRequest blank;
+  blank.title = "  ";
+  EXPECT_NE(message(blank).find("--title: error: expected the title card's title"),
+            std::string::npos)
+      << message(blank);
 }
 
 // A scene with a `video` part, as the loader reads it.

@@ -1,14 +1,18 @@
 // The paper's rig drawn on each GL back end (OSMesa, EGL): a frame is not blank, the plate's pixels
 // lie where the projection of its pose says, two poses give two pictures, the overlay's text shows,
-// and each camera preset matches its golden image.
+// a caption shows as a subtitle clear of the bottom panels, and each camera preset matches its
+// golden image.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "../support/rig_fixture.hpp"
+#include "render/caption_overlay.hpp"
 #include "render/renderer.hpp"
 #include "render/rig_camera.hpp"
 #include "render/rig_overlay.hpp"
@@ -187,6 +191,91 @@ TEST_P(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
   }
   EXPECT_GT(yellow, 300u);
   EXPECT_GT(green, 30u);
+}
+
+// Where two frames differ: the bounding box of the pixels that changed.
+struct Changed {
+  int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;  // x1, y1 past the last
+  std::size_t pixels = 0;
+};
+Changed changed(const ImageView& a, const ImageView& b) {
+  Changed c;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x)
+      for (std::size_t k = 0; k < 3; ++k)
+        if (a.at(x, y)[k] != b.at(x, y)[k]) {
+          c.x0 = std::min(c.x0, x);
+          c.y0 = std::min(c.y0, y);
+          c.x1 = std::max(c.x1, x + 1);
+          c.y1 = std::max(c.y1, y + 1);
+          ++c.pixels;
+          break;
+        }
+  return c;
+}
+
+// A caption at 640x360 over the rig and the overlay: a dark box with light text, centred above
+// the Hall plot (its top at y = 256) and the results panel, which stay as they were; a long
+// caption wraps to more lines within the same width, three at most.
+TEST_P(RigRender, ACaptionIsASubtitleClearOfTheBottomPanels) {
+  const auto context = test::gl_context(GetParam(), 640, 360);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  VideoDesc video;
+  video.width = 640;
+  video.height = 360;
+  std::vector<HallPoint> hall;
+  for (int k = 0; k < 2500; ++k)
+    hall.push_back({0.5 + k * 1e-3, 512.0 + 200.0 * std::sin(k * 0.01)});
+  RigOverlayState state;
+  state.heading = "LEGO blocks on PVC rollers";
+  state.t = 3.0;
+  state.hall = hall;
+  state.estimator.pulses = 3;
+  const auto frame = [&](const std::string& caption) {
+    renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+    view.draw(pose_at(0.01, 0.5), 0.0);
+    draw_rig_overlay(renderer.overlay(), 640, 360, state);
+    if (!caption.empty()) draw_caption(renderer.overlay(), 640, 360, caption);
+    return copy_image(renderer.end_frame());
+  };
+  const Image none = frame("");
+  const std::string short_text = "The rollers turn toward each other at 1600 rpm.";
+  const std::string long_text =
+      "When the plate moves toward one roller, that roller carries more of its weight, its "
+      "friction is the larger, and the net friction pulls the plate back to the middle: a "
+      "harmonic oscillator with \xcf\x89\xc2\xb2 = 2\xce\xbc\xe2\x82\x96g/l.";
+  const Image one = frame(short_text);
+  const Image many = frame(long_text);
+  fl::test::keep_frame("rig_caption_" + GetParam(), many.view());
+  const Changed a = changed(none.view(), one.view());
+  const Changed b = changed(none.view(), many.view());
+  for (const Changed& c : {a, b}) {
+    ASSERT_GT(c.pixels, 1000u);
+    EXPECT_LE(c.y1, 256);                          // above the Hall plot and the results panel
+    EXPECT_GT(c.y0, 100);                          // in the frame's lower half, near the panels
+    EXPECT_NEAR(0.5 * (c.x0 + c.x1), 320.0, 2.0);  // centred
+    EXPECT_GT(c.x0, 40);                           // within the frame's width, with a margin
+    EXPECT_LT(c.x1, 600);
+  }
+  // The long one wraps: taller, at least twice the short one's single line, and wider.
+  EXPECT_GT(b.y1 - b.y0, 2 * (a.y1 - a.y0) - 4);
+  EXPECT_GT(b.x1 - b.x0, a.x1 - a.x0);
+  EXPECT_LE(layout_caption(renderer.overlay(), 640, 360, long_text).lines.size(), 3u);
+  // Dark behind light text: in the short caption's box most pixels are darker than without it,
+  // and some are near white where there were none.
+  std::size_t darker = 0, white = 0, white_before = 0, inside = 0;
+  for (int y = a.y0; y < a.y1; ++y)
+    for (int x = a.x0; x < a.x1; ++x) {
+      const auto p = one.at(x, y);
+      const auto q = none.at(x, y);
+      darker += p[0] + p[1] + p[2] < q[0] + q[1] + q[2];
+      white += p[0] > 220 && p[1] > 220 && p[2] > 200;
+      white_before += q[0] > 220 && q[1] > 220 && q[2] > 200;
+      ++inside;
+    }
+  EXPECT_GT(darker, inside / 2);
+  EXPECT_GT(white, white_before + 100);
 }
 
 // Each camera preset at 160x90, the rig at a fixed pose (no overlay), against

@@ -1,8 +1,9 @@
 // frictionlab run --video/--frames/--still: an MP4 that ffprobe reports as H.264 in yuv420p with
 // duration x fps x slow-motion frames (plus the title card's), exactly the expected PNG files,
-// a still; a run that asks for no frames never starts GL, opens a mesh or loads the renderer (the
-// video module and what it links); missing components, a missing or foreign video module and bad
-// options fail with status 2 and a message that names them.
+// a still; captions on the frames whose simulated time they cover; --title and --orbit; a run
+// that asks for no frames never starts GL, opens a mesh or loads the renderer (the video module
+// and what it links); missing components, a missing or foreign video module and bad options fail
+// with status 2 and a message that names them.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -407,6 +408,98 @@ TEST(RigVideo, ARunAGuardStoppedEndsOnABannerSayingWhy) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(fs::exists(dir / "normal" / "frame_000003.png"));
   EXPECT_EQ(red_rows(render::read_png((dir / "normal" / "frame_000002.png").string())), 0);
+}
+
+// The pixels where two PNG frames differ: how many, and how many of them lie outside a region.
+struct Difference {
+  int pixels = 0;
+  int outside = 0;
+};
+Difference difference(const fs::path& a, const fs::path& b, int x0, int y0, int x1, int y1) {
+  const render::Image p = render::read_png(a.string());
+  const render::Image q = render::read_png(b.string());
+  Difference d;
+  for (int y = 0; y < p.height; ++y)
+    for (int x = 0; x < p.width; ++x) {
+      const auto u = p.view().at(x, y);
+      const auto v = q.view().at(x, y);
+      if (u[0] == v[0] && u[1] == v[1] && u[2] == v[2]) continue;
+      ++d.pixels;
+      d.outside += x < x0 || x >= x1 || y < y0 || y >= y1;
+    }
+  return d;
+}
+
+// frame_000007.png
+std::string frame_name(int k) {
+  const std::string digits = std::to_string(k);
+  return "frame_" + std::string(6 - digits.size(), '0') + digits + ".png";
+}
+
+// --captions replaces the scene's narration; a caption shows while the simulated time is in it,
+// so at 2x slow motion and 10 fps (t = k / 20 s) a caption from 0.3 s to 0.5 s is on frames 6 to 9,
+// and one from 0.8 s with no end on frames 16 to the last. Those frames differ from a run without
+// captions only above the bottom panels (y < 256 at 640x360); every other frame is the same file.
+TEST(RigVideo, CaptionsShowWhileTheSimulatedTimeIsInThem) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("captions");
+  std::ofstream(dir / "captions.yaml")
+      << "captions:\n"
+         "  - {at: 0.3 s, until: 0.5 s, text: The rollers turn toward each other.}\n"
+         "  - {at: 0.8 s, text: \"The net friction pulls the plate back: \xcf\x89\xc2\xb2 = "
+         "2\xce\xbc\xe2\x82\x96g/l.\"}\n";
+  std::ofstream(dir / "none.yaml") << "captions: []\n";
+  const std::string run = "run " + kRig +
+                          " --duration 1s --fps 10 --slow-motion 2 --size 640x360 "
+                          "--set video.title=false";
+  auto r = lab(run + " --captions " + (dir / "captions.yaml").string() + " --frames " +
+               (dir / "with").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = lab(run + " --captions " + (dir / "none.yaml").string() + " --frames " +
+          (dir / "without").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (int k = 0; k < 20; ++k) {
+    const std::string name = frame_name(k);
+    const bool captioned = (k >= 6 && k <= 9) || k >= 16;
+    if (!captioned) {
+      EXPECT_EQ(test::read_text(dir / "with" / name), test::read_text(dir / "without" / name))
+          << name;
+      continue;
+    }
+    const Difference d = difference(dir / "with" / name, dir / "without" / name, 40, 100, 600, 256);
+    EXPECT_GT(d.pixels, 2000) << name;
+    EXPECT_EQ(d.outside, 0) << name;
+  }
+}
+
+// --title turns the title card on and replaces its title, and only the title: the first frame
+// differs from the scene's own card only in the title's band at the top. --orbit turns the
+// camera: the frames drift away from those of a camera that stays put.
+TEST(RigVideo, TheTitleAndTheOrbitFromTheCommandLine) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("title-orbit");
+  const std::string run = "run " + kRig + " --duration 0.2s --fps 10 --size 320x180";
+  auto r = lab(run + " --frames " + (dir / "scene").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = lab(run + " --set video.title=false --title 'Kinetic friction, measured' --frames " +
+          (dir / "titled").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("video                  22 frames (20 title)"), std::string::npos) << r.out;
+  const Difference title =
+      difference(dir / "titled" / frame_name(0), dir / "scene" / frame_name(0), 0, 0, 320, 50);
+  EXPECT_GT(title.pixels, 300);
+  EXPECT_EQ(title.outside, 0);
+
+  const std::string still = "run " + kRig + " --duration 1s --fps 10 --size 320x180 " +
+                            "--set video.title=false --frames ";
+  r = lab(still + (dir / "still").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = lab(still + (dir / "orbit").string() + " --orbit 90deg/s");
+  ASSERT_EQ(r.status, 0) << r.err;
+  // 0.9 s of video at 90 deg/s: the camera has turned 81 degrees.
+  const Difference turned =
+      difference(dir / "orbit" / frame_name(9), dir / "still" / frame_name(9), 0, 0, 0, 0);
+  EXPECT_GT(turned.pixels, 320 * 180 / 5);
 }
 
 TEST(RigVideo, ARunWithoutFramesNeverStartsGl) {

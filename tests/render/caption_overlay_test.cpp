@@ -1,0 +1,71 @@
+// Captions without GL: which caption a simulated time shows (its own `until`, else the next
+// caption's start, the last until the run's end), and how a long caption breaks into lines.
+#include "render/caption_overlay.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace fl::render {
+namespace {
+
+std::string shown(const std::vector<Caption>& captions, double t) {
+  return caption_at(captions, t).value_or("(none)");
+}
+
+TEST(CaptionAt, EachTimeShowsTheCaptionItFallsIn) {
+  const std::vector<Caption> captions = {
+      {1.0, std::nullopt, "first"},  // until the second's start
+      {3.0, 4.0, "second"},          // its own end, then a gap
+      {6.0, std::nullopt, "last"},   // until the run ends
+  };
+  EXPECT_EQ(shown(captions, 0.0), "(none)");
+  EXPECT_EQ(shown(captions, 0.999), "(none)");
+  EXPECT_EQ(shown(captions, 1.0), "first");
+  EXPECT_EQ(shown(captions, 2.999), "first");
+  EXPECT_EQ(shown(captions, 3.0), "second");
+  EXPECT_EQ(shown(captions, 3.999), "second");
+  EXPECT_EQ(shown(captions, 4.0), "(none)");
+  EXPECT_EQ(shown(captions, 5.999), "(none)");
+  EXPECT_EQ(shown(captions, 6.0), "last");
+  EXPECT_EQ(shown(captions, 1e6), "last");
+  EXPECT_EQ(shown({}, 1.0), "(none)");
+}
+
+// A frame's time is k times the rounded frame interval: at 30 fps frame 111 lands a hair below
+// 3.7 s (3.6999999999999997) and shows the caption that starts at 3.7 s.
+TEST(CaptionAt, AFrameAtACaptionsStartShowsIt) {
+  const std::vector<Caption> captions = {{0.0, std::nullopt, "before"},
+                                         {3.7, std::nullopt, "after"}};
+  const double interval = 1.0 / 30.0;
+  ASSERT_LT(111 * interval, 3.7);
+  EXPECT_EQ(shown(captions, 111 * interval), "after");
+  EXPECT_EQ(shown(captions, 110 * interval), "before");
+}
+
+// A measure of one unit a byte: lines of at most `width` bytes.
+std::vector<std::string> wrap(std::string_view text, float width) {
+  return wrap_text(text, width, [](std::string_view s) { return static_cast<float>(s.size()); });
+}
+
+TEST(WrapText, BreaksAtSpacesWithinTheWidth) {
+  EXPECT_EQ(wrap("the plate slides back to the middle", 12),
+            (std::vector<std::string>{"the plate", "slides back", "to the", "middle"}));
+  EXPECT_EQ(wrap("short", 12), (std::vector<std::string>{"short"}));
+  // Runs of spaces and the ends' spaces go; a line end in the text starts a line.
+  EXPECT_EQ(wrap("  one   two\nthree  ", 40), (std::vector<std::string>{"one two", "three"}));
+  EXPECT_EQ(wrap("a\n\nb", 40), (std::vector<std::string>{"a", "b"}));
+  EXPECT_TRUE(wrap("   ", 40).empty());
+}
+
+TEST(WrapText, AWordWiderThanTheLineIsBrokenBetweenCharacters) {
+  EXPECT_EQ(wrap("abcdefghij xy", 4), (std::vector<std::string>{"abcd", "efgh", "ij", "xy"}));
+  EXPECT_EQ(wrap("ab cdefghij", 4), (std::vector<std::string>{"ab", "cdef", "ghij"}));
+  // Never inside a character: "μ" is two bytes, so a line of 3 bytes holds one.
+  EXPECT_EQ(wrap("\xce\xbc\xce\xbc\xce\xbc", 3),
+            (std::vector<std::string>{"\xce\xbc", "\xce\xbc", "\xce\xbc"}));
+}
+
+}  // namespace
+}  // namespace fl::render

@@ -6,44 +6,20 @@
 #include <fmt/format.h>
 
 #include "core/text.hpp"
+#include "core/utf8.hpp"
 #include "io/yaml_node.hpp"
 
 namespace fl {
 namespace {
 
-// The code points of well-formed UTF-8 (no overlong forms, surrogates or values past U+10FFFF),
+// The characters of well-formed UTF-8 (no overlong forms, surrogates or values past U+10FFFF),
 // or nothing.
 std::optional<std::size_t> utf8_length(std::string_view text) {
   std::size_t count = 0;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    std::size_t extra = 0;
-    char32_t c = 0;
-    if (byte < 0x80) {
-      c = byte;
-    } else if ((byte & 0xE0) == 0xC0) {
-      extra = 1;
-      c = byte & 0x1Fu;
-    } else if ((byte & 0xF0) == 0xE0) {
-      extra = 2;
-      c = byte & 0x0Fu;
-    } else if ((byte & 0xF8) == 0xF0) {
-      extra = 3;
-      c = byte & 0x07u;
-    } else {
-      return std::nullopt;
-    }
-    if (i + extra >= text.size()) return std::nullopt;  // cut short
-    for (std::size_t k = 1; k <= extra; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if ((next & 0xC0) != 0x80) return std::nullopt;
-      c = (c << 6) | (next & 0x3Fu);
-    }
-    constexpr char32_t kSmallest[] = {0, 0x80, 0x800, 0x10000};
-    if (c < kSmallest[extra] || c > 0x10FFFF || (c >= 0xD800 && c <= 0xDFFF)) return std::nullopt;
-    ++count;
-    i += extra + 1;
+  for (std::size_t i = 0; i < text.size(); ++count) {
+    const auto character = utf8_character_at(text, i);
+    if (!character) return std::nullopt;
+    i += character->bytes;
   }
   return count;
 }

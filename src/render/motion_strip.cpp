@@ -60,13 +60,7 @@ void draw_motion_strip(Overlay& o, const Rect& panel, float s, const MotionStrip
     o.text(fmt::format("{:g}", tick.value), Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 11 * s,
            kSoft, TextAlign::kRight);
   }
-  for (const AxisTick& tick : hall_time_ticks(t0, state.t)) {
-    const float x = x_of(tick.value);
-    o.line(Eigen::Vector2f(x, area.y + area.height),
-           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, kSoft);
-    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, kSoft,
-           TextAlign::kCenter);
-  }
+  draw_time_axis(o, area, s, t0, state.t);
   // The simulation: a point every pixel or so.
   std::vector<Eigen::Vector2f> trace;
   float last_x = -1e9f;

@@ -93,13 +93,7 @@ void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayStat
     o.text(tick.label, Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 11 * s, kSoft,
            TextAlign::kRight);
   }
-  for (const AxisTick& tick : hall_time_ticks(t0, state.t)) {
-    const float x = x_of(tick.value);
-    o.line(Eigen::Vector2f(x, area.y + area.height),
-           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, kSoft);
-    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, kSoft,
-           TextAlign::kCenter);
-  }
+  draw_time_axis(o, area, s, t0, state.t);
   // Thousands of samples to a point every two pixels (at 640x360 and above), keeping the pulses:
   // in each column the sample that makes the largest triangle with the point chosen before it
   // and the next column's mean ("largest triangle three buckets").
@@ -261,6 +255,17 @@ std::vector<AxisTick> hall_time_ticks(double t0, double t1) {
   for (double k = std::ceil(std::max(0.0, t0) / step - 1e-9); k * step <= t1 + 1e-9; k += 1.0)
     ticks.push_back({k * step + 0.0, fmt::format("{:.1f}", k * step + 0.0)});  // + 0: no "-0.0"
   return ticks;
+}
+
+void draw_time_axis(Overlay& o, const Rect& area, float s, double t0, double t1) {
+  const Color soft{0.80f, 0.85f, 0.92f, 1.0f};
+  for (const AxisTick& tick : hall_time_ticks(t0, t1)) {
+    const float x = area.x + area.width * static_cast<float>((tick.value - t0) / (t1 - t0));
+    o.line(Eigen::Vector2f(x, area.y + area.height),
+           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, soft);
+    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, soft,
+           TextAlign::kCenter);
+  }
 }
 
 std::vector<AxisTick> hall_adc_ticks(double bottom, double top) {

@@ -119,6 +119,9 @@ struct AxisTick {
 };
 // The time axis from t0 to t1 [s]: every 0.5 s (1 s for windows over 5 s), none before t = 0.
 std::vector<AxisTick> hall_time_ticks(double t0, double t1);
+// Draws the time axis under a plot's `area` spanning t0 to t1 [s]: hall_time_ticks' ticks and
+// values; `s` is the overlay's scale.
+void draw_time_axis(Overlay& overlay, const Rect& area, float s, double t0, double t1);
 // The ADC axis over [bottom, top] counts: every 1, 2 or 5 times a power of ten, at most five
 // ticks.
 std::vector<AxisTick> hall_adc_ticks(double bottom, double top);

@@ -451,7 +451,7 @@ TEST(RigVideo, CaptionsShowWhileTheSimulatedTimeIsInThem) {
   std::ofstream(dir / "none.yaml") << "captions: []\n";
   const std::string run = "run " + kRig +
                           " --duration 1s --fps 10 --slow-motion 2 --size 640x360 "
-                          "--set video.title=false";
+                          "--set video.title=false --set video.end_card=false";
   auto r = lab(run + " --captions " + (dir / "captions.yaml").string() + " --frames " +
                (dir / "with").string());
   ASSERT_EQ(r.status, 0) << r.err;
@@ -478,20 +478,22 @@ TEST(RigVideo, CaptionsShowWhileTheSimulatedTimeIsInThem) {
 TEST(RigVideo, TheTitleAndTheOrbitFromTheCommandLine) {
   if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
   const fs::path dir = fresh_dir("title-orbit");
-  const std::string run = "run " + kRig + " --duration 0.2s --fps 10 --size 320x180";
+  const std::string run =
+      "run " + kRig + " --duration 0.2s --fps 10 --size 320x180 --set video.end_card=false";
   auto r = lab(run + " --frames " + (dir / "scene").string());
   ASSERT_EQ(r.status, 0) << r.err;
   r = lab(run + " --set video.title=false --title 'Kinetic friction, measured' --frames " +
           (dir / "titled").string());
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("video                  22 frames (20 title)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("video                  22 frames (20 title, 0 ending)"), std::string::npos)
+      << r.out;
   const Difference title =
       difference(dir / "titled" / frame_name(0), dir / "scene" / frame_name(0), 0, 0, 320, 50);
   EXPECT_GT(title.pixels, 300);
   EXPECT_EQ(title.outside, 0);
 
   const std::string still = "run " + kRig + " --duration 1s --fps 10 --size 320x180 " +
-                            "--set video.title=false --frames ";
+                            "--set video.title=false --set video.end_card=false --frames ";
   r = lab(still + (dir / "still").string());
   ASSERT_EQ(r.status, 0) << r.err;
   r = lab(still + (dir / "orbit").string() + " --orbit 90deg/s");

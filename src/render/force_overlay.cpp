@@ -5,13 +5,15 @@
 
 #include <fmt/format.h>
 
+#include "render/overlay_palette.hpp"
+
 namespace fl::render {
 namespace {
 
-const Color kPanel{0.05f, 0.07f, 0.10f, 0.74f};
-const Color kSoft{0.80f, 0.85f, 0.92f, 1.0f};
-const Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
-const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
+using palette::kGrid;
+using palette::kPanel;
+using palette::kSoft;
+using palette::kWhite;
 
 // The panel's layout at scale 1 (640x360).
 constexpr float kPanelWidth = 138.0f;

@@ -5,17 +5,18 @@
 
 #include <fmt/format.h>
 
+#include "render/overlay_palette.hpp"
 #include "render/rig_overlay.hpp"
 
 namespace fl::render {
 namespace {
 
-const Color kPanel{0.05f, 0.07f, 0.10f, 0.74f};
-const Color kSoft{0.80f, 0.85f, 0.92f, 1.0f};
-const Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
-const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
+using palette::kGrid;
+using palette::kPanel;
+using palette::kSoft;
+using palette::kWhite;
+
 const Color kTheory{0.45f, 0.85f, 1.0f, 0.9f};
-const Color kTurning{0.35f, 0.92f, 0.45f, 1.0f};  // the Hall plot's pulse green
 
 }  // namespace
 
@@ -93,7 +94,7 @@ void draw_motion_strip(Overlay& o, const Rect& panel, float s, const MotionStrip
   for (const double tp : state.turning_points) {
     if (tp < t0 || tp > state.t) continue;
     if (const auto x = position_at(state.simulated, tp))
-      o.dot(Eigen::Vector2f(x_of(tp), y_of(*x)), 3.0f * s, kTurning);
+      o.dot(Eigen::Vector2f(x_of(tp), y_of(*x)), 3.0f * s, palette::kPulse);
   }
   // The legend, right-aligned in the title row.
   float right = panel.x + panel.width - 6 * s;
@@ -109,7 +110,7 @@ void draw_motion_strip(Overlay& o, const Rect& panel, float s, const MotionStrip
              color);
     right = mark_x - (dot ? 3.0f : 8.0f) * s - 6 * s;
   };
-  if (!state.turning_points.empty()) entry("turning", kTurning, true);
+  if (!state.turning_points.empty()) entry("turning", palette::kPulse, true);
   if (state.theory) entry("theory", kTheory, false);
   // Under the strip: what the theory is.
   if (!state.theory_label.empty())

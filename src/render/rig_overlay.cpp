@@ -6,16 +6,19 @@
 
 #include <fmt/format.h>
 
+#include "render/overlay_palette.hpp"
+
 namespace fl::render {
 namespace {
 
-const Color kPanel{0.05f, 0.07f, 0.10f, 0.74f};
-const Color kWhite{1.0f, 1.0f, 1.0f, 1.0f};
-const Color kSoft{0.80f, 0.85f, 0.92f, 1.0f};
+using palette::kGrid;
+using palette::kPanel;
+using palette::kPulse;
+using palette::kSoft;
+using palette::kWhite;
+
 const Color kTrace{1.0f, 0.78f, 0.15f, 1.0f};
-const Color kPulse{0.35f, 0.92f, 0.45f, 1.0f};
 const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shaded
-const Color kGrid{1.0f, 1.0f, 1.0f, 0.18f};
 
 constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
 
@@ -258,12 +261,11 @@ std::vector<AxisTick> hall_time_ticks(double t0, double t1) {
 }
 
 void draw_time_axis(Overlay& o, const Rect& area, float s, double t0, double t1) {
-  const Color soft{0.80f, 0.85f, 0.92f, 1.0f};
   for (const AxisTick& tick : hall_time_ticks(t0, t1)) {
     const float x = area.x + area.width * static_cast<float>((tick.value - t0) / (t1 - t0));
     o.line(Eigen::Vector2f(x, area.y + area.height),
-           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, soft);
-    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, soft,
+           Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, kSoft);
+    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, kSoft,
            TextAlign::kCenter);
   }
 }

@@ -32,6 +32,16 @@ constexpr double kPi = std::numbers::pi;
 
 using test::paper_rig_model;
 
+// What effective_video refuses a request with, or "" when it takes it.
+std::string request_error(const Scene& scene, const VideoRequest& request) {
+  try {
+    effective_video(scene, request);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // A scene with a frame of the given parts (YAML list items) and nothing else special.
 Scene frame_scene(const std::string& parts) {
   const std::string text = R"(format: 1
@@ -566,14 +576,7 @@ TEST(VideoClock, TheCommandLineOverridesTheScene) {
   EXPECT_EQ(v.fps, 24);
   EXPECT_DOUBLE_EQ(v.slow_motion, 2.5);
   EXPECT_EQ(v.camera, "sensor");
-  const auto message = [&](VideoRequest r) -> std::string {
-    try {
-      effective_video(scene, r);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
+  const auto message = [&](const VideoRequest& r) { return request_error(scene, r); };
   VideoRequest odd;
   odd.size = std::array<int, 2>{641, 360};
   EXPECT_NE(message(odd).find("--size: error: H.264 in yuv420p needs an even width and height"),
@@ -615,14 +618,7 @@ TEST(VideoClock, TheOrbitTitleAndCaptionsFromTheCommandLine) {
   EXPECT_EQ(title_frame_count(v), 60u);  // the card is on: 2 s at 30 fps
   request.captions = std::vector<Caption>{};
   EXPECT_TRUE(effective_video(scene, request).captions.empty());
-  const auto message = [&](VideoRequest r) -> std::string {
-    try {
-      effective_video(scene, r);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
-  };
+  const auto message = [&](const VideoRequest& r) { return request_error(scene, r); };
   VideoRequest fast;
   fast.orbit = 7.0;  // rad/s, over 360 deg/s
   EXPECT_NE(message(fast).find("--orbit: error: expected an orbit of at most 360 deg/s"),

@@ -401,7 +401,8 @@ TEST(RigVideo, ARunAGuardStoppedEndsOnABannerSayingWhy) {
   EXPECT_TRUE(fs::exists(dir / "stopped" / "frame_000022.png"));
   EXPECT_FALSE(fs::exists(dir / "stopped" / "frame_000023.png"));
   EXPECT_EQ(red_rows(render::read_png((dir / "stopped" / "frame_000002.png").string())), 0);
-  // The banner is about 30 px tall at 320x180; its text leaves 18 rows mostly red (measured).
+  // The banner is 30 px tall at 320x180 (a heading and two lines of reason); its text leaves
+  // more than a third of its rows mostly red (18 measured).
   EXPECT_GT(red_rows(render::read_png((dir / "stopped" / "frame_000022.png").string())), 10);
   r = lab("run " + kRig + " --duration 0.3s --fps 10 --size 320x180 --set video.title=false " +
           "--set video.end_card=false --frames " + (dir / "normal").string());

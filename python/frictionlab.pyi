@@ -381,6 +381,9 @@ def run(
     size: Union[str, tuple[int, int], None] = None,
     slow_motion: Optional[Quantity] = None,
     camera: Optional[str] = None,
+    title: Optional[str] = None,
+    orbit: Optional[Quantity] = None,
+    captions: Optional[PathLike] = None,
 ) -> RunResult: ...
 
 # ---- the rig's estimator ----

@@ -416,7 +416,16 @@ VideoReport RigVideo::finish(const VideoEnding& ending) {
   }
   report.ending_frames = video_frame - before_ending;
   if (!request.still.empty() && started) {
-    draw(previous, previous_t, static_cast<double>(video_frame) / video.fps, 0.0f);
+    // The still turns with the orbit as the frame after the video's last would, whether or not
+    // a video is written: a still alone counts the frames the video would have had.
+    std::size_t frames_before = video_frame;
+    if (!encoder && !png) {
+      const auto reached = static_cast<std::size_t>(std::floor(previous_t / frame_interval + 1e-9));
+      frames_before = title_frames + std::min(run_frames, reached + 1) +
+                      (stopped.empty() ? 0 : guard_banner_frame_count(video)) +
+                      end_card_frame_count(video);
+    }
+    draw(previous, previous_t, static_cast<double>(frames_before) / video.fps, 0.0f);
     if (!stopped.empty())
       render::draw_guard_banner(renderer->overlay(), video.width, video.height, stopped);
     render::write_png(request.still, renderer->end_frame());

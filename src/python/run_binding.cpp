@@ -24,6 +24,7 @@
 #include "python/json_values.hpp"
 #include "python/loaded_scene.hpp"
 #include "python/record_arrays.hpp"
+#include "scene/captions_yaml.hpp"
 
 namespace fl::python {
 namespace {
@@ -70,16 +71,29 @@ void find_video_module() {
 // A frame size: "1280x720" or (1280, 720).
 using FrameSize = std::variant<std::string, std::array<int, 2>>;
 
-VideoRequest video_request(const LoadedScene& scene, const std::optional<Path>& video,
-                           const std::optional<Path>& frames, const std::optional<Path>& still,
-                           const std::optional<std::string>& gl, std::optional<int> fps,
-                           const std::optional<FrameSize>& size,
-                           const std::optional<Quantity>& slow_motion,
-                           const std::optional<std::string>& camera) {
+VideoRequest video_request(
+    const LoadedScene& scene, const std::optional<Path>& video, const std::optional<Path>& frames,
+    const std::optional<Path>& still, const std::optional<std::string>& gl, std::optional<int> fps,
+    const std::optional<FrameSize>& size, const std::optional<Quantity>& slow_motion,
+    const std::optional<std::string>& camera, const std::optional<std::string>& title,
+    const std::optional<Quantity>& orbit, const std::optional<Path>& captions) {
   VideoRequest request;
   if (video) request.video = video->string();
   if (frames) request.frames = frames->string();
   if (still) request.still = still->string();
+  // As the command line: an option that shapes frames the run does not draw is refused.
+  if (!request.any()) {
+    const std::pair<const char*, bool> frame_options[] = {
+        {"gl", gl.has_value()},         {"fps", fps.has_value()},
+        {"size", size.has_value()},     {"slow_motion", slow_motion.has_value()},
+        {"camera", camera.has_value()}, {"title", title.has_value()},
+        {"orbit", orbit.has_value()},   {"captions", captions.has_value()}};
+    for (const auto& [name, given] : frame_options)
+      if (given)
+        throw InputError(SourceLocation{name, 0, 0},
+                         "this argument shapes the frames of video, frames or still, and the run "
+                         "draws none; give one of them, or drop it");
+  }
   if (gl) request.gl = *gl;
   request.fps = fps;
   if (size) {
@@ -95,6 +109,9 @@ VideoRequest video_request(const LoadedScene& scene, const std::optional<Path>& 
   }
   request.slow_motion = optional_quantity(slow_motion, Dimension::kDimensionless, "slow_motion");
   request.camera = camera;
+  request.title = title;
+  request.orbit = optional_quantity(orbit, Dimension::kAngularSpeed, "orbit");
+  if (captions) request.captions = load_captions_file(captions->string());
   request.asset_dir = scene.source.asset_dir;
   return request;
 }
@@ -105,8 +122,9 @@ RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& 
               const std::optional<Path>& video, const std::optional<Path>& frames,
               const std::optional<Path>& still, const std::optional<std::string>& gl,
               std::optional<int> fps, const std::optional<FrameSize>& size,
-              const std::optional<Quantity>& slow_motion,
-              const std::optional<std::string>& camera) {
+              const std::optional<Quantity>& slow_motion, const std::optional<std::string>& camera,
+              const std::optional<std::string>& title, const std::optional<Quantity>& orbit,
+              const std::optional<Path>& captions) {
   LoadedScene loaded = scene_argument(scene_to_run);
   std::vector<SceneOverride> more;
   if (duration) {
@@ -119,8 +137,8 @@ RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& 
       out_folder ? std::optional(out_folder->string()) : std::nullopt;
   const std::optional<double> target =
       optional_quantity(accuracy, Dimension::kDimensionless, "accuracy");
-  const VideoRequest request =
-      video_request(loaded, video, frames, still, gl, fps, size, slow_motion, camera);
+  const VideoRequest request = video_request(loaded, video, frames, still, gl, fps, size,
+                                             slow_motion, camera, title, orbit, captions);
   if (request.any()) find_video_module();
 
   RunResult result;
@@ -402,6 +420,8 @@ void bind_run(py::module_& m) {
         py::arg("frames") = py::none(), py::arg("still") = py::none(), py::arg("gl") = py::none(),
         py::arg("fps") = py::none(), py::arg("size") = py::none(),
         py::arg("slow_motion") = py::none(), py::arg("camera") = py::none(),
+        py::arg("title") = py::none(), py::arg("orbit") = py::none(),
+        py::arg("captions") = py::none(),
         R"(Simulates a scene, as `frictionlab run SCENE` does; returns a RunResult.
 
 scene: a Scene (load_scene) or a scene file's path.
@@ -413,8 +433,10 @@ out: a folder to write what `frictionlab run --out` writes (summary.json, timing
   trajectory.csv, hall.csv, cycles.csv, as the scene's output part asks).
 accuracy: pick the largest time step whose predicted period bias is below this ("0.001%").
 record: keep the trajectory, the Hall samples and the cycles as arrays (RunResult).
-video, frames, still, gl, fps, size, slow_motion, camera: as `frictionlab run --video`
-  and its options (a build with rendering only; RuntimeError says what is missing).
+video, frames, still, gl, fps, size, slow_motion, camera, title, orbit, captions: as
+  `frictionlab run --video` and its options (orbit: "10deg/s" or rad/s; captions: a YAML file
+  with a `captions:` list, replacing the scene's); without video, frames or still they are
+  refused (a build with rendering only; RuntimeError says what is missing).
   The video module is found through $FRICTIONLAB_VIDEO_MODULE, which is set to the one
   beside this module (or the build's) when it is not set.
 

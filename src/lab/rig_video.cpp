@@ -113,6 +113,9 @@ struct RigVideo final : public VideoEngine {
   std::string theory_label;
   double x_range = 0.0;
   std::vector<double> turning_points;
+  // v against x (video.phase_portrait): the steps' (t, x, v), and the rollers' surface speed.
+  std::vector<Eigen::Vector3d> phase;
+  double slip_speed = 0.0;
 
   VideoReport report;
   std::string backend_note;  // why "auto" chose the back end it did, when it had to fall back
@@ -280,13 +283,19 @@ void RigVideo::take_motion(const VideoStep& step) {
     x_range = std::max({1e-3, 1.15 * std::fabs(step.plate_x), 1.15 * rig.amplitude_initial});
   }
   motion.emplace_back(step.t, step.plate_x);
-  // Keep what the strip shows (and a little more), dropping old points in blocks.
-  const double keep_from = step.t - 2.5 - 0.5;
-  if (motion.front().x() < keep_from - 1.0) {
-    const auto first = std::find_if(motion.begin(), motion.end(),
-                                    [&](const Eigen::Vector2d& p) { return p.x() >= keep_from; });
-    motion.erase(motion.begin(), first);
+  if (video.phase_portrait) {
+    phase.emplace_back(step.t, step.plate_x, step.plate_vx);
+    slip_speed = std::fabs(step.roller_speed) * scene.rollers.radius;
   }
+  // Keep what the strip and the portrait show (and a little more), dropping old points in blocks.
+  const double keep_from = step.t - 2.5 - 0.5;
+  const auto trim = [keep_from](auto& points) {
+    if (points.empty() || points.front().x() >= keep_from - 1.0) return;
+    points.erase(points.begin(), std::find_if(points.begin(), points.end(),
+                                              [&](const auto& p) { return p.x() >= keep_from; }));
+  };
+  trim(motion);
+  trim(phase);
 }
 
 render::RigOverlayState RigVideo::overlay_state(double t) const {
@@ -324,6 +333,16 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   m.turning_points = turning_points;
   m.x_range = x_range;
   o.motion = m;
+  if (video.phase_portrait) {
+    render::PhasePortraitState p;
+    p.t = t;
+    p.window = 2.5;
+    p.simulated = phase;
+    p.theory = theory;
+    p.slip_speed = slip_speed;
+    p.x_range = x_range;
+    o.phase = p;
+  }
   return o;
 }
 

@@ -14,14 +14,17 @@ namespace {
 using palette::kGrid;
 using palette::kPanel;
 using palette::kSoft;
+using palette::kTheory;
 using palette::kWhite;
-
-const Color kTheory{0.45f, 0.85f, 1.0f, 0.9f};
 
 }  // namespace
 
 double ThickPlateCurve::at(double t) const {
   return x0 * std::cos(omega * t) + (omega > 0.0 ? v0 / omega * std::sin(omega * t) : v0 * t);
+}
+
+double ThickPlateCurve::velocity_at(double t) const {
+  return omega > 0.0 ? -x0 * omega * std::sin(omega * t) + v0 * std::cos(omega * t) : v0;
 }
 
 std::optional<double> position_at(std::span<const Eigen::Vector2d> simulated, double t) {
@@ -77,19 +80,12 @@ void draw_motion_strip(Overlay& o, const Rect& panel, float s, const MotionStrip
   if (state.theory) {
     const double from = std::max(0.0, t0);
     const int points = std::max(2, static_cast<int>(area.width / (2.0f * s)));
-    std::vector<Eigen::Vector2f> dash;
+    std::vector<Eigen::Vector2f> curve;
     for (int i = 0; i <= points; ++i) {
       const double t = t0 + state.window * static_cast<double>(i) / points;
-      if (t < from) continue;
-      dash.emplace_back(x_of(t), y_of(state.theory->at(t)));
-      // Dashes of four points, gaps of two.
-      if (dash.size() == 4) {
-        o.polyline(dash, 1.5f * s, kTheory);
-        dash.clear();
-        i += 2;
-      }
+      if (t >= from) curve.emplace_back(x_of(t), y_of(state.theory->at(t)));
     }
-    if (dash.size() >= 2) o.polyline(dash, 1.5f * s, kTheory);
+    o.dashed_polyline(curve, 1.5f * s, kTheory);
   }
   for (const double tp : state.turning_points) {
     if (tp < t0 || tp > state.t) continue;

@@ -21,7 +21,8 @@ struct ThickPlateCurve {
   double v0 = 0.0;     // m/s
   double omega = 0.0;  // rad/s
 
-  double at(double t) const;  // m
+  double at(double t) const;           // m
+  double velocity_at(double t) const;  // m/s, dx/dt
 };
 
 struct MotionStripState {

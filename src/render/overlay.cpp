@@ -76,6 +76,12 @@ void Overlay::polyline(std::span<const Eigen::Vector2f> points, float width, con
   for (std::size_t i = 1; i < points.size(); ++i) line(points[i - 1], points[i], width, color);
 }
 
+void Overlay::dashed_polyline(std::span<const Eigen::Vector2f> points, float width,
+                              const Color& color, std::size_t on, std::size_t off) {
+  for (std::size_t first = 0; first + 1 < points.size(); first += on + off)
+    polyline(points.subspan(first, std::min(on, points.size() - first)), width, color);
+}
+
 void Overlay::dot(const Eigen::Vector2f& centre, float radius, const Color& color) {
   constexpr int kSides = 16;
   for (int i = 0; i < kSides; ++i) {

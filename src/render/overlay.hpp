@@ -53,6 +53,10 @@ class Overlay {
   void line(const Eigen::Vector2f& a, const Eigen::Vector2f& b, float width, const Color& color);
   // Joined segments through the points (a plot trace).
   void polyline(std::span<const Eigen::Vector2f> points, float width, const Color& color);
+  // The polyline dashed: `on` points drawn, `off` left out, again (a last dash of two or more
+  // points is drawn). Points a few pixels apart make even dashes.
+  void dashed_polyline(std::span<const Eigen::Vector2f> points, float width, const Color& color,
+                       std::size_t on = 4, std::size_t off = 2);
   // An arrow from `from` to `to`: a shaft `width` pixels wide and a head `head` pixels long whose
   // point is exactly `to`. Nothing for an arrow shorter than a pixel.
   void arrow(const Eigen::Vector2f& from, const Eigen::Vector2f& to, float width, float head,

@@ -105,11 +105,12 @@ Camera rig_camera(const RigModel& model, const VideoDesc& video) {
     c = fit_camera(model.outline, Eigen::Vector3f(0.0f, -0.30f, 1.0f).normalized(), 32.0f,
                    video.width, video.height, 0.08f, 0.70f);
   } else {
-    // Clear of the motion strip (top right) and the weight panel (left): the overlay's layout at
-    // 16:9 (rig_overlay.cpp).
+    // Clear of the motion strip (top right), the weight panel (left) and the phase portrait
+    // when there is one (right, under the strip): the overlay's layout at 16:9 (rig_overlay.cpp).
+    std::vector<Covered> covered = {{0.56f, 0.0f, 1.0f, 0.33f}, {0.0f, 0.0f, 0.24f, 0.56f}};
+    if (video.phase_portrait) covered.push_back({0.76f, 0.0f, 1.0f, 0.57f});
     c = fit_camera(model.outline, Eigen::Vector3f(0.30f, -1.0f, 0.75f).normalized(), 30.0f,
-                   video.width, video.height, 0.08f, 0.70f,
-                   {{0.56f, 0.0f, 1.0f, 0.33f}, {0.0f, 0.0f, 0.24f, 0.56f}});
+                   video.width, video.height, 0.08f, 0.70f, covered);
   }
   const float distance = (c.position - c.target).norm();
   c.near_plane = std::max(0.005f, 0.05f * distance);

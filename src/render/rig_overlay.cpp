@@ -439,9 +439,15 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
   // The motion against theory, top right.
   if (state.motion)
     draw_motion_strip(o, Rect{w - 276 * s, 28 * s, 268 * s, 88 * s}, s, *state.motion);
+  // The phase portrait under the strip's right end, above where two lines of caption reach.
+  if (state.phase) draw_phase_portrait(o, phase_portrait_panel(w, s), s, *state.phase);
 
   draw_hall_plot(o, Rect{8 * s, h - 104 * s, 300 * s, 96 * s}, s, state);
   draw_results(o, Rect{w - 276 * s, h - 76 * s, 268 * s, 68 * s}, s, state);
+}
+
+Rect phase_portrait_panel(float width, float s) {
+  return Rect{width - 150 * s, 122 * s, 142 * s, 80 * s};
 }
 
 void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, float opacity) {

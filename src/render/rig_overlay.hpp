@@ -15,6 +15,7 @@
 #include "render/force_overlay.hpp"
 #include "render/motion_strip.hpp"
 #include "render/overlay.hpp"
+#include "render/phase_portrait.hpp"
 #include "scene/compiled_rig.hpp"
 
 namespace fl::render {
@@ -75,6 +76,8 @@ struct RigOverlayState {
   ForceScale force_scale;
   // x(t) against theory, top right (motion_strip.hpp). None: no strip.
   std::optional<MotionStripState> motion;
+  // v against x, right, under the strip (phase_portrait.hpp). None: no portrait.
+  std::optional<PhasePortraitState> phase;
 };
 
 struct TitleCard {
@@ -129,6 +132,11 @@ std::vector<AxisTick> hall_adc_ticks(double bottom, double top);
 // The frame's scale against the 640x360 layout; below kSmallestOverlayScale (320x180) the text
 // would be too small to read, and nothing of the overlay is drawn.
 float overlay_scale(int width, int height);
+
+// Where the phase portrait goes in a frame `width` pixels wide at overlay scale `s`: under the
+// motion strip's right end, above where two lines of caption reach (at 640x360: x 490 to 632,
+// y 122 to 202).
+Rect phase_portrait_panel(float width, float s);
 inline constexpr float kSmallestOverlayScale = 0.5f;
 
 // Draws the running overlay (time, speeds, Hall plot, T and mu_k) into a width x height frame.

@@ -78,8 +78,8 @@ std::string video_orbit_problem(double rad_per_second) {
 
 VideoDesc read_video(const YamlNode& node) {
   node.expect_map();
-  node.allow_keys(
-      {"size", "fps", "slow_motion", "camera", "orbit", "title", "end_card", "captions"});
+  node.allow_keys({"size", "fps", "slow_motion", "camera", "orbit", "title", "end_card",
+                   "phase_portrait", "captions"});
   VideoDesc v;
   if (auto size = node.find("size")) {
     if (size->is_sequence()) {
@@ -136,6 +136,7 @@ VideoDesc read_video(const YamlNode& node) {
   }
   if (auto title = node.find("title")) v.title = title->boolean();
   if (auto end_card = node.find("end_card")) v.end_card = end_card->boolean();
+  if (auto phase = node.find("phase_portrait")) v.phase_portrait = phase->boolean();
   if (auto captions = node.find("captions")) v.captions = read_captions(*captions);
   return v;
 }

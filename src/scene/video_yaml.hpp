@@ -37,6 +37,7 @@ struct VideoDesc {
   bool title = false;             // a title card (kTitleSeconds of video) before the run
   std::string title_text;         // the card's title (run --title); empty: the default title
   bool end_card = false;          // an end card (kEndCardSeconds) with the run's T, mu_k and regime
+  bool phase_portrait = false;    // v against x with the theory's ellipse and the slip limit
   std::vector<Caption> captions;  // subtitles at simulated times (captions_yaml.hpp)
 };
 
@@ -53,7 +54,7 @@ inline constexpr std::array<std::string_view, 3> kCameraPresets = {"front", "top
 
 // Reads `video:`; every error is located at its key. Keys: size ("1280x720" or [1280, 720]),
 // fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title, end_card,
-// captions.
+// phase_portrait, captions.
 VideoDesc read_video(const YamlNode& node);
 
 // "1280x720" -> {1280, 720}; nothing for anything else.

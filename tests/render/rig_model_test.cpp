@@ -14,6 +14,7 @@
 #include "lab/video_settings.hpp"
 #include "render/force_overlay.hpp"
 #include "render/motion_strip.hpp"
+#include "render/phase_portrait.hpp"
 #include "render/rig_camera.hpp"
 #include "render/rig_model.hpp"
 #include "render/rig_overlay.hpp"
@@ -348,6 +349,44 @@ TEST(MotionStrip, TheTheoryIsTheThickPlatesHarmonicMotion) {
   EXPECT_FALSE(position_at({}, 0.0));
 }
 
+// The portrait's theory is the strip's curve and its derivative; its axes hold the ellipse and
+// the trace, and the slip limit when it is near.
+TEST(PhasePortrait, TheEllipseIsTheCurvesDerivativeAndTheAxesHoldIt) {
+  const double omega = 2.0 * kPi / 0.7766;
+  const ThickPlateCurve c{0.03, 0.05, omega};
+  for (const double t : {0.0, 0.1, 0.37, 0.9}) {
+    // A central difference: independent of the closed form.
+    const double h = 1e-6;
+    EXPECT_NEAR(c.velocity_at(t), (c.at(t + h) - c.at(t - h)) / (2.0 * h), 1e-7) << t;
+    // The ellipse: (x omega)^2 + v^2 is the same all the way round.
+    EXPECT_NEAR(std::pow(c.at(t) * omega, 2) + std::pow(c.velocity_at(t), 2),
+                std::pow(0.03 * omega, 2) + 0.05 * 0.05, 1e-12);
+  }
+  PhasePortraitState state;
+  state.t = 3.0;
+  state.theory = c;
+  state.x_range = 0.035;
+  const double top = std::hypot(0.03 * omega, 0.05);
+  // The paper's rig: v_r = 1.66 m/s, eight times the plate's top speed: named, not drawn.
+  state.slip_speed = 1.66;
+  PhaseAxes axes = phase_axes(state);
+  EXPECT_NEAR(axes.v_range, 1.15 * top, 1e-12);
+  EXPECT_FALSE(axes.slip_in_view);
+  EXPECT_DOUBLE_EQ(axes.x_range, 0.035);
+  // Slow rollers: the slip limit inside the ellipse's speeds joins the view.
+  state.slip_speed = 0.2;
+  axes = phase_axes(state);
+  EXPECT_TRUE(axes.slip_in_view);
+  EXPECT_NEAR(axes.v_range, 1.15 * top, 1e-12);
+  state.slip_speed = 0.5;
+  EXPECT_NEAR(phase_axes(state).v_range, 0.55, 1e-12);
+  // A trace faster than the theory widens the axes; points outside the window do not.
+  const std::vector<Eigen::Vector3d> trace{{0.1, 0.0, 0.9}, {2.0, 0.0, -0.4}, {3.0, 0.01, 0.1}};
+  state.simulated = trace;
+  state.slip_speed = 0.0;
+  EXPECT_NEAR(phase_axes(state).v_range, 1.15 * 0.4, 1e-12);
+}
+
 // The end card says what the run measured and why a guard stopped it.
 TEST(RigOverlay, TheEndCardGivesThePeriodMuKAndTheStop) {
   RigOverlayState state;
@@ -673,6 +712,8 @@ TEST(VideoKeys, AreReadWithTheirUnitsAndDefaults) {
   EXPECT_DOUBLE_EQ(d.video->slow_motion, 1.0);
   EXPECT_EQ(d.video->camera, "front");
   EXPECT_FALSE(d.video->title);
+  EXPECT_FALSE(d.video->phase_portrait);
+  EXPECT_TRUE(with_video("  phase_portrait: true\n").video->phase_portrait);
   const Scene placed =
       with_video("  camera: {position: [0.1 m, -0.3 m, 0.2 m], target: [0, 0, 0], fov: 25 deg}\n");
   ASSERT_TRUE(placed.video->placed.has_value());
@@ -708,6 +749,9 @@ TEST(VideoKeys, MistakesAreLocatedErrors) {
   EXPECT_NE(video_error("  orbit: 5 mm\n").find("video.orbit"), std::string::npos)
       << video_error("  orbit: 5 mm\n");
   EXPECT_NE(video_error("  title: maybe\n").find("expected true or false"), std::string::npos);
+  EXPECT_NE(video_error("  phase_portrait: yes please\n").find("video.phase_portrait"),
+            std::string::npos)
+      << video_error("  phase_portrait: yes please\n");
 }
 
 }  // namespace

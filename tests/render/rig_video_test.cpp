@@ -473,6 +473,22 @@ TEST(RigVideo, CaptionsShowWhileTheSimulatedTimeIsInThem) {
   }
 }
 
+// video.phase_portrait adds v against x under the motion strip and changes nothing else of the
+// frame: at 640x360 its panel spans x 490 to 632, y 122 to 202 (rig_overlay.hpp), and the
+// camera still frames the paper's rig as without it.
+TEST(RigVideo, ThePhasePortraitChangesOnlyItsPanel) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("phase");
+  const std::string run = "run " + kRig + " --duration 1s --size 640x360 --still ";
+  auto r = lab(run + (dir / "plain.png").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = lab(run + (dir / "phase.png").string() + " --set video.phase_portrait=true");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Difference d = difference(dir / "phase.png", dir / "plain.png", 490, 122, 632, 202);
+  EXPECT_GT(d.pixels, 3000);  // a panel of 142 x 80 with an ellipse, a trace and axes
+  EXPECT_EQ(d.outside, 0);
+}
+
 // --title turns the title card on and replaces its title, and only the title: the first frame
 // differs from the scene's own card only in the title's band at the top. --orbit turns the
 // camera: the frames drift away from those of a camera that stays put.

@@ -1,5 +1,6 @@
 // frictionlab run and accuracy: the JSON summary's keys, the output files and their
 // determinism, --set, --accuracy, and exit status 2 for bad scenes.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -265,6 +266,40 @@ TEST(CliRun, AnInterruptedRunKeepsAndMarksWhatItDid) {
     EXPECT_DOUBLE_EQ(j["duration_s"].get<double>(), at);
   }
   std::filesystem::remove_all(test_dir());
+}
+
+// A run that a guard stops exits with 3 and keeps every step up to the stop: rollers turning
+// outward push the plate off (no restoring force), and the outputs say when and why, with the
+// trajectory ending where the plate's centre has passed a roller.
+TEST(CliRun, AGuardStoppedRunExitsWithThreeAndKeepsItsOutputs) {
+  const std::filesystem::path out = test_dir();
+  std::filesystem::remove_all(out);
+  const std::string scene =
+      std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/rollers-outward.yaml";
+  const auto r = lab("run " + scene + " --duration 1s --json --out " + out.string());
+  EXPECT_EQ(r.status, 3) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j["failure"].is_string()) << r.out;
+  EXPECT_NE(j["failure"].get<std::string>().find("left the rollers"), std::string::npos);
+  const double stopped = j["duration_s"].get<double>();
+  EXPECT_GT(stopped, 0.0);
+  EXPECT_LT(stopped, 1.0);
+  std::ifstream in(out / "summary.json");
+  const nlohmann::json kept = nlohmann::json::parse(in);
+  EXPECT_EQ(kept["failure"], j["failure"]);
+  EXPECT_DOUBLE_EQ(kept["duration_s"].get<double>(), stopped);
+  // The trajectory holds the steps up to the stop: its last row is within a step of it, with the
+  // centre of mass beyond a roller's axis (|x| > l/2).
+  std::ifstream trajectory(out / "trajectory.csv");
+  std::string line, last;
+  while (std::getline(trajectory, line))
+    if (!line.empty()) last = line;
+  const double t = std::stod(last.substr(0, last.find(',')));
+  const std::string rest = last.substr(last.find(',') + 1);
+  const double x = std::stod(rest.substr(0, rest.find(',')));
+  EXPECT_NEAR(t, stopped, j["time_step_s"].get<double>() * 1.001) << last;
+  EXPECT_GT(std::abs(x), 0.5 * j["spacing_m"].get<double>()) << last;
+  std::filesystem::remove_all(out);
 }
 
 TEST(CliAccuracy, WritesTheStudyAndFitsTheLaw) {

@@ -33,6 +33,20 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+// Seconds of simulated time the Hall plot, the motion strip and the phase portrait span.
+constexpr double kPlotSeconds = 2.5;
+
+// Keeps what the plots show (and half a second more), dropping older points in blocks of a
+// second or more; `time_of` gives a point's time [s].
+template <typename Points, typename TimeOf>
+void drop_unshown(Points& points, double now, TimeOf time_of) {
+  const double keep_from = now - kPlotSeconds - 0.5;
+  if (points.empty() || time_of(points.front()) >= keep_from - 1.0) return;
+  points.erase(points.begin(), std::find_if(points.begin(), points.end(), [&](const auto& p) {
+                 return time_of(p) >= keep_from;
+               }));
+}
+
 // The rig's moving parts as a step left them.
 render::RigPose pose_of(const VideoStep& step) {
   render::RigPose pose;
@@ -211,13 +225,7 @@ void RigVideo::take_samples(const VideoStep& step) {
     (*hall_seen)[0] = std::min((*hall_seen)[0], adc);
     (*hall_seen)[1] = std::max((*hall_seen)[1], adc);
   }
-  // Keep what the plot shows (and a little more), dropping old samples in blocks.
-  const double keep_from = step.t - 2.5 - 0.5;
-  if (!hall.empty() && hall.front().t < keep_from - 1.0) {
-    const auto first = std::find_if(hall.begin(), hall.end(),
-                                    [&](const render::HallPoint& p) { return p.t >= keep_from; });
-    hall.erase(hall.begin(), first);
-  }
+  drop_unshown(hall, step.t, [](const render::HallPoint& p) { return p.t; });
 }
 
 void RigVideo::take_estimator(const VideoStep& step) {
@@ -287,15 +295,9 @@ void RigVideo::take_motion(const VideoStep& step) {
     phase.emplace_back(step.t, step.plate_x, step.plate_vx);
     slip_speed = std::fabs(step.roller_speed) * scene.rollers.radius;
   }
-  // Keep what the strip and the portrait show (and a little more), dropping old points in blocks.
-  const double keep_from = step.t - 2.5 - 0.5;
-  const auto trim = [keep_from](auto& points) {
-    if (points.empty() || points.front().x() >= keep_from - 1.0) return;
-    points.erase(points.begin(), std::find_if(points.begin(), points.end(),
-                                              [&](const auto& p) { return p.x() >= keep_from; }));
-  };
-  trim(motion);
-  trim(phase);
+  const auto time_of = [](const auto& p) { return p.x(); };
+  drop_unshown(motion, step.t, time_of);
+  drop_unshown(phase, step.t, time_of);
 }
 
 render::RigOverlayState RigVideo::overlay_state(double t) const {
@@ -306,7 +308,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   o.motor_speed = motor_speed;
   o.roller_speed = roller_speed;
   o.hall = hall;
-  o.hall_window = 2.5;
+  o.hall_window = kPlotSeconds;
   if (hall_seen) {
     // The range seen so far, padded, at least 40 counts tall.
     const double mid = 0.5 * ((*hall_seen)[0] + (*hall_seen)[1]);
@@ -326,7 +328,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   o.force_scale = force_scale;
   render::MotionStripState m;
   m.t = t;
-  m.window = 2.5;
+  m.window = kPlotSeconds;
   m.simulated = motion;
   m.theory = theory;
   m.theory_label = theory_label;
@@ -336,7 +338,7 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   if (video.phase_portrait) {
     render::PhasePortraitState p;
     p.t = t;
-    p.window = 2.5;
+    p.window = kPlotSeconds;
     p.simulated = phase;
     p.theory = theory;
     p.slip_speed = slip_speed;
@@ -439,7 +441,9 @@ VideoReport RigVideo::finish(const VideoEnding& ending) {
     // a video is written: a still alone counts the frames the video would have had.
     std::size_t frames_before = video_frame;
     if (!encoder && !png) {
-      const auto reached = static_cast<std::size_t>(std::floor(previous_t / frame_interval + 1e-9));
+      // The frames observe() draws: those whose instant is at most the last step's (+ 1 ns).
+      const auto reached =
+          static_cast<std::size_t>(std::floor((previous_t + 1e-9) / frame_interval));
       frames_before = title_frames + std::min(run_frames, reached + 1) +
                       (stopped.empty() ? 0 : guard_banner_frame_count(video)) +
                       end_card_frame_count(video);

@@ -58,12 +58,8 @@ void draw_motion_strip(Overlay& o, const Rect& panel, float s, const MotionStrip
     return area.y + area.height - 2.0f * s - static_cast<float>(f) * (area.height - 4.0f * s);
   };
   // The axes: millimetres on the left, simulated time below.
-  for (AxisTick tick : hall_adc_ticks(-range * 1e3, range * 1e3)) {
-    const float y = y_of(tick.value * 1e-3);
-    o.line(Eigen::Vector2f(area.x, y), Eigen::Vector2f(area.x + area.width, y), 1.0f, kGrid);
-    o.text(fmt::format("{:g}", tick.value), Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 11 * s,
-           kSoft, TextAlign::kRight);
-  }
+  draw_value_axis(
+      o, area, s, -range * 1e3, range * 1e3, [&](double mm) { return y_of(mm * 1e-3); }, 11 * s);
   draw_time_axis(o, area, s, t0, state.t);
   // The simulation: a point every pixel or so.
   std::vector<Eigen::Vector2f> trace;

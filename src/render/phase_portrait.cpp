@@ -57,21 +57,18 @@ void draw_phase_portrait(Overlay& o, const Rect& panel, float s, const PhasePort
         area.y + area.height - 2.0f * s - static_cast<float>(fv) * (area.height - 4.0f * s));
   };
   // The axes: speeds on the left (mm/s), positions below (mm), through zero.
-  for (const AxisTick& tick : hall_adc_ticks(-axes.v_range * 1e3, axes.v_range * 1e3)) {
-    const float y = to_pixel(0.0, tick.value * 1e-3).y();
-    o.line(Eigen::Vector2f(area.x, y), Eigen::Vector2f(area.x + area.width, y), 1.0f, kGrid);
-    o.text(fmt::format("{:g}", tick.value), Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 10 * s,
-           kSoft, TextAlign::kRight);
-  }
+  draw_value_axis(
+      o, area, s, -axes.v_range * 1e3, axes.v_range * 1e3,
+      [&](double mm_per_s) { return to_pixel(0.0, mm_per_s * 1e-3).y(); }, 10 * s);
   // The slip limit: dashed at +-v_r, or named under the right half when far off the scale.
   const double slip = std::fabs(state.slip_speed);
   const bool slip_named = !axes.slip_in_view && slip > 0.0;
-  for (const AxisTick& tick : hall_adc_ticks(-axes.x_range * 1e3, axes.x_range * 1e3)) {
+  for (const AxisTick& tick : value_ticks(-axes.x_range * 1e3, axes.x_range * 1e3)) {
     const float x = to_pixel(tick.value * 1e-3, 0.0).x();
     o.line(Eigen::Vector2f(x, area.y), Eigen::Vector2f(x, area.y + area.height), 1.0f, kGrid);
     if (!slip_named || tick.value <= 0.0)
-      o.text(fmt::format("{:g}", tick.value), Eigen::Vector2f(x, area.y + area.height + 1 * s),
-             10 * s, kSoft, TextAlign::kCenter);
+      o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 1 * s), 10 * s, kSoft,
+             TextAlign::kCenter);
   }
   if (axes.slip_in_view) {
     for (const double v : {slip, -slip}) {

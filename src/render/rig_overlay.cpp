@@ -90,12 +90,7 @@ void draw_hall_plot(Overlay& o, const Rect& panel, float s, const RigOverlayStat
     return area.y + area.height - 2.0f * s - static_cast<float>(f) * (area.height - 4.0f * s);
   };
   // The axes' values: counts on the left, simulated time below, with faint grid lines.
-  for (const AxisTick& tick : hall_adc_ticks(range[0], range[1])) {
-    const float y = y_of(tick.value);
-    o.line(Eigen::Vector2f(area.x, y), Eigen::Vector2f(area.x + area.width, y), 1.0f, kGrid);
-    o.text(tick.label, Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), 11 * s, kSoft,
-           TextAlign::kRight);
-  }
+  draw_value_axis(o, area, s, range[0], range[1], y_of, 11 * s);
   draw_time_axis(o, area, s, t0, state.t);
   // Thousands of samples to a point every two pixels (at 640x360 and above), keeping the pulses:
   // in each column the sample that makes the largest triangle with the point chosen before it
@@ -270,7 +265,7 @@ void draw_time_axis(Overlay& o, const Rect& area, float s, double t0, double t1)
   }
 }
 
-std::vector<AxisTick> hall_adc_ticks(double bottom, double top) {
+std::vector<AxisTick> value_ticks(double bottom, double top) {
   std::vector<AxisTick> ticks;
   const double span = top - bottom;
   if (!(span > 0.0) || !std::isfinite(span)) return ticks;
@@ -283,8 +278,18 @@ std::vector<AxisTick> hall_adc_ticks(double bottom, double top) {
     }
   }
   for (double k = std::ceil(bottom / step - 1e-9); k * step <= top + 1e-9; k += 1.0)
-    ticks.push_back({k * step + 0.0, fmt::format("{:.0f}", k * step + 0.0)});
+    ticks.push_back({k * step + 0.0, fmt::format("{:g}", k * step + 0.0)});  // + 0: no "-0"
   return ticks;
+}
+
+void draw_value_axis(Overlay& o, const Rect& area, float s, double bottom, double top,
+                     const std::function<float(double)>& row_of, float text_size) {
+  for (const AxisTick& tick : value_ticks(bottom, top)) {
+    const float y = row_of(tick.value);
+    o.line(Eigen::Vector2f(area.x, y), Eigen::Vector2f(area.x + area.width, y), 1.0f, kGrid);
+    o.text(tick.label, Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), text_size, kSoft,
+           TextAlign::kRight);
+  }
 }
 
 std::string format_plus_minus(double value, double uncertainty) {

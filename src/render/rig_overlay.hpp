@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -117,7 +118,7 @@ ResultsText results_text(const RigOverlayState& state);
 
 // A labelled tick of the Hall plot's axes.
 struct AxisTick {
-  double value = 0.0;  // s or ADC counts
+  double value = 0.0;  // s, ADC counts, mm or mm/s
   std::string label;
 };
 // The time axis from t0 to t1 [s]: every 0.5 s (1 s for windows over 5 s), none before t = 0.
@@ -125,9 +126,15 @@ std::vector<AxisTick> hall_time_ticks(double t0, double t1);
 // Draws the time axis under a plot's `area` spanning t0 to t1 [s]: hall_time_ticks' ticks and
 // values; `s` is the overlay's scale.
 void draw_time_axis(Overlay& overlay, const Rect& area, float s, double t0, double t1);
-// The ADC axis over [bottom, top] counts: every 1, 2 or 5 times a power of ten, at most five
-// ticks.
-std::vector<AxisTick> hall_adc_ticks(double bottom, double top);
+// A value axis over [bottom, top] (the Hall plot's counts, the strip's millimetres, the phase
+// portrait's mm and mm/s): every 1, 2 or 5 times a power of ten, at most five ticks, labelled
+// "500", "0.5".
+std::vector<AxisTick> value_ticks(double bottom, double top);
+// Draws value_ticks(bottom, top) on a plot's `area`: a faint grid line across at the row
+// `row_of(value)` gives and the value left of the area, `text_size` pixels high; `s` is the
+// overlay's scale.
+void draw_value_axis(Overlay& overlay, const Rect& area, float s, double bottom, double top,
+                     const std::function<float(double)>& row_of, float text_size);
 
 // The frame's scale against the 640x360 layout; below kSmallestOverlayScale (320x180) the text
 // would be too small to read, and nothing of the overlay is drawn.

@@ -527,10 +527,12 @@ TEST(RigOverlay, TheHallPlotsAxesCarryValues) {
   EXPECT_EQ(labels(hall_time_ticks(-2.5, 0.6)), "0.0 0.5 ");
   EXPECT_EQ(labels(hall_time_ticks(0.0, 10.0)), "0.0 1.0 2.0 3.0 4.0 5.0 6.0 7.0 8.0 9.0 10.0 ");
   // Counts: 1, 2 or 5 times a power of ten, inside the range.
-  EXPECT_EQ(labels(hall_adc_ticks(474.0, 746.0)), "500 600 700 ");
-  EXPECT_EQ(labels(hall_adc_ticks(492.0, 532.0)), "500 510 520 530 ");
-  EXPECT_EQ(labels(hall_adc_ticks(0.0, 1023.0)), "0 500 1000 ");
-  EXPECT_TRUE(hall_adc_ticks(5.0, 5.0).empty());
+  EXPECT_EQ(labels(value_ticks(474.0, 746.0)), "500 600 700 ");
+  EXPECT_EQ(labels(value_ticks(492.0, 532.0)), "500 510 520 530 ");
+  EXPECT_EQ(labels(value_ticks(0.0, 1023.0)), "0 500 1000 ");
+  // Millimetres of a small swing: steps below one keep their decimals.
+  EXPECT_EQ(labels(value_ticks(-0.6, 0.6)), "-0.5 0 0.5 ");
+  EXPECT_TRUE(value_ticks(5.0, 5.0).empty());
 }
 
 TEST(RigOverlay, TheTopBarNamesTheTemperatureTheSceneSets) {

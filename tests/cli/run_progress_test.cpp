@@ -1,0 +1,147 @@
+// frictionlab run's progress line: on a terminal, a run past 3 s of wall time says how far it is
+// ("run: t = X of D s (P %)", rewritten in place); on a pipe it says nothing, however long it
+// runs. Each run is a long minimal-scene run stopped with SIGINT once the test has what it needs.
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "../support/run_command.hpp"
+
+namespace fl {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+const std::string kExe = FRICTIONLAB_EXE;
+const std::string kScene = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+constexpr double kDurationS = 1e6;  // far longer than any test waits: every run here is stopped
+
+// Starts `frictionlab run minimal.yaml --duration 1e6s` with stdout to `out_path` and stderr to
+// `stderr_fd`; returns the child's pid.
+pid_t start_run(const std::filesystem::path& out_path, int stderr_fd) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int out = ::open(out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(out, 1);
+    ::dup2(stderr_fd, 2);
+    std::vector<std::string> all = {kExe, "run", kScene, "--duration", "1000000s"};
+    std::vector<char*> argv;
+    for (std::string& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(kExe.c_str(), argv.data());
+    ::_exit(127);
+  }
+  return child;
+}
+
+int stop_and_wait(pid_t child) {
+  ::kill(child, SIGINT);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+// The wall time the run's own summary reports ("... simulated in W s: ..."), or -1.
+double wall_seconds(const std::string& summary) {
+  std::smatch m;
+  if (!std::regex_search(summary, m, std::regex(R"(simulated in ([0-9.]+) s)"))) return -1.0;
+  return std::stod(m[1]);
+}
+
+class RunProgress : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("fl-progress-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    if (child_ > 0) {
+      ::kill(child_, SIGKILL);
+      ::waitpid(child_, nullptr, 0);
+    }
+    std::filesystem::remove_all(dir_);
+  }
+  std::filesystem::path dir_;
+  pid_t child_ = -1;
+};
+
+TEST_F(RunProgress, OnATerminalARunPastThreeSecondsSaysHowFarItIs) {
+  const int master = ::posix_openpt(O_RDWR | O_NOCTTY);
+  ASSERT_GE(master, 0);
+  ASSERT_EQ(::grantpt(master), 0);
+  ASSERT_EQ(::unlockpt(master), 0);
+  const int terminal = ::open(::ptsname(master), O_RDWR | O_NOCTTY);
+  ASSERT_GE(terminal, 0);
+  const auto started = Clock::now();
+  child_ = start_run(dir_ / "out", terminal);
+  ::close(terminal);
+
+  // Read the terminal until two progress updates have come (or 60 s, for a slow build).
+  const std::regex line(R"(\r\x1b\[Krun: t = ([0-9.]+) of ([0-9.]+) s \(([0-9]+) %\))");
+  std::string seen;
+  std::vector<double> times;
+  std::chrono::duration<double> first_after{0.0};
+  while (times.size() < 2 && Clock::now() - started < std::chrono::seconds(60)) {
+    pollfd p{master, POLLIN, 0};
+    if (::poll(&p, 1, 100) <= 0) continue;
+    char buffer[1024];
+    const ssize_t n = ::read(master, buffer, sizeof buffer);
+    if (n <= 0) break;
+    seen.append(buffer, static_cast<std::size_t>(n));
+    times.clear();
+    for (auto it = std::sregex_iterator(seen.begin(), seen.end(), line);
+         it != std::sregex_iterator(); ++it) {
+      const std::smatch& m = *it;
+      if (times.empty()) first_after = Clock::now() - started;
+      const double t = std::stod(m[1]);
+      EXPECT_DOUBLE_EQ(std::stod(m[2]), kDurationS);
+      EXPECT_EQ(std::stoi(m[3]), static_cast<int>(std::lround(100.0 * t / kDurationS)));
+      times.push_back(t);
+    }
+  }
+  const int status = stop_and_wait(child_);
+  child_ = -1;
+  ::close(master);
+  ASSERT_EQ(times.size(), 2u) << "what the terminal showed:\n" << seen;
+  EXPECT_GT(times[0], 0.0);
+  EXPECT_GT(times[1], times[0]) << "the second update is later in the run";
+  // Nothing before 3 s of wall time (measured here from before the start, so it is an upper
+  // bound on the run's own clock).
+  EXPECT_GE(first_after.count(), 3.0);
+  EXPECT_EQ(status, 130);
+  EXPECT_NE(test::read_text(dir_ / "out").find("INTERRUPTED"), std::string::npos);
+}
+
+TEST_F(RunProgress, OnAPipeALongRunSaysNothingUntilItEnds) {
+  const int err = ::open((dir_ / "err").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  ASSERT_GE(err, 0);
+  child_ = start_run(dir_ / "out", err);
+  ::close(err);
+  std::this_thread::sleep_for(std::chrono::milliseconds(4500));
+  const int status = stop_and_wait(child_);
+  child_ = -1;
+  EXPECT_EQ(status, 130);
+  const std::string out = test::read_text(dir_ / "out");
+  // The run itself lasted past the 3 s after which a terminal would have shown progress.
+  EXPECT_GT(wall_seconds(out), 3.25) << out;
+  const std::string said = test::read_text(dir_ / "err");
+  EXPECT_EQ(said.find("run: t ="), std::string::npos) << said;
+  EXPECT_EQ(said.find('\r'), std::string::npos) << said;
+}
+
+}  // namespace
+}  // namespace fl

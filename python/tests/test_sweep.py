@@ -86,3 +86,13 @@ def test_a_finished_sweep_is_not_run_again(sweeps):
     for name in columns:
         assert np.ma.allequal(again[name], columns[name]) if not isinstance(columns[name], list) \
             else again[name] == columns[name]
+
+
+def test_progress_counts_invalid_points_apart_from_failed(sweeps):
+    folder, _, _ = sweeps
+    seen = []
+    fl.sweep(folder / "tiny.yaml", jobs=2, out=folder / "progress", progress=seen.append)
+    last = seen[-1]
+    assert last["done"] == last["total"] == 6
+    # The two 5 mm points: the scene refuses a spacing shorter than the rollers' diameter.
+    assert last["invalid"] == 2 and last["failed"] == 0

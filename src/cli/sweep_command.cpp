@@ -41,7 +41,8 @@ class ProgressReport {
     const std::size_t left = p.total - p.done;
     const std::string eta =
         rate > 0.0 ? clock_text(static_cast<double>(left) / rate) : std::string("?");
-    const std::string failed = p.failed ? fmt::format(", {} failed", p.failed) : "";
+    const std::string failed = (p.failed ? fmt::format(", {} failed", p.failed) : "") +
+                               (p.invalid ? fmt::format(", {} invalid", p.invalid) : "");
     const std::string stopping = p.stopping ? "  stopping: finishing the running points" : "";
     if (tty_) {
       constexpr int kWidth = 28;

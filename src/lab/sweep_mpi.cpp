@@ -106,7 +106,7 @@ SweepOutcome run_root(const SweepSpec& spec, const SweepRunOptions& options,
     ++outcome.ran;
     ++progress.done;
     wall_sum += r.wall_s;
-    if (r.row.value("status", "failed") != "ok") ++progress.failed;
+    count_no_result(r.row, progress);
   };
 
   std::deque<std::size_t> queue(pending.begin(), pending.end());

@@ -159,6 +159,14 @@ std::vector<std::size_t> pending_points(std::size_t count, const std::optional<S
   return out;
 }
 
+void count_no_result(const nlohmann::json& row, SweepProgress& progress) {
+  const std::string status = row.value("status", "failed");
+  if (status == "invalid")
+    ++progress.invalid;
+  else if (status != "ok")
+    ++progress.failed;
+}
+
 void finish_sweep(const SweepStore& store, SweepOutcome& outcome, double point_wall_sum) {
   const auto points = store.load_points();
   outcome.complete = points.size() == store.point_count();
@@ -242,7 +250,7 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
         ++outcome.ran;
         ++progress.done;
         wall_sum += r.wall_s;
-        if (r.row.value("status", "failed") != "ok") ++progress.failed;
+        count_no_result(r.row, progress);
       }
       if (options.stop != nullptr && options.stop->load() && !progress.stopping) {
         progress.stopping = true;

@@ -59,7 +59,8 @@ struct SweepProgress {
   std::size_t total = 0;    // points this run answers for (its shard)
   std::size_t done = 0;     // of those, finished, counting those found done
   std::size_t resumed = 0;  // found done when the run started
-  std::size_t failed = 0;   // run now and invalid or failed
+  std::size_t failed = 0;   // run now, and a guard stopped the run (status "failed")
+  std::size_t invalid = 0;  // run now, and the scene refused the point's values ("invalid")
   double elapsed_s = 0.0;   // since this run started
   bool stopping = false;    // an interrupt: running points finish, no new ones start
 };
@@ -116,6 +117,9 @@ std::vector<std::size_t> pending_points(std::size_t count, const std::optional<S
 // Fills `outcome` from the folder's points; writes the final files (and sets complete) when
 // every point is there; writes timing.json.
 void finish_sweep(const SweepStore& store, SweepOutcome& outcome, double point_wall_sum);
+// Counts a point just run in `progress` by its row's status: failed or invalid (ok counts in
+// neither).
+void count_no_result(const nlohmann::json& row, SweepProgress& progress);
 
 // Whether this process was started by mpirun (or another MPI launcher), and with how many ranks
 // (0 when not).

@@ -91,7 +91,7 @@ py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Pa
       if (!progress.is_none())
         progress(py::dict(py::arg("total") = p.total, py::arg("done") = p.done,
                           py::arg("resumed") = p.resumed, py::arg("failed") = p.failed,
-                          py::arg("elapsed_s") = p.elapsed_s));
+                          py::arg("invalid") = p.invalid, py::arg("elapsed_s") = p.elapsed_s));
     } catch (py::error_already_set& e) {
       interrupted = std::move(e);
       stop = true;
@@ -136,7 +136,8 @@ jobs: worker threads (default: every core). out: the sweep's folder (default
 out/sweep/NAME, as the command's), where plan.json, points/, results.csv and sweep.json are
 written; points found done there are not run again (fresh=True discards them). shard: "K/N"
 runs the points whose index % N == K-1. progress: called as points finish with a dict
-(total, done, resumed, failed, elapsed_s). Ctrl-C stops handing out points; the running
+(total, done, resumed, failed, invalid, elapsed_s: failed, a guard stopped the run;
+invalid, the scene refused the point's values). Ctrl-C stops handing out points; the running
 ones finish and are kept, and KeyboardInterrupt is raised.
 
 Returns the rows of every finished point in the folder, in point order, as columns

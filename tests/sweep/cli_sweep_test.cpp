@@ -272,6 +272,12 @@ TEST(CliSweep, PointsWithoutAResultExitWithStatusThreeAndEveryRowIsWritten) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find((out / "results.csv").string()), std::string::npos) << r.err;
+  // The progress line (stderr on a pipe: a line as points finish, the last at 4/4) tells the two
+  // kinds apart as the summary does.
+  const std::size_t last = r.err.find("4/4 points");
+  ASSERT_NE(last, std::string::npos) << r.err;
+  const std::string line = r.err.substr(last, r.err.find('\n', last) - last);
+  EXPECT_NE(line.find(" left, 1 failed, 2 invalid"), std::string::npos) << line;
   EXPECT_NE(r.out.find("status: 1 failed, 2 invalid, 1 ok"), std::string::npos) << r.out;
   // The results are written whole: a row for every point, failed ones with their error.
   EXPECT_EQ(csv_rows(out / "results.csv"), 4u);

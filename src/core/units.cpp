@@ -103,8 +103,8 @@ std::span<const Unit> units_of(Dimension dimension) {
                        std::string_view why) {
   std::string message;
   message += quantity;
-  message += ": expected a ";
-  message += dimension_name(dimension);
+  message += ": expected ";
+  message += dimension_with_article(dimension);
   message += " (a number with one of the units: ";
   message += accepted_units(dimension);
   message += "), found \"";
@@ -194,6 +194,12 @@ std::string_view dimension_name(Dimension dimension) {
   return "quantity";
 }
 
+std::string dimension_with_article(Dimension dimension) {
+  const std::string_view name = dimension_name(dimension);
+  const bool vowel = std::string_view("aeiou").find(name.front()) != std::string_view::npos;
+  return std::string(vowel ? "an " : "a ").append(name);
+}
+
 std::string accepted_units(Dimension dimension) {
   std::string list;
   for (const Unit& unit : units_of(dimension)) {
@@ -217,8 +223,8 @@ double parse_quantity(std::string_view text, Dimension dimension, std::string_vi
   if (unit == nullptr) {
     std::string why = "unknown unit \"";
     why += symbol;
-    why += "\" for a ";
-    why += dimension_name(dimension);
+    why += "\" for ";
+    why += dimension_with_article(dimension);
     fail(dimension, text, quantity, why);
   }
   const double si = number.value * unit->scale + unit->offset;

@@ -40,6 +40,8 @@ class UnitError : public std::invalid_argument {
 
 // "length", "angular speed", ...
 std::string_view dimension_name(Dimension dimension);
+// The name with its indefinite article: "a length", "an angular speed".
+std::string dimension_with_article(Dimension dimension);
 
 // The units accepted for a dimension, as a human list: "m, cm, mm, um, km".
 std::string accepted_units(Dimension dimension);

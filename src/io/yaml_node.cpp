@@ -129,7 +129,7 @@ std::string YamlNode::text() const {
 
 double YamlNode::quantity(Dimension dimension) const {
   if (!node_.IsScalar())
-    fail("expected a " + std::string(dimension_name(dimension)) + ", found " + found_text(node_));
+    fail("expected " + dimension_with_article(dimension) + ", found " + found_text(node_));
   try {
     return parse_quantity(node_.Scalar(), dimension, "");
   } catch (const UnitError& e) {
@@ -140,7 +140,7 @@ double YamlNode::quantity(Dimension dimension) const {
 
 Measured YamlNode::measured(Dimension dimension) const {
   if (!node_.IsScalar())
-    fail("expected a " + std::string(dimension_name(dimension)) + " with its uncertainty, found " +
+    fail("expected " + dimension_with_article(dimension) + " with its uncertainty, found " +
          found_text(node_));
   try {
     return parse_measured(node_.Scalar(), dimension, "");

@@ -104,6 +104,14 @@ TEST(UnitsErrors, WrongUnitNamesQuantityTextAndAcceptedUnits) {
   EXPECT_NE(message.find("unknown unit \"kg\""), std::string::npos) << message;
 }
 
+TEST(UnitsErrors, TheDimensionTakesItsArticle) {
+  EXPECT_EQ(error_of("3 m", Dimension::kAngularSpeed, "rollers.speed"),
+            "rollers.speed: expected an angular speed (a number with one of the units: rad/s, "
+            "rpm, rev/s, deg/s), found \"3 m\": unknown unit \"m\" for an angular speed");
+  EXPECT_EQ(dimension_with_article(Dimension::kLength), "a length");
+  EXPECT_EQ(dimension_with_article(Dimension::kAcceleration), "an acceleration");
+}
+
 TEST(UnitsErrors, EveryBadTextIsRefused) {
   for (const char* bad : {"", "   ", "mm", "abc", "89 mmm", "89 MM", "1600 rmp", "nan", "inf m",
                           "1e999 m", "89 mm extra", "--3 mm", "0x10 mm"}) {

@@ -240,6 +240,17 @@ TEST(PartCatalogErrors, TheSmallIndexIsValid) {
   EXPECT_DOUBLE_EQ(block.boxes.at(0).size[2], 0.0096);
 }
 
+TEST(PartCatalogErrors, LengthsAndMassesTakeUnits) {
+  // docs/lego-parts.md: numbers are SI, and the reader takes lengths and masses with units too.
+  std::string text = replaced("mass: 0.00105", "mass: 1.05 g");
+  text.replace(text.find("[0.0039, 0.0039, 0.0113]"), 24, "[3.9 mm, 3.9 mm, 11.3 mm]");
+  const PartCatalog c = parse_part_catalog(text, "idx.yaml", "parts");
+  const PartCatalog si = parse_part_catalog(kIndex, "idx.yaml", "parts");
+  EXPECT_DOUBLE_EQ(c.at("block").mass, si.at("block").mass);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_DOUBLE_EQ(c.at("block").bounds.max[i], si.at("block").bounds.max[i]);
+}
+
 TEST(PartCatalogErrors, AreLocatedAtTheirLine) {
   EXPECT_EQ(error_of(replaced("    color:", "    colr:")),
             "idx.yaml:6:5: error: parts[0].colr: unknown key; did you mean 'color'?");

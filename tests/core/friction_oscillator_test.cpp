@@ -147,6 +147,22 @@ TEST(FrictionOscillator, FullSlipSpeedForCoulombIsAOmegaWhateverMuS) {
               roller_speed_for_full_slip(0.03, 0.01, kL, 0.29, 0.0025, kG), 1e-10);
 }
 
+TEST(FrictionOscillator, AFallingLawLowersTheThresholdARisingOneRaisesIt) {
+  // docs/friction-laws.md: at the rig's 30 mm (10 mm rollers, h_c 2.5 mm), 231 rpm for Coulomb,
+  // 226 rpm for beta = -0.05 s/m and 236 rpm for +0.05 s/m. Independently: a linear law's mu at
+  // v_r is mu_k + beta v_r, so the root satisfies v = A Omega(mu_k + beta v) by fixed point.
+  constexpr double kRpm = 2.0 * kPi / 60.0;
+  const PlateOnRollers plate = plate_with(0.0025);
+  for (const auto& [beta, rpm] : {std::pair{-0.05, 226.0}, {0.0, 231.0}, {0.05, 236.0}}) {
+    double v = 0.03 * angular_frequency(kL, 0.29, 0.0025, kG);
+    for (int i = 0; i < 100; ++i) v = 0.03 * angular_frequency(kL, 0.29 + beta * v, 0.0025, kG);
+    const double speed =
+        full_slip_roller_speed(stribeck(0.29, 0.29, 0.01, beta), plate, 0.03, 0.01);
+    EXPECT_NEAR(speed, v / 0.01, 1e-9 * speed) << beta;
+    EXPECT_NEAR(speed / kRpm, rpm, 0.5) << beta;
+  }
+}
+
 TEST(FrictionOscillator, FullSlipSpeedSolvesVEqualsAOmegaOfMuOfV) {
   for (const FrictionLaw& law :
        {stribeck(0.29, 0.29, 0.01, 0.3), stribeck(0.29, 0.29, 0.01, -0.2),
@@ -341,6 +357,7 @@ TEST(GrowthRate, AveragedMotionPredictsTheSlipLimitCycle) {
     (averaged_growth_rate(law, plate, v_r, mid) > 0.0 ? lo : hi) = mid;
   }
   const double settled = 0.5 * (lo + hi);
+  EXPECT_NEAR(settled, 3.135e-3, 0.5e-6) << "docs/friction-laws.md's 3.135 mm";
   const double period = averaged_period(law, plate, v_r, settled);
   for (double start : {0.3 * reach, 0.9 * reach}) {
     const ReferenceRun run =

@@ -60,7 +60,7 @@ Slowest slowest(const std::vector<RampPoint>& ramp) {
   return s;
 }
 
-TEST(RollerRamp, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipForGood) {
+TEST(RampRoundTrip, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipForGood) {
   const RampRun r = run_ramp({});
   ASSERT_FALSE(r.summary.failure) << *r.summary.failure;
   ASSERT_EQ(r.rig.friction.mu_s, r.rig.friction.mu_k);
@@ -106,7 +106,7 @@ TEST(RollerRamp, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipForGo
   EXPECT_EQ(r.summary.regime, Regime::kClipped) << r.summary.regime_evidence;
 }
 
-TEST(RollerRamp, WithStaticFrictionTheStickSlipCycleFollowsTheSpeedUpToTipping) {
+TEST(RampRoundTrip, WithStaticFrictionTheStickSlipCycleFollowsTheSpeedUpToTipping) {
   const RampRun r = run_ramp({{"friction", "{law: coulomb, mu_k: 0.29, mu_s: 0.348}"}});
   ASSERT_FALSE(r.summary.failure) << *r.summary.failure;
   const Ramp ramp(r.scene.rollers.speed_ramp);

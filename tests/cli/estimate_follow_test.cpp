@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_folder.hpp"
 
 namespace fl {
 namespace {
@@ -30,13 +31,11 @@ using Clock = std::chrono::steady_clock;
 const std::string kExe = FRICTIONLAB_EXE;
 const std::string kSource = FRICTIONLAB_TEST_SOURCE_DIR;
 
-class Follow : public ::testing::Test {
+class Follow : public test::TempFolderTest {
  protected:
+  Follow() : TempFolderTest("fl-follow") {}
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("fl-follow-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
+    TempFolderTest::SetUp();
     master_ = ::posix_openpt(O_RDWR | O_NOCTTY);
     ASSERT_GE(master_, 0);
     ASSERT_EQ(::grantpt(master_), 0);
@@ -50,7 +49,7 @@ class Follow : public ::testing::Test {
     }
     if (out_ >= 0) ::close(out_);
     if (master_ >= 0) ::close(master_);
-    std::filesystem::remove_all(dir_);
+    TempFolderTest::TearDown();
   }
 
   // Starts `frictionlab estimate --follow PORT ARGS`, its stdout on a pipe, stderr to a file.
@@ -120,7 +119,6 @@ class Follow : public ::testing::Test {
     return out;
   }
 
-  std::filesystem::path dir_;
   std::string port_;
   int master_ = -1;
   int out_ = -1;

@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include "../support/run_command.hpp"
+#include "../support/temp_folder.hpp"
 
 namespace fl {
 namespace {
@@ -82,22 +83,16 @@ std::vector<Update> updates(const std::string& shown) {
   return out;
 }
 
-class RunProgress : public ::testing::Test {
+class RunProgress : public test::TempFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("fl-progress-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
+  RunProgress() : TempFolderTest("fl-progress") {}
   void TearDown() override {
     if (child_ > 0) {
       ::kill(child_, SIGKILL);
       ::waitpid(child_, nullptr, 0);
     }
-    std::filesystem::remove_all(dir_);
+    TempFolderTest::TearDown();
   }
-  std::filesystem::path dir_;
   pid_t child_ = -1;
 };
 

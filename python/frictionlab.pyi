@@ -239,9 +239,10 @@ class DriveReport:
     motor_torque: float
     roller_speeds: list[float]
     gearbox_ratio: float
-    speed_ratio: float
-    speed_ratio_error: float
-    senses_opposite: bool
+    turning_fraction: float
+    speed_ratio: Optional[float]
+    speed_ratio_error: Optional[float]
+    senses_opposite: Optional[bool]
     load_torque: float
 
 class WarmingWindow:

@@ -105,6 +105,7 @@ def summary_keys(r):
             "motor_torque_n_m": d.motor_torque,
             "roller_speeds_rad_s": list(d.roller_speeds),
             "gearbox_ratio": d.gearbox_ratio,
+            "turning_fraction": d.turning_fraction,
             "speed_ratio": d.speed_ratio,
             "speed_ratio_error": d.speed_ratio_error,
             "senses_opposite": d.senses_opposite,

@@ -17,6 +17,9 @@ inline nlohmann::json json_or_null(const std::optional<double>& value) {
 inline nlohmann::json json_or_null(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
+inline nlohmann::json json_or_null(const std::optional<bool>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
 inline nlohmann::json json_or_null(const std::optional<std::string>& value) {
   return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
 }

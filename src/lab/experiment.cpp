@@ -75,12 +75,14 @@ class DriveStats {
     motor_torque_ += d.motor_torque;
     roller_[0] += d.roller_speeds[0];
     roller_[1] += d.roller_speeds[1];
-    if (d.motor_speed != 0.0) {
+    // A stalled train has no ratio and no senses: only the steps in which all three turn count.
+    if (d.motor_speed != 0.0 && d.roller_speeds[0] != 0.0 && d.roller_speeds[1] != 0.0) {
+      ++turning_;
       const double ratio = std::fabs(d.roller_speeds[0] / d.motor_speed);
       ratio_ += ratio;
       ratio_error_ = std::max(ratio_error_, std::fabs(ratio / design_ratio_ - 1.0));
+      opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
     }
-    opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
     // The plate's friction F_i (on the plate, along x) acts back on roller i's top: torque
     // -a F_i about y; counted positive when it opposes the roller's turning.
     for (int i = 0; i < 2; ++i) {
@@ -96,16 +98,19 @@ class DriveStats {
     r.motor_torque = motor_torque_ / n;
     r.roller_speeds = {roller_[0] / n, roller_[1] / n};
     r.gearbox_ratio = design_ratio_;
-    r.speed_ratio = ratio_ / n;
-    r.speed_ratio_error = ratio_error_;
-    r.senses_opposite = opposite_;
+    r.turning_fraction = static_cast<double>(turning_) / n;
+    if (turning_ > 0) {
+      r.speed_ratio = ratio_ / static_cast<double>(turning_);
+      r.speed_ratio_error = ratio_error_;
+      r.senses_opposite = opposite_;
+    }
     r.load_torque = load_ / n;
     return r;
   }
 
  private:
   double design_ratio_ = 1.0;
-  long long n_ = 0;
+  long long n_ = 0, turning_ = 0;
   double motor_speed_ = 0.0, motor_torque_ = 0.0, ratio_ = 0.0, ratio_error_ = 0.0, load_ = 0.0;
   std::array<double, 2> roller_{};
   bool opposite_ = true;

@@ -16,10 +16,33 @@ nlohmann::json timing_json(const RunSummary& s) {
                         {"steps_per_second", s.steps_per_second}};
 }
 
+namespace {
+
+constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+
+// The gear train's line: the ratio and senses are measured over the steps in which the motor and
+// both rollers turned, and the line says when that was only part of the run.
+std::string gearbox_line(const DriveReport& d) {
+  const std::string speeds =
+      fmt::format("  gearbox                rollers at {:+.0f} and {:+.0f} rpm",
+                  d.roller_speeds[0] * kRpm, d.roller_speeds[1] * kRpm);
+  if (!d.speed_ratio)
+    return fmt::format("{}: the train never turned, no ratio measured (design {:.3f})", speeds,
+                       d.gearbox_ratio);
+  const std::string share =
+      d.turning_fraction < 1.0
+          ? fmt::format(" while turning ({:.1f} % of the run)", 100.0 * d.turning_fraction)
+          : std::string();
+  return fmt::format("{}: {:.4f} x the motor{} (design {:.3f}, worst step {:.2e} off), senses {}",
+                     speeds, *d.speed_ratio, share, d.gearbox_ratio, *d.speed_ratio_error,
+                     *d.senses_opposite ? "opposite" : "NOT opposite");
+}
+
+}  // namespace
+
 std::string summary_text(const RunSummary& s) {
   std::string out;
   const auto line = [&out](const std::string& text) { out += text + "\n"; };
-  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
   line(fmt::format("frictionlab run: {} (seed {})", s.scene, s.seed));
   line(fmt::format("  regime                 {}{}: {}", regime_name(s.regime),
                    s.regime_since > 0.0 ? fmt::format(" since t = {:.4f} s", s.regime_since) : "",
@@ -162,11 +185,7 @@ std::string summary_text(const RunSummary& s) {
         "  motor                  {:.1f} rpm, {:.1f} mN m (the plate's friction takes {:.2f} mN m "
         "at the rollers)",
         d.motor_speed * kRpm, d.motor_torque * 1e3, d.load_torque * 1e3));
-    line(fmt::format(
-        "  gearbox                rollers at {:+.0f} and {:+.0f} rpm: {:.4f} x the motor "
-        "(design {:.3f}, worst step {:.2e} off), senses {}",
-        d.roller_speeds[0] * kRpm, d.roller_speeds[1] * kRpm, d.speed_ratio, d.gearbox_ratio,
-        d.speed_ratio_error, d.senses_opposite ? "opposite" : "NOT opposite"));
+    line(gearbox_line(d));
   }
   line(fmt::format("  rollers                {:.0f} rpm, slip margin {:.2f}", s.roller_speed * kRpm,
                    s.slip_margin));

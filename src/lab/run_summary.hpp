@@ -35,9 +35,13 @@ struct DriveReport {
   double motor_torque = 0.0;              // N m, mean
   std::array<double, 2> roller_speeds{};  // rad/s about +y, mean
   double gearbox_ratio = 0.0;             // the design's speed-up, from the tooth counts
-  double speed_ratio = 0.0;               // |roller 0| / |motor|, mean
-  double speed_ratio_error = 0.0;         // largest |ratio / design - 1| over the steps
-  bool senses_opposite = true;            // the rollers turned opposite ways at every step
+  // The share of the steps in which the motor and both rollers turned; the three below are
+  // measured over those steps only, and null when there were none (a train stalled from the start
+  // or a motor at zero duty has no ratio to measure).
+  double turning_fraction = 0.0;
+  std::optional<double> speed_ratio;        // |roller 0| / |motor|, mean
+  std::optional<double> speed_ratio_error;  // largest |ratio / design - 1|
+  std::optional<bool> senses_opposite;      // the rollers turned opposite ways at every such step
   double load_torque = 0.0;  // N m, mean torque the plate's friction takes from the rollers
 };
 

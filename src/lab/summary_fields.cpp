@@ -35,9 +35,10 @@ json drive_json(const RunSummary& s) {
               {"motor_torque_n_m", d.motor_torque},
               {"roller_speeds_rad_s", {d.roller_speeds[0], d.roller_speeds[1]}},
               {"gearbox_ratio", d.gearbox_ratio},
-              {"speed_ratio", d.speed_ratio},
-              {"speed_ratio_error", d.speed_ratio_error},
-              {"senses_opposite", d.senses_opposite},
+              {"turning_fraction", d.turning_fraction},
+              {"speed_ratio", json_or_null(d.speed_ratio)},
+              {"speed_ratio_error", json_or_null(d.speed_ratio_error)},
+              {"senses_opposite", json_or_null(d.senses_opposite)},
               {"load_torque_n_m", d.load_torque}};
 }
 

@@ -212,11 +212,14 @@ void bind_reports(py::module_& m) {
       .def_readonly("motor_torque", &DriveReport::motor_torque, "N m")
       .def_readonly("roller_speeds", &DriveReport::roller_speeds, "rad/s about +y, each roller")
       .def_readonly("gearbox_ratio", &DriveReport::gearbox_ratio, "the design's speed-up")
-      .def_readonly("speed_ratio", &DriveReport::speed_ratio, "|roller 0| / |motor|")
+      .def_readonly("turning_fraction", &DriveReport::turning_fraction,
+                    "the share of the steps in which the motor and both rollers turned")
+      .def_readonly("speed_ratio", &DriveReport::speed_ratio,
+                    "|roller 0| / |motor| while turning, None if the train never turned")
       .def_readonly("speed_ratio_error", &DriveReport::speed_ratio_error,
-                    "largest |ratio / design - 1| over the steps")
+                    "largest |ratio / design - 1| while turning, None if it never turned")
       .def_readonly("senses_opposite", &DriveReport::senses_opposite,
-                    "the rollers turned opposite ways at every step")
+                    "the rollers turned opposite ways at every turning step; None if none")
       .def_readonly("load_torque", &DriveReport::load_torque,
                     "N m, the torque the plate's friction takes from the rollers");
 

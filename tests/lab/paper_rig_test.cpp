@@ -11,6 +11,7 @@
 #include "io/paper_table_yaml.hpp"
 #include "lab/experiment.hpp"
 #include "lab/regime_theory.hpp"
+#include "lab/run_outputs.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/drive_layout.hpp"
 #include "scene/scene_yaml.hpp"
@@ -101,6 +102,50 @@ TEST(Gearbox, RollersFollowTheMotorsDroopAndTurnOppositeWaysInBullet) {
   const double expected = no_load * (1.0 - 8.0 * load / motor.stall_torque);
   EXPECT_LT(expected, 0.99 * no_load);  // the droop is large enough to see
   EXPECT_NEAR(speed_sum / static_cast<double>(steps) / expected, 1.0, 1e-3);
+}
+
+// A train the plate's friction stalls (scenes/extreme/gearbox-stall.yaml: the load at the motor
+// is twice its stall torque). From its no-load speed w0 the motor decelerates on its linear
+// curve, J w' = tau_s (1 - w / w0) - L, and stops at t* = (J w0 / tau_s) ln(r / (r - 1)), r =
+// L / tau_s. The drive report measures the ratio and the senses over those turning steps only:
+// the design's 8, opposite, and a turning share of t* / duration; averaging the stalled steps
+// in would give a ratio near 0.05 and "not opposite". The count of turning steps is within two
+// steps of t* (the step that stops the train, and the implicit damper's lag).
+TEST(Gearbox, AStalledTrainReportsItsRatioOverTheStepsItTurned) {
+  const Scene s = rig({}, "extreme/gearbox-stall");
+  const CompiledRig compiled = compile_rig(s);
+  ASSERT_TRUE(compiled.drive.has_value());
+  const MotorDesc& motor = s.drive->motor;
+  const double r = compiled.drive->stall_load_torque / motor.stall_torque;
+  ASSERT_GT(r, 1.0);
+  const double t_stall = compiled.drive->inertia_at_motor * motor.no_load_speed /
+                         motor.stall_torque * std::log(r / (r - 1.0));
+  const RunSummary run = run_experiment(s, {});
+  ASSERT_TRUE(run.drive.has_value());
+  const DriveReport& d = *run.drive;
+  EXPECT_NEAR(d.turning_fraction * s.world.duration, t_stall, 2.0 * s.world.time_step);
+  ASSERT_TRUE(d.speed_ratio && d.speed_ratio_error && d.senses_opposite);
+  EXPECT_NEAR(*d.speed_ratio, 8.0, 1e-9);
+  EXPECT_LT(*d.speed_ratio_error, 1e-9);
+  EXPECT_TRUE(*d.senses_opposite);
+  const std::string text = summary_text(run);
+  EXPECT_NE(text.find("8.0000 x the motor while turning"), std::string::npos) << text;
+  EXPECT_EQ(text.find("NOT opposite"), std::string::npos) << text;
+}
+
+// A motor at zero duty never turns the train: no ratio and no senses were measured, so they are
+// null, and the summary says so instead of printing a number.
+TEST(Gearbox, ATrainThatNeverTurnedHasNoRatio) {
+  const Scene s =
+      rig({{"drive.motor.duty", "0 %"}, {"world.duration", "0.2 s"}}, "extreme/gearbox-stall");
+  const RunSummary run = run_experiment(s, {});
+  ASSERT_TRUE(run.drive.has_value());
+  EXPECT_EQ(run.drive->turning_fraction, 0.0);
+  EXPECT_FALSE(run.drive->speed_ratio.has_value());
+  EXPECT_FALSE(run.drive->speed_ratio_error.has_value());
+  EXPECT_FALSE(run.drive->senses_opposite.has_value());
+  EXPECT_NE(summary_text(run).find("the train never turned, no ratio measured"), std::string::npos)
+      << summary_text(run);
 }
 
 // The layout's gears mesh: neighbouring shafts sit exactly the sum of the pitch radii apart.

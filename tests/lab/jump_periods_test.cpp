@@ -35,18 +35,27 @@ JumpRun paper_rig(const std::string& runout) {
   return run;
 }
 
-// The relative spread of the Hall pulses' peaks, as the rig's estimator measured them.
-double peak_spread(const RunRecording& r) {
+// The Hall pulses' peaks as the rig's estimator measured them (counts from its baseline), after
+// 10 s: the baseline it learns from the first pulses is a few counts off and follows the signal
+// with a time constant of about 2 s (src/estimator/period_estimator.h), so the first pulses' peaks
+// creep (174 to 181 counts over 7 s on true rollers) whatever the plate does.
+std::vector<double> settled_peaks(const RunRecording& r) {
   HostEstimator estimator(fl_estimator::Config{});
   for (const HallSample& s : r.hall) estimator.add(s.t_us, s.adc);
   estimator.finish();
   std::vector<double> peaks;
-  for (const EstimatedPulse& p : estimator.pulses()) peaks.push_back(p.peak);
+  for (const EstimatedPulse& p : estimator.pulses())
+    if (p.time > 10.0) peaks.push_back(p.peak);
+  return peaks;
+}
+
+// Their standard deviation over their mean.
+double peak_spread(const std::vector<double>& peaks) {
   const double n = static_cast<double>(peaks.size());
   const double mean = std::accumulate(peaks.begin(), peaks.end(), 0.0) / n;
   double var = 0.0;
   for (const double p : peaks) var += (p - mean) * (p - mean);
-  return std::sqrt(var / (n - 1.0)) / std::fabs(mean - 512.0);
+  return std::sqrt(var / (n - 1.0)) / mean;
 }
 
 // The estimator's mean period against the trajectory's, in standard errors of the mean.
@@ -60,8 +69,13 @@ TEST(JumpPeriods, TrueRollersGiveSteadyPulsesAndNoDiscard) {
   EXPECT_FALSE(run.summary.jumps.has_value());
   ASSERT_TRUE(run.summary.estimator.has_value());
   EXPECT_EQ(run.summary.estimator->periods_discarded, 0);
-  // The sensor's noise alone: 0.6 % of the pulse height.
-  EXPECT_LT(peak_spread(run.recording), 0.01);
+  // The plate comes back to the same turning point (30 mm to 0.3 micrometres) and the sensor's
+  // noise is 2 mV rms, 0.4 of a count: every settled peak reads within a count of the others.
+  const std::vector<double> peaks = settled_peaks(run.recording);
+  ASSERT_GE(peaks.size(), 10u);
+  EXPECT_LE(
+      *std::max_element(peaks.begin(), peaks.end()) - *std::min_element(peaks.begin(), peaks.end()),
+      1.0);
 }
 
 // 0.3 mm, three times the threshold: jumps up to 2 mm high once a turn, which the pulses show but
@@ -72,9 +86,10 @@ TEST(JumpPeriods, ModerateJumpsShowInThePulsesAndTheEstimatorFollowsTheTrajector
   EXPECT_GT(*run.summary.runout, 2.0 * *run.summary.runout_threshold);
   EXPECT_GT(*run.summary.highest_jump, 0.5e-3);
   EXPECT_EQ(run.summary.regime, Regime::kOscillates) << run.summary.regime_evidence;
-  // The magnet rides up and down with the plate: the pulses' peaks spread several times more than
-  // the noise spreads them on true rollers (3.3 % against 0.6 %).
-  EXPECT_GT(peak_spread(run.recording), 3.0 * peak_spread(paper_rig("0 mm").recording));
+  // The magnet rides up and down with the plate: where true rollers give the same peak to a count
+  // (above), the peaks spread by several percent of the pulse height (5.9 %, 11 counts in 181);
+  // a spread of 3 % is 5 counts, far past what noise and rounding give.
+  EXPECT_GT(peak_spread(settled_peaks(run.recording)), 0.03);
   ASSERT_TRUE(run.summary.estimator.has_value());
   EXPECT_GE(run.summary.estimator->periods_used, 20);
   EXPECT_LT(std::fabs(estimator_off_trajectory(run.summary)), 3.0);

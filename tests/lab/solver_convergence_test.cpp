@@ -114,6 +114,29 @@ TEST(SolverConvergence, StopsWithTheSettingToChangeWhenItCannotRestart) {
   EXPECT_NE(r.failure->find("world.solver_iterations"), std::string::npos) << *r.failure;
 }
 
+// A 600 mm plate on the same rollers: e = (l/2)^2 / k^2 falls to 8e-4 and the split converges by
+// only ((1 - e)/(1 + e))^2 = 0.9967 per iteration. The run doubles its iterations to the cap,
+// 1280, still 0.7 % of the weight off, and stops naming both settings that can help.
+TEST(SolverConvergence, StopsAtTheCapNamingIterationsAndStep) {
+  Scene scene = close_rollers();
+  scene.plate.length = 0.600;
+  scene.world.duration = 0.2;
+  const RunSummary r = run_experiment(scene, {});
+  EXPECT_EQ(r.regime, Regime::kNumericallyFailed) << r.regime_evidence;
+  EXPECT_EQ(r.solver_iterations, 1280);
+  ASSERT_TRUE(r.failure.has_value());
+  EXPECT_NE(r.failure->find("did not converge at 1280 iterations"), std::string::npos)
+      << *r.failure;
+  EXPECT_NE(r.failure->find("set world.solver_iterations above 1280 or a smaller world.time_step "
+                            "(now 1 ms)"),
+            std::string::npos)
+      << *r.failure;
+  ASSERT_TRUE(r.solver_iterations_raised.has_value());
+  // Every doubling is listed, with the error it left.
+  for (const char* n : {"10 (", "20 (", "40 (", "80 (", "160 (", "320 (", "640 (", "1280 ("})
+    EXPECT_NE(r.solver_iterations_raised->find(n), std::string::npos) << n;
+}
+
 // The 200 mm plate on rollers 10 mm apart at the default 10 iterations: the run raises them and
 // oscillates with the thick-plate period, within the integrator's predicted bias (plus the
 // trajectory fit's own standard error, three of them).

@@ -1,7 +1,9 @@
 // compare --log: a log against its simulation. The logs are simulated here with a known truth: a
 // mu_k other than the scene's (the refit must find it), rollers that warm (a drift the scene
 // without warming lacks), and off-centre tubes that make the plate jump (a scatter the true
-// rollers lack); each must be found, and a log of the scene itself must agree in every test.
+// rollers lack), and logs rewritten by a known change (gain, a creeping baseline) or simulated
+// with the sensor farther away or a slightly different period (pulse height, baseline, pulse
+// shape, phase); each must be found, and a log of the scene itself must agree in every test.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -131,6 +133,79 @@ TEST(LogAgainstRig, AJumpingPlateShowsAsScatter) {
   EXPECT_GT(simulated, 1e-4);
   EXPECT_LT(simulated, 3e-4);
   EXPECT_GT(measured, std::max(2e-3, 3.0 * simulated));
+}
+
+// The same log with its samples rewritten by a known change: each sample's distance from the
+// quiet level (512 counts, the sensor's half supply) times `gain`, plus `ramp` counts in
+// proportion to the time.
+HallLog rewritten(const HallLog& log, double gain, double ramp_counts) {
+  std::vector<double> adc;
+  const double length = log.t_s.back() - log.t_s.front();
+  for (std::size_t i = 0; i < log.adc.size(); ++i)
+    adc.push_back(std::round(512.0 + gain * (log.adc[i] - 512.0) +
+                             ramp_counts * (log.t_s[i] - log.t_s.front()) / length));
+  return hall_log_from_samples(log.t_s, adc, log.path);
+}
+
+std::string all(const LogAgainstRig& r) {
+  std::string out;
+  for (const std::string& d : r.disagreements) out += d + "\n";
+  return out;
+}
+
+// A sensor with 1.5 times the gain: the peaks are 1.5 times higher; the width at half the height,
+// the periods and their trend are the same.
+TEST(LogAgainstRig, AGainChangeShowsAsPulseHeightOnly) {
+  const HallLog log =
+      rewritten(simulated_log("paper-rig.yaml", {{"world.duration", "20 s"}}), 1.5, 0.0);
+  const LogAgainstRig r = against(log, "paper-rig.yaml");
+  EXPECT_TRUE(found(r, "pulse height:")) << all(r);
+  EXPECT_NEAR(r.measured.pulse_height / r.simulated.pulse_height, 1.5, 0.02);
+  for (const char* other : {"pulse shape:", "periods:", "drift:", "jumps:", "baseline:", "phase:"})
+    EXPECT_FALSE(found(r, other)) << other << "\n" << all(r);
+}
+
+// The sensor 6 mm farther above the magnet's path: the field's peak is lower and broader, so the
+// pulses are wider at half their height.
+TEST(LogAgainstRig, ASensorFartherAwayShowsAsPulseShape) {
+  const HallLog log = simulated_log(
+      "paper-rig.yaml", {{"world.duration", "20 s"}, {"sensor.position", "[114 mm, 0 mm, 28 mm]"}});
+  const LogAgainstRig r = against(log, "paper-rig.yaml");
+  EXPECT_TRUE(found(r, "pulse shape:")) << all(r);
+  EXPECT_GT(r.measured.pulse_width, 1.1 * r.simulated.pulse_width);
+  EXPECT_FALSE(found(r, "periods:")) << all(r);
+}
+
+// A baseline that creeps up 20 counts over the log (a warming sensor), against none simulated.
+TEST(LogAgainstRig, ACreepingBaselineShowsAsBaseline) {
+  const HallLog log =
+      rewritten(simulated_log("paper-rig.yaml", {{"world.duration", "20 s"}}), 1.0, 20.0);
+  const LogAgainstRig r = against(log, "paper-rig.yaml");
+  EXPECT_TRUE(found(r, "baseline:")) << all(r);
+  // The change beyond the simulation's own (the estimator's baseline settles in both): the ramp's
+  // 20 counts, less the 1.5 counts it rose before the first pulse and the estimator's lag behind
+  // it (a time constant of about 2 s at 1 count a second).
+  const double beyond = (r.measured.baseline_last - r.measured.baseline_first) -
+                        (r.simulated.baseline_last - r.simulated.baseline_first);
+  EXPECT_GT(beyond, 14.0);
+  EXPECT_LT(beyond, 20.0);
+  EXPECT_FALSE(found(r, "pulse height:")) << all(r);
+}
+
+// Without the refit, a log at mu_k 0.287 runs 0.5 % slower than the scene at 0.29: aligned on
+// their first pulses, the traces drift apart by 0.005 of a period each period, a shift the
+// pulses hardly show over the first three periods and one wider than a pulse by the last.
+TEST(LogAgainstRig, PeriodsThatDisagreeShowAsPhase) {
+  const HallLog log =
+      simulated_log("paper-rig.yaml", {{"world.duration", "20 s"}, {"friction.mu_k", "0.287"}});
+  CompareOptions options;
+  options.scene_file = kScenes + "paper-rig.yaml";
+  options.paper = kPaper;
+  options.parts = kParts;
+  options.refit = false;
+  const LogAgainstRig r = compare_log_with_rig(log, fl_estimator::kAutoGeometry, options);
+  EXPECT_TRUE(found(r, "phase:")) << all(r);
+  EXPECT_GT(r.residual_rms_last_periods, 2.0 * r.residual_rms_first_periods);
 }
 
 }  // namespace

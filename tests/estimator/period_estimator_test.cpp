@@ -137,15 +137,63 @@ TEST_P(CleanSignal, PeriodWithinFiveHundredthsOfAPercentAtOneKilohertz) {
 INSTANTIATE_TEST_SUITE_P(PeriodsAndGeometries, CleanSignal,
                          ::testing::Values(CleanCase{0.13, false}, CleanCase{0.3, false},
                                            CleanCase{0.79, false}, CleanCase{1.4, false},
-                                           CleanCase{2.0, false}, CleanCase{0.13, true},
-                                           CleanCase{0.3, true}, CleanCase{0.79, true},
-                                           CleanCase{1.4, true}, CleanCase{2.0, true}),
+                                           CleanCase{2.0, false}, CleanCase{4.0, false},
+                                           CleanCase{0.13, true}, CleanCase{0.3, true},
+                                           CleanCase{0.79, true}, CleanCase{1.4, true},
+                                           CleanCase{2.0, true}, CleanCase{4.0, true}),
                          [](const ::testing::TestParamInfo<CleanCase>& param_info) {
                            const CleanCase& c = param_info.param;
                            return std::string(c.pair ? "Pair" : "OnePulse") + "T" +
                                   std::to_string(static_cast<int>(std::lround(c.period_s * 1000))) +
                                   "ms";
                          });
+
+// Longer periods: the estimator learns the signal only if it crosses the middle of its range
+// within 4.5 s (kLearnStallUs). At 1 kHz a one-pulse signal of 5 s still gives T; from 5.5 s
+// (the gap between pulses past 4.5 s) it gives no period at all, never a wrong one.
+TEST(PeriodEstimator, PeriodsPastTheLearningWindowGiveNoPeriodNotAWrongOne) {
+  for (const double period : {5.0, 5.5, 8.0}) {
+    HallSignal s;
+    s.period_s = period;
+    s.sensor_offset_m = kOnePulseOffset;
+    s.duration_s = 25.0 * period;
+    const Outcome r = estimate(s);
+    if (period <= 5.0) {
+      EXPECT_LE(relative_error(r, s), 5e-4) << period;
+      EXPECT_GE(static_cast<int>(r.stats.periods_used), turns(s) - kWarmUpTurns) << period;
+    } else {
+      EXPECT_EQ(r.stats.periods_used, 0u) << period;
+    }
+  }
+}
+
+// Pulses that occupy more than half the time: the estimator takes the side where the signal
+// spends most of its time as the baseline, so it reads the gaps as the pulses, of the opposite
+// polarity, one per period as before: the period is the same (square pulses of 30 % and 70 %
+// of the period, with smooth edges).
+TEST(PeriodEstimator, PulsesLongerThanTheGapsAreReadUpsideDownWithTheSamePeriod) {
+  constexpr double kPeriod = 0.79, kEdge = 0.03;
+  for (const double duty : {0.3, 0.7}) {
+    test::HallSamples samples;
+    for (int i = 0; i < 20000; ++i) {
+      const double t = i * 1e-3;
+      const double phase = std::fmod(t / kPeriod + 0.1, 1.0);
+      double level = 0.0;
+      if (phase < kEdge)
+        level = 0.5 - 0.5 * std::cos(test::kPiTest * phase / kEdge);
+      else if (phase < duty - kEdge)
+        level = 1.0;
+      else if (phase < duty)
+        level = 0.5 + 0.5 * std::cos(test::kPiTest * (phase - duty + kEdge) / kEdge);
+      samples.t_us.push_back(static_cast<uint32_t>(i * 1000));
+      samples.adc.push_back(static_cast<uint16_t>(std::lround(512.0 + 200.0 * level)));
+    }
+    const Outcome r = estimate(samples);
+    EXPECT_EQ(r.polarity, duty < 0.5 ? 1 : -1) << duty;
+    EXPECT_GE(r.stats.periods_used, 20u) << duty;
+    EXPECT_NEAR(r.period_s, kPeriod, 5e-4 * kPeriod) << duty;
+  }
+}
 
 // --- noise, jitter, sampling rates: within the reported dT -----------------------------------
 

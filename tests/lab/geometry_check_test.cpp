@@ -128,6 +128,20 @@ TEST(GeometryCheck, PeriodsThatAlternateAreTwoPulsesPerPeriod) {
   }
 }
 
+// The alternation's floor: the periods read alternate by (2/pi) arcsin(d/A) of the true period,
+// and the check needs 0.05 % of the period read (T/2), which a quiet signal reaches from d of
+// about 0.04 % of A: found at 0.045 % (9 micrometres of a 20 mm amplitude), not at 0.03 %.
+TEST(GeometryCheck, TheAlternationIsFoundDownToFourHundredthsOfAPercentOfTheAmplitude) {
+  for (const double share : {0.00045, 0.0003}) {
+    test::HallSignal s = signal(0.0, 0.008, 1000.0, 0.0);
+    s.duration_s = 30.0;
+    s.sensor_offset_m = -s.amplitude_m + share * s.amplitude_m;
+    const Checked c = check(s, fl_estimator::kAutoGeometry);
+    ASSERT_EQ(c.estimate.geometry, fl_estimator::kOnePulse) << share;
+    EXPECT_EQ(c.check.alternates, share > 0.0004) << share;
+  }
+}
+
 TEST(GeometryCheck, PulsesTooNarrowOrClippedCannotTell) {
   // 50 Hz: a turning pulse spans 3 samples at half its height.
   test::HallSignal narrow = signal(0.003, 0.004, 50.0, 0.0);

@@ -1,10 +1,15 @@
 // Captions without GL: which caption a simulated time shows (its own `until`, else the next
-// caption's start, the last until the run's end), and how a long caption breaks into lines.
+// caption's start, the last until the run's end), how a long caption breaks into lines, and how
+// one too long for three lines shrinks and is cut.
 #include "render/caption_overlay.hpp"
+
+#include "render/components.hpp"
+#include "render/overlay.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace fl::render {
@@ -65,6 +70,47 @@ TEST(WrapText, AWordWiderThanTheLineIsBrokenBetweenCharacters) {
   // Never inside a character: "μ" is two bytes, so a line of 3 bytes holds one.
   EXPECT_EQ(wrap("\xce\xbc\xce\xbc\xce\xbc", 3),
             (std::vector<std::string>{"\xce\xbc", "\xce\xbc", "\xce\xbc"}));
+}
+
+// The layout with the overlay's own font (no GL: measuring text needs only the font). At
+// 640x360 a caption is 15 px; one that needs more than three lines at 15 px is drawn a pixel
+// smaller at a time, down to 12 px; one that needs more even then keeps three lines, the last cut
+// with "…". Every line fits the 520 px width; at 1280x720 the sizes double.
+TEST(LayoutCaption, LongTextShrinksToTwelvePixelsThenIsCutWithAnEllipsis) {
+  if (!kHasRender) GTEST_SKIP() << "a build without rendering has no font";
+  Overlay overlay;
+  const std::string ellipsis = "\xe2\x80\xa6";
+  const auto fits = [&](const CaptionLayout& l, float max_width) {
+    for (const std::string& line : l.lines)
+      if (overlay.measure_text(line, l.pixel_size).width > max_width) return false;
+    return true;
+  };
+  const CaptionLayout one = layout_caption(overlay, 640, 360, "The rollers turn at 1600 rpm.");
+  EXPECT_EQ(one.pixel_size, 15.0f);
+  EXPECT_EQ(one.lines.size(), 1u);
+
+  // Words enough for four lines at 15 px and three at some smaller size.
+  std::string medium;
+  while (true) {
+    medium += "the plate slides back to the middle ";
+    if (layout_caption(overlay, 640, 360, medium).pixel_size < 15.0f) break;
+  }
+  const CaptionLayout shrunk = layout_caption(overlay, 640, 360, medium);
+  EXPECT_LT(shrunk.pixel_size, 15.0f);
+  EXPECT_GE(shrunk.pixel_size, 12.0f);
+  EXPECT_EQ(shrunk.lines.size(), 3u);
+  EXPECT_FALSE(shrunk.lines.back().ends_with(ellipsis));
+  EXPECT_TRUE(fits(shrunk, 520.0f));
+
+  std::string long_text;
+  for (int i = 0; i < 40; ++i) long_text += "the plate slides back to the middle ";
+  for (const auto& [width, height, scale] : {std::tuple{640, 360, 1.0f}, {1280, 720, 2.0f}}) {
+    const CaptionLayout cut = layout_caption(overlay, width, height, long_text);
+    EXPECT_EQ(cut.pixel_size, 12.0f * scale) << width;
+    ASSERT_EQ(cut.lines.size(), 3u) << width;
+    EXPECT_TRUE(cut.lines.back().ends_with(ellipsis)) << cut.lines.back();
+    EXPECT_TRUE(fits(cut, 520.0f * scale)) << width;
+  }
 }
 
 }  // namespace

@@ -489,6 +489,48 @@ TEST(RigVideo, ThePhasePortraitChangesOnlyItsPanel) {
   EXPECT_EQ(d.outside, 0);
 }
 
+// scenes/extreme/roller-200rpm.yaml, the portrait's teaching case: the rollers' surface speed
+// v_r (0.21 m/s) lies inside the theory's ellipse, so the dashed slip limits are in view and the
+// ellipse (light blue, dashed) crosses them, while the plate's own trace (white) stays between
+// them: it caught up with a roller and its amplitude was clipped.
+TEST(RigVideo, ThePortraitOfAClippedPlateKeepsItsTraceInsideTheSlipLimits) {
+  if (!kDraws) GTEST_SKIP() << "built without rendering or without a GL back end";
+  const fs::path dir = fresh_dir("phase-clipped");
+  const fs::path still = dir / "still.png";
+  const auto r = lab("run " + kScenes + "extreme/roller-200rpm.yaml --duration 4s --size 640x360 " +
+                     "--set video.phase_portrait=true --still " + still.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = render::read_png(still.string());
+  // The portrait's plot area (its panel spans x 490 to 632, y 122 to 202 at 640x360).
+  int limit_top = 1 << 20, limit_bottom = -1;
+  std::vector<int> white_rows, blue_rows;
+  for (int y = 140; y < 190; ++y) {
+    int orange = 0;
+    for (int x = 530; x < 626; ++x) {
+      const auto p = image.view().at(x, y);
+      orange += p[0] > 180 && p[1] < 170 && p[2] < 120;
+      if (p[0] > 225 && p[1] > 225 && p[2] > 225) white_rows.push_back(y);
+      if (p[0] < 170 && p[1] > 170 && p[2] > 220) blue_rows.push_back(y);
+    }
+    // A dashed line across the area (3 of every 5 points drawn; 26 of these 96 pixels measured).
+    if (orange > 15) {
+      limit_top = std::min(limit_top, y);
+      limit_bottom = std::max(limit_bottom, y);
+    }
+  }
+  ASSERT_GE(limit_top, 0);
+  ASSERT_GT(limit_bottom - limit_top, 20) << "two limit lines, one above the other";
+  ASSERT_FALSE(white_rows.empty());
+  ASSERT_FALSE(blue_rows.empty());
+  // The trace between the lines' outer edges (it runs along them while clipped); the ellipse
+  // beyond them.
+  EXPECT_GE(*std::min_element(white_rows.begin(), white_rows.end()), limit_top);
+  EXPECT_LE(*std::max_element(white_rows.begin(), white_rows.end()), limit_bottom);
+  // The ellipse's top speed is A0 Omega = 1.16 v_r: 2 px past each line at this size.
+  EXPECT_LT(*std::min_element(blue_rows.begin(), blue_rows.end()), limit_top);
+  EXPECT_GT(*std::max_element(blue_rows.begin(), blue_rows.end()), limit_bottom);
+}
+
 // --title turns the title card on and replaces its title, and only the title: the first frame
 // differs from the scene's own card only in the title's band at the top. --orbit turns the
 // camera: the frames drift away from those of a camera that stays put.

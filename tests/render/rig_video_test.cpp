@@ -6,6 +6,7 @@
 // with status 2 and a message that names them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>

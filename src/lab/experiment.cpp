@@ -397,31 +397,17 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
     history += fmt::format("{}{} (t = {:.6f} s, a normal force {:.3g} % of the weight off)",
                            history.empty() ? "" : ", ", iterations, unconverged->time,
                            100.0 * unconverged->relative());
-    const bool helps = previous_error == 0.0 || unconverged->error < previous_error;
+    const SolverRetry retry =
+        solver_retry(iterations, kMaxSolverIterations, unconverged->error, previous_error,
+                     static_cast<bool>(options.observer), history, rig.scene.world.time_step);
     previous_error = unconverged->error;
-    if (options.observer || iterations >= kMaxSolverIterations || !helps) {
-      std::string advice;
-      if (options.observer)
-        advice = fmt::format(
-            "this run hands its steps to a video and does not start again: set "
-            "world.solver_iterations to {} or more (a run without video raises it itself)",
-            2 * iterations);
-      else if (!helps)
-        advice = fmt::format(
-            "doubling the iterations did not reduce the error ({}): the step, not the solver, is "
-            "the limit; set a smaller world.time_step (now {:.3g} ms)",
-            history, rig.scene.world.time_step * 1e3);
-      else
-        advice = fmt::format(
-            "raised by doubling up to {} iterations ({}); set world.solver_iterations above {} "
-            "or a smaller world.time_step (now {:.3g} ms)",
-            iterations, history, iterations, rig.scene.world.time_step * 1e3);
-      out.failure = *out.failure + "; " + advice;
+    if (!retry.iterations) {
+      out.failure = *out.failure + "; " + retry.advice;
       out.regime_evidence = *out.failure;
       if (iterations != asked) out.solver_iterations_raised = "from " + history;
       break;
     }
-    iterations = std::min(2 * iterations, kMaxSolverIterations);
+    iterations = *retry.iterations;
     Scene scene = rig.scene;
     scene.world.solver_iterations = iterations;
     if (recording != nullptr) *recording = RunRecording{};

@@ -127,4 +127,28 @@ std::optional<SolverResidual> SolverConvergence::observe(
   return r;
 }
 
+SolverRetry solver_retry(int iterations, int max_iterations, double error, double previous_error,
+                         bool observer, const std::string& history, double time_step) {
+  SolverRetry r;
+  const bool helps = previous_error == 0.0 || error < previous_error;
+  if (observer)
+    r.advice = fmt::format(
+        "this run hands its steps to a video and does not start again: set "
+        "world.solver_iterations to {} or more (a run without video raises it itself)",
+        2 * iterations);
+  else if (!helps)
+    r.advice = fmt::format(
+        "doubling the iterations did not reduce the error ({}): the step, not the solver, is "
+        "the limit; set a smaller world.time_step (now {:.3g} ms)",
+        history, time_step * 1e3);
+  else if (iterations >= max_iterations)
+    r.advice = fmt::format(
+        "raised by doubling up to {} iterations ({}); set world.solver_iterations above {} "
+        "or a smaller world.time_step (now {:.3g} ms)",
+        iterations, history, iterations, time_step * 1e3);
+  else
+    r.iterations = std::min(2 * iterations, max_iterations);
+  return r;
+}
+
 }  // namespace fl

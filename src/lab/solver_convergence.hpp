@@ -60,4 +60,17 @@ class SolverConvergence {
   double worst_ = 0.0;
 };
 
+// What a run does after a pass whose solver did not converge: start again at twice the
+// iterations, or stop with advice that names the setting which can help. It stops when the run
+// shows its steps to an observer (a video cannot start again: world.solver_iterations, with the
+// value to try), when doubling did not reduce the error (`error` not below `previous_error`, 0
+// before the first pass: the step is the limit, world.time_step), or at `max_iterations` (both
+// settings). `history` lists the passes so far, for the advice.
+struct SolverRetry {
+  std::optional<int> iterations;  // the next pass's, when there is one
+  std::string advice;             // why the run stops and what to set, when it does
+};
+SolverRetry solver_retry(int iterations, int max_iterations, double error, double previous_error,
+                         bool observer, const std::string& history, double time_step);
+
 }  // namespace fl

@@ -144,6 +144,40 @@ TEST(SolverConvergence, StopsAtTheCapNamingIterationsAndStep) {
     EXPECT_NE(r.solver_iterations_raised->find(n), std::string::npos) << n;
 }
 
+// After a pass that did not converge: double while doubling helps, up to the cap; stop naming
+// the setting that can help when it does not (the step is then the limit), at the cap, or when
+// a video has already shown the steps. (No scene tried reaches the "did not reduce" branch
+// through a whole run, so its decision and text are checked here.)
+TEST(SolverConvergence, EachWayOfStoppingNamesTheSettingThatCanHelp) {
+  const std::string history = "10 (t = 0.001 s, a normal force 25 % of the weight off)";
+  // The first pass, and a pass that reduced the error: double.
+  EXPECT_EQ(solver_retry(10, 1280, 0.5, 0.0, false, history, 1e-3).iterations, 20);
+  const SolverRetry doubled = solver_retry(640, 1280, 0.1, 0.3, false, history, 1e-3);
+  EXPECT_EQ(doubled.iterations, 1280);
+  EXPECT_EQ(doubled.advice, "");
+  // The error did not fall: the step is the limit.
+  for (const double error : {0.3, 0.4}) {
+    const SolverRetry same = solver_retry(20, 1280, error, 0.3, false, history, 2e-3);
+    EXPECT_FALSE(same.iterations.has_value()) << error;
+    EXPECT_NE(same.advice.find("doubling the iterations did not reduce the error (" + history +
+                               "): the step, not the solver, is the limit; set a smaller "
+                               "world.time_step (now 2 ms)"),
+              std::string::npos)
+        << same.advice;
+  }
+  // At the cap.
+  const SolverRetry cap = solver_retry(1280, 1280, 0.1, 0.3, false, history, 1e-3);
+  EXPECT_FALSE(cap.iterations.has_value());
+  EXPECT_NE(cap.advice.find("set world.solver_iterations above 1280 or a smaller world.time_step"),
+            std::string::npos)
+      << cap.advice;
+  // A video: never again, whatever the error did.
+  const SolverRetry video = solver_retry(10, 1280, 0.5, 0.0, true, history, 1e-3);
+  EXPECT_FALSE(video.iterations.has_value());
+  EXPECT_NE(video.advice.find("set world.solver_iterations to 20 or more"), std::string::npos)
+      << video.advice;
+}
+
 // The 200 mm plate on rollers 10 mm apart at the default 10 iterations: the run raises them and
 // oscillates with the thick-plate period, within the integrator's predicted bias (plus the
 // trajectory fit's own standard error, three of them).

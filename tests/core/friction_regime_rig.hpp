@@ -67,4 +67,18 @@ inline Regime observed_regime(const test::ReferenceRun& run, double amplitude) {
   return Regime::kClipped;
 }
 
+// What the reference model's 20 s do with `law` on the paper's rig (centre of mass h_c above the
+// contact line, rollers' surface speed v_r), released at rest from kStart.
+inline constexpr double kStart = 0.03;
+inline Regime reference_regime(const FrictionLaw& law, double h_c, double v_r) {
+  ReferenceRig rig;
+  rig.spacing = kL;
+  rig.h_c = h_c;
+  rig.surface_speed = v_r;
+  rig.gravity = kG;
+  ReferenceOptions options;
+  options.duration = kHorizon;
+  return observed_regime(simulate_reference(law, rig, kStart, 0.0, options), kStart);
+}
+
 }  // namespace fl::test

@@ -91,7 +91,7 @@ TEST(LayoutCaption, LongTextShrinksToTwelvePixelsThenIsCutWithAnEllipsis) {
 
   // Words enough for four lines at 15 px and three at some smaller size.
   std::string medium;
-  while (true) {
+  for (int words = 0; words < 40; ++words) {  // bounded: a layout that never shrinks fails below
     medium += "the plate slides back to the middle ";
     if (layout_caption(overlay, 640, 360, medium).pixel_size < 15.0f) break;
   }

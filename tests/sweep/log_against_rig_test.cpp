@@ -43,11 +43,13 @@ HallLog simulated_log(const std::string& scene_file, const std::vector<SceneOver
 }
 
 LogAgainstRig against(const HallLog& log, const std::string& scene_file,
-                      fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry) {
+                      fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry,
+                      bool refit = true) {
   CompareOptions options;
   options.scene_file = kScenes + scene_file;
   options.paper = kPaper;
   options.parts = kParts;
+  options.refit = refit;
   return compare_log_with_rig(log, geometry, options);
 }
 
@@ -198,12 +200,7 @@ TEST(LogAgainstRig, ACreepingBaselineShowsAsBaseline) {
 TEST(LogAgainstRig, PeriodsThatDisagreeShowAsPhase) {
   const HallLog log =
       simulated_log("paper-rig.yaml", {{"world.duration", "20 s"}, {"friction.mu_k", "0.287"}});
-  CompareOptions options;
-  options.scene_file = kScenes + "paper-rig.yaml";
-  options.paper = kPaper;
-  options.parts = kParts;
-  options.refit = false;
-  const LogAgainstRig r = compare_log_with_rig(log, fl_estimator::kAutoGeometry, options);
+  const LogAgainstRig r = against(log, "paper-rig.yaml", fl_estimator::kAutoGeometry, false);
   EXPECT_TRUE(found(r, "phase:")) << all(r);
   EXPECT_GT(r.residual_rms_last_periods, 2.0 * r.residual_rms_first_periods);
 }

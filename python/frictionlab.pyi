@@ -18,11 +18,13 @@ Quantity = Union[str, float]
 Overrides = Union[Mapping[str, Any], Iterable[str], None]
 
 class InputError(ValueError):
-    """Bad input; str(error) is the frictionlab command's message, file:line:column."""
+    """Bad input; str(error) is the frictionlab command's message, file:line:column, with
+    the command's options spelled as this module's arguments."""
 
     file: Optional[str]
     line: Optional[int]
     column: Optional[int]
+    field: Optional[str]
 
 class Regime:
     """A pybind11 enum: compare with ==; int(regime) is its value in core/regime.hpp."""
@@ -365,6 +367,7 @@ class RunResult(RunSummary):
     periods: Optional[npt.NDArray[np.void]]
     jump_list: Optional[npt.NDArray[np.void]]
     video: Optional[VideoReport]
+    plot_failure: Optional[str]
 
 def run(
     scene: Union[Scene, PathLike],
@@ -374,6 +377,7 @@ def run(
     *,
     accuracy: Optional[Quantity] = None,
     record: bool = True,
+    plot: bool = False,
     video: Optional[PathLike] = None,
     frames: Optional[PathLike] = None,
     still: Optional[PathLike] = None,

@@ -10,7 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include "io/paper_table_yaml.hpp"
-#include "lab/sweep_run.hpp"
+#include "lab/sweep/sweep_run.hpp"
 
 namespace {
 

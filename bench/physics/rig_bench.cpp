@@ -8,7 +8,7 @@
 #include "assets/part_catalog.hpp"
 #include "core/paper_table.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace {

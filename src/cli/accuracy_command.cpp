@@ -5,12 +5,12 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
-#include "lab/accuracy_study.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+#include "lab/studies/accuracy_study.hpp"
 
 namespace fl::cli {
 namespace {
@@ -53,7 +53,7 @@ int run_accuracy(const AccuracyOptions& o, const GlobalOptions& global) {
   const Scene scene = load_scene_with_options(o.scene, global);
   AccuracyGrid grid;
   grid.periods = o.periods;
-  prepare_output_folder(o.out, "--out");
+  prepare_output_folder(o.out, "out");
   const AccuracyStudy study = run_accuracy_study(scene, grid);
   nlohmann::json j{{"scene", scene.name},
                    {"period_thick_s", study.period_thick},

@@ -16,13 +16,15 @@
 #include "cli/monte_carlo_options.hpp"
 #include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
+#include "cli/plot_failure.hpp"
 #include "core/paper_table.hpp"
 #include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "io/unknown_material.hpp"
-#include "lab/analytic_report.hpp"
+#include "lab/analytic/analytic_report.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
 
 namespace fl::cli {
 namespace {
@@ -201,7 +203,7 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
                      "--plot: draws the Monte Carlo's histogram of mu_k; add --mc N (e.g. "
                      "--mc 100000)");
   // The plot's place is checked before any work; a plot that fails still leaves the results.
-  if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
+  if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
 
   AnalyticReport report;
   if (!o.mu_k.empty()) {
@@ -212,8 +214,7 @@ int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
     const double period_err = option_quantity(o.period_err, Dimension::kTime, "--period-err");
     report = analytic_for_period(set_up, period, period_err);
   } else {
-    const PaperTable table =
-        load_paper_table(paper_table_path(resolve_asset_dir(global.asset_dir)));
+    const PaperTable table = load_paper_table(paper_table_path(asset_dir(global.asset_dir)));
     const auto [material, row] = paper_row(table, o);
     report = analytic_for_material(set_up, *material, *row);
   }

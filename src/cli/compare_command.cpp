@@ -16,14 +16,17 @@
 #include "cli/commands.hpp"
 #include "cli/log_options.hpp"
 #include "cli/option_quantity.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
+#include "cli/plot_failure.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "lab/compare.hpp"
-#include "lab/log_against_rig.hpp"
+#include "lab/compare/compare.hpp"
+#include "lab/compare/log_against_rig.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/outcome.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
 
 namespace fl::cli {
 namespace {
@@ -189,7 +192,7 @@ int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
 }
 
 int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
-  const std::string asset_dir = resolve_asset_dir(global.asset_dir);
+  const std::string assets = asset_dir(global.asset_dir);
   if (o.log.empty() && (!o.geometry.empty() || o.reading.any()))
     throw InputError({},
                      "--geometry, --columns, --rate and --time-unit say how to read a log; "
@@ -200,11 +203,11 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
                      "periods; give one");
   const bool paper = o.measured.empty() && o.log.empty();
   const MeasuredRows measured =
-      o.log.empty() ? read_measured_rows(paper ? paper_measurements_path(asset_dir) : o.measured)
+      o.log.empty() ? read_measured_rows(paper ? paper_measurements_path(assets) : o.measured)
                     : MeasuredRows{};
   CompareOptions options;
   options.scene_file = o.scene.empty() ? default_scene() : o.scene;
-  const SceneSources sources = scene_sources(global);
+  const SceneInputs sources = scene_sources(global);
   options.paper = sources.paper;
   options.parts = sources.parts;
   for (const std::string& text : o.overrides) {
@@ -235,7 +238,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
     options.overrides.push_back({"world.duration", o.duration});
     options.min_periods = 0;
   }
-  prepare_output_folder(o.out, "--out");
+  prepare_output_folder(o.out, "out");
   options.workers = o.workers;
   options.refit = !o.no_refit;
   const bool tty = isatty(2) == 1;
@@ -262,9 +265,16 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
     png = o.out + "/compare.png";
     run_plot_script("plot_compare.py", {json, png});
   }
+  // Your own rows (--measured) must each give a result: one that does not fails the command. The
+  // paper's own table shows its rows the model cannot oscillate (flexible foam at 300 K).
+  const int without = paper ? 0 : result.rows_without_result(options.refit);
+  const int status = exit_status(without > 0 ? Outcome::kFailed : Outcome::kDone);
+  if (without > 0)
+    fmt::print(stderr, "error: {} of {} rows gave no {} (their rows say why)\n", without,
+               result.rows.size(), options.refit ? "refitted mu_k" : "simulated period");
   if (o.json) {
     fmt::print("{}\n", j.dump(2));
-    return 0;
+    return status;
   }
   print_table(result, paper);
   for (const SkippedRow& row : measured.skipped)
@@ -273,7 +283,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", result.simulations, result.wall_s,
              result.workers, result.workers == 1 ? "" : "s");
   fmt::print("  written: {}, {}{}\n", csv, json, png.empty() ? "" : ", " + png);
-  return 0;
+  return status;
 }
 
 }  // namespace

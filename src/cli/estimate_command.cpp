@@ -26,16 +26,17 @@
 #include "cli/monte_carlo_options.hpp"
 #include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
+#include "cli/plot_failure.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "io/log_files.hpp"
-#include "lab/analytic_report.hpp"
-#include "lab/geometry_check.hpp"
-#include "lab/log_estimate.hpp"
-#include "lab/log_table.hpp"
+#include "lab/analytic/analytic_report.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_estimate.hpp"
+#include "lab/logs/log_table.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
 
 namespace fl::cli {
 namespace {
@@ -136,7 +137,7 @@ int run_many_logs(const EstimateOptions& o, const std::vector<std::string>& logs
                      "(give one: estimate LOG..., or estimate --follow PORT)");
   if (std::find(o.logs.begin(), o.logs.end(), "-") != o.logs.end())
     throw InputError({}, "- (standard input) is one log: estimate it alone, not among others");
-  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
+  if (!o.out.empty()) prepare_output_folder(o.out, "out");
   LogTableDefaults defaults;
   defaults.set_up = set_up;
   defaults.reading = reading;
@@ -192,8 +193,8 @@ int run_estimate(const EstimateOptions& o) {
       throw InputError({}, "--follow: reads the rig's serial port, not a log file; found both \"" +
                                o.follow + "\" and \"" + o.log +
                                "\" (give one: estimate LOG, or estimate --follow PORT)");
-    if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
-    if (!o.raw_log.empty()) prepare_output_file(o.raw_log, "--log");
+    if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
+    if (!o.raw_log.empty()) prepare_output_file(o.raw_log, "follow.raw_log");
     FollowRequest request;
     request.port = o.follow;
     request.baud = option_quantity(o.baud, Dimension::kDimensionless, "--baud");
@@ -225,16 +226,13 @@ int run_estimate(const EstimateOptions& o) {
   if (!(h_c >= 0.0) || !std::isfinite(h_c) || !(h_c_err >= 0.0) || !std::isfinite(h_c_err))
     throw InputError({}, "--h-c and --h-c-err: expected finite lengths, not negative");
   // The plots' places are checked before any work; a plot that fails still leaves the results.
-  if (!o.plot.empty()) prepare_output_file(o.plot, "--plot");
-  if (!o.mc_plot.empty()) prepare_output_file(o.mc_plot, "--mc-plot");
+  if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
+  if (!o.mc_plot.empty()) prepare_output_file(o.mc_plot, "mc_plot");
   const HallLog log = read_hall_log(o.log, reading);
   // The log's sidecar, as for a table of logs: its rig over the command line's.
-  LogSetUp log_set_up = set_up;
-  if (const std::optional<LogSidecar> side = read_log_sidecar(log.file)) {
-    apply_log_sidecar(*side, log_set_up);
-    fmt::print(stderr, "note: the rig from {}: l = {:.1f} +- {:.1f} mm, g = {} m/s^2\n", side->file,
-               log_set_up.spacing * 1e3, log_set_up.spacing_err * 1e3, log_set_up.gravity);
-  }
+  std::string sidecar_note;
+  const LogSetUp log_set_up = set_up_for_log(log.file, set_up, &sidecar_note);
+  if (!sidecar_note.empty()) fmt::print(stderr, "note: {}\n", sidecar_note);
   const LogEstimate est = estimate_log(log, log_set_up, !o.plot.empty());
   std::string plot_note;
   std::string plot_failure;

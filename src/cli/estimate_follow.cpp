@@ -16,8 +16,8 @@
 #include "cli/stop_signals.hpp"
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
-#include "lab/geometry_check.hpp"
-#include "lab/host_estimator.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "lab/logs/host_estimator.hpp"
 
 namespace fl::cli {
 namespace {

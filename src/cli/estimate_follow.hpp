@@ -10,7 +10,7 @@
 #include <string>
 
 #include "io/hall_log.hpp"
-#include "lab/log_estimate.hpp"
+#include "lab/logs/log_estimate.hpp"
 
 namespace fl::cli {
 

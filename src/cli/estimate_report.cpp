@@ -19,15 +19,15 @@ std::string columns_text(const HallLogReading& r) {
   std::string names = r.time_column.empty() ? r.adc_column : r.time_column + ", " + r.adc_column;
   std::string from = r.columns_from == "header"
                          ? fmt::format("from the header, line {}", r.header_line)
-                     : r.columns_from == "--columns" ? std::string("from --columns")
-                                                     : std::string("by position: no header");
+                     : r.columns_from == "columns" ? std::string("from --columns")
+                                                   : std::string("by position: no header");
   std::string unit;
-  if (r.time_unit_from == "--rate")
+  if (r.time_unit_from == "rate")
     unit = fmt::format("; timed by --rate {:g} Hz", r.rate_hz);
   else if (r.time_unit_from == "inferred")
     unit = fmt::format("; time in {}, inferred from the interval (--time-unit says otherwise)",
                        r.time_unit);
-  else if (r.time_unit_from == "--time-unit")
+  else if (r.time_unit_from == "time_unit")
     unit = fmt::format("; time in {} (--time-unit)", r.time_unit);
   return fmt::format("columns {} ({}){}", names, from, unit);
 }

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/hall_log.hpp"
-#include "lab/geometry_check.hpp"
-#include "lab/log_estimate.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_estimate.hpp"
 
 namespace fl::cli {
 

@@ -21,12 +21,13 @@
 #include "cli/commands.hpp"
 #include "cli/monte_carlo_options.hpp"
 #include "cli/option_quantity.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
+#include "cli/plot_failure.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
-#include "lab/spacing_fit_report.hpp"
+#include "lab/compare/spacing_fit_report.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
 
 namespace fl::cli {
 namespace {
@@ -204,8 +205,8 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
     }
   }
   // Output places are checked before any work; a plot that fails still leaves the results.
-  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
-  if (!png.empty()) prepare_output_file(png, "--plot");
+  if (!o.out.empty()) prepare_output_folder(o.out, "out");
+  if (!png.empty()) prepare_output_file(png, "plot");
 
   SpacingSeries series = read_spacing_series(o.file);
   for (const std::string& w : series.warnings) fmt::print(stderr, "{}\n", w);

@@ -4,7 +4,7 @@
 
 #include "cli/option_quantity.hpp"
 #include "io/input_error.hpp"
-#include "lab/log_estimate.hpp"
+#include "lab/logs/log_estimate.hpp"
 
 namespace fl::cli {
 

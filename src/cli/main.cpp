@@ -1,5 +1,6 @@
 // frictionlab: the command line of the virtual friction-oscillator lab.
-// Exit status: 0 success, 1 internal error, 2 bad input, 3 physics failure.
+// Exit status (lab/request/outcome.hpp): 0 done, 1 incomplete (a plot) or an internal error, 2 bad
+// input, 3 a guard stopped a run or a part of the job gave no result, 130/143 interrupted.
 #include <algorithm>
 #include <cstdio>
 #include <exception>
@@ -11,10 +12,13 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/field_spelling.hpp"
 #include "core/analytic_model.hpp"
 #include "core/units.hpp"
 #include "io/input_error.hpp"
 #include "io/suggest.hpp"
+#include "lab/request/outcome.hpp"
+#include "lab/video/video_settings.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"frictionlab: a virtual lab of the friction (Timoshenko) oscillator"};
@@ -60,14 +64,17 @@ int main(int argc, char** argv) {
       if (command.parser->parsed()) return command.run();
     }
   } catch (const fl::InputError& e) {
-    fmt::print(stderr, "{}\n", e.what());
-    return 2;
+    fmt::print(stderr, "{}\n", fl::cli::spelled(e.what()));
+    return fl::exit_status(fl::Outcome::kBadInput);
   } catch (const fl::UnitError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
+    fmt::print(stderr, "error: {}\n", fl::cli::spelled(e.what()));
+    return fl::exit_status(fl::Outcome::kBadInput);
   } catch (const fl::DomainError& e) {
-    fmt::print(stderr, "error: {}\n", e.what());
-    return 2;
+    fmt::print(stderr, "error: {}\n", fl::cli::spelled(e.what()));
+    return fl::exit_status(fl::Outcome::kBadInput);
+  } catch (const fl::VideoUnavailable& e) {
+    fmt::print(stderr, "error: {}\n", fl::cli::spelled(e.what()));
+    return fl::exit_status(fl::Outcome::kBadInput);
   } catch (const std::exception& e) {
     fmt::print(stderr, "internal error: {}\n", e.what());
     return 1;

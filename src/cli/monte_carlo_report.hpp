@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "lab/analytic_report.hpp"
+#include "lab/analytic/analytic_report.hpp"
 
 namespace fl::cli {
 

@@ -27,11 +27,4 @@ double option_quantity(const std::string& text, Dimension dimension, const std::
   return value;
 }
 
-std::string resolve_asset_dir(const std::string& option_value) {
-  if (!option_value.empty()) return option_value;
-  if (const char* env = std::getenv("FRICTIONLAB_ASSETS"); env != nullptr && *env != '\0')
-    return env;
-  return FRICTIONLAB_DEFAULT_ASSET_DIR;
-}
-
 }  // namespace fl::cli

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "lab/request/scene_source.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_yaml.hpp"
 
@@ -20,13 +21,13 @@ struct SceneOptions {
 
 void add_scene_options(CLI::App& command, SceneOptions& options);
 
-// The paper's table and the LEGO part index under the asset folder, each read the first time a
-// scene names it (and then shared by every scene loaded through the same sources).
-struct SceneSources {
-  PaperTableSource paper;
-  PartCatalogSource parts;
-};
-SceneSources scene_sources(const GlobalOptions& global);
+// The scene file and the asset folder as a request's scene (lab/request/scene_source.hpp); the
+// overrides and the duration are the request's own fields.
+SceneSource scene_source_of(const SceneOptions& options, const GlobalOptions& global);
+
+// The paper's table and the LEGO part index under the asset folder (--assets), each read the
+// first time a scene names it.
+SceneInputs scene_sources(const GlobalOptions& global);
 
 // Loads the scene with its overrides; the paper's table is read only if the scene names it.
 Scene load_scene_with_options(const SceneOptions& options, const GlobalOptions& global);

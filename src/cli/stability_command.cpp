@@ -11,13 +11,13 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_quantity.hpp"
-#include "cli/output_paths.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/stability_study.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/studies/stability_study.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace fl::cli {
@@ -62,12 +62,12 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) throw InputError({o.dir, 0, 0}, "no scene matches");
-  const SceneSources sources = scene_sources(global);
+  const SceneInputs sources = scene_sources(global);
   std::vector<Scene> scenes;
   for (const std::string& file : files)
     scenes.push_back(load_scene_file(file, {}, sources.paper, sources.parts));
 
-  if (!o.out.empty()) prepare_output_folder(o.out, "--out");
+  if (!o.out.empty()) prepare_output_folder(o.out, "out");
   // Cases are independent: share them among workers.
   std::vector<StabilityRow> rows(scenes.size());
   std::atomic<std::size_t> next{0};

@@ -14,11 +14,11 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "cli/output_paths.hpp"
-#include "cli/plot_script.hpp"
 #include "cli/scene_options.hpp"
 #include "cli/stop_signals.hpp"
-#include "lab/sweep_run.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+#include "lab/sweep/sweep_run.hpp"
 
 namespace fl::cli {
 namespace {
@@ -130,12 +130,12 @@ struct SweepCommandOptions {
 };
 
 int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global) {
-  const SceneSources sources = scene_sources(global);
+  const SceneInputs sources = scene_sources(global);
   const SceneInputs inputs{sources.paper, sources.parts};
   const SweepSpec spec = load_sweep_file(o.file, inputs);
   SweepRunOptions options;
   options.out_dir = o.out.empty() ? "out/sweep/" + spec.name : o.out;
-  prepare_output_folder(options.out_dir, "--out");
+  prepare_output_folder(options.out_dir, "out");
   options.workers = o.workers;
   if (!o.shard.empty()) options.shard = parse_shard(o.shard);
   options.fresh = o.fresh;
@@ -217,7 +217,7 @@ struct MergeCommandOptions {
 
 int run_merge_command(const MergeCommandOptions& o) {
   const std::string out = o.out.empty() ? o.dirs.front() : o.out;
-  prepare_output_folder(out, "--out");
+  prepare_output_folder(out, "out");
   const MergeOutcome outcome = merge_sweeps(o.dirs, out);
   std::vector<std::string> pngs;
   if (o.plot) pngs = plot_sweep(out);

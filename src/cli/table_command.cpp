@@ -8,6 +8,7 @@
 #include "cli/option_quantity.hpp"
 #include "core/paper_table.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "lab/request/lab_data.hpp"
 
 namespace fl::cli {
 namespace {
@@ -21,7 +22,7 @@ struct TableOptions {
 int run_table(const TableOptions& o, const GlobalOptions& global) {
   const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
   const double h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
-  const std::string file = paper_table_path(resolve_asset_dir(global.asset_dir));
+  const std::string file = paper_table_path(asset_dir(global.asset_dir));
   const PaperTable table = load_paper_table(file);
 
   nlohmann::json rows = nlohmann::json::array();

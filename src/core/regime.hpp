@@ -1,6 +1,7 @@
 // The physical regimes of the friction oscillator: what the analytic model expects for a set-up
-// (lab/regime_theory.hpp, core/friction_regime.hpp) and what a run's trajectory shows
-// (lab/regime_monitor.hpp) are told in the same terms, so the two can be held against each other.
+// (lab/run/regime_theory.hpp, core/friction_regime.hpp) and what a run's trajectory shows
+// (lab/run/regime_monitor.hpp) are told in the same terms, so the two can be held against each
+// other.
 #pragma once
 
 #include <optional>

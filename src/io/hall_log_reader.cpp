@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/text.hpp"
+#include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/log_line.hpp"
 
@@ -79,17 +80,18 @@ HallLogReader::HallLogReader(std::string name, HallLogOptions options)
     : name_(std::move(name)), options_(std::move(options)) {
   if (!options_.columns.empty()) {
     layout_ = columns_from_option(options_.columns);
-    reading_.columns_from = "--columns";
+    reading_.columns_from = "columns";
   }
   if (!options_.time_unit.empty()) {
     const std::optional<std::string> unit = time_unit_name(options_.time_unit);
     if (!unit)
-      throw InputError({},
-                       "--time-unit: expected us, ms or s, found " + quoted(options_.time_unit));
+      throw InputError(SourceLocation::of_field("time_unit"),
+                       "expected us, ms or s, found " + quoted(options_.time_unit));
     options_.time_unit = *unit;
   }
   if (!(options_.rate_hz >= 0.0) || !std::isfinite(options_.rate_hz))
-    throw InputError({}, "--rate: expected a positive sample rate (for example 1kHz)");
+    throw InputError(SourceLocation::of_field("rate"),
+                     "expected a positive sample rate (for example 1kHz)");
 }
 
 void HallLogReader::add_line(std::string_view line, int number, bool unfinished) {
@@ -198,16 +200,16 @@ bool HallLogReader::try_header(std::string_view text, int number) {
       throw InputError(SourceLocation{name_, number, 0},
                        "the header " + quoted(trim(text)) +
                            " names no ADC column: expected one called " + std::string(kValueNames) +
-                           "; or name the log's fields in order with --columns (for example "
-                           "--columns t_us,adc)");
+                           "; or name the log's fields in order with " + field_ref("columns") +
+                           " (for example " + field_ref("columns", "t_us,adc") + ")");
     return false;
   }
   if (!time && options_.rate_hz == 0.0)
     throw InputError(SourceLocation{name_, number, 0},
                      "the header " + quoted(trim(text)) +
                          " names no time column: expected one called " + std::string(kTimeNames) +
-                         "; for a log of values only, give the sample rate with --rate (for "
-                         "example --rate 1kHz)");
+                         "; for a log of values only, give the sample rate with " +
+                         field_ref("rate") + " (for example " + field_ref("rate", "1kHz") + ")");
   layout_ = ColumnLayout{};
   layout_.value = *value;
   layout_.value_name = std::string(fields[*value].text);
@@ -237,15 +239,18 @@ void HallLogReader::start_by_position() {
   if (first.fields == 1 && options_.rate_hz == 0.0)
     throw InputError(at,
                      "one number per line and no header: ADC values without times; give the "
-                     "sample rate with --rate (for example --rate 1kHz: the sketch's delay "
-                     "between samples) or, if the numbers are times, name the fields with "
-                     "--columns");
+                     "sample rate with " +
+                         field_ref("rate") + " (for example " + field_ref("rate", "1kHz") +
+                         ": the sketch's delay between samples) or, if the numbers are times, "
+                         "name the fields with " +
+                         field_ref("columns"));
   if (first.fields > 2)
     throw InputError(at, std::to_string(first.fields) +
                              " numbers per line and no header: say which field is the time and "
-                             "which the ADC value with --columns (for example --columns "
-                             "t_ms,adc" +
-                             std::string(first.fields > 2 ? ",_" : "") + " for the first two)");
+                             "which the ADC value with " +
+                             field_ref("columns") + " (for example " +
+                             field_ref("columns", first.fields > 2 ? "t_ms,adc,_" : "t_ms,adc") +
+                             " for the first two)");
   layout_ = ColumnLayout{};
   if (first.fields == 1) {
     layout_.value = 0;
@@ -291,12 +296,12 @@ void HallLogReader::set_unit() {
   if (options_.rate_hz > 0.0) {
     scale_ = 1.0;
     reading_.time_unit = "";
-    reading_.time_unit_from = "--rate";
+    reading_.time_unit_from = "rate";
     reading_.rate_hz = options_.rate_hz;
   } else if (!options_.time_unit.empty()) {
     scale_ = seconds_per(options_.time_unit);
     reading_.time_unit = options_.time_unit;
-    reading_.time_unit_from = "--time-unit";
+    reading_.time_unit_from = "time_unit";
   } else if (!layout_.time_unit.empty()) {
     scale_ = seconds_per(layout_.time_unit);
     reading_.time_unit = layout_.time_unit;
@@ -461,9 +466,8 @@ void HallLogReader::infer_unit() {
                            " names no unit, and its step of " + shown(step) +
                            " per sample fits none: expected a sample rate from 20 Hz to 20 kHz, "
                            "found " +
-                           rates.str() +
-                           "; give the unit with --time-unit us, ms or s, or the "
-                           "sample rate with --rate");
+                           rates.str() + "; give the unit with " + field_ref("time_unit") +
+                           " (us, ms or s), or the sample rate with " + field_ref("rate"));
     }
     unit = found;
   }
@@ -499,8 +503,9 @@ void HallLogReader::finish() {
     throw InputError(top, "none of the log's " + std::to_string(reading_.lines_skipped) +
                               " lines is a header or a sample: expected " + kExpected +
                               ", found lines such as " + quoted(first_skipped_) +
-                              "; for a log without a header, name its fields in order with "
-                              "--columns (for example --columns t_ms,adc)");
+                              "; for a log without a header, name its fields in order with " +
+                              field_ref("columns") + " (for example " +
+                              field_ref("columns", "t_ms,adc") + ")");
   }
   check_shares();
 }
@@ -531,7 +536,8 @@ void HallLogReader::check_shares() const {
         p.what + "; " + share + std::to_string(corrupted) +
             " are not samples. Is the log what it seems? A serial capture at the wrong baud rate "
             "gives garbled lines (the rig firmware's is 250000); a log whose fields are not "
-            "(time, value) needs --columns (for example --columns _,t_ms,adc)");
+            "(time, value) needs " +
+            field_ref("columns") + " (for example " + field_ref("columns", "_,t_ms,adc") + ")");
   }
   if (repeated >= back) {
     const Problem& p = first_repeated_;
@@ -539,16 +545,18 @@ void HallLogReader::check_shares() const {
         SourceLocation{name_, p.line, p.column},
         p.what + "; " + share + std::to_string(repeated) +
             " repeat the time before them: the log's clock ticks more slowly than it samples "
-            "(millis() counts whole milliseconds). Give the sample rate with --rate (for example "
-            "--rate 2kHz) to time the samples by their count, or log micros()");
+            "(millis() counts whole milliseconds). Give the sample rate with " +
+            field_ref("rate") + " (for example " + field_ref("rate", "2kHz") +
+            ") to time the samples by their count, or log micros()");
   }
   const Problem& p = first_out_of_order_;
   throw InputError(
       SourceLocation{name_, p.line, p.column},
       p.what + ": the times must increase; " + share + std::to_string(back) +
           " are out of order: the log mixes captures or its clock went back. Take one capture, "
-          "or give the sample rate with --rate (for example --rate 1kHz) to time the samples by "
-          "their count");
+          "or give the sample rate with " +
+          field_ref("rate") + " (for example " + field_ref("rate", "1kHz") +
+          ") to time the samples by their count");
 }
 
 std::vector<LogSample> HallLogReader::take() {

@@ -24,9 +24,9 @@
 namespace fl {
 
 struct HallLogOptions {
-  std::string columns;    // --columns ("" : the header's names, or by position)
+  std::string columns;    // the request's `columns` ("" : the header's names, or by position)
   double rate_hz = 0.0;   // --rate (0: the log's time column)
-  std::string time_unit;  // --time-unit: "s", "ms" or "us" ("" : the name's, or inferred)
+  std::string time_unit;  // `time_unit`: "s", "ms" or "us" ("" : the name's, or inferred)
 };
 
 // Lines of one kind: how many, and the first few (1-based).
@@ -40,11 +40,11 @@ struct LineTally {
 // How the log was read and what was left out of it.
 struct HallLogReading {
   std::string format = "csv";  // "firmware" (the rig firmware's capture) or "csv"
-  std::string columns_from;    // "header", "--columns" or "position"
-  std::string time_column;     // the names of the two columns used ("" when --rate)
+  std::string columns_from;    // "header", "columns" (the field) or "position"
+  std::string time_column;     // the names of the two columns used ("" with a rate)
   std::string adc_column;
-  std::string time_unit;              // "s", "ms" or "us" ("" when --rate)
-  std::string time_unit_from;         // "header", "--time-unit", "inferred" or "--rate"
+  std::string time_unit;              // "s", "ms" or "us" ("" with a rate)
+  std::string time_unit_from;         // "header", "time_unit", "inferred" or "rate" (fields)
   double rate_hz = 0.0;               // --rate, when given
   int header_line = 0;                // 1-based; 0 without a header
   int first_line = 0;                 // the header or the first sample: where the log starts

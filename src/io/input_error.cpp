@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "io/field_ref.hpp"
+
 namespace fl {
 
 std::string format_diagnostic(const SourceLocation& where, std::string_view what) {
@@ -13,10 +15,30 @@ std::string format_diagnostic(const SourceLocation& where, std::string_view what
       if (where.column > 0) out += ':' + std::to_string(where.column);
     }
     out += ": ";
+  } else if (!where.field.empty()) {
+    out += where.field_value ? field_ref(where.field, *where.field_value) : field_ref(where.field);
+    out += ": ";
   }
   out += "error: ";
   out += what;
   return out;
+}
+
+SourceLocation SourceLocation::of_field(std::string path) {
+  SourceLocation where;
+  where.field = std::move(path);
+  return where;
+}
+
+SourceLocation SourceLocation::of_field(std::string path, std::string value) {
+  SourceLocation where = of_field(std::move(path));
+  where.field_value = std::move(value);
+  return where;
+}
+
+std::string without_location(std::string_view diagnostic) {
+  const std::size_t at = diagnostic.find("error: ");
+  return std::string(at == std::string_view::npos ? diagnostic : diagnostic.substr(at + 7));
 }
 
 InputError::InputError(SourceLocation where, std::string_view what)

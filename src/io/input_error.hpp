@@ -1,18 +1,32 @@
-// Errors in what a user gave us (a file, a command-line value), located as compilers locate
-// theirs: "scenes/x.yaml:12:5: error: plate.thickness: expected a length ..., found "5 xx"".
-// The command line maps it to exit status 2.
+// Errors in what a user gave us (a file, a request's field), located as compilers locate
+// theirs: "scenes/x.yaml:12:5: error: plate.thickness: expected a length ..., found "5 xx"", or
+// for a field "⟦spacing⟧: error: ..." that each front end spells ("--spacing: error: ..." on the
+// command line). Every front end maps it to bad input (exit status 2, Python's InputError).
 #pragma once
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace fl {
 
 struct SourceLocation {
-  std::string file;  // as the user named it; empty for the command line
+  SourceLocation() = default;
+  SourceLocation(std::string file_name, int line_number = 0, int column_number = 0)
+      : file(std::move(file_name)), line(line_number), column(column_number) {}
+
+  std::string file;  // as the user named it; empty for a request's field
   int line = 0;      // 1-based; 0 when unknown
   int column = 0;    // 1-based; 0 when unknown
+  // A request's field instead of a file: its path, and the value given when the message quotes
+  // it ("set", "friction.mu_k=0.3"); each front end spells it (io/field_ref.hpp).
+  std::string field;
+  std::optional<std::string> field_value;
+
+  static SourceLocation of_field(std::string path);
+  static SourceLocation of_field(std::string path, std::string value);
 };
 
 class InputError : public std::runtime_error {
@@ -24,7 +38,11 @@ class InputError : public std::runtime_error {
   SourceLocation where_;
 };
 
-// "file:line:column: error: what" (parts that are unknown are left out).
+// "file:line:column: error: what" (parts that are unknown are left out); for a field,
+// "⟦field⟧: error: what".
 std::string format_diagnostic(const SourceLocation& where, std::string_view what);
+
+// The message of a located diagnostic without its location: the text after "error: ".
+std::string without_location(std::string_view diagnostic);
 
 }  // namespace fl

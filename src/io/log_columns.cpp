@@ -4,6 +4,7 @@
 #include <array>
 
 #include "core/text.hpp"
+#include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 
 namespace fl {
@@ -99,9 +100,12 @@ std::optional<ColumnName> column_name(std::string_view name) {
 
 ColumnLayout columns_from_option(std::string_view spec) {
   const auto fail = [&](const std::string& what) {
-    return InputError({}, "--columns: " + what + ", found \"" + std::string(spec) +
-                              "\"; name the log's fields in order, for example --columns "
-                              "t_us,adc, --columns millis,sensorValue or --columns _,t_ms,adc");
+    return InputError(SourceLocation::of_field("columns"),
+                      what + ", found \"" + std::string(spec) +
+                          "\"; name the log's fields in order, for example " +
+                          field_ref("columns", "t_us,adc") + ", " +
+                          field_ref("columns", "millis,sensorValue") + " or " +
+                          field_ref("columns", "_,t_ms,adc"));
   };
   ColumnLayout layout;
   std::size_t index = 0;

@@ -29,7 +29,9 @@ std::string why_not(int error) {
 
 SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
   const SourceLocation at{path, 0, 0};
-  if (baud <= 0) throw InputError({}, "--baud: expected a positive baud rate, such as 250000");
+  if (baud <= 0)
+    throw InputError(SourceLocation::of_field("follow.baud"),
+                     "expected a positive baud rate, such as 250000");
   fd_ = ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
   if (fd_ < 0) throw InputError(at, "cannot open the serial port: " + why_not(errno));
   struct termios2 t {};

@@ -38,10 +38,10 @@ YamlNode::YamlNode(YAML::Node node, std::shared_ptr<YamlSource> source, std::str
 SourceLocation YamlNode::location_of_key(const std::string& key_path,
                                          const YAML::Mark& mark) const {
   // A value the command line replaced is located there; so is everything below it.
-  for (const auto& [overridden, label] : source_->overrides) {
+  for (const auto& [overridden, where] : source_->overrides) {
     if (key_path == overridden || key_path.starts_with(overridden + ".") ||
         key_path.starts_with(overridden + "["))
-      return SourceLocation{label, 0, 0};
+      return where;
   }
   return location_of(mark, source_->file);
 }
@@ -168,8 +168,7 @@ bool YamlNode::boolean() const {
 }
 
 void YamlNode::set_path(std::string_view dotted_path, std::string_view value,
-                        std::string_view label) {
-  const SourceLocation where{std::string(label), 0, 0};
+                        const SourceLocation& where) {
   if (dotted_path.empty()) throw InputError(where, "expected key.path=value, found no key");
   YAML::Node parsed;
   try {
@@ -201,7 +200,7 @@ void YamlNode::set_path(std::string_view dotted_path, std::string_view value,
     current.reset(next);
     rest.remove_prefix(dot + 1);
   }
-  source_->overrides[join_path(path_, dotted_path)] = std::string(label);
+  source_->overrides[join_path(path_, dotted_path)] = where;
 }
 
 YamlNode load_yaml_text(std::string_view text, const std::string& name) {

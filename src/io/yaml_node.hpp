@@ -19,11 +19,12 @@
 
 namespace fl {
 
-// Where a document came from: its file name, and the key paths that a command line replaced
-// ("plate.thickness" -> "--set plate.thickness=5 kg"), so errors point at the right place.
+// Where a document came from: its file name, and the key paths that a request's `set` field
+// replaced ("plate.thickness" -> the field "set" with "plate.thickness=5 kg"), so errors point at
+// the right place.
 struct YamlSource {
   std::string file;
-  std::map<std::string, std::string, std::less<>> overrides;
+  std::map<std::string, SourceLocation, std::less<>> overrides;
 };
 
 class YamlNode {
@@ -62,8 +63,9 @@ class YamlNode {
   const YAML::Node& raw() const { return node_; }
 
   // Replaces (or adds) the value at a dotted key path below this map, e.g. "plate.thickness",
-  // with `value` read as YAML; errors about that key then name `label` instead of a file line.
-  void set_path(std::string_view dotted_path, std::string_view value, std::string_view label);
+  // with `value` read as YAML; errors about that key are then located at `where` (the override)
+  // instead of a file line.
+  void set_path(std::string_view dotted_path, std::string_view value, const SourceLocation& where);
 
  private:
   SourceLocation location_of_key(const std::string& key_path, const YAML::Mark& mark) const;

@@ -36,7 +36,8 @@ struct RollerContact {
   // The plate held to this roller's surface in the step: pressed, and its friction below the
   // limit (decided by saturation, physics/contact_friction.hpp).
   bool stuck = false;
-  // For judging whether the solver converged (lab/solver_convergence.hpp), at the deepest point:
+  // For judging whether the solver converged (lab/run/solver_convergence.hpp), at the deepest
+  // point:
   double point_x = 0.0;  // m, where the roller touches the plate, world x
   double point_z = 0.0;  // m, world z
   // The speed along the contact normal (out of the roller, > 0) the solver aims the plate's

@@ -1,4 +1,4 @@
-// frictionlab.analytic: the analytic model for one set-up (lab/analytic_report.hpp), as
+// frictionlab.analytic: the analytic model for one set-up (lab/analytic/analytic_report.hpp), as
 // `frictionlab analytic` computes it from a mu_k, a measured period or a material of the paper's
 // Table I: the thin and thick periods, mu_k +- d mu_k through both formulas, the tipping
 // amplitude, the rollers' slip and a friction law's closed forms.
@@ -10,7 +10,7 @@
 #include "core/paper_table.hpp"
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
-#include "lab/analytic_report.hpp"
+#include "lab/analytic/analytic_report.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/json_values.hpp"

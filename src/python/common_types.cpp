@@ -4,7 +4,7 @@
 
 #include "core/regime.hpp"
 #include "core/units.hpp"
-#include "lab/run_summary.hpp"
+#include "lab/run/run_summary.hpp"
 #include "python/bindings.hpp"
 
 namespace fl::python {

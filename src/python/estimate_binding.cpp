@@ -1,6 +1,6 @@
 // frictionlab.estimate and estimate_file: T +- dT and mu_k +- d mu_k from a Hall signal by the
 // rig's own estimator (src/estimator/period_estimator.h), as `frictionlab estimate LOG` finds
-// them (lab/log_estimate.hpp): from arrays of times and ADC values, or from a log file.
+// them (lab/logs/log_estimate.hpp): from arrays of times and ADC values, or from a log file.
 #include <cmath>
 #include <string>
 #include <utility>
@@ -10,8 +10,9 @@
 
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "lab/geometry_check.hpp"
-#include "lab/log_estimate.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_estimate.hpp"
+#include "lab/logs/log_table.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/json_values.hpp"
@@ -172,14 +173,19 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
       [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
          const Quantity& gravity, const std::string& geometry) {
         const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
-        return estimate_of(read_hall_log(path.string()), set_up);
+        HallLog log = read_hall_log(path.string());
+        // The log's sidecar over the arguments, as for `frictionlab estimate LOG`.
+        const LogSetUp rig = set_up_for_log(log.file, set_up, nullptr);
+        return estimate_of(std::move(log), rig);
       },
       py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm", py::arg("spacing_err") = "2 mm",
       py::arg("gravity") = "9.81 m/s^2", py::arg("geometry") = "auto",
       R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
 
 The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",
-"t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...). Arguments as estimate.
+"t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...). Arguments as estimate; the
+log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity, geometry) is read over
+them, as the command reads it.
 Raises InputError located in the log (file:line:column).)");
 }
 

@@ -12,9 +12,9 @@
 #include <pybind11/numpy.h>
 
 #include "core/cycle_tracker.hpp"
-#include "lab/experiment.hpp"
-#include "lab/host_estimator.hpp"
-#include "lab/regime_monitor.hpp"
+#include "lab/logs/host_estimator.hpp"
+#include "lab/run/experiment.hpp"
+#include "lab/run/regime_monitor.hpp"
 #include "sensor/hall_signal.hpp"
 
 namespace fl::python {

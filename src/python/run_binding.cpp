@@ -1,10 +1,11 @@
 // frictionlab.run: one simulation of a scene, as `frictionlab run` does it (the same loader,
-// compiled rig, experiment and outputs), returning the typed summary (lab/run_summary.hpp) with the
-// trajectory and the Hall samples as NumPy arrays. The GIL is released while the world steps, so
-// runs in several Python threads use several cores.
+// compiled rig, experiment and outputs), returning the typed summary (lab/run/run_summary.hpp) with
+// the trajectory and the Hall samples as NumPy arrays. The GIL is released while the world steps,
+// so runs in several Python threads use several cores.
 #include <dlfcn.h>
 #include <pybind11/stl.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
@@ -13,30 +14,28 @@
 #include <utility>
 #include <vector>
 
-#include "io/input_error.hpp"
-#include "lab/experiment.hpp"
-#include "lab/run_outputs.hpp"
-#include "lab/step_choice.hpp"
-#include "lab/video_module.hpp"
-#include "lab/video_recorder.hpp"
+#include "lab/request/run_request.hpp"
+#include "lab/run/run_outputs.hpp"
+#include "lab/video/video_module.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/field_spelling.hpp"
 #include "python/json_values.hpp"
 #include "python/loaded_scene.hpp"
 #include "python/record_arrays.hpp"
-#include "scene/captions_yaml.hpp"
 
 namespace fl::python {
 namespace {
 
 // A run's summary with what it recorded.
-struct RunResult : RunSummary {
+struct PythonRunResult : RunSummary {
   py::object trajectory = py::none();
   py::object hall = py::none();
   py::object cycles = py::none();
   py::object periods = py::none();
   py::object jump_list = py::none();
   std::optional<VideoReport> video;
+  std::string plot_failure;
 };
 
 // An estimator's value that needs `n` accepted periods, or None with fewer (never 0).
@@ -71,106 +70,93 @@ void find_video_module() {
 // A frame size: "1280x720" or (1280, 720).
 using FrameSize = std::variant<std::string, std::array<int, 2>>;
 
-VideoRequest video_request(
-    const LoadedScene& scene, const std::optional<Path>& video, const std::optional<Path>& frames,
-    const std::optional<Path>& still, const std::optional<std::string>& gl, std::optional<int> fps,
-    const std::optional<FrameSize>& size, const std::optional<Quantity>& slow_motion,
-    const std::optional<std::string>& camera, const std::optional<std::string>& title,
-    const std::optional<Quantity>& orbit, const std::optional<Path>& captions) {
-  VideoRequest request;
+// Ctrl-C during a run: Python's own handler only notes the signal, and only the main thread with
+// the GIL can see it. Every 1000 steps the run takes the GIL and asks; the first time Python has
+// an exception (KeyboardInterrupt) the run is told to stop after its step, and the exception is
+// raised when the run has kept what it did.
+class InterruptWatch {
+ public:
+  void check() {
+    if (interrupted_) return;
+    const py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) {
+      error_ = std::make_unique<py::error_already_set>();
+      interrupted_ = true;
+      stop_.store(true);
+    }
+  }
+  const std::atomic<bool>* flag() const { return &stop_; }
+  // Raises what Python had (KeyboardInterrupt), if it had anything.
+  void raise() {
+    if (error_) {
+      error_->restore();
+      error_.reset();
+      throw py::error_already_set();
+    }
+  }
+
+ private:
+  std::atomic<bool> stop_{false};
+  bool interrupted_ = false;
+  std::unique_ptr<py::error_already_set> error_;
+};
+
+PythonRunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& duration,
+                    std::optional<std::int64_t> seed, const std::optional<Path>& out_folder,
+                    const std::optional<Quantity>& accuracy, bool record, bool plot,
+                    const std::optional<Path>& video, const std::optional<Path>& frames,
+                    const std::optional<Path>& still, const std::optional<std::string>& gl,
+                    std::optional<int> fps, const std::optional<FrameSize>& size,
+                    const std::optional<Quantity>& slow_motion,
+                    const std::optional<std::string>& camera,
+                    const std::optional<std::string>& title, const std::optional<Quantity>& orbit,
+                    const std::optional<Path>& captions) {
+  RunRequest request;
+  request.scene = scene_source_argument(scene_to_run);
+  request.duration = duration;
+  request.seed = seed;
+  request.accuracy = accuracy;
+  if (out_folder) request.out = out_folder->string();
+  request.record = record;
+  request.plot = plot;
   if (video) request.video = video->string();
   if (frames) request.frames = frames->string();
   if (still) request.still = still->string();
-  // As the command line: an option that shapes frames the run does not draw is refused.
-  if (!request.any()) {
-    const std::pair<const char*, bool> frame_options[] = {
-        {"gl", gl.has_value()},         {"fps", fps.has_value()},
-        {"size", size.has_value()},     {"slow_motion", slow_motion.has_value()},
-        {"camera", camera.has_value()}, {"title", title.has_value()},
-        {"orbit", orbit.has_value()},   {"captions", captions.has_value()}};
-    for (const auto& [name, given] : frame_options)
-      if (given)
-        throw InputError(SourceLocation{name, 0, 0},
-                         "this argument shapes the frames of video, frames or still, and the run "
-                         "draws none; give one of them, or drop it");
-  }
   if (gl) request.gl = *gl;
   request.fps = fps;
-  if (size) {
-    if (const std::string* text = std::get_if<std::string>(&*size)) {
-      request.size = parse_video_size(*text);
-      if (!request.size)
-        throw InputError(
-            SourceLocation{"size", 0, 0},
-            "expected WIDTHxHEIGHT in pixels (e.g. 1280x720), found \"" + *text + "\"");
-    } else {
-      request.size = std::get<std::array<int, 2>>(*size);
-    }
-  }
-  request.slow_motion = optional_quantity(slow_motion, Dimension::kDimensionless, "slow_motion");
+  request.size = size;
+  request.slow_motion = slow_motion;
   request.camera = camera;
   request.title = title;
-  request.orbit = optional_quantity(orbit, Dimension::kAngularSpeed, "orbit");
-  if (captions) request.captions = load_captions_file(captions->string());
-  request.asset_dir = scene.source.asset_dir;
-  return request;
-}
+  request.orbit = orbit;
+  if (captions) request.captions = captions->string();
+  const PreparedRun prepared = prepare_run(request);
+  if (prepared.frames) find_video_module();
+  for (const std::string& warning : prepared.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, spelled(warning).c_str(), 1);
 
-RunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& duration,
-              std::optional<std::int64_t> seed, const std::optional<Path>& out_folder,
-              const std::optional<Quantity>& accuracy, bool record,
-              const std::optional<Path>& video, const std::optional<Path>& frames,
-              const std::optional<Path>& still, const std::optional<std::string>& gl,
-              std::optional<int> fps, const std::optional<FrameSize>& size,
-              const std::optional<Quantity>& slow_motion, const std::optional<std::string>& camera,
-              const std::optional<std::string>& title, const std::optional<Quantity>& orbit,
-              const std::optional<Path>& captions) {
-  LoadedScene loaded = scene_argument(scene_to_run);
-  std::vector<SceneOverride> more;
-  if (duration) {
-    quantity_argument(*duration, Dimension::kTime, "duration");  // checks the unit
-    more.push_back({"world.duration", quantity_text(*duration)});
-  }
-  if (seed) more.push_back({"world.seed", std::to_string(*seed)});
-  if (!more.empty()) loaded = with_overrides(loaded, more);
-  const std::optional<std::string> out =
-      out_folder ? std::optional(out_folder->string()) : std::nullopt;
-  const std::optional<double> target =
-      optional_quantity(accuracy, Dimension::kDimensionless, "accuracy");
-  const VideoRequest request = video_request(loaded, video, frames, still, gl, fps, size,
-                                             slow_motion, camera, title, orbit, captions);
-  if (request.any()) find_video_module();
-
-  RunResult result;
-  RunRecording recording;
+  PythonRunResult result;
+  RunResult done;
+  InterruptWatch watch;
   {
     const py::gil_scoped_release released;
-    std::optional<Scene> changed;
-    if (target) {
-      changed = *loaded.scene;
-      changed->world.time_step = step_for_accuracy(*changed, *target);
-    }
-    const Scene& scene = changed ? *changed : *loaded.scene;
-    RunOptions options;
-    options.record_trajectory = record || (out && scene.output.trajectory);
-    options.record_hall = record || (out && scene.output.hall);
-    options.record_cycles = record || (out && scene.output.cycles);
-    std::unique_ptr<VideoRecorder> recorder;
-    if (request.any()) {
-      recorder = std::make_unique<VideoRecorder>(scene, request);
-      options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
-    }
-    const CompiledRig rig = compile_rig(scene);
-    static_cast<RunSummary&>(result) = run_experiment(rig, options, &recording);
-    if (recorder)
-      result.video = recorder->finish(VideoEnding{result.failure.value_or(""), result.duration});
-    if (out) write_run_outputs(*out, rig, result, recording);
+    RunControl control;
+    control.stop = watch.flag();
+    control.progress = [&watch](double) { watch.check(); };
+    done = execute_run(prepared, control);
   }
+  // Ctrl-C: the run kept what it did (its files are written); Python hears KeyboardInterrupt.
+  watch.raise();
+  static_cast<RunSummary&>(result) = std::move(done.summary);
+  result.video = std::move(done.video);
+  result.plot_failure = done.plot_failure;
   if (record) {
+    const bool sensor = prepared.scene.scene->sensor.has_value();
+    RunRecording& recording = done.recording;
     result.trajectory = trajectory_array(std::move(recording.trajectory));
-    if (loaded.scene->sensor) result.hall = hall_array(std::move(recording.hall));
+    if (sensor) result.hall = hall_array(std::move(recording.hall));
     result.cycles = cycles_array(std::move(recording.cycles));
-    if (loaded.scene->sensor) result.periods = periods_array(std::move(recording.periods));
+    if (sensor) result.periods = periods_array(std::move(recording.periods));
     result.jump_list = jumps_array(std::move(recording.jumps));
   }
   return result;
@@ -263,7 +249,7 @@ void bind_reports(py::module_& m) {
 
 void bind_summary(py::module_& m) {
   using S = RunSummary;
-  py::class_<S>(m, "RunSummary", R"(What one run found (lab/run_summary.hpp), SI throughout.
+  py::class_<S>(m, "RunSummary", R"(What one run found (lab/run/run_summary.hpp), SI throughout.
 
 A value the run did not measure is None, never 0. str(summary) is the summary
 `frictionlab run` prints; summary.json() the object `frictionlab run --json` prints.)")
@@ -376,7 +362,7 @@ A value the run did not measure is None, never 0. str(summary) is the summary
           },
           "The object `frictionlab run --json` prints (docs/cli.md): summary.json's keys and "
           "timing.json's.")
-      .def("__str__", &summary_text)
+      .def("__str__", [](const S& s) { return spelled(summary_text(s)); })
       .def("__repr__", [](const py::object& self) {
         const S& s = self.cast<const S&>();
         return "<frictionlab." + self.get_type().attr("__name__").cast<std::string>() + " '" +
@@ -386,7 +372,8 @@ A value the run did not measure is None, never 0. str(summary) is the summary
                ">";
       });
 
-  py::class_<RunResult, S>(m, "RunResult", R"(A run's summary (RunSummary) with what it recorded.
+  py::class_<PythonRunResult, S>(m, "RunResult",
+                                 R"(A run's summary (RunSummary) with what it recorded.
 
 trajectory: structured array, shape (steps + 1,), the start and every step; fields
   t_s, x_m, z_m, pitch_rad, vx_m_s, vz_m_s, pitch_rate_rad_s, y_m, yaw_rad (the plate's
@@ -404,12 +391,18 @@ jump_list: structured array, shape (jumps,): each time the plate left a roller, 
   start_s, end_s, height_m, roller_angle_rad, open (jumps.csv; `jumps` is their count).
 Each is None when the run was made with record=False. Each column (result.trajectory["x_m"])
 is a view, not a copy.)")
-      .def_readonly("trajectory", &RunResult::trajectory)
-      .def_readonly("hall", &RunResult::hall)
-      .def_readonly("cycles", &RunResult::cycles)
-      .def_readonly("periods", &RunResult::periods)
-      .def_readonly("jump_list", &RunResult::jump_list)
-      .def_readonly("video", &RunResult::video, "the frames drawn, or None");
+      .def_readonly("trajectory", &PythonRunResult::trajectory)
+      .def_readonly("hall", &PythonRunResult::hall)
+      .def_readonly("cycles", &PythonRunResult::cycles)
+      .def_readonly("periods", &PythonRunResult::periods)
+      .def_readonly("jump_list", &PythonRunResult::jump_list)
+      .def_readonly("video", &PythonRunResult::video, "the frames drawn, or None")
+      .def_property_readonly(
+          "plot_failure",
+          [](const PythonRunResult& r) {
+            return r.plot_failure.empty() ? std::nullopt : std::optional(r.plot_failure);
+          },
+          "why plot=True drew no plot, or None");
 }
 
 }  // namespace
@@ -419,12 +412,12 @@ void bind_run(py::module_& m) {
   bind_summary(m);
   m.def("run", &run, py::arg("scene"), py::arg("duration") = py::none(),
         py::arg("seed") = py::none(), py::arg("out") = py::none(), py::kw_only(),
-        py::arg("accuracy") = py::none(), py::arg("record") = true, py::arg("video") = py::none(),
-        py::arg("frames") = py::none(), py::arg("still") = py::none(), py::arg("gl") = py::none(),
-        py::arg("fps") = py::none(), py::arg("size") = py::none(),
-        py::arg("slow_motion") = py::none(), py::arg("camera") = py::none(),
-        py::arg("title") = py::none(), py::arg("orbit") = py::none(),
-        py::arg("captions") = py::none(),
+        py::arg("accuracy") = py::none(), py::arg("record") = true, py::arg("plot") = false,
+        py::arg("video") = py::none(), py::arg("frames") = py::none(),
+        py::arg("still") = py::none(), py::arg("gl") = py::none(), py::arg("fps") = py::none(),
+        py::arg("size") = py::none(), py::arg("slow_motion") = py::none(),
+        py::arg("camera") = py::none(), py::arg("title") = py::none(),
+        py::arg("orbit") = py::none(), py::arg("captions") = py::none(),
         R"(Simulates a scene, as `frictionlab run SCENE` does; returns a RunResult.
 
 scene: a Scene (load_scene) or a scene file's path.
@@ -436,17 +429,22 @@ out: a folder to write what `frictionlab run --out` writes (summary.json, timing
   trajectory.csv, hall.csv, cycles.csv, as the scene's output part asks).
 accuracy: pick the largest time step whose predicted period bias is below this ("0.001%").
 record: keep the trajectory, the Hall samples and the cycles as arrays (RunResult).
+plot: with out, draw out/periods.png as `frictionlab run --plot` (python3 + matplotlib); a plot
+  that fails leaves the results, and plot_failure says why.
 video, frames, still, gl, fps, size, slow_motion, camera, title, orbit, captions: as
   `frictionlab run --video` and its options (orbit: "10deg/s" or rad/s; captions: a YAML file
   with a `captions:` list, replacing the scene's); without video, frames or still they are
-  refused (a build with rendering only; RuntimeError says what is missing).
+  refused (a build with rendering only; InputError says what is missing).
   The video module is found through $FRICTIONLAB_VIDEO_MODULE, which is set to the one
   beside this module (or the build's) when it is not set.
 
 The GIL is released while the world steps: runs in several threads run in parallel, each
-giving the result a run on its own gives; Ctrl-C is seen when the run returns. A run that a
-guard stopped returns (failure says why; regime NUMERICALLY_FAILED or LOST) rather than
-raising. Raises InputError for bad input.)");
+giving the result a run on its own gives. Ctrl-C stops the run after its step, as it stops
+`frictionlab run`: the files in out are written for the steps done (interrupted_at_s), and
+KeyboardInterrupt is raised. A run that a guard stopped returns (failure says why; regime
+NUMERICALLY_FAILED or LOST) rather than raising. Raises InputError for bad input, before any
+work: everything `frictionlab run` refuses with exit status 2, an out, video or still that
+cannot be written included.)");
 }
 
 }  // namespace fl::python

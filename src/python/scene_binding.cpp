@@ -15,21 +15,6 @@
 
 namespace fl::python {
 
-LoadedScene load_scene_source(SceneSource source) {
-  const SceneInputs inputs = scene_inputs(source.asset_dir);
-  Scene scene =
-      source.file.empty()
-          ? load_scene_text(source.text, source.name, source.overrides, inputs.paper, inputs.parts)
-          : load_scene_file(source.file, source.overrides, inputs.paper, inputs.parts);
-  return {std::make_shared<const Scene>(std::move(scene)), std::move(source)};
-}
-
-LoadedScene with_overrides(const LoadedScene& scene, const std::vector<SceneOverride>& more) {
-  SceneSource source = scene.source;
-  source.overrides.insert(source.overrides.end(), more.begin(), more.end());
-  return load_scene_source(std::move(source));
-}
-
 std::vector<SceneOverride> overrides_argument(py::handle set) {
   std::vector<SceneOverride> out;
   if (set.is_none()) return out;
@@ -48,12 +33,17 @@ std::vector<SceneOverride> overrides_argument(py::handle set) {
   return out;
 }
 
-LoadedScene scene_argument(const SceneArgument& scene) {
-  if (const LoadedScene* loaded = std::get_if<LoadedScene>(&scene)) return *loaded;
+SceneSource scene_source_argument(const SceneArgument& scene) {
+  if (const LoadedScene* loaded = std::get_if<LoadedScene>(&scene)) return loaded->source;
   SceneSource source;
   source.file = std::get<std::filesystem::path>(scene).string();
   source.asset_dir = asset_dir(std::nullopt);
-  return load_scene_source(std::move(source));
+  return source;
+}
+
+LoadedScene scene_argument(const SceneArgument& scene) {
+  if (const LoadedScene* loaded = std::get_if<LoadedScene>(&scene)) return *loaded;
+  return load_scene_source(scene_source_argument(scene));
 }
 
 namespace {

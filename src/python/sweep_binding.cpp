@@ -1,5 +1,5 @@
 // frictionlab.sweep: every point of a sweep file run in parallel on local threads, resumable, as
-// `frictionlab sweep SWEEP.yaml` runs it (lab/sweep_run.hpp): the same folder of results, and
+// `frictionlab sweep SWEEP.yaml` runs it (lab/sweep/sweep_run.hpp): the same folder of results, and
 // its rows returned as columns.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "lab/sweep_results.hpp"
-#include "lab/sweep_run.hpp"
+#include "lab/sweep/sweep_results.hpp"
+#include "lab/sweep/sweep_run.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/json_values.hpp"

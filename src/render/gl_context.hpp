@@ -47,7 +47,7 @@ struct GlContextOptions {
   int height = 360;         // pixels
   int samples = 4;          // multisampling: 1 (none) or 4 (llvmpipe offers only 4)
   std::string backend;      // "osmesa", "egl", "auto"; empty: $FRICTIONLAB_GL, then auto
-  std::string source = "";  // where `backend` came from, for messages (e.g. "--gl")
+  std::string source = "";  // where `backend` came from, for messages (a request's field)
 };
 
 class GlContext {

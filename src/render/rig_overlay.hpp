@@ -40,7 +40,7 @@ struct EstimatorValues {
   int learning_pulses = 0;      // pulses it learned the signal from (not timed)
   bool signal_learned = false;  // it times pulses
   bool geometry_known = false;  // it has recognised one pulse or a pair per period
-  // The periods the timed pulses give until the geometry is known (lab/hall_estimator.hpp):
+  // The periods the timed pulses give until the geometry is known (lab/run/hall_estimator.hpp):
   // their number, mean and standard deviation [s].
   int provisional_periods = 0;
   std::optional<double> provisional_period;

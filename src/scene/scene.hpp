@@ -205,7 +205,7 @@ struct OutputDesc {
   bool trajectory = true;  // trajectory.csv with --out
   bool hall = true;        // hall.csv with --out (when the scene has a sensor)
   bool summary = true;     // summary.json with --out
-  bool cycles = true;      // cycles.csv with --out (the plate's cycles, lab/cycle_report.hpp)
+  bool cycles = true;      // cycles.csv with --out (the plate's cycles, lab/run/cycle_report.hpp)
   bool periods = true;     // periods.csv with --out: each period the rig's estimator judged
   bool jumps = true;       // jumps.csv with --out, when the plate jumped
 };

@@ -242,8 +242,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
     return parts();
   };
   root.expect_map();
-  for (const SceneOverride& o : overrides)
-    root.set_path(o.path, o.value, "--set " + o.path + "=" + o.value);
+  for (const SceneOverride& o : overrides) root.set_path(o.path, o.value, override_location(o));
   root.allow_keys({"format", "name", "expect", "world", "rollers", "plate", "magnets", "sensor",
                    "friction", "drive", "frame", "output", "video"});
   const YamlNode format = root.at("format");
@@ -296,14 +295,23 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
 
 }  // namespace
 
+SourceLocation override_location(const SceneOverride& o) {
+  return SourceLocation::of_field("set", o.path + "=" + o.value);
+}
+
 SceneOverride parse_override(std::string_view text) {
   const std::size_t eq = text.find('=');
-  const SourceLocation where{"--set " + std::string(text), 0, 0};
+  const SourceLocation where = SourceLocation::of_field("set", std::string(text));
   if (eq == std::string_view::npos)
     throw InputError(where, "expected key.path=value (e.g. plate.thickness=5mm), found no '='");
   SceneOverride o{std::string(text.substr(0, eq)), std::string(text.substr(eq + 1))};
   if (o.path.empty()) throw InputError(where, "expected key.path=value, found no key before '='");
   return o;
+}
+
+bool located_at_override(const InputError& e, std::string_view path) {
+  return e.where().field == "set" && e.where().field_value &&
+         e.where().field_value->starts_with(std::string(path) + "=");
 }
 
 Scene load_scene_text(std::string_view text, const std::string& name,

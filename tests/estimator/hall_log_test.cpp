@@ -1,6 +1,7 @@
 // Reading Hall-sensor logs: the rig firmware's serial output and CSVs of time and ADC value, with
 // the columns found by name, and located errors for logs that cannot be used.
 #include "io/hall_log.hpp"
+#include "cli/field_spelling.hpp"
 
 #include <string>
 
@@ -16,7 +17,7 @@ std::string error_of(const std::string& text) {
   try {
     parse_hall_log(text, "log.csv");
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }

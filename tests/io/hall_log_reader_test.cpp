@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/field_spelling.hpp"
 #include "io/hall_log.hpp"
 #include "io/hall_log_reader.hpp"
 #include "io/input_error.hpp"
@@ -30,7 +31,7 @@ std::string error_of(const std::string& text, const HallLogOptions& options = {}
   try {
     parse_hall_log(text, "log.csv", options);
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }
@@ -169,7 +170,7 @@ TEST(HallLogReader, ColumnsAndRateFromTheCommandLine) {
   columns.columns = "adc,_,t_ms";
   const HallLog by_option =
       parse_hall_log("t,whatever,adc\n512,9,0\n513,9,2\n514,9,4\n", "x", columns);
-  EXPECT_EQ(by_option.reading.columns_from, "--columns");
+  EXPECT_EQ(by_option.reading.columns_from, "columns");
   EXPECT_EQ(by_option.reading.lines_skipped, 1);  // the header it replaces
   EXPECT_DOUBLE_EQ(by_option.t_s[2], 0.004);
   EXPECT_EQ(by_option.adc[2], 514);
@@ -179,7 +180,7 @@ TEST(HallLogReader, ColumnsAndRateFromTheCommandLine) {
   std::string values_text = "512\n513\n514\nx\n";
   for (int i = 0; i < 20; ++i) values_text += "516\n";
   const HallLog values = parse_hall_log(values_text, "x", rate);
-  EXPECT_EQ(values.reading.time_unit_from, "--rate");
+  EXPECT_EQ(values.reading.time_unit_from, "rate");
   ASSERT_EQ(values.adc.size(), 23u);
   EXPECT_DOUBLE_EQ(values.t_s[3], 0.008);  // the garbled line still took a sample's time
   // --rate times a log that has a time column too.
@@ -190,11 +191,11 @@ TEST(HallLogReader, ColumnsAndRateFromTheCommandLine) {
   for (const char* bad : {"t,t_ms,adc", "t_us", "adc,banana", "adc,value"}) {
     HallLogOptions o;
     o.columns = bad;
-    expect_starts(error_of("1,2,3\n", o), "error: --columns: expected");
+    expect_starts(error_of("1,2,3\n", o), "--columns: error: expected");
   }
   HallLogOptions unit;
   unit.time_unit = "minutes";
-  expect_starts(error_of("t,adc\n", unit), "error: --time-unit: expected us, ms or s");
+  expect_starts(error_of("t,adc\n", unit), "--time-unit: error: expected us, ms or s");
 }
 
 TEST(HallLogReader, ACorruptedLineIsLeftOutCountedAndLocated) {

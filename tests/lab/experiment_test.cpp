@@ -1,7 +1,7 @@
 // A whole run: the period the rig's estimator measures from the simulated Hall signal against
 // the thick-plate formula (the claim: within 0.05 %), the parts built only when named,
 // determinism of every output, and the choice of a step from an accuracy target.
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 
 #include <cmath>
 #include <string>
@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 
 #include "core/analytic_model.hpp"
-#include "lab/accuracy_study.hpp"
-#include "lab/run_outputs.hpp"
-#include "lab/step_choice.hpp"
+#include "lab/run/run_outputs.hpp"
+#include "lab/run/step_choice.hpp"
+#include "lab/studies/accuracy_study.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -4,7 +4,7 @@
 // the integrator's phase error, -(omega dt)^2 / 24 of T, shifts every T^2 by the same
 // -(2 pi dt)^2 / 12 (docs/physics.md): the closed form reads it as a larger h_c, many standard
 // errors off the plate's; through the rig the plate's h_c comes back.
-#include "lab/fit_through_rig.hpp"
+#include "lab/compare/fit_through_rig.hpp"
 
 #include <cmath>
 #include <vector>
@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "core/analytic_model.hpp"
-#include "lab/simulated_period.hpp"
+#include "lab/compare/simulated_period.hpp"
 #include "scene/scene.hpp"
 #include "support/scene_fixture.hpp"
 

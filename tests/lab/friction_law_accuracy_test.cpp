@@ -10,7 +10,7 @@
 
 #include "core/friction_oscillator.hpp"
 #include "core/stick_slip_cycle.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "scene/compiled_rig.hpp"
 #include "support/scene_fixture.hpp"
 

@@ -3,7 +3,8 @@
 // sensor at the exact middle of its travel, or a little off it (the periods alternate), or too
 // few samples across a pulse, or clipped pulses, the check says the log cannot tell and asks
 // for --geometry; following that advice gives the true period.
-#include "lab/geometry_check.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "cli/field_spelling.hpp"
 
 #include <cstdio>
 #include <string>
@@ -42,7 +43,7 @@ Checked check(const test::HallSignal& s, fl_estimator::Geometry geometry) {
   try {
     require_geometry(log, c.estimate, c.check, "");
   } catch (const InputError& e) {
-    c.error = e.what();
+    c.error = cli::spelled(e.what());
   }
   return c;
 }

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lab/experiment.hpp"
-#include "lab/hall_estimator.hpp"
+#include "lab/run/experiment.hpp"
+#include "lab/run/hall_estimator.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -2,7 +2,7 @@
 // truth: each pulse at a turning point of the plate, the periods at the true period, and the same
 // on a clock that wraps around 2^32 us in the middle of the signal, where the pulses' times go on
 // past the wrap instead of starting again from zero.
-#include "lab/host_estimator.hpp"
+#include "lab/logs/host_estimator.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "lab/experiment.hpp"
-#include "lab/host_estimator.hpp"
+#include "lab/logs/host_estimator.hpp"
+#include "lab/run/experiment.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -14,10 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/field_spelling.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "lab/geometry_check.hpp"
-#include "lab/log_estimate.hpp"
+#include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_estimate.hpp"
 
 namespace fl {
 namespace {
@@ -51,7 +52,7 @@ std::string error_of(const std::string& name, const HallLogOptions& options = {}
   try {
     estimate(name, options, geometry);
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }

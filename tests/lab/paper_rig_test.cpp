@@ -9,9 +9,9 @@
 
 #include "core/analytic_model.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/experiment.hpp"
-#include "lab/regime_theory.hpp"
-#include "lab/run_outputs.hpp"
+#include "lab/run/experiment.hpp"
+#include "lab/run/regime_theory.hpp"
+#include "lab/run/run_outputs.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/drive_layout.hpp"
 #include "scene/scene_yaml.hpp"

@@ -18,7 +18,7 @@
 
 #include "core/ramp.hpp"
 #include "core/stick_slip_cycle.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "core/stick_slip_cycle.hpp"
-#include "lab/cycle_report.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/cycle_report.hpp"
+#include "lab/run/experiment.hpp"
 
 namespace fl {
 namespace {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/runout.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
 #include "support/scene_fixture.hpp"

@@ -1,9 +1,9 @@
-// The contact solver's convergence check (lab/solver_convergence.hpp): against a plate at rest on
-// two rollers whose forces are known in closed form; silent on converged scenes; firing on a
+// The contact solver's convergence check (lab/run/solver_convergence.hpp): against a plate at rest
+// on two rollers whose forces are known in closed form; silent on converged scenes; firing on a
 // starved solver; and the 200 mm plate on rollers 10 mm apart, which at the default iterations
 // used to be diagnosed "tips", now oscillates with the thick-plate period; and docs/physics.md's
 // table of the solver at iterations held fixed.
-#include "lab/solver_convergence.hpp"
+#include "lab/run/solver_convergence.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@
 #include "core/integrator_error.hpp"
 #include "core/oscillation_tracker.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/scene_yaml.hpp"
 

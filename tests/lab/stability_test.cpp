@@ -1,6 +1,6 @@
 // The stability catalogue (scenes/extreme/): every case ends in the regime theory expects, none
 // in NaN, a hang or a crash; the stiff cases stay accurate, not merely finite.
-#include "lab/stability_study.hpp"
+#include "lab/studies/stability_study.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "io/paper_table_yaml.hpp"
-#include "lab/experiment.hpp"
-#include "lab/regime_theory.hpp"
+#include "lab/run/experiment.hpp"
+#include "lab/run/regime_theory.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace fl {

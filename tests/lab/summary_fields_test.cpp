@@ -1,14 +1,14 @@
 // The one table of result fields: names that do not collide; and the rule that a period (and
 // the mu_k from it) exists only for a harmonic oscillation, with null (never 0) where the run
 // measured nothing.
-#include "lab/summary_fields.hpp"
+#include "lab/run/summary_fields.hpp"
 
 #include <set>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "lab/experiment.hpp"
+#include "lab/run/experiment.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -10,8 +10,9 @@
 #include <string>
 
 #include "../support/rig_fixture.hpp"
+#include "cli/field_spelling.hpp"
 #include "io/input_error.hpp"
-#include "lab/video_settings.hpp"
+#include "lab/video/video_settings.hpp"
 #include "render/force_overlay.hpp"
 #include "render/motion_strip.hpp"
 #include "render/phase_portrait.hpp"
@@ -38,7 +39,7 @@ std::string request_error(const Scene& scene, const VideoRequest& request) {
   try {
     effective_video(scene, request);
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }
@@ -689,7 +690,7 @@ std::string video_error(const std::string& video) {
   try {
     with_video(video);
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }

@@ -1,6 +1,7 @@
 // Scene files: values with units into SI, strict keys with located errors and suggestions,
 // --set overrides, the paper's materials by name, and refusal of impossible set-ups.
 #include "scene/scene_yaml.hpp"
+#include "cli/field_spelling.hpp"
 
 #include <unistd.h>
 
@@ -53,7 +54,7 @@ std::string error_of(const std::string& text, std::vector<SceneOverride> overrid
   try {
     load(text, std::move(overrides));
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "";
 }

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/analytic_model.hpp"
-#include "lab/compare.hpp"
+#include "lab/compare/compare.hpp"
 #include "scene/compiled_rig.hpp"
 #include "support/scene_fixture.hpp"
 

@@ -13,8 +13,8 @@
 
 #include "core/analytic_model.hpp"
 #include "io/hall_log.hpp"
-#include "lab/experiment.hpp"
-#include "lab/log_against_rig.hpp"
+#include "lab/compare/log_against_rig.hpp"
+#include "lab/run/experiment.hpp"
 #include "scene/compiled_rig.hpp"
 #include "support/scene_fixture.hpp"
 

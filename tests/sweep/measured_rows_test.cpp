@@ -5,8 +5,8 @@
 
 #include "io/csv_table.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/compare.hpp"
-#include "lab/measured_rows.hpp"
+#include "lab/compare/compare.hpp"
+#include "lab/compare/measured_rows.hpp"
 
 namespace fl {
 namespace {

@@ -14,9 +14,9 @@
 #include <gtest/gtest.h>
 
 #include "io/paper_table_yaml.hpp"
-#include "lab/compare.hpp"
-#include "lab/experiment.hpp"
-#include "lab/sweep_run.hpp"
+#include "lab/compare/compare.hpp"
+#include "lab/run/experiment.hpp"
+#include "lab/sweep/sweep_run.hpp"
 #include "support/scene_fixture.hpp"
 
 namespace fl {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "io/paper_table_yaml.hpp"
-#include "lab/sweep_run.hpp"
+#include "lab/sweep/sweep_run.hpp"
 
 namespace fl {
 namespace {
@@ -130,7 +130,7 @@ TEST(SweepRun, FailingPointsAreRecordedAndTheSweepGoesOn) {
   EXPECT_NE(rows[1]["error"].get<std::string>().find("time step"), std::string::npos) << rows[1];
   // An impossible set-up and a bad value: invalid, with the loader's located message.
   EXPECT_EQ(rows[2]["status"], "invalid");
-  EXPECT_NE(rows[2]["error"].get<std::string>().find("--set rollers.spacing=15 mm"),
+  EXPECT_NE(rows[2]["error"].get<std::string>().find("set rollers.spacing=15 mm"),
             std::string::npos)
       << rows[2]["error"];
   EXPECT_NE(rows[2]["error"].get<std::string>().find("overlap"), std::string::npos);
@@ -142,7 +142,7 @@ TEST(SweepRun, FailingPointsAreRecordedAndTheSweepGoesOn) {
   EXPECT_EQ(o.status.at("invalid"), 4);
   EXPECT_EQ(o.status.at("failed"), 1);
   // The error is quoted in the CSV (it holds commas and quotes).
-  EXPECT_NE(read(dir / "results.csv").find(",\"--set rollers.spacing=abc: error: "),
+  EXPECT_NE(read(dir / "results.csv").find(",\"set rollers.spacing=abc: error: "),
             std::string::npos);
   EXPECT_NE(read(dir / "results.csv").find("found \"\"abc\"\""), std::string::npos);
 }

@@ -5,8 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include "cli/field_spelling.hpp"
 #include "io/paper_table_yaml.hpp"
-#include "lab/sweep_spec.hpp"
+#include "lab/sweep/sweep_spec.hpp"
 
 namespace fl {
 namespace {
@@ -30,7 +31,7 @@ std::string error_of(const std::string& text) {
   try {
     load(text);
   } catch (const InputError& e) {
-    return e.what();
+    return cli::spelled(e.what());
   }
   return "no error";
 }
@@ -271,7 +272,7 @@ TEST(SweepSpec, Shards) {
   try {
     parse_shard("4/3");
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()),
+    EXPECT_EQ(cli::spelled(e.what()),
               "--shard 4/3: error: K must be from 1 to N (shard K of N), found 4/3");
   }
 }

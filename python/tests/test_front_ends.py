@@ -1,0 +1,103 @@
+"""The command and the module are two spellings of the same requests (lab/request): the same
+request gives the same files, the same numbers, the same error (the field it is about and the
+message) and the same ending (exit status 2 is InputError, 3 a summary that failed)."""
+
+import json
+import shutil
+
+import pytest
+
+import frictionlab as fl
+from conftest import SCENES, TIMING_KEYS, cli
+
+LOGS = SCENES.parent / "tests" / "data" / "logs"
+
+
+def message(text):
+    """A located diagnostic without its location: the text after "error: "."""
+    return text.strip().split("error: ", 1)[1]
+
+
+def located_field(text):
+    """The location before ": error: " on the command line."""
+    return text.strip().split(": error: ", 1)[0]
+
+
+@pytest.mark.parametrize("scene", ["minimal.yaml", "paper-rig.yaml"])
+def test_a_run_writes_the_same_bytes(tmp_path, scene):
+    cli("run", SCENES / scene, "--duration", "3s", "--out", tmp_path / "cli")
+    fl.run(SCENES / scene, duration="3s", out=tmp_path / "py", record=False)
+    for name in ["summary.json", "trajectory.csv", "hall.csv", "periods.csv", "cycles.csv"]:
+        cli_file, py_file = tmp_path / "cli" / name, tmp_path / "py" / name
+        assert cli_file.exists() == py_file.exists(), name
+        if cli_file.exists():
+            assert cli_file.read_bytes() == py_file.read_bytes(), name
+
+
+def test_a_run_prints_the_same_summary():
+    printed = json.loads(cli("run", SCENES / "minimal.yaml", "--duration", "2s", "--json").stdout)
+    returned = fl.run(SCENES / "minimal.yaml", duration="2s", record=False).json()
+    for key in TIMING_KEYS:
+        printed.pop(key), returned.pop(key)
+    assert printed == returned
+
+
+# Bad requests, as each front end spells them: the command's options, the module's arguments,
+# the field both name, and how each spells a field its message mentions (None: none).
+BAD_RUNS = [
+    (["--size", "640x480"], {"size": "640x480"}, "size", ("--video", "video")),
+    (["--fps", "10"], {"fps": 10}, "fps", ("--still", "still")),
+    (["--accuracy", "0.01%", "--set", "world.time_step=2ms"],
+     {"accuracy": "0.01%", "set": ["world.time_step=2ms"]}, "accuracy",
+     ("--set world.time_step=2ms", "set={'world.time_step': '2ms'}")),
+    (["--duration", "5kg"], {"duration": "5kg"}, "duration", None),
+    (["--plot"], {"plot": True}, "plot", ("--out", "out")),
+    (["--video", "clip.avi"], {"video": "clip.avi"}, "video", None),
+]
+
+
+@pytest.mark.parametrize("options,arguments,field,mention", BAD_RUNS,
+                         ids=[b[2] for b in BAD_RUNS])
+def test_a_bad_run_is_the_same_error(options, arguments, field, mention):
+    done = cli("run", SCENES / "minimal.yaml", *options, status=2)
+    arguments = dict(arguments)
+    scene = fl.load_scene(SCENES / "minimal.yaml", set=arguments.pop("set", None))
+    with pytest.raises(fl.InputError) as caught:
+        fl.run(scene, record=False, **arguments)
+    assert caught.value.field == field
+    assert located_field(done.stderr).startswith("--" + field.replace("_", "-"))
+    assert located_field(str(caught.value)).startswith(field)
+    printed, raised = message(done.stderr), message(str(caught.value))
+    if mention:
+        assert mention[0] in printed and mention[1] in raised
+        printed, raised = printed.replace(mention[0], "FIELD"), raised.replace(mention[1], "FIELD")
+    # The same words, each front end's spelling of the fields inside them aside.
+    assert raised == printed.replace("--", "")
+
+
+def test_an_output_that_cannot_be_written_is_bad_input_in_both(tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("")
+    done = cli("run", SCENES / "minimal.yaml", "--out", blocker, status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.run(SCENES / "minimal.yaml", out=blocker, record=False)
+    assert caught.value.field == "out"
+    assert message(done.stderr) == message(str(caught.value))
+
+
+def test_a_run_a_guard_stopped_fails_in_both():
+    done = cli("run", SCENES / "extreme" / "rollers-outward.yaml", "--json", status=3)
+    result = fl.run(SCENES / "extreme" / "rollers-outward.yaml", record=False)
+    assert result.failure is not None
+    assert json.loads(done.stdout)["failure"] == result.failure
+
+
+def test_a_logs_sidecar_sets_the_rig_in_both(tmp_path):
+    log = tmp_path / "lego-l075.csv"
+    shutil.copy(LOGS / "clean.csv", log)
+    (tmp_path / "lego-l075.yaml").write_text("spacing: 75 mm\n")
+    printed = json.loads(cli("estimate", log, "--json").stdout)
+    returned = fl.estimate_file(log)
+    assert printed["spacing_m"] == pytest.approx(0.075)
+    assert returned.spacing == pytest.approx(0.075)
+    assert returned.mu_k == pytest.approx(printed["mu_k"])

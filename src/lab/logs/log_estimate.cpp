@@ -1,0 +1,304 @@
+#include "lab/logs/log_estimate.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "io/field_ref.hpp"
+#include "io/input_error.hpp"
+#include "io/json_value.hpp"
+#include "lab/logs/geometry_check.hpp"
+
+namespace fl {
+namespace {
+
+// The log's line nearest to a time.
+int line_at(const HallLog& log, double t) {
+  const auto it = std::lower_bound(log.t_s.begin(), log.t_s.end(), t);
+  const std::size_t i = it == log.t_s.end() ? log.t_s.size() - 1 : it - log.t_s.begin();
+  return log.line[i];
+}
+
+nlohmann::json periods_json(const LogEstimate& estimate) {
+  nlohmann::json periods = nlohmann::json::array();
+  for (const EstimatedPeriod& p : estimate.periods)
+    periods.push_back({{"start_s", p.start},
+                       {"end_s", p.end},
+                       {"period_s", p.period},
+                       {"status", period_status_name(p.status)}});
+  return periods;
+}
+
+// The estimator's verdict: the geometry, the periods' counts, T +- dT and mu_k +- d mu_k.
+nlohmann::json verdict_json(const LogEstimate& estimate) {
+  const fl_estimator::Stats& s = estimate.stats;
+  return {{"geometry", geometry_name(estimate.geometry)},
+          {"periods_used", s.periods_used},
+          {"periods_discarded", s.periods_discarded},
+          {"period_s", static_cast<double>(s.period_s)},
+          {"period_std_s", static_cast<double>(s.period_std_s)},
+          {"period_sem_s", static_cast<double>(s.period_sem_s)},
+          {"mu_k", static_cast<double>(s.mu_k)},
+          {"mu_k_err_worst", static_cast<double>(s.mu_k_err_worst)},
+          {"mu_k_err_quadrature", static_cast<double>(s.mu_k_err_quadrature)}};
+}
+
+}  // namespace
+
+fl_estimator::Config LogSetUp::config() const {
+  fl_estimator::Config config;
+  config.spacing_m = static_cast<float>(spacing);
+  config.spacing_err_m = static_cast<float>(spacing_err);
+  config.gravity_m_s2 = static_cast<float>(gravity);
+  config.geometry = geometry;
+  return config;
+}
+
+const char* period_status_name(std::uint8_t status) {
+  return status == fl_estimator::kAccepted          ? "accepted"
+         : status == fl_estimator::kRejectedOutlier ? "outlier"
+                                                    : "broken";
+}
+
+const char* geometry_name(fl_estimator::Geometry geometry) {
+  return geometry == fl_estimator::kOnePulse    ? "one-pulse"
+         : geometry == fl_estimator::kPulsePair ? "pair"
+                                                : "unknown";
+}
+
+std::optional<fl_estimator::Geometry> geometry_from_option(std::string_view text) {
+  if (text == "auto") return fl_estimator::kAutoGeometry;
+  if (text == "one") return fl_estimator::kOnePulse;
+  if (text == "pair") return fl_estimator::kPulsePair;
+  return std::nullopt;
+}
+
+LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces) {
+  HostEstimator host(set_up.config(), log.t_s.front());
+  LogEstimate out;
+  out.set_up = set_up;
+  if (traces) {
+    out.baseline_trace.reserve(log.adc.size());
+    out.level_trace.reserve(log.adc.size());
+  }
+  const fl_estimator::PeriodEstimator& e = host.estimator();
+  for (std::size_t i = 0; i < log.adc.size(); ++i) {
+    if (host.add(log.t_us[i], log.adc[i]) & fl_estimator::kSignalLearned) out.learned = true;
+    // The baseline is frozen during a pulse: the one after it is the one it was timed from.
+    while (out.pulse_baseline.size() < host.pulses().size())
+      out.pulse_baseline.push_back(e.baseline());
+    if (traces) {
+      const bool known = e.phase() != fl_estimator::kLearning;
+      const float nan = std::numeric_limits<float>::quiet_NaN();
+      out.baseline_trace.push_back(known ? e.baseline() : nan);
+      out.level_trace.push_back(known ? e.timing_level() : nan);
+    }
+  }
+  host.finish();
+  out.stats = e.stats();
+  out.geometry = e.geometry();
+  out.polarity = e.polarity();
+  out.baseline = static_cast<double>(e.baseline());
+  out.pulses = host.pulses();
+  out.periods = host.periods();
+  for (const EstimatedPeriod& p : out.periods)
+    out.outliers += p.status == fl_estimator::kRejectedOutlier ? 1 : 0;
+  for (const EstimatedPulse& p : out.pulses) out.distorted += p.distorted ? 1 : 0;
+  out.duration = log.t_s.back() - log.t_s.front();
+  out.sample_rate = log.adc.size() > 1 ? static_cast<double>(log.adc.size() - 1) / out.duration : 0;
+  return out;
+}
+
+void require_periods(const HallLog& log, const LogEstimate& est, const std::string& note) {
+  const fl_estimator::Stats& s = est.stats;
+  const SourceLocation first{log.path, log.line.front(), 0};
+  const double duration = est.duration;
+  if (est.pulses.empty()) {
+    const int min_amplitude = est.set_up.config().min_amplitude;
+    const auto [lo, hi] = std::minmax_element(log.adc.begin(), log.adc.end());
+    const int swing = *hi - *lo;
+    std::string why;
+    if (swing < min_amplitude)
+      why = fmt::format(
+          "a swing of {} counts is below the {} counts a pulse needs: does the magnet pass the "
+          "sensor?",
+          swing, min_amplitude);
+    else if (!est.learned)
+      why = fmt::format(
+          "the signal swings {} counts, but the estimator learns the baseline and polarity from "
+          "the first two pulses and did not see two (between pulses the signal must rest at its "
+          "baseline, more than half of the time)",
+          swing);
+    else
+      why =
+          fmt::format("the signal swings {} counts but no pulse rose past the timing level", swing);
+    throw InputError(first, fmt::format("no pulse in {} samples over {:.3f} s (lines {}-{}): the "
+                                        "ADC values stay within {}..{} counts; {}{}",
+                                        log.adc.size(), duration, log.line.front(), log.line.back(),
+                                        *lo, *hi, why, note));
+  }
+  const SourceLocation at_pulse{log.path, line_at(log, est.pulses.front().time), 0};
+  if (est.pulses.size() == 1)
+    throw InputError(at_pulse, fmt::format("only one pulse in {:.3f} s of log (at t = {:.4f} s, "
+                                           "after the two the signal was learned from): a period "
+                                           "needs at least two{}",
+                                           duration, est.pulses.front().time, note));
+  if (est.periods.empty()) {
+    std::string intervals;
+    for (std::size_t i = 1; i < est.pulses.size() && i <= 8; ++i)
+      intervals +=
+          fmt::format("{}{:.4f}", i > 1 ? ", " : "", est.pulses[i].time - est.pulses[i - 1].time);
+    if (est.pulses.size() > 9) intervals += ", ...";
+    if (est.pulses.size() < 5)
+      throw InputError(at_pulse,
+                       fmt::format("only {} pulses (intervals {} s): the estimator needs five in a "
+                                   "row to tell one pulse per period from a pair; record more "
+                                   "periods{}",
+                                   est.pulses.size(), intervals, note));
+    // Do the intervals alternate (the 1st and 3rd of each four both shorter, or both longer,
+    // than the 2nd and 4th)? Then the pulses are two per period, too wide a pair to recognise.
+    int alternating = 0;
+    int windows = 0;
+    for (std::size_t i = 4; i < est.pulses.size(); ++i, ++windows) {
+      double iv[4];
+      for (std::size_t k = 0; k < 4; ++k)
+        iv[k] = est.pulses[i - 3 + k].time - est.pulses[i - 4 + k].time;
+      const bool ordered = std::max(iv[0], iv[2]) < std::min(iv[1], iv[3]) ||
+                           std::max(iv[1], iv[3]) < std::min(iv[0], iv[2]);
+      alternating += ordered ? 1 : 0;
+    }
+    const std::string advice =
+        2 * alternating > windows
+            ? "they alternate short and long: two pulses per period (the magnet passing the "
+              "sensor and back, a sensor inside the turning point or near the middle of the "
+              "travel), too wide a pair to recognise on its own: give " +
+                  field_ref("geometry", "pair")
+            : "they are irregular (spurious pulses, the plate jumping, a weak or noisy signal): " +
+                  field_ref("plot", "FILE.png") + " shows them";
+    throw InputError(
+        at_pulse,
+        fmt::format("{} pulses, but no two turning points: the intervals between pulses ({} s) fit "
+                    "neither one pulse per period (equal intervals) nor a close pair per period "
+                    "(alternating short and long, the short under 0.6 of the long); {}{}",
+                    est.pulses.size(), intervals, advice, note));
+  }
+  if (s.periods_used < 2)
+    throw InputError(
+        at_pulse,
+        fmt::format("{} pulses and {} periods, of which {} accepted and {} discarded: T +- dT "
+                    "needs at least two accepted periods{}",
+                    s.pulses, est.periods.size(), s.periods_used, s.periods_discarded, note));
+}
+
+nlohmann::json log_reading_json(const HallLog& log) {
+  const HallLogReading& r = log.reading;
+  const auto lines = [](const LineTally& t) { return nlohmann::json(t.first); };
+  const auto text_or_null = [](const std::string& s) {
+    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s);
+  };
+  return {
+      {"log", log.path},
+      {"file", log.file},
+      {"format", r.format},
+      {"encoding", log.encoding},
+      {"columns_from", r.columns_from},
+      {"time_column", text_or_null(r.time_column)},
+      {"adc_column", r.adc_column},
+      {"time_unit", text_or_null(r.time_unit)},
+      {"time_unit_from", r.time_unit_from},
+      {"rate_hz", r.rate_hz > 0.0 ? nlohmann::json(r.rate_hz) : nlohmann::json(nullptr)},
+      {"header_line", r.header_line > 0 ? nlohmann::json(r.header_line) : nlohmann::json(nullptr)},
+      {"first_line", r.first_line},
+      {"lines_skipped", r.lines_skipped},
+      {"comment_lines", r.comment_lines},
+      {"lines_corrupted", r.corrupted.count},
+      {"lines_corrupted_first", lines(r.corrupted)},
+      {"times_repeated", r.repeated_times.count},
+      {"times_repeated_first", lines(r.repeated_times)},
+      {"times_out_of_order", r.out_of_order.count},
+      {"times_out_of_order_first", lines(r.out_of_order)},
+      {"ide_timestamps", r.ide_timestamps},
+      {"decimal_comma", r.decimal_comma},
+      {"clock_wraps", r.clock_wraps},
+      {"runs", r.segments},
+      {"run_used", log.segment + 1},
+      {"samples_in_other_runs", log.segment_samples_left_out},
+      {"unfinished_last_line", r.unfinished_last_line}};
+}
+
+nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
+  const fl_estimator::Stats& s = est.stats;
+  nlohmann::json out = verdict_json(est);
+  out.update(log_reading_json(log));
+  out["samples"] = log.adc.size();
+  out["duration_s"] = est.duration;
+  out["sample_rate_hz"] = est.sample_rate;
+  out["polarity"] = est.polarity;
+  out["baseline_adc"] = est.baseline;
+  out["pulses"] = s.pulses;
+  out["pulses_distorted"] = est.distorted;
+  out["pulses_unused"] = s.unused_pulses;
+  out["restarts"] = s.restarts;
+  out["periods_outliers"] = est.outliers;
+  out["geometry_from"] =
+      est.set_up.geometry == fl_estimator::kAutoGeometry ? "recognised" : "geometry";
+  out["spacing_m"] = est.set_up.spacing;
+  out["spacing_err_m"] = est.set_up.spacing_err;
+  out["gravity_m_s2"] = est.set_up.gravity;
+  out["periods"] = periods_json(est);
+  out["geometry_check"] = geometry_check_json(check_geometry(log, est));
+  return out;
+}
+
+nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
+  // Long logs keep the lowest and highest sample of each bucket, so no peak is lost.
+  const std::size_t n = log.adc.size();
+  const std::size_t kMaxPoints = 200000;
+  const std::size_t bucket = std::max<std::size_t>(1, (2 * n + kMaxPoints - 1) / kMaxPoints);
+  std::vector<std::size_t> keep;
+  for (std::size_t start = 0; start < n; start += bucket) {
+    const std::size_t stop = std::min(n, start + bucket);
+    if (bucket == 1) {
+      keep.push_back(start);
+      continue;
+    }
+    std::size_t lo = start;
+    std::size_t hi = start;
+    for (std::size_t i = start; i < stop; ++i) {
+      if (log.adc[i] < log.adc[lo]) lo = i;
+      if (log.adc[i] > log.adc[hi]) hi = i;
+    }
+    keep.push_back(std::min(lo, hi));
+    if (lo != hi) keep.push_back(std::max(lo, hi));
+  }
+  nlohmann::json data = verdict_json(est);
+  nlohmann::json t = nlohmann::json::array();
+  nlohmann::json adc = nlohmann::json::array();
+  nlohmann::json baseline = nlohmann::json::array();
+  nlohmann::json level = nlohmann::json::array();
+  for (std::size_t i : keep) {
+    t.push_back(log.t_s[i]);
+    adc.push_back(log.adc[i]);
+    baseline.push_back(json_or_null(static_cast<double>(est.baseline_trace[i])));
+    level.push_back(json_or_null(static_cast<double>(est.level_trace[i])));
+  }
+  data["log"] = log.path;
+  data["t_s"] = std::move(t);
+  data["adc"] = std::move(adc);
+  data["baseline"] = std::move(baseline);
+  data["timing_level"] = std::move(level);
+  nlohmann::json pulses = nlohmann::json::array();
+  for (const EstimatedPulse& p : est.pulses)
+    pulses.push_back({{"time_s", p.time},
+                      {"rise_s", p.rise},
+                      {"fall_s", p.fall},
+                      {"peak", p.peak},
+                      {"distorted", p.distorted}});
+  data["pulses"] = std::move(pulses);
+  data["periods"] = periods_json(est);
+  data["spacing_m"] = static_cast<double>(est.set_up.config().spacing_m);
+  return data;
+}
+
+}  // namespace fl

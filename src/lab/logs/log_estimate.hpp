@@ -1,0 +1,77 @@
+// A Hall-sensor log of the real rig (io/hall_log) run through the rig's estimator: T +- dT and
+// mu_k +- d mu_k, every pulse and period on the log's time axis, what the log lacks when it gives
+// no period, and the data tools/plot_hall.py draws.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "estimator/period_estimator.h"
+#include "io/hall_log.hpp"
+#include "lab/logs/host_estimator.hpp"
+
+namespace fl {
+
+// What the estimate needs besides the log: l +- dl and g for mu_k, and the pulses per period
+// when they are known.
+struct LogSetUp {
+  double spacing = 0.089;      // l [m]
+  double spacing_err = 0.002;  // dl [m]
+  double gravity = 9.81;       // g [m/s^2]
+  fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry;
+
+  // The estimator's configuration (single precision, as the rig's Arduino holds it).
+  fl_estimator::Config config() const;
+};
+
+struct LogEstimate {
+  LogSetUp set_up;
+  fl_estimator::Stats stats{};
+  fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry;
+  int polarity = 0;
+  double baseline = 0.0;  // at the end [counts]
+  bool learned = false;   // the signal was learned at least once
+  std::vector<EstimatedPulse> pulses;
+  std::vector<float> pulse_baseline;  // the baseline each pulse was measured from [counts]
+  std::vector<EstimatedPeriod> periods;
+  int outliers = 0;       // periods rejected as farther than the tolerance from the running median
+  int distorted = 0;      // pulses bent out of shape
+  double duration = 0.0;  // last sample time minus first [s]
+  double sample_rate = 0.0;  // mean [Hz]
+  // Per sample, for the plot: the baseline and the timing level [counts], NaN while learning.
+  std::vector<float> baseline_trace;
+  std::vector<float> level_trace;
+};
+
+// Runs the estimator over the log; `traces` keeps the per-sample levels for a plot.
+LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces);
+
+// Throws InputError, located at the log's line, saying what was found when the log gives no
+// T +- dT (no pulse and why, one pulse, too few to recognise the geometry, intervals that fit
+// neither geometry, fewer than two accepted periods): never a made-up period. `note` ends the
+// message (e.g. where a plot shows the signal).
+void require_periods(const HallLog& log, const LogEstimate& estimate, const std::string& note);
+
+// "accepted", "outlier", "broken"; "one-pulse", "pair", "unknown".
+const char* period_status_name(std::uint8_t status);
+const char* geometry_name(fl_estimator::Geometry geometry);
+// The pulses per period as a user names them (--geometry, a sidecar's geometry): "auto", "one" or
+// "pair"; nothing for any other text.
+std::optional<fl_estimator::Geometry> geometry_from_option(std::string_view text);
+
+// How the log was read and what was left out of it (docs/cli.md, `estimate --json`).
+nlohmann::json log_reading_json(const HallLog& log);
+
+// The result as `frictionlab estimate --json` prints it (docs/cli.md), without "plot".
+nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& estimate);
+
+// What tools/plot_hall.py draws: the samples (long logs thinned to the lowest and highest of each
+// bucket, so no peak is lost), the baseline and timing level, the pulses, the periods and the
+// summary. Needs an estimate made with traces.
+nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& estimate);
+
+}  // namespace fl

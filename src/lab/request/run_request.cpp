@@ -1,0 +1,208 @@
+#include "lab/request/run_request.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+#include "io/field_ref.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+#include "lab/run/run_outputs.hpp"
+#include "lab/run/step_choice.hpp"
+#include "lab/video/video_recorder.hpp"
+#include "scene/captions_yaml.hpp"
+#include "scene/video_format.hpp"
+
+namespace fl {
+namespace {
+
+// The most steps a run may take: a step so small that the run would never end is refused.
+constexpr double kMostSteps = 1e9;
+
+// The fields that shape frames, and whether the request gives each.
+std::vector<std::pair<const char*, bool>> frame_fields(const RunRequest& r) {
+  return {{"gl", !r.gl.empty()},
+          {"size", r.size.has_value()},
+          {"fps", r.fps.has_value()},
+          {"slow_motion", r.slow_motion.has_value()},
+          {"camera", r.camera.has_value()},
+          {"orbit", r.orbit.has_value()},
+          {"title", r.title.has_value()},
+          {"captions", !r.captions.empty()}};
+}
+
+// The frames' request from the fields; problems by field.
+VideoRequest frames_request(const RunRequest& r, FieldChecks& checks) {
+  VideoRequest v;
+  v.video = r.video;
+  v.frames = r.frames;
+  v.still = r.still;
+  v.gl = r.gl;
+  if (r.size) {
+    if (const std::string* text = std::get_if<std::string>(&*r.size)) {
+      v.size = parse_video_size(*text);
+      if (!v.size)
+        checks.problem("size",
+                       "expected WIDTHxHEIGHT in pixels (e.g. 1280x720), found \"" + *text + "\"");
+    } else {
+      v.size = std::get<std::array<int, 2>>(*r.size);
+    }
+  }
+  v.fps = r.fps;
+  if (r.slow_motion)
+    v.slow_motion = checks.quantity(*r.slow_motion, Dimension::kDimensionless, "slow_motion");
+  v.camera = r.camera;
+  v.title = r.title;
+  if (r.orbit) v.orbit = checks.quantity(*r.orbit, Dimension::kAngularSpeed, "orbit");
+  return v;
+}
+
+}  // namespace
+
+PreparedRun prepare_run(const RunRequest& r) {
+  FieldChecks checks;
+  // An option the run would ignore is refused: what shapes frames without frames to draw, and a
+  // time step both set and picked.
+  if (!r.draws_frames()) {
+    for (const auto& [field, given] : frame_fields(r))
+      if (given)
+        checks.problem(field, "this shapes the frames of " + field_ref("video") + ", " +
+                                  field_ref("frames") + " or " + field_ref("still") +
+                                  ", and the run draws none; add one of them, or drop it");
+  }
+  std::vector<SceneOverride> overrides = read_overrides(r.set, checks);
+  if (r.accuracy) {
+    std::vector<SceneOverride> all = r.scene.overrides;
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    for (const SceneOverride& o : all)
+      if (o.path == "world.time_step")
+        checks.problem("accuracy", quantity_input_text(*r.accuracy),
+                       "this picks the time step, so " +
+                           field_ref("set", "world.time_step=" + o.value) +
+                           " would be ignored; give one of them");
+  }
+  // A video format it cannot write is refused before anything is loaded or created (a folder
+  // given as the file is refused below, saying so).
+  std::error_code folder_error;
+  if (!r.video.empty() && !std::filesystem::is_directory(r.video, folder_error)) {
+    const std::string problem = video_file_problem(r.video);
+    if (!problem.empty()) checks.problem("video", problem);
+  }
+  VideoRequest frames;
+  if (r.draws_frames()) frames = frames_request(r, checks);
+  const std::vector<SceneOverride> length = run_length_overrides(r.duration, r.seed, checks);
+  overrides.insert(overrides.end(), length.begin(), length.end());
+  std::optional<double> target;
+  if (r.accuracy) target = checks.quantity(*r.accuracy, Dimension::kDimensionless, "accuracy");
+  checks.throw_if_any();
+  // The captions file, then the scene: a mistake in either is located in its file.
+  if (!r.captions.empty()) frames.captions = load_captions_file(r.captions);
+
+  PreparedRun out;
+  SceneSource source = r.scene;
+  source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
+  out.scene = load_scene_source(std::move(source));
+  if (target) {
+    Scene changed = *out.scene.scene;
+    try {
+      changed.world.time_step = step_for_accuracy(changed, *target);
+    } catch (const DomainError& e) {
+      checks.problem("accuracy", quantity_input_text(*r.accuracy), e.what());
+      checks.throw_if_any();
+    }
+    out.chosen_time_step = changed.world.time_step;
+    if (changed.world.duration / changed.world.time_step <= kMostSteps)
+      out.chosen_bias = predicted_integrator_bias(changed);
+    out.scene.scene = std::make_shared<const Scene>(std::move(changed));
+  }
+  const Scene& scene = *out.scene.scene;
+  // A step the run can take, places to write, and a plot's needs, before the run.
+  if (scene.world.duration / scene.world.time_step > kMostSteps)
+    checks.problem(
+        "accuracy", r.accuracy ? quantity_input_text(*r.accuracy) : std::string(),
+        fmt::format("expected a time step the run can take, found {:.3g} s: {:.3g} s "
+                    "of simulated time would take {:.3g} steps, more than 1e9; ask "
+                    "for a looser accuracy or a shorter {}",
+                    scene.world.time_step, scene.world.duration,
+                    scene.world.duration / scene.world.time_step, field_ref("duration")));
+  if (r.plot && r.out.empty())
+    checks.problem("plot", "expected " + field_ref("out") +
+                               " as well: the plot is drawn from its periods.csv; add it");
+  if (r.plot && (!scene.sensor || scene.magnets.empty() || !scene.output.hall ||
+                 !scene.output.periods || !scene.output.summary))
+    checks.problem("plot",
+                   "expected a scene with a Hall sensor, magnets and output.hall, "
+                   "output.periods and output.summary on, found a scene without them: there are "
+                   "no periods to plot; drop " +
+                       field_ref("plot"));
+  checks.throw_if_any();
+  if (!r.out.empty()) prepare_output_folder(r.out, "out");
+  if (!r.video.empty()) prepare_output_file(r.video, "video");
+  if (!r.still.empty()) prepare_output_file(r.still, "still");
+  if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
+  if (r.draws_frames()) {
+    effective_video(scene, frames);  // the settings against the scene's, by field
+    frames.asset_dir = asset_dir(out.scene.source.asset_dir);
+    out.frames = std::move(frames);
+  }
+  out.out = r.out;
+  out.plot = r.plot;
+  out.record = r.record;
+  out.warnings = checks.warnings();
+  return out;
+}
+
+Outcome RunResult::outcome() const {
+  if (summary.interrupted_at) return Outcome::kInterrupted;
+  if (summary.failed()) return Outcome::kFailed;
+  if (!plot_failure.empty()) return Outcome::kIncomplete;
+  return Outcome::kDone;
+}
+
+RunResult execute_run(const PreparedRun& run, const RunControl& control) {
+  const Scene& scene = *run.scene.scene;
+  RunOptions options;
+  options.record_trajectory = run.record || (!run.out.empty() && scene.output.trajectory);
+  options.record_hall = run.record || (!run.out.empty() && scene.output.hall);
+  options.record_cycles = run.record || (!run.out.empty() && scene.output.cycles);
+  // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.
+  std::unique_ptr<VideoRecorder> recorder;
+  if (run.frames) {
+    recorder = std::make_unique<VideoRecorder>(scene, *run.frames);
+    if (const std::string note = recorder->note(); !note.empty() && control.note)
+      control.note(note);
+    options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
+  }
+  options.stop = control.stop;
+  options.progress = control.progress;
+
+  RunResult result;
+  result.chosen_time_step = run.chosen_time_step;
+  const CompiledRig rig = compile_rig(scene);
+  result.summary = run_experiment(rig, options, &result.recording);
+  // The video up to its last frame, playable, even when the run was interrupted.
+  if (recorder)
+    result.video =
+        recorder->finish(VideoEnding{result.summary.failure.value_or(""), result.summary.duration});
+  if (!run.out.empty()) {
+    write_run_outputs(run.out, rig, result.summary, result.recording);
+    result.out = run.out;
+  }
+  // The plot last, after the results it draws are written: its failure loses none.
+  if (run.plot) {
+    const std::string png = run.out + "/periods.png";
+    try {
+      run_plot_script("plot_periods.py", {run.out, png});
+      result.plot = png;
+    } catch (const std::runtime_error& e) {
+      result.plot_failure = e.what();
+    }
+  }
+  return result;
+}
+
+}  // namespace fl

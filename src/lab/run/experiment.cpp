@@ -1,0 +1,430 @@
+#include "lab/run/experiment.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/analytic_model.hpp"
+#include "core/oscillation_tracker.hpp"
+#include "core/runout.hpp"
+#include "lab/run/hall_estimator.hpp"
+#include "lab/run/regime_monitor.hpp"
+#include "lab/run/regime_theory.hpp"
+#include "lab/run/solver_convergence.hpp"
+#include "lab/run/warming_report.hpp"
+
+namespace fl {
+namespace {
+
+PlatePose pose_of(double t, const PlateState& s) {
+  return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate, s.y, s.yaw};
+}
+
+// The estimator's mean period against the trajectory's: they measure the same motion, so they
+// must agree within the estimator's standard error (three of them) plus 0.05 % for the
+// estimator's single-precision arithmetic and its pulse timing.
+// The estimator's period against the trajectory's, as the board's clock (running fast by
+// `clock_error`) reads the latter.
+std::optional<std::string> cross_check(const EstimatorReport& e, double trajectory_period,
+                                       double clock_error) {
+  if (e.periods_used == 0) return std::nullopt;
+  const double read = trajectory_period * (1.0 + clock_error);
+  const double bound = 3.0 * e.period_std_error + 5e-4 * read;
+  const double difference = e.period - read;
+  if (std::fabs(difference) <= bound) return std::nullopt;
+  return fmt::format(
+      "the estimator's period {:.6f} s differs from the trajectory's {:.6f} s{} by "
+      "{:+.4f} %, more than its uncertainty allows ({:.4f} %)",
+      e.period, read, clock_error != 0.0 ? " (as the board's clock reads it)" : "",
+      100.0 * difference / read, 100.0 * bound / read);
+}
+
+// The friction law's closed forms for a regime that has numbers (a clip, a stick-slip cycle, a
+// growth rate), to be held against the run's.
+void theory_numbers(const CompiledRig& rig, RunSummary& out) {
+  const TheoryRegime theory = regime_from_theory(rig);
+  out.regime_theory = theory.regime;
+  if (!theory.prediction) return;
+  const FrictionRegimePrediction& p = *theory.prediction;
+  if (p.cycle) {
+    if (p.cycle->clipped) {
+      out.amplitude_clipped_theory = p.cycle->amplitude;
+    } else {
+      out.stick_slip_period_theory = p.cycle->period;
+      out.stick_slip_amplitude_theory = p.cycle->amplitude;
+      out.stick_duration_theory = p.cycle->stick_duration;
+    }
+  }
+  if (p.regime == Regime::kGrows || p.regime == Regime::kDecays)
+    out.growth_rate_theory = p.growth_rate;
+}
+
+// Running means and extremes of the drive's state.
+class DriveStats {
+ public:
+  explicit DriveStats(const CompiledRig& rig) {
+    if (rig.drive) design_ratio_ = rig.drive->gearbox_ratio;
+  }
+
+  void add(const DriveState& d, const std::array<RollerContact, 2>& contacts, double radius) {
+    ++n_;
+    motor_speed_ += std::fabs(d.motor_speed);
+    motor_torque_ += d.motor_torque;
+    roller_[0] += d.roller_speeds[0];
+    roller_[1] += d.roller_speeds[1];
+    // A stalled train has no ratio and no senses: only the steps in which all three turn count.
+    if (d.motor_speed != 0.0 && d.roller_speeds[0] != 0.0 && d.roller_speeds[1] != 0.0) {
+      ++turning_;
+      const double ratio = std::fabs(d.roller_speeds[0] / d.motor_speed);
+      ratio_ += ratio;
+      ratio_error_ = std::max(ratio_error_, std::fabs(ratio / design_ratio_ - 1.0));
+      opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
+    }
+    // The plate's friction F_i (on the plate, along x) acts back on roller i's top: torque
+    // -a F_i about y; counted positive when it opposes the roller's turning.
+    for (int i = 0; i < 2; ++i) {
+      const double sense = d.roller_speeds[static_cast<std::size_t>(i)] >= 0.0 ? 1.0 : -1.0;
+      load_ += sense * radius * contacts[static_cast<std::size_t>(i)].friction_force;
+    }
+  }
+
+  DriveReport report() const {
+    DriveReport r;
+    const double n = std::max<double>(1.0, static_cast<double>(n_));
+    r.motor_speed = motor_speed_ / n;
+    r.motor_torque = motor_torque_ / n;
+    r.roller_speeds = {roller_[0] / n, roller_[1] / n};
+    r.gearbox_ratio = design_ratio_;
+    r.turning_fraction = static_cast<double>(turning_) / n;
+    if (turning_ > 0) {
+      r.speed_ratio = ratio_ / static_cast<double>(turning_);
+      r.speed_ratio_error = ratio_error_;
+      r.senses_opposite = opposite_;
+    }
+    r.load_torque = load_ / n;
+    return r;
+  }
+
+ private:
+  double design_ratio_ = 1.0;
+  long long n_ = 0, turning_ = 0;
+  double motor_speed_ = 0.0, motor_torque_ = 0.0, ratio_ = 0.0, ratio_error_ = 0.0, load_ = 0.0;
+  std::array<double, 2> roller_{};
+  bool opposite_ = true;
+};
+
+}  // namespace
+
+// One run at the scene's own solver iterations. `unconverged` is set when the convergence check
+// stopped it (the run's failure then says so).
+static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
+                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const Scene& scene = rig.scene;
+  RunSummary out;
+  out.scene = scene.name;
+  out.seed = scene.world.seed;
+  out.spacing = rig.spacing;
+  out.mu_k_set = rig.mu_k;
+  out.h_c = rig.plate.h_c;
+  out.plate_mass = rig.plate.mass;
+  out.gravity = rig.gravity;
+  out.temperature = scene.friction.temperature;
+  out.time_step = scene.world.time_step;
+  if (scene.sensor && scene.sensor->clock_error != 0.0) out.clock_error = scene.sensor->clock_error;
+  out.solver_iterations = scene.world.solver_iterations;
+  out.roller_speed = scene.rollers.speed;
+  if (scene.friction.from_paper) {
+    out.paper_material = scene.friction.paper_material;
+    out.paper_period = scene.friction.paper_period;
+    out.paper_mu_k = scene.friction.paper_mu_k;
+  }
+  out.period_thin = rig.period_thin;
+  out.period_thick = rig.period_thick;
+  out.predicted_integrator_bias = rig.integrator_bias;
+  out.slip_threshold = rig.slip_threshold;
+  if (rig.conditioning) {
+    out.condition_period = rig.conditioning->condition_period;
+    out.condition_spacing = rig.conditioning->condition_spacing;
+    out.condition_h_c = rig.conditioning->condition_h_c;
+  }
+  const double g = rig.gravity;
+  RigWorld world(rig);
+
+  // Only what the scene names: no sensor, no Hall signal and no estimator.
+  std::optional<HallSignal> hall;
+  std::optional<HallEstimator> estimator;
+  if (scene.sensor && !scene.magnets.empty()) {
+    hall.emplace(rig);
+    estimator.emplace(rig.spacing, g);
+  }
+  StepView view;
+  const auto on_sample = [&](const HallSample& sample) {
+    estimator->add(sample);
+    if (options.record_hall && recording != nullptr) recording->hall.push_back(sample);
+    if (options.observer) view.new_samples.push_back(sample);
+  };
+
+  RegimeMonitor monitor(rig);
+  SolverConvergence convergence(rig);
+  CycleTracker cycles;
+  const bool record_cycles = options.record_cycles && recording != nullptr;
+  // The ramped rollers' speed, averaged over the run's steps.
+  double ramp_speed_sum = 0.0;
+  long long ramp_steps = 0;
+  PlateState state = world.plate();
+  monitor.start(state);
+  const OscillationTracker& tracker = monitor.tracker();
+  if (record_cycles) cycles.add(0.0, state.x, state.vx, world.roller_surface_speeds());
+  if (options.record_trajectory && recording != nullptr)
+    recording->trajectory.push_back({0.0, state, world.contacts()});
+  // The observer sees the world after each step.
+  const auto observe = [&](double t, const PlateState& plate,
+                           const std::array<RollerContact, 2>& contacts) {
+    if (!options.observer) return;
+    view.t = t;
+    view.plate = plate;
+    view.contacts = contacts;
+    view.roller_angles = world.roller_angles();
+    view.roller_speeds = world.roller_speeds();
+    view.drive = world.drive();
+    view.shafts = world.shafts();
+    view.estimator = estimator ? &*estimator : nullptr;
+    view.monitor = &monitor;
+    options.observer(view);
+    view.new_samples.clear();
+  };
+  observe(0.0, state, world.contacts());
+
+  const long long steps = std::llround(scene.world.duration / scene.world.time_step);
+  out.min_normal_force = std::numeric_limits<double>::infinity();
+  double t_previous = 0.0;
+  PlateState previous = state;
+  std::optional<RunFailure> failure;
+  DriveStats drive_stats(rig);
+  for (long long i = 0; i < steps && !failure; ++i) {
+    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) {
+      out.interrupted_at = world.time();
+      break;
+    }
+    if (options.progress && i % 1000 == 0) options.progress(world.time());
+    world.step();
+    const double t = world.time();
+    state = world.plate();
+    const auto contacts = world.contacts();
+    const std::array<double, 2> surface = world.roller_surface_speeds();
+    failure = monitor.observe(t, state, contacts, surface, world.roller_angles());
+    if (!failure) {
+      unconverged = convergence.observe(t, previous, state, contacts);
+      if (unconverged)
+        failure = RunFailure{Regime::kNumericallyFailed, t,
+                             fmt::format("roller {}", unconverged->roller), "normal force",
+                             fmt::format("the contact solver did not converge at {} iterations: {}",
+                                         scene.world.solver_iterations, unconverged->describe())};
+    }
+    // What a guard stopped is not recorded: the outputs hold every trustworthy step.
+    if (failure) break;
+    if (record_cycles) cycles.add(t, state.x, state.vx, surface);
+    if (rig.roller_speed_ramp) {
+      ramp_speed_sum += std::fabs(world.roller_speeds()[0]);
+      ++ramp_steps;
+    }
+    if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
+    if (options.record_trajectory && recording != nullptr)
+      recording->trajectory.push_back({t, state, contacts});
+    observe(t, state, contacts);
+    out.plate_speed_max = std::max(out.plate_speed_max, std::fabs(state.vx));
+    if (const auto d = world.drive()) drive_stats.add(*d, contacts, scene.rollers.radius);
+    for (const RollerContact& c : contacts) {
+      out.min_normal_force = std::min(out.min_normal_force, c.normal_force);
+      out.max_penetration = std::max(out.max_penetration, c.penetration);
+    }
+    previous = state;
+    t_previous = t;
+  }
+  out.steps = world.steps();
+  out.duration = world.time();
+  if (record_cycles) recording->cycles = cycles.cycles();
+  if (rig.roller_speed_ramp) {
+    out.roller_speed = ramp_steps > 0 ? ramp_speed_sum / static_cast<double>(ramp_steps)
+                                      : rig.roller_speed_ramp->at(0.0);
+  }
+  if (failure) out.failure = failure->message;
+  if (scene.drive) {
+    out.drive = drive_stats.report();
+    out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
+  }
+
+  if (!tracker.turning_amplitudes().empty()) {
+    out.amplitude_start = tracker.turning_amplitudes().front();
+    out.amplitude_end = tracker.turning_amplitudes().back();
+  }
+  out.amplitude_drift_per_period = tracker.amplitude_drift_per_period();
+  if (estimator) out.estimator = estimator->report();
+  if (estimator && options.record_hall && recording != nullptr)
+    recording->periods = estimator->periods();
+  if (rig.warming)
+    out.warming = warming_report(*rig.warming,
+                                 estimator ? estimator->periods() : std::vector<EstimatedPeriod>{},
+                                 rig.spacing, rig.plate.h_c, g, out.duration);
+  // The rollers' surface speed: the set one, or the drive's mean under load.
+  const double surface_speed = out.roller_speed * scene.rollers.radius;
+  out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
+                                              : std::numeric_limits<double>::infinity();
+
+  if (scene.rollers.runout > 0.0) {
+    out.runout = scene.rollers.runout;
+    const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
+    out.runout_threshold =
+        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
+                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
+                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
+  }
+
+  const RegimeFinding finding = monitor.finding(failure);
+  out.regime = finding.regime;
+  out.regime_since = finding.since;
+  out.regime_evidence = finding.evidence;
+  if (finding.jumps > 0) {
+    out.jumps = finding.jumps;
+    out.first_jump_time = finding.first_jump;
+    out.longest_jump = finding.longest_jump;
+    out.highest_jump = finding.highest_jump;
+    if (recording != nullptr) recording->jumps = finding.jump_list;
+  }
+  // A clipped oscillation's period is read after its last stick.
+  double harmonic_since = 0.0;
+  if (finding.motion && finding.motion->regime == finding.regime) {
+    const MotionFinding& m = *finding.motion;
+    if (m.regime == Regime::kClipped) {
+      out.clip_time = m.clip_time;
+      out.amplitude_before_clip = m.amplitude_before;
+      out.amplitude_clipped = m.amplitude_after;
+      harmonic_since = m.slipping_since.value_or(0.0);
+    } else if (m.regime == Regime::kStickSlip) {
+      out.stick_slip_period = m.cycle_period;
+      out.stick_slip_amplitude = m.cycle_amplitude;
+      out.stick_duration = m.stick_duration;
+    } else if (m.regime == Regime::kGrows || m.regime == Regime::kDecays) {
+      out.growth_rate = m.growth_rate;
+      if (m.growth_rate && *m.growth_rate != 0.0)
+        out.e_folding_time = 1.0 / std::fabs(*m.growth_rate);
+      harmonic_since = m.since;
+    }
+    if (m.regime == Regime::kClipped || m.regime == Regime::kStickSlip ||
+        m.regime == Regime::kGrows || m.regime == Regime::kDecays)
+      theory_numbers(rig, out);
+  }
+  if (const auto p = tracker.period(harmonic_since)) {
+    out.period_trajectory = p->slope;
+    out.period_trajectory_err = p->slope_std_error;
+  }
+  if (out.estimator && out.period_trajectory)
+    out.estimator_disagreement =
+        cross_check(*out.estimator, *out.period_trajectory, out.clock_error.value_or(0.0));
+
+  // The headline: a period only for a harmonic oscillation, where the paper's model holds.
+  if (!out.harmonic()) {
+    out.period_trajectory.reset();
+    out.period_trajectory_err.reset();
+    out.period_withheld = fmt::format(
+        "no period: the regime is '{}', not a harmonic oscillation, so the paper's model does "
+        "not hold",
+        regime_name(out.regime));
+  } else {
+    // mu_k as the rig would report it: from the estimator's period; from the trajectory's when
+    // the scene has no sensor or its estimator accepted no period.
+    // The estimator's mu_k from one accepted period on; its uncertainty, from the periods'
+    // spread, from two.
+    if (out.estimator && out.estimator->periods_used > 0) out.mu_k_estimator = out.estimator->mu_k;
+    if (out.estimator && out.estimator->periods_used >= 2) {
+      out.mu_k_err_worst = out.estimator->mu_k_err_worst;
+      out.mu_k_err_quadrature = out.estimator->mu_k_err_quadrature;
+    }
+    std::optional<double> period_for_mu = out.period_trajectory;
+    out.mu_k_source = PeriodSource::kTrajectory;
+    if (out.estimator && out.estimator->periods_used > 0) {
+      out.period = out.estimator->period;
+      period_for_mu = out.period;
+      out.mu_k_source = PeriodSource::kHallEstimator;
+    } else if (out.estimator) {
+      out.period_withheld = fmt::format(
+          "no period: {}{}",
+          out.estimator->pulses == 0
+              ? std::string("the Hall sensor saw no pulse: the magnets never came near it (check "
+                            "sensor.position against where the magnets swing)")
+              : fmt::format("the rig's estimator accepted none from {} Hall pulse(s) (the pulses "
+                            "too weak or unlike each other, or the run too short)",
+                            out.estimator->pulses),
+          out.period_trajectory ? fmt::format("; mu_k comes from the trajectory's period {:.6f} s",
+                                              *out.period_trajectory)
+                                : std::string());
+    } else if (!out.period_trajectory) {
+      out.period_withheld =
+          "no period: fewer than two turning points were measured; simulate longer";
+    }
+    if (period_for_mu && *period_for_mu > 0.0) {
+      out.mu_k_recovered = mu_k_from_period_thin(*period_for_mu, out.spacing, g);
+      out.mu_k_recovered_thick = mu_k_from_period_thick(*period_for_mu, out.spacing, out.h_c, g);
+    } else {
+      out.mu_k_source.reset();
+    }
+  }
+
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  out.real_time_factor = out.duration / out.wall_s;
+  out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;
+  return out;
+}
+
+RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
+                          RunRecording* recording) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::optional<SolverResidual> unconverged;
+  RunSummary out = run_once(rig, options, recording, unconverged);
+  if (!unconverged || out.interrupted_at) return out;
+  // The solver did not converge: run again from the start at twice the iterations, up to the cap,
+  // so that the result is exactly a run of the scene at the iterations it ends with. A run that
+  // hands its steps to an observer (a video) has already shown them, and stops instead.
+  const int asked = rig.scene.world.solver_iterations;
+  std::string history;
+  int iterations = asked;
+  double previous_error = 0.0;
+  while (unconverged) {
+    history += fmt::format("{}{} (t = {:.6f} s, a normal force {:.3g} % of the weight off)",
+                           history.empty() ? "" : ", ", iterations, unconverged->time,
+                           100.0 * unconverged->relative());
+    const SolverRetry retry =
+        solver_retry(iterations, kMaxSolverIterations, unconverged->error, previous_error,
+                     static_cast<bool>(options.observer), history, rig.scene.world.time_step);
+    previous_error = unconverged->error;
+    if (!retry.iterations) {
+      out.failure = *out.failure + "; " + retry.advice;
+      out.regime_evidence = *out.failure;
+      if (iterations != asked) out.solver_iterations_raised = "from " + history;
+      break;
+    }
+    iterations = *retry.iterations;
+    Scene scene = rig.scene;
+    scene.world.solver_iterations = iterations;
+    if (recording != nullptr) *recording = RunRecording{};
+    unconverged.reset();
+    out = run_once(compile_rig(scene), options, recording, unconverged);
+    if (!unconverged)
+      out.solver_iterations_raised = fmt::format(
+          "from {} to {}: the contact solver had not converged at {}", asked, iterations, history);
+  }
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  out.real_time_factor = out.duration / out.wall_s;
+  out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;
+  return out;
+}
+
+RunSummary run_experiment(const Scene& scene, const RunOptions& options, RunRecording* recording) {
+  return run_experiment(compile_rig(scene), options, recording);
+}
+
+}  // namespace fl

@@ -1,0 +1,421 @@
+#include "lab/run/regime_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/friction_oscillator.hpp"
+#include "lab/run/law_resolution.hpp"
+
+namespace fl {
+namespace {
+
+// A normal force below this fraction of the plate's weight means the plate has lifted off.
+constexpr double kLiftOffFraction = 1e-3;
+// Rollers whose surfaces move on average at less than this fraction of the speed set, over the
+// last quarter of the run, have stalled.
+constexpr double kStallFraction = 0.1;
+// A lift-off counts as a jump when the plate's bottom rose this far above the roller (less is a
+// contact whose force dropped out for a step while the bodies still touched).
+constexpr double kJumpHeight = 1e-6;  // m
+// Lift-offs locked to the roller's turn: the mean resultant length of their phases. A tube off its
+// shaft can only drop away from the plate in the half-turn in which its top accelerates downward,
+// so its jumps' phases give at least 2/pi = 0.64 even spread evenly over that half; phases not
+// locked give about 1/sqrt(n).
+constexpr double kLockedResultant = 0.5;
+// The first steps settle the resting contact.
+constexpr int kSettleSteps = 3;
+
+bool finite(const PlateState& s) {
+  return std::isfinite(s.x) && std::isfinite(s.z) && std::isfinite(s.pitch) &&
+         std::isfinite(s.vx) && std::isfinite(s.vz) && std::isfinite(s.pitch_rate);
+}
+
+}  // namespace
+
+RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
+    : scene_(rig.scene),
+      mass_(rig.plate.mass),
+      inertia_(rig.plate.inertia_pitch),
+      h_c_(rig.plate.h_c),
+      slip_dependent_(rig.friction.depends_on_slip()),
+      law_(rig.friction) {
+  const Scene& scene = rig.scene;
+  const double plate_mass = mass_;
+  surface_speed_ = rig.roller_speed_nominal * scene.rollers.radius;
+  // Friction cannot drive the plate faster than the rollers' surface, and gravity gives at most
+  // m g times the plate's length: ten times more energy than both is a numerical blow-up.
+  const double v = std::max(surface_speed_, std::fabs(scene.plate.velocity));
+  energy_bound_ =
+      10.0 * (0.5 * plate_mass * v * v +
+              plate_mass * scene.world.gravity * (scene.plate.length + scene.rollers.radius));
+  penetration_bound_ = std::min(0.5e-3, 0.1 * scene.rollers.radius);
+  speed_bound_ = 2.0 * v + 0.5;
+  start_abs_x_ = std::fabs(scene.plate.offset);
+  turn_ = rig.roller_speed_nominal > 0.0 ? 2.0 * 3.14159265358979323846 / rig.roller_speed_nominal
+                                         : 0.0;
+  previous_x_ = scene.plate.offset;
+  z0_ = h_c_;
+  // The law's growth rate linearised about the rollers' speed (none where it has no meaning).
+  if (slip_dependent_ && rig.restoring) {
+    try {
+      linearised_growth_ =
+          linearised_motion(rig.friction, {rig.spacing, h_c_, rig.gravity}, surface_speed_).gamma;
+    } catch (const DomainError&) {
+      linearised_growth_.reset();
+    }
+  }
+}
+
+void RegimeMonitor::start(const PlateState& s) {
+  tracker_.add(0.0, s.x, s.vx);
+}
+
+std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
+                                                 const std::array<RollerContact, 2>& contacts,
+                                                 const std::array<double, 2>& surface,
+                                                 const std::array<double, 2>& roller_angles) {
+  // Guards first: numbers the lab cannot trust stop the run.
+  if (!finite(s)) {
+    return RunFailure{Regime::kNumericallyFailed, t, "plate", "state",
+                      fmt::format("t = {:.6f} s: the plate's state is not finite (x = {}, z = {}, "
+                                  "vx = {}); the time step is too large for this scene",
+                                  t, s.x, s.z, s.vx)};
+  }
+  const double energy = 0.5 * mass_ * (s.vx * s.vx + s.vz * s.vz) +
+                        0.5 * inertia_ * s.pitch_rate * s.pitch_rate +
+                        mass_ * scene_.world.gravity * (s.z - z0_);
+  if (energy > energy_bound_) {
+    return RunFailure{Regime::kNumericallyFailed, t, "plate", "energy",
+                      fmt::format("t = {:.6f} s: the plate's energy {:.3g} J exceeds {:.3g} J, ten "
+                                  "times what the rollers and gravity can give it: a numerical "
+                                  "blow-up (try a smaller time step)",
+                                  t, energy, energy_bound_)};
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (contacts[i].penetration > penetration_bound_) {
+      return RunFailure{
+          Regime::kNumericallyFailed, t, fmt::format("roller {}", i), "penetration",
+          fmt::format("t = {:.6f} s: the plate sinks {:.3g} mm into roller {}, beyond "
+                      "the {:.3g} mm the contact model tolerates (try a smaller time "
+                      "step or more solver iterations)",
+                      t, contacts[i].penetration * 1e3, i, penetration_bound_ * 1e3)};
+    }
+  }
+  // Friction drives the plate toward the rollers' surface speed, never beyond it; a plate faster
+  // than that (with room for a fall) has been thrown by the numerics.
+  if (std::fabs(s.vx) > speed_bound_) {
+    return RunFailure{
+        Regime::kNumericallyFailed, t, "plate", "speed",
+        fmt::format("t = {:.6f} s: the plate moves at {:.3g} m/s, more than twice what "
+                    "the rollers (surface speed {:.3g} m/s) can drive: a numerical "
+                    "blow-up (try a smaller time step)",
+                    t, s.vx, surface_speed_)};
+  }
+  // A step that carries the plate a quarter of the roller spacing resolves nothing of the motion.
+  if (std::fabs(s.x - previous_x_) > 0.25 * scene_.rollers.spacing) {
+    return RunFailure{
+        Regime::kNumericallyFailed, t, "plate", "x",
+        fmt::format("t = {:.6f} s: the plate jumped {:.1f} mm in one step of {:.3g} ms, "
+                    "more than a quarter of the roller spacing: the time step is too "
+                    "large for this scene",
+                    t, (s.x - previous_x_) * 1e3, scene_.world.time_step * 1e3)};
+  }
+  // The plate leaves the rig when a roller is no longer under it, or it falls.
+  const double half_l = 0.5 * scene_.rollers.spacing;
+  const double half_length = 0.5 * scene_.plate.length;
+  if (std::fabs(s.x) + half_l > half_length || s.z < -scene_.rollers.radius) {
+    return RunFailure{Regime::kLost, t, "plate", "x",
+                      fmt::format("t = {:.6f} s: the plate left the rollers (centre of mass at x = "
+                                  "{:.1f} mm, z = {:.1f} mm; a roller is no longer under it)",
+                                  t, s.x * 1e3, s.z * 1e3)};
+  }
+
+  // Diagnosis.
+  tracker_.add(t, s.x, s.vx);
+  last_t_ = t;
+  if (!first_ && ((previous_x_ < 0.0 && s.x >= 0.0) || (previous_x_ > 0.0 && s.x <= 0.0)))
+    ++crossings_;
+  if (std::fabs(s.x) > max_abs_x_) {
+    max_abs_x_ = std::fabs(s.x);
+    x_at_max_ = t;
+  }
+  if (!first_ && ((previous_vx_ > 0.0 && s.vx <= 0.0) || (previous_vx_ < 0.0 && s.vx >= 0.0)) &&
+      excursions_.size() < 16)
+    excursions_.push_back(std::fabs(s.x));
+  previous_vx_ = s.vx;
+  previous_x_ = s.x;
+  first_ = false;
+  static_assert(kSettleSteps > 0);
+  // Which way friction pushes while the plate rests on both rollers: toward the centre is the
+  // restoring force of the oscillator; away from it, there is none. A plate that left a roller
+  // within the last turn is landing, not resting: the impacts share its weight as they come.
+  const double weight = mass_ * scene_.world.gravity;
+  const bool landing = last_lift_off_ && t - *last_lift_off_ <= turn_;
+  if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
+      std::fabs(s.x) > 1e-6 && !landing) {
+    const double friction = contacts[0].friction_force + contacts[1].friction_force;
+    // A plate held at rest feels no net friction but the solver's round-off: not a direction.
+    const bool held = contacts[0].stuck && contacts[1].stuck;
+    if (!held && friction * s.x > 0.0) {
+      if (friction_away_ == 0) {
+        away_first_t_ = t;
+        away_first_x_ = s.x;
+        away_first_force_ = friction;
+      }
+      ++friction_away_;
+    } else if (!held && friction * s.x < 0.0) {
+      ++friction_toward_;
+    }
+  }
+  const long long step = std::llround(t / scene_.world.time_step);
+  if (step < kSettleSteps) return std::nullopt;
+
+  for (int i = 0; i < 2; ++i) {
+    const double speed = std::fabs(surface[i]);
+    const double ratio = speed > 0.0 ? std::fabs(surface[i] - s.vx) / speed : 0.0;
+    slip_ratio_min_ = std::min(slip_ratio_min_, ratio);
+    const bool lifted = contacts[i].normal_force < kLiftOffFraction * weight;
+    if (lifted) last_lift_off_ = t;
+    if (lifted && !tip_since_) {
+      tip_since_ = t;
+      tip_roller_ = i;
+      tip_force_ = contacts[i].normal_force;
+    }
+    const std::size_t k = static_cast<std::size_t>(i);
+    if (lifted && !lifted_[k] && lift_offs_.size() < 100000)
+      lift_offs_.push_back({i, t, t, 0.0, roller_angles[k], true});
+    if (lifted_[k]) {
+      for (auto it = lift_offs_.rbegin(); it != lift_offs_.rend(); ++it)
+        if (it->roller == i && it->open) {
+          it->end = t;
+          if (lifted) {
+            it->height = std::max(it->height, contacts[i].gap);
+          } else {
+            it->open = false;
+          }
+          break;
+        }
+    }
+    lifted_[k] = lifted;
+  }
+  const double surface_mean = 0.5 * (std::fabs(surface[0]) + std::fabs(surface[1]));
+  if (surface_mean > kStallFraction * surface_speed_) turning_until_ = t;
+  if (t >= 0.75 * scene_.world.duration) {
+    late_surface_sum_ += surface_mean;
+    ++late_steps_;
+  }
+  // Stick episodes: a stretch of steps in which the plate is held to one roller's surface.
+  const int stuck_roller = contacts[0].stuck ? 0 : (contacts[1].stuck ? 1 : -1);
+  StickEpisode* open = !sticks_.empty() && sticks_.back().open ? &sticks_.back() : nullptr;
+  if (open && open->roller != stuck_roller) {
+    open->open = false;
+    open = nullptr;
+  }
+  if (stuck_roller >= 0) {
+    if (!open) sticks_.push_back({stuck_roller, t, t, 0, true});
+    sticks_.back().end = t;
+    ++sticks_.back().steps;
+  }
+  return std::nullopt;
+}
+
+RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) const {
+  RegimeFinding f;
+  if (failure && failure->regime == Regime::kNumericallyFailed) {
+    f.regime = Regime::kNumericallyFailed;
+    f.since = failure->time;
+    f.evidence = failure->message;
+    return f;
+  }
+  // Friction that pushes the plate away from the centre while it rests on both rollers: no
+  // restoring force (whatever follows: a lift-off, a drift, the plate leaving the rig).
+  if (friction_away_ > friction_toward_) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = away_first_t_;
+    f.evidence = fmt::format(
+        "while the plate rested on both rollers, the net friction force pushed it "
+        "away from the centre in {} of {} steps (first at t = {:.4f} s: {:+.3g} N "
+        "at x = {:+.2f} mm){}",
+        friction_away_, friction_away_ + friction_toward_, away_first_t_, away_first_force_,
+        away_first_x_ * 1e3, failure ? "; " + failure->message : std::string());
+    return f;
+  }
+  // Thrown farther out at each turn until it left the rig: friction drives the plate away.
+  if (failure && failure->regime == Regime::kLost && !excursions_.empty() &&
+      std::fabs(previous_x_) > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    // The start, each turning point, and where the plate was when it left: the last three grow.
+    std::vector<double> path{start_abs_x_};
+    path.insert(path.end(), excursions_.begin(), excursions_.end());
+    path.push_back(std::fabs(previous_x_));
+    const std::size_t n = path.size();
+    const bool growing = path[n - 1] > path[n - 2] && (n < 3 || path[n - 2] > path[n - 3]);
+    std::string list;
+    for (const double e : path) list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", e * 1e3);
+    if (growing) {
+      f.regime = Regime::kNoRestoringForce;
+      f.since = 0.0;
+      f.evidence = fmt::format(
+          "each excursion went farther from the centre ({} mm) until the plate left "
+          "the rig: friction drives it away{}; {}",
+          list,
+          tip_since_
+              ? fmt::format(" (it lifted off roller {} at t = {:.4f} s)", tip_roller_, *tip_since_)
+              : std::string(),
+          failure->message);
+      return f;
+    }
+  }
+  // Drifting off: the plate never came back through the centre and got farther out.
+  if (crossings_ == 0 && max_abs_x_ > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = 0.0;
+    f.evidence = fmt::format(
+        "the plate moved away from the centre, from |x| = {:.1f} mm to {:.1f} mm "
+        "at t = {:.3f} s, and never came back{}",
+        start_abs_x_ * 1e3, max_abs_x_ * 1e3, x_at_max_,
+        failure ? "; " + failure->message : std::string());
+    return f;
+  }
+  // Brief lift-offs that keep coming and going are jumps, not a tip: the motion is read on, and
+  // the jumps are reported with it.
+  const bool jumps = lift_offs_are_jumps();
+  if (jumps) {
+    f.jump_list = this->jumps();
+    f.jumps = static_cast<int>(f.jump_list.size());
+    f.first_jump = f.jump_list.front().start;
+    double longest = 0.0, highest = 0.0;
+    for (const PlateJump& l : f.jump_list) {
+      longest = std::max(longest, l.end - l.start);
+      highest = std::max(highest, l.height);
+    }
+    f.longest_jump = longest;
+    f.highest_jump = highest;
+  }
+  // Lifting off a roller is the cause when it came first; the plate may have left the rig after.
+  if (!jumps && tip_since_ && (!failure || *tip_since_ <= failure->time)) {
+    f.regime = Regime::kTips;
+    f.since = *tip_since_;
+    f.evidence = fmt::format(
+        "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
+        "t = {:.4f} s: the plate lifted off it{}",
+        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_,
+        failure ? "; then " + failure->message : std::string());
+    return f;
+  }
+  if (failure) {
+    f.regime = failure->regime;
+    f.since = failure->time;
+    f.evidence = failure->message;
+    return f;
+  }
+  if (!jumps && tip_since_) {
+    f.regime = Regime::kTips;
+    f.since = *tip_since_;
+    f.evidence = fmt::format(
+        "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
+        "t = {:.4f} s: the plate lifted off it",
+        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_);
+    return f;
+  }
+  if (surface_speed_ == 0.0) {
+    f.regime = Regime::kSticks;
+    f.evidence = "the rollers do not turn: friction holds the plate";
+    return f;
+  }
+  // Rollers that barely turn over the last quarter of the run (a motor stalled by the plate's
+  // friction): friction holds the plate to them.
+  if (late_steps_ > 0 && late_surface_sum_ / late_steps_ < kStallFraction * surface_speed_) {
+    f.regime = Regime::kSticks;
+    f.since = turning_until_;
+    f.evidence = fmt::format(
+        "the rollers stalled at t = {:.4f} s: over the last quarter of the run their surfaces "
+        "moved at {:.3g} m/s "
+        "on average, {:.1f} % of the {:.3g} m/s set; friction holds the plate to them (it rests "
+        "at x = {:+.2f} mm)",
+        turning_until_, late_surface_sum_ / late_steps_,
+        100.0 * late_surface_sum_ / late_steps_ / surface_speed_, surface_speed_,
+        previous_x_ * 1e3);
+    return f;
+  }
+  MotionEvidence evidence;
+  evidence.sticks = sticks_;
+  evidence.crossings = tracker_.crossings();
+  evidence.turning_times = tracker_.turning_times();
+  evidence.turning_amplitudes = tracker_.turning_amplitudes();
+  evidence.amplitude_start = start_abs_x_;
+  evidence.duration = last_t_;
+  evidence.time_step = scene_.world.time_step;
+  evidence.slip_dependent = slip_dependent_;
+  MotionFinding motion = diagnose_motion(evidence);
+  f.regime = motion.regime;
+  f.since = motion.since;
+  f.evidence = motion.evidence;
+  // A law the step does not resolve where the plate used it: what the run shows is the step's.
+  std::optional<double> growth;  // the larger of the measured and the law's linearised rate
+  if (slip_dependent_) {
+    growth = linearised_growth_;
+    if (motion.growth_rate && (!growth || std::fabs(*motion.growth_rate) > std::fabs(*growth)))
+      growth = motion.growth_rate;
+  }
+  if (const std::optional<UnresolvedLaw> unresolved = unresolved_law(
+          law_, scene_.world.gravity, scene_.world.time_step, !sticks_.empty(), growth)) {
+    f.regime = Regime::kNumericallyFailed;
+    f.since = 0.0;
+    f.evidence = unresolved->reason + " (the run looked " + regime_name(motion.regime) + ": " +
+                 motion.evidence + ")";
+    f.motion = std::move(motion);
+    return f;
+  }
+  if (motion.regime == Regime::kOscillates && sticks_.empty())
+    f.evidence = fmt::format(
+        "both rollers slipped throughout (the plate's speed stayed at least "
+        "{:.1f} % of the surface speed away from each roller's)",
+        100.0 * slip_ratio_min_);
+  if (jumps)
+    f.evidence += fmt::format(
+        "; the plate jumped off a roller {} times from t = {:.4f} s (locked to the "
+        "roller's turn), each time back within {:.1f} ms, at most {:.3f} mm high",
+        f.jumps, *f.first_jump, *f.longest_jump * 1e3, *f.highest_jump * 1e3);
+  f.motion = std::move(motion);
+  return f;
+}
+
+std::vector<PlateJump> RegimeMonitor::jumps() const {
+  std::vector<PlateJump> out;
+  for (const PlateJump& l : lift_offs_)
+    if (l.height > kJumpHeight) out.push_back(l);
+  return out;
+}
+
+bool RegimeMonitor::lift_offs_are_jumps() const {
+  // A tube off its shaft drops away under the plate at the same point of each turn
+  // (core/runout.hpp): the plate's jumps are locked to the roller's angle. A plate that tips lifts
+  // off (and may chatter) near its turning points, or stays off; on true rollers a roller's angle
+  // changes nothing, so nothing can be locked to it. Each roller's jumps are read against its own
+  // angle, which a drive under load turns a little slower than the speed set.
+  if (scene_.rollers.runout <= 0.0 || lift_offs_.empty() || turn_ <= 0.0) return false;
+  // A lift-off still on at the end that has lasted a turn and a quarter of the run is the plate off
+  // a roller for good.
+  for (const PlateJump& l : lift_offs_)
+    if (l.open && last_t_ - l.start > std::max(turn_, 0.25 * last_t_)) return false;
+  const std::vector<PlateJump> real = jumps();
+  bool any = false;
+  for (int roller = 0; roller < 2; ++roller) {
+    double c = 0.0, s = 0.0;
+    int n = 0;
+    for (const PlateJump& l : real) {
+      if (l.roller != roller) continue;
+      c += std::cos(l.roller_angle);
+      s += std::sin(l.roller_angle);
+      ++n;
+    }
+    if (n == 0) continue;
+    if (n < 3 || std::hypot(c, s) < kLockedResultant * n) return false;
+    any = true;
+  }
+  return any;
+}
+
+}  // namespace fl

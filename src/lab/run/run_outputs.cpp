@@ -1,0 +1,257 @@
+#include "lab/run/run_outputs.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+#include "lab/run/cycle_report.hpp"
+#include "lab/run/summary_fields.hpp"
+
+namespace fl {
+
+nlohmann::json timing_json(const RunSummary& s) {
+  return nlohmann::json{{"wall_s", s.wall_s},
+                        {"real_time_factor", s.real_time_factor},
+                        {"steps_per_second", s.steps_per_second}};
+}
+
+namespace {
+
+constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+
+// The gear train's line: the ratio and senses are measured over the steps in which the motor and
+// both rollers turned, and the line says when that was only part of the run.
+std::string gearbox_line(const DriveReport& d) {
+  const std::string speeds =
+      fmt::format("  gearbox                rollers at {:+.0f} and {:+.0f} rpm",
+                  d.roller_speeds[0] * kRpm, d.roller_speeds[1] * kRpm);
+  if (!d.speed_ratio)
+    return fmt::format("{}: the train never turned, no ratio measured (design {:.3f})", speeds,
+                       d.gearbox_ratio);
+  const std::string share =
+      d.turning_fraction < 1.0
+          ? fmt::format(" while turning ({:.1f} % of the run)", 100.0 * d.turning_fraction)
+          : std::string();
+  return fmt::format("{}: {:.4f} x the motor{} (design {:.3f}, worst step {:.2e} off), senses {}",
+                     speeds, *d.speed_ratio, share, d.gearbox_ratio, *d.speed_ratio_error,
+                     *d.senses_opposite ? "opposite" : "NOT opposite");
+}
+
+}  // namespace
+
+std::string summary_text(const RunSummary& s) {
+  std::string out;
+  const auto line = [&out](const std::string& text) { out += text + "\n"; };
+  line(fmt::format("frictionlab run: {} (seed {})", s.scene, s.seed));
+  line(fmt::format("  regime                 {}{}: {}", regime_name(s.regime),
+                   s.regime_since > 0.0 ? fmt::format(" since t = {:.4f} s", s.regime_since) : "",
+                   s.regime_evidence));
+  if (s.failure) line(fmt::format("  STOPPED                {}", *s.failure));
+  // The regime's own numbers, beside the closed forms' (null where a number was not measured).
+  const auto value = [](const std::optional<double>& v, double scale, const char* unit) {
+    return v ? fmt::format("{:.5g} {}", *v * scale, unit) : std::string("not measured");
+  };
+  const auto theory = [](const std::optional<double>& v, double scale, const char* unit) {
+    return v ? fmt::format(" (theory {:.5g} {})", *v * scale, unit) : std::string();
+  };
+  if (s.clip_time)
+    line(fmt::format("  clipped                at t = {:.4f} s: amplitude {} -> {}{}", *s.clip_time,
+                     value(s.amplitude_before_clip, 1e3, "mm"),
+                     value(s.amplitude_clipped, 1e3, "mm"),
+                     theory(s.amplitude_clipped_theory, 1e3, "mm")));
+  if (s.regime == Regime::kStickSlip)
+    line(fmt::format(
+        "  stick-slip cycle       T = {}{}, amplitude {}{}, sticks of {}{}",
+        value(s.stick_slip_period, 1.0, "s"), theory(s.stick_slip_period_theory, 1.0, "s"),
+        value(s.stick_slip_amplitude, 1e3, "mm"), theory(s.stick_slip_amplitude_theory, 1e3, "mm"),
+        value(s.stick_duration, 1.0, "s"), theory(s.stick_duration_theory, 1.0, "s")));
+  if (s.growth_rate)
+    line(fmt::format("  amplitude e-folding    {:+.5g} /s{}, every {:.4g} s", *s.growth_rate,
+                     theory(s.growth_rate_theory, 1.0, "/s"), s.e_folding_time.value_or(0.0)));
+  if (s.solver_iterations_raised)
+    line(fmt::format("  solver iterations      {}, raised {}", s.solver_iterations,
+                     *s.solver_iterations_raised));
+  if (s.interrupted_at)
+    line(
+        fmt::format("  INTERRUPTED            at t = {:.3f} s: what follows is the run up to there",
+                    *s.interrupted_at));
+  if (s.period_withheld) line(fmt::format("  period                 {}", *s.period_withheld));
+  if (s.clock_error)
+    line(fmt::format(
+        "  sensor clock           runs {:+.4g} % fast: every period reads {:+.4g} %, mu_k {:+.4g} "
+        "%; time a known interval on the board to calibrate it away (docs/estimator.md)",
+        100.0 * *s.clock_error, 100.0 * *s.clock_error,
+        100.0 * (1.0 / ((1.0 + *s.clock_error) * (1.0 + *s.clock_error)) - 1.0)));
+  if (s.runout && s.runout_threshold) {
+    const bool above = *s.runout > *s.runout_threshold;
+    line(fmt::format(
+        "  run-out                {:.3f} mm, {} the {:.3f} mm above which theory has the plate hop "
+        "(at its starting turning points, {:.0f} rpm){}",
+        *s.runout * 1e3, above ? "above" : "below", *s.runout_threshold * 1e3,
+        s.roller_speed * kRpm,
+        s.jumps ? fmt::format(": {} jumps, the highest {:.3f} mm", *s.jumps,
+                              s.highest_jump.value_or(0.0) * 1e3)
+                : std::string(": no jump")));
+  }
+  if (s.warming) {
+    const WarmingReport& w = *s.warming;
+    line(
+        fmt::format("  rollers warming        {:.0f} K -> {:.0f} K at the end ({:.0f} K room, tau "
+                    "{:.3g} s after "
+                    "{:.3g} s cold): mu_k {:.4g} -> {:.4g} (linear in T between {:.4g} and {:.4g})",
+                    w.start_temperature, w.end_temperature, w.room_temperature, w.time_constant,
+                    w.hold, w.mu_k_start, w.mu_k_end, w.mu_k_start, w.mu_k_room));
+    const auto window = [&](const std::optional<WarmingWindow>& v) {
+      if (!v) return std::string("none");
+      return fmt::format("{:.4f} ({:+.1f} %, {} periods)", v->mu_k,
+                         100.0 * (v->mu_k / w.mu_k_cold_paper_formula - 1.0), v->periods);
+    };
+    line(
+        fmt::format("  mu_k a student gets    first 10 periods {}, first 30 s {}, whole run {}; "
+                    "{:.4f} from rollers that stay at {:.0f} K (the paper's formula)",
+                    window(w.first_10_periods), window(w.first_30_s), window(w.whole_run),
+                    w.mu_k_cold_paper_formula, w.start_temperature));
+  }
+  if (s.estimator_disagreement)
+    line(fmt::format("  WARNING                {}", *s.estimator_disagreement));
+  line(fmt::format(
+      "  roller spacing l       {:.2f} mm, h_c {:.2f} mm, plate {:.1f} g, mu_k set {:.4g}",
+      s.spacing * 1e3, s.h_c * 1e3, s.plate_mass * 1e3, s.mu_k_set));
+  const std::optional<double>& period = s.period;
+  if (s.estimator && s.harmonic()) {
+    const EstimatorReport& e = *s.estimator;
+    if (e.periods_used > 0) {
+      line(fmt::format("  period (Hall estimator) T = {:.5f} +- {:.5f} s (N = {}, {} discarded)",
+                       e.period, e.period_std, e.periods_used, e.periods_discarded));
+      line(
+          fmt::format("  mu_k recovered         {:.4f} +- {:.4f} (worst) +- {:.4f} (quadrature), "
+                      "paper's formula",
+                      e.mu_k, e.mu_k_err_worst, e.mu_k_err_quadrature));
+    } else {
+      line(
+          fmt::format("  period (Hall estimator) none: {} pulse(s), no accepted period", e.pulses));
+    }
+  }
+  if (s.condition_period > 0.0 && s.harmonic())
+    line(fmt::format(
+        "  conditioning           d mu/mu = {:.3f} dT/T + {:.0f} dl/l + {:.3f} dh_c/h_c "
+        "(thick formula, h_c = {:.2f} mm){}",
+        s.condition_period, s.condition_spacing, s.condition_h_c, s.h_c * 1e3,
+        s.condition_period < 0.5 ? ": the period hardly pins mu_k down here, h_c does" : ""));
+  if (s.mu_k_recovered_thick)
+    line(fmt::format("  mu_k through the thick formula (h_c = {:.2f} mm): {:.4f}", s.h_c * 1e3,
+                     *s.mu_k_recovered_thick));
+  if (s.period_trajectory)
+    line(fmt::format("  period (trajectory)    {:.6f} s", *s.period_trajectory));
+  line(fmt::format(
+      "  analytic, thin plate   {:.6f} s{}", s.period_thin,
+      period ? fmt::format("  (estimator {:+.4f} %)", 100.0 * (*period / s.period_thin - 1.0))
+             : std::string()));
+  if (s.period_thick) {
+    std::string errors;
+    if (period)
+      errors += fmt::format("  (estimator {:+.4f} %", 100.0 * (*period / *s.period_thick - 1.0));
+    if (s.period_trajectory)
+      errors += fmt::format("{}trajectory {:+.4f} %)", period ? ", " : "  (",
+                            100.0 * (*s.period_trajectory / *s.period_thick - 1.0));
+    else if (period)
+      errors += ")";
+    line(fmt::format("  analytic, thick plate  {:.6f} s{}", *s.period_thick, errors));
+  }
+  if (s.paper_period) {
+    line(fmt::format(
+        "  the paper measured     T = {:.{}f} +- {:.{}f} s, mu_k = {:.{}f} +- {:.{}f} ({})",
+        s.paper_period->value, s.paper_period->decimals, s.paper_period->uncertainty,
+        s.paper_period->uncertainty_decimals, s.paper_mu_k->value, s.paper_mu_k->decimals,
+        s.paper_mu_k->uncertainty, s.paper_mu_k->uncertainty_decimals, s.paper_material));
+    if (period)
+      line(fmt::format("  simulated - measured   {:+.4f} s = {:+.2f} dT",
+                       *period - s.paper_period->value,
+                       (*period - s.paper_period->value) / s.paper_period->uncertainty));
+  }
+  if (s.predicted_integrator_bias)
+    line(fmt::format(
+        "  integrator bias        {:+.2e} predicted at dt = {:.3g} ms, -(omega dt)^2/24",
+        *s.predicted_integrator_bias, s.time_step * 1e3));
+  line(fmt::format("  amplitude              {:.3f} mm at start, {:.3f} mm at end{}",
+                   s.amplitude_start * 1e3, s.amplitude_end * 1e3,
+                   s.amplitude_drift_per_period
+                       ? fmt::format(" ({:+.2e} per period)", *s.amplitude_drift_per_period)
+                       : std::string()));
+  if (s.drive) {
+    const DriveReport& d = *s.drive;
+    line(fmt::format(
+        "  motor                  {:.1f} rpm, {:.1f} mN m (the plate's friction takes {:.2f} mN m "
+        "at the rollers)",
+        d.motor_speed * kRpm, d.motor_torque * 1e3, d.load_torque * 1e3));
+    line(gearbox_line(d));
+  }
+  line(fmt::format("  rollers                {:.0f} rpm, slip margin {:.2f}", s.roller_speed * kRpm,
+                   s.slip_margin));
+  line(
+      fmt::format("  run                    {:.2f} s simulated in {:.3f} s: {:.0f} x real time, "
+                  "{:.0f} steps/s",
+                  s.duration, s.wall_s, s.real_time_factor, s.steps_per_second));
+  return out;
+}
+
+std::string trajectory_csv(const RunRecording& r) {
+  std::string out =
+      "t_s,x_m,z_m,pitch_rad,vx_m_s,vz_m_s,pitch_rate_rad_s,normal0_n,friction0_n,normal1_n,"
+      "friction1_n\n";
+  for (const TrajectoryRow& row : r.trajectory) {
+    fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{},{}\n", row.t,
+                   row.plate.x, row.plate.z, row.plate.pitch, row.plate.vx, row.plate.vz,
+                   row.plate.pitch_rate, row.rollers[0].normal_force, row.rollers[0].friction_force,
+                   row.rollers[1].normal_force, row.rollers[1].friction_force);
+  }
+  return out;
+}
+
+std::string hall_csv(const RunRecording& r) {
+  std::string out = "t_us,adc\n";
+  for (const HallSample& s : r.hall)
+    fmt::format_to(std::back_inserter(out), "{},{}\n", s.t_us, s.adc);
+  return out;
+}
+
+std::string periods_csv(const RunRecording& r) {
+  std::string out = "start_s,end_s,period_s,status\n";
+  for (const EstimatedPeriod& p : r.periods) {
+    const char* status = p.status == fl_estimator::kAccepted          ? "accepted"
+                         : p.status == fl_estimator::kRejectedOutlier ? "rejected: outlier"
+                                                                      : "rejected: broken pulse";
+    fmt::format_to(std::back_inserter(out), "{},{},{},{}\n", p.start, p.end, p.period, status);
+  }
+  return out;
+}
+
+std::string jumps_csv(const RunRecording& r) {
+  std::string out = "roller,start_s,end_s,height_m,roller_angle_rad\n";
+  for (const PlateJump& j : r.jumps)
+    fmt::format_to(std::back_inserter(out), "{},{},{},{},{}\n", j.roller, j.start, j.end, j.height,
+                   j.roller_angle);
+  return out;
+}
+
+void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
+                       const RunRecording& recording) {
+  const Scene& scene = rig.scene;
+  if (scene.output.cycles)
+    write_file_atomic(folder + "/cycles.csv", cycles_csv(rig, recording.cycles));
+  if (scene.output.trajectory)
+    write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
+  if (scene.output.hall && scene.sensor)
+    write_file_atomic(folder + "/hall.csv", hall_csv(recording));
+  if (scene.output.periods && scene.output.hall && scene.sensor)
+    write_file_atomic(folder + "/periods.csv", periods_csv(recording));
+  if (scene.output.jumps && !recording.jumps.empty())
+    write_file_atomic(folder + "/jumps.csv", jumps_csv(recording));
+  if (scene.output.summary) {
+    write_file_atomic(folder + "/summary.json", summary_json(summary).dump(2) + "\n");
+    write_file_atomic(folder + "/timing.json", timing_json(summary).dump(2) + "\n");
+  }
+}
+
+}  // namespace fl

@@ -1,0 +1,33 @@
+// A run's outputs as text: the summary as JSON, the trajectory and the Hall samples as CSV
+// (hall.csv in the format `frictionlab estimate` reads), and the human summary.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/run/experiment.hpp"
+#include "lab/run/summary_fields.hpp"
+
+namespace fl {
+
+// summary_json (everything a run found, deterministic: the same scene and seed give the same
+// bytes) is in lab/run/summary_fields.hpp.
+// What the run cost on this machine (wall time, real-time factor, steps per second).
+nlohmann::json timing_json(const RunSummary& summary);
+std::string summary_text(const RunSummary& summary);
+std::string trajectory_csv(const RunRecording& recording);
+std::string hall_csv(const RunRecording& recording);
+// Each period the rig's estimator judged: start, end, length [s] and whether it was accepted.
+std::string periods_csv(const RunRecording& recording);
+// Each jump of the plate: the roller it left, when, how high, at which roller angle.
+std::string jumps_csv(const RunRecording& recording);
+
+// Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
+// the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file
+// atomically. All but timing.json are bit-identical
+// between runs.
+void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
+                       const RunRecording& recording);
+
+}  // namespace fl

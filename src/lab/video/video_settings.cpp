@@ -1,0 +1,88 @@
+// The video's settings and frame clock (fl_video_settings): linked into the executable, which
+// checks a request with them before it loads the video module, even in a build without
+// rendering, and into the module.
+#include <algorithm>
+#include <cmath>
+
+#include "core/text.hpp"
+#include "io/input_error.hpp"
+#include "lab/video/video_settings.hpp"
+#include "scene/video_format.hpp"
+
+namespace fl {
+namespace {
+
+// A problem with a request's field (lab/request/run_request.hpp).
+void check(const std::string& field, const std::string& problem) {
+  if (!problem.empty()) throw InputError(SourceLocation::of_field(field), problem);
+}
+
+}  // namespace
+
+VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
+  VideoDesc v = scene.video.value_or(VideoDesc{});
+  if (request.size) {
+    v.width = (*request.size)[0];
+    v.height = (*request.size)[1];
+    check("size", video_size_problem(v.width, v.height));
+  }
+  if (request.fps) {
+    v.fps = *request.fps;
+    check("fps", video_fps_problem(v.fps));
+  }
+  if (request.slow_motion) {
+    v.slow_motion = *request.slow_motion;
+    check("slow_motion", video_slow_motion_problem(v.slow_motion));
+  }
+  if (request.camera) {
+    check("camera", video_camera_problem(*request.camera));
+    v.camera = *request.camera;
+    v.placed.reset();
+  }
+  if (request.orbit) {
+    v.orbit = *request.orbit;
+    check("orbit", video_orbit_problem(v.orbit));
+  }
+  if (request.title) {
+    if (trim(*request.title).empty())
+      check("title", "expected the title card's title, found an empty text");
+    v.title = true;
+    v.title_text = *request.title;
+  }
+  if (request.captions) v.captions = *request.captions;
+  if (!request.video.empty()) {
+    check("video", video_file_problem(request.video));
+    // A GIF is drawn small unless the command line asks otherwise: its size is what keeps it
+    // to a few MB, and text drawn at the GIF's own size stays sharp (scaling text down blurs it).
+    if (video_format_of(request.video) == VideoFormat::kGif) {
+      if (!request.size) {
+        const double scale = std::min({1.0, static_cast<double>(kGifMaxWidth) / v.width,
+                                       static_cast<double>(kGifMaxHeight) / v.height});
+        v.width = 2 * static_cast<int>(std::lround(0.5 * v.width * scale));
+        v.height = 2 * static_cast<int>(std::lround(0.5 * v.height * scale));
+      }
+      if (!request.fps) v.fps = std::min(v.fps, kGifMaxFps);
+    }
+  }
+  return v;
+}
+
+std::size_t run_frame_count(const VideoDesc& video, double duration) {
+  const double frames = duration * video.fps * video.slow_motion;
+  // Frames at t_k = k / (fps s) < duration; a product that should be whole is taken as whole.
+  return static_cast<std::size_t>(std::max(0.0, std::ceil(frames - 1e-6)));
+}
+
+std::size_t title_frame_count(const VideoDesc& video) {
+  return video.title ? static_cast<std::size_t>(std::lround(kTitleSeconds * video.fps)) : 0;
+}
+
+std::size_t end_card_frame_count(const VideoDesc& video) {
+  return video.end_card ? static_cast<std::size_t>(std::lround(kEndCardSeconds * video.fps)) : 0;
+}
+
+std::size_t guard_banner_frame_count(const VideoDesc& video) {
+  return static_cast<std::size_t>(std::lround(kGuardBannerSeconds * video.fps));
+}
+
+}  // namespace fl

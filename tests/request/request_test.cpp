@@ -1,0 +1,135 @@
+// The request layer every front end goes through (lab/request): fields named in messages and
+// spelled by each front end, problems gathered by field, one exit status per outcome, and a run
+// request refused by field before any work.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/field_ref.hpp"
+#include "lab/request/field_checks.hpp"
+#include "lab/request/outcome.hpp"
+#include "lab/request/run_request.hpp"
+
+namespace fl {
+namespace {
+
+std::string flag(const FieldMention& m) {
+  return "--" + m.path + (m.value ? " " + *m.value : std::string());
+}
+
+TEST(FieldRef, AMentionIsSpelledByTheFrontEndAndReadBack) {
+  const std::string text = "give " + field_ref("geometry", "pair") + " or " + field_ref("plot");
+  EXPECT_TRUE(mentions_field(text));
+  EXPECT_EQ(spell_fields(text, flag), "give --geometry pair or --plot");
+  EXPECT_EQ(plain_fields(text), "give geometry pair or plot");
+  const auto m = parse_field_ref(field_ref("set", "friction.mu_k=0.3"));
+  ASSERT_TRUE(m.has_value());
+  EXPECT_EQ(m->path, "set");
+  EXPECT_EQ(m->value, "friction.mu_k=0.3");  // the first '=' ends the path
+  EXPECT_FALSE(mentions_field(spell_fields(text, flag)));
+  EXPECT_EQ(spell_fields("no field here", flag), "no field here");
+}
+
+TEST(FieldRef, AFieldLocationIsTheMentionBeforeTheMessage) {
+  const InputError e(SourceLocation::of_field("video", "x.avi"), "expected .mp4");
+  EXPECT_EQ(spell_fields(e.what(), flag), "--video x.avi: error: expected .mp4");
+  EXPECT_EQ(e.where().field, "video");
+  EXPECT_TRUE(e.where().file.empty());
+}
+
+TEST(FieldChecks, EveryProblemIsGatheredByItsField) {
+  FieldChecks checks;
+  EXPECT_DOUBLE_EQ(checks.quantity(QuantityInput{"89 mm"}, Dimension::kLength, "spacing"), 0.089);
+  EXPECT_DOUBLE_EQ(checks.quantity(QuantityInput{0.5}, Dimension::kLength, "h_c"), 0.5);
+  EXPECT_TRUE(checks.ok());
+  checks.quantity(QuantityInput{"89 kg"}, Dimension::kLength, "spacing_err");
+  checks.positive(QuantityInput{"-1 m/s^2"}, Dimension::kAcceleration, "gravity", "g");
+  EXPECT_TRUE(checks.has("spacing_err"));
+  EXPECT_TRUE(checks.has("gravity"));
+  EXPECT_FALSE(checks.has("spacing"));
+  try {
+    checks.throw_if_any();
+    FAIL() << "two problems were not thrown";
+  } catch (const RequestError& e) {
+    ASSERT_EQ(e.problems().size(), 2u);
+    EXPECT_EQ(e.where().field, "spacing_err");
+    const std::string text = spell_fields(e.what(), flag);
+    EXPECT_NE(text.find("--spacing_err: error: expected a length"), std::string::npos) << text;
+    EXPECT_NE(text.find("--gravity: error: expected g as a finite positive acceleration"),
+              std::string::npos)
+        << text;
+  }
+}
+
+TEST(FieldChecks, APlainNumberOfMetresIsSaidAloud) {
+  FieldChecks checks;
+  EXPECT_DOUBLE_EQ(checks.quantity(QuantityInput{"89"}, Dimension::kLength, "spacing"), 89.0);
+  ASSERT_EQ(checks.warnings().size(), 1u);
+  EXPECT_EQ(spell_fields(checks.warnings().front(), flag),
+            "--spacing 89 read as 89 m (a plain number is SI); write 89mm for millimetres");
+  EXPECT_TRUE(checks.ok());
+}
+
+TEST(Outcome, EachEndingHasOneExitStatus) {
+  EXPECT_EQ(exit_status(Outcome::kDone), 0);
+  EXPECT_EQ(exit_status(Outcome::kIncomplete), 1);
+  EXPECT_EQ(exit_status(Outcome::kBadInput), 2);
+  EXPECT_EQ(exit_status(Outcome::kFailed), 3);
+  EXPECT_EQ(exit_status(Outcome::kInterrupted, 2), 130);
+  EXPECT_EQ(exit_status(Outcome::kInterrupted, 15), 143);
+  EXPECT_EQ(worse(Outcome::kFailed, Outcome::kIncomplete), Outcome::kFailed);
+  EXPECT_EQ(worse(Outcome::kDone, Outcome::kInterrupted), Outcome::kInterrupted);
+}
+
+RunRequest minimal_request() {
+  RunRequest r;
+  r.scene.file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+  r.scene.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
+  return r;
+}
+
+TEST(RunRequest, WhatShapesFramesWithoutFramesIsRefusedFieldByField) {
+  RunRequest r = minimal_request();
+  r.size = FrameSizeInput{"640x480"};
+  r.fps = 10;
+  r.camera = "top";
+  try {
+    prepare_run(r);
+    FAIL() << "frame fields without frames were taken";
+  } catch (const RequestError& e) {
+    ASSERT_EQ(e.problems().size(), 3u);
+    EXPECT_EQ(e.problems()[0].field, "size");
+    EXPECT_EQ(e.problems()[1].field, "fps");
+    EXPECT_EQ(e.problems()[2].field, "camera");
+  }
+}
+
+TEST(RunRequest, TheAccuracyPicksAStepOfTheFormOneOverN) {
+  RunRequest r = minimal_request();
+  r.accuracy = QuantityInput{"0.01%"};
+  r.duration = QuantityInput{"1 s"};
+  const PreparedRun prepared = prepare_run(r);
+  ASSERT_TRUE(prepared.chosen_time_step.has_value());
+  EXPECT_DOUBLE_EQ(prepared.scene.scene->world.time_step, *prepared.chosen_time_step);
+  const double n = 1.0 / *prepared.chosen_time_step;
+  EXPECT_NEAR(n, std::round(n), 1e-9);
+  ASSERT_TRUE(prepared.chosen_bias.has_value());
+  EXPECT_LE(std::fabs(*prepared.chosen_bias), 1e-4);
+  EXPECT_DOUBLE_EQ(prepared.scene.scene->world.duration, 1.0);
+}
+
+TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {
+  RunRequest r = minimal_request();
+  r.accuracy = QuantityInput{1e-17};
+  try {
+    prepare_run(r);
+    FAIL() << "a run of more than 1e9 steps was taken";
+  } catch (const RequestError& e) {
+    EXPECT_EQ(e.where().field, "accuracy");
+    EXPECT_NE(std::string(e.what()).find("more than 1e9"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fl

@@ -339,8 +339,8 @@ class RunSummary:
     period_trajectory: Optional[float]
     period_trajectory_err: Optional[float]
     estimator_disagreement: Optional[str]
-    amplitude_start: float
-    amplitude_end: float
+    amplitude_start: Optional[float]
+    amplitude_end: Optional[float]
     amplitude_drift_per_period: Optional[float]
     roller_speed: float
     drive: Optional[DriveReport]

@@ -274,3 +274,14 @@ def test_str_is_the_commands_summary():
 
     assert without_cost(str(r)) == without_cost(text)
     assert len(without_cost(text)) == len(text.splitlines()) - 1
+
+
+def test_a_run_too_short_for_a_turning_point_measures_no_amplitude():
+    # minimal.yaml starts at rest 20 mm off centre: its first turning point is half a period,
+    # T / 2 = 0.39 s, later. Before it there is no amplitude to report: None, null, never 0.
+    short = fl.run(SCENES / "minimal.yaml", duration="0.3s", record=False)
+    assert short.amplitude_start is None and short.amplitude_end is None
+    assert short.json()["amplitude_start_m"] is None
+    assert "none measured" in str(short)
+    longer = fl.run(SCENES / "minimal.yaml", duration="0.5s", record=False)
+    assert longer.amplitude_start == pytest.approx(0.020, rel=1e-3)

@@ -333,8 +333,10 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("estimator_disagreement", &S::estimator_disagreement,
                     "the estimator's period against the trajectory's, beyond both "
                     "uncertainties, or None")
-      .def_readonly("amplitude_start", &S::amplitude_start, "m, first turning point")
-      .def_readonly("amplitude_end", &S::amplitude_end, "m, last turning point")
+      .def_readonly("amplitude_start", &S::amplitude_start,
+                    "m, first turning point; None when the run reached none")
+      .def_readonly("amplitude_end", &S::amplitude_end,
+                    "m, last turning point; None when the run reached none")
       .def_readonly("amplitude_drift_per_period", &S::amplitude_drift_per_period, "relative")
       .def_readonly("roller_speed", &S::roller_speed, "rad/s")
       .def_readonly("drive", &S::drive, "the motor and gears, or None for the ideal drive")

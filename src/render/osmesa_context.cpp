@@ -70,7 +70,7 @@ class OsmesaContext final : public GlContext {
       const auto* s = reinterpret_cast<const char*>(gl_.GetString(name));
       return std::string(s == nullptr ? "?" : s);
     };
-    return text(GL_VERSION) + ", " + text(GL_RENDERER);
+    return text(GL_VERSION) + ", " + text(GL_RENDERER) + " (OSMesa)";
   }
 
   void make_current() override {

@@ -194,8 +194,19 @@ TEST(RigVideo, TheEglBackEndDrawsAndAutoFallsBackToOsmesaWithANote) {
   auto r = lab("run " + kRig + still + (dir / "egl.png").string() + " --gl egl");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err.find("note:"), std::string::npos) << r.err;
+  // The output says which back end and which GL renderer drew the frames.
+  EXPECT_NE(r.out.find("  renderer               "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(EGL"), std::string::npos) << r.out;
+  const std::string egl_out = r.out;
   r = lab("run " + kRig + still + (dir / "osmesa.png").string() + " --gl osmesa");
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("(OSMesa"), std::string::npos) << r.out;
+  // llvmpipe without a GPU, named by GL_RENDERER in both, and in --json.
+  for (const std::string& out : {egl_out, r.out})
+    EXPECT_NE(out.find("llvmpipe"), std::string::npos) << out;
+  const auto json = lab("run " + kRig + still + (dir / "json.png").string() + " --json");
+  ASSERT_EQ(json.status, 0) << json.err;
+  EXPECT_NE(json.out.find("\"renderer\": \""), std::string::npos) << json.out;
   // One renderer (llvmpipe) behind both: the same picture.
   EXPECT_EQ(test::read_text(dir / "egl.png"), test::read_text(dir / "osmesa.png"));
   const std::string no_vendor = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";

@@ -174,11 +174,14 @@ std::string summary_text(const RunSummary& s) {
     line(fmt::format(
         "  integrator bias        {:+.2e} predicted at dt = {:.3g} ms, -(omega dt)^2/24",
         *s.predicted_integrator_bias, s.time_step * 1e3));
-  line(fmt::format("  amplitude              {:.3f} mm at start, {:.3f} mm at end{}",
-                   s.amplitude_start * 1e3, s.amplitude_end * 1e3,
-                   s.amplitude_drift_per_period
-                       ? fmt::format(" ({:+.2e} per period)", *s.amplitude_drift_per_period)
-                       : std::string()));
+  if (s.amplitude_start && s.amplitude_end)
+    line(fmt::format("  amplitude              {:.3f} mm at start, {:.3f} mm at end{}",
+                     *s.amplitude_start * 1e3, *s.amplitude_end * 1e3,
+                     s.amplitude_drift_per_period
+                         ? fmt::format(" ({:+.2e} per period)", *s.amplitude_drift_per_period)
+                         : std::string()));
+  else
+    line("  amplitude              none measured: the run reached no turning point");
   if (s.drive) {
     const DriveReport& d = *s.drive;
     line(fmt::format(

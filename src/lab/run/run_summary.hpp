@@ -136,8 +136,9 @@ struct RunSummary {
   // The estimator's period against the trajectory's: a disagreement beyond both uncertainties.
   std::optional<std::string> estimator_disagreement;
 
-  double amplitude_start = 0.0;                      // m, first turning point
-  double amplitude_end = 0.0;                        // m, last turning point
+  // m, the first and the last turning point; null for a run too short to reach one.
+  std::optional<double> amplitude_start;
+  std::optional<double> amplitude_end;
   std::optional<double> amplitude_drift_per_period;  // relative
   double roller_speed = 0.0;  // rad/s (mean |roller 0| when driven or ramped)
   std::optional<DriveReport> drive;

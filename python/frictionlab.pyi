@@ -580,3 +580,39 @@ def sweep(
     progress: Optional[Callable[[dict[str, Any]], None]] = None,
     assets: Optional[PathLike] = None,
 ) -> dict[str, SweepColumn]: ...
+
+# ---- a spacing series' fit ----
+
+class FitReport:
+    mu_k: Optional[float]
+    mu_k_err: Optional[float]
+    h_c: Optional[float]
+    h_c_err: Optional[float]
+    correlation: Optional[float]
+    slope: float
+    intercept: float
+    chi2: float
+    degrees_of_freedom: int
+    chi2_per_dof: Optional[float]
+    mu_k_thin_line: float
+    mu_k_thin_line_err: float
+    gravity: float
+    written: list[str]
+    plot: Optional[str]
+    plot_failure: Optional[str]
+    rig_failure: Optional[str]
+    def json(self) -> dict[str, Any]: ...
+
+def fit(
+    series: PathLike,
+    *,
+    gravity: Quantity = "9.81 m/s^2",
+    out: Optional[PathLike] = None,
+    plot: Optional[PathLike] = None,
+    mc: Optional[int] = None,
+    seed: int = 1,
+    through_rig: bool = False,
+    scene: Union[Scene, PathLike, None] = None,
+    set: Overrides = None,
+    jobs: int = 0,
+) -> FitReport: ...

@@ -101,3 +101,32 @@ def test_a_logs_sidecar_sets_the_rig_in_both(tmp_path):
     assert printed["spacing_m"] == pytest.approx(0.075)
     assert returned.spacing == pytest.approx(0.075)
     assert returned.mu_k == pytest.approx(printed["mu_k"])
+
+
+SERIES = SCENES.parent / "assets" / "examples" / "student-series.csv"
+
+
+def test_a_fit_is_the_commands_fit(tmp_path):
+    printed = json.loads(cli("fit", SERIES, "--mc", "2000", "--json").stdout)
+    returned = fl.fit(SERIES, mc=2000)
+    printed.pop("plot")
+    assert returned.json() == printed
+    assert returned.mu_k == printed["mu_k"] and returned.h_c == printed["h_c_m"]
+    cli("fit", SERIES, "--out", tmp_path / "cli")
+    fl.fit(SERIES, out=tmp_path / "py")
+    for name in ["fit.json", "fit.csv"]:
+        assert (tmp_path / "cli" / name).read_bytes() == (tmp_path / "py" / name).read_bytes()
+
+
+def test_a_bad_fit_is_the_same_error():
+    done = cli("fit", SERIES, "--mc", "0", status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.fit(SERIES, mc=0)
+    assert caught.value.field == "monte_carlo.draws"
+    assert located_field(done.stderr) == "--mc 0"
+    assert located_field(str(caught.value)) == "mc='0'"
+    done = cli("fit", SERIES, "--scene", SCENES / "minimal.yaml", status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.fit(SERIES, scene=SCENES / "minimal.yaml")
+    assert caught.value.field == "scene"
+    assert "--through-rig" in done.stderr and "through_rig" in str(caught.value)

@@ -8,7 +8,6 @@ namespace {
 // Fields whose flag is not "--" and their last part with hyphens.
 const std::map<std::string, std::string, std::less<>>& exceptions() {
   static const std::map<std::string, std::string, std::less<>> flags = {
-      {"scene", "SCENE"},
       {"logs", "LOG"},
       {"series", "SERIES.csv"},
       {"sweep", "SWEEP.yaml"},

@@ -19,22 +19,18 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/field_spelling.hpp"
 #include "cli/monte_carlo_options.hpp"
-#include "cli/option_quantity.hpp"
 #include "cli/plot_failure.hpp"
-#include "cli/scene_options.hpp"
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
 #include "lab/compare/spacing_fit_report.hpp"
-#include "lab/request/output_paths.hpp"
-#include "lab/request/plot_script.hpp"
+#include "lab/request/fit_request.hpp"
 
 namespace fl::cli {
 namespace {
 
 struct FitOptions {
   std::string file;
-  std::string gravity = "9.81 m/s^2";
+  std::string gravity = quantity_input_text(FitRequest{}.gravity);
   bool json = false;
   std::string out;
   std::string plot;
@@ -45,39 +41,6 @@ struct FitOptions {
   std::vector<std::string> overrides;
   int workers = 0;
 };
-
-// The rig's scene: scenes/minimal.yaml from the working folder, else from the source tree.
-std::string default_scene() {
-  const std::string relative = "scenes/minimal.yaml";
-  if (std::filesystem::exists(relative)) return relative;
-  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
-}
-
-// What the fit says that a friction oscillator's series cannot: refused with exit status 2,
-// saying so rather than printing a mu_k that means nothing.
-void require_physical(const SpacingFitReport& r) {
-  const ThickPlateFit& f = r.fit;
-  const SpacingSeries& s = r.series;
-  if (!f.mu_k)
-    throw InputError(
-        SourceLocation{s.file, 0, 0},
-        fmt::format("expected T^2 to grow with the spacing (T^2 = 2 pi^2 l / (mu_k g) - 4 pi^2 "
-                    "h_c / g), found it falling: slope {:.4g} +- {:.2g} s^2/m, so no positive "
-                    "mu_k fits these rows; check that the spacing and period columns hold what "
-                    "their names say, in the units written",
-                    f.slope, f.slope_err));
-  for (std::size_t i = 0; i < f.rows.size(); ++i) {
-    if (f.rows[i].period_fit) continue;
-    throw InputError(
-        s.at(i, SeriesColumn::kSpacing),
-        fmt::format("the fitted line leaves no restoring force at this spacing: l = {:.1f} mm <= "
-                    "2 mu_k h_c = {:.1f} mm (mu_k = {:.4g}, h_c = {:.2f} mm), where no plate "
-                    "oscillates; the rows do not lie on one thick-plate line (this row's "
-                    "residual is {:+.1f} sd): check its values, or measure at larger spacings",
-                    s.rows[i].measurement.spacing * 1e3, *spacing_without_restoring_force(f) * 1e3,
-                    *f.mu_k, *f.h_c * 1e3, f.rows[i].residual_sigma));
-  }
-}
 
 std::string pm(std::optional<double> value, std::optional<double> err, double scale, int digits) {
   if (!value) return "-";
@@ -173,99 +136,43 @@ void print_report(const SpacingFitReport& r) {
   }
 }
 
-// The plot's data: fit.json where --out wrote it, else a temporary copy.
-void draw_plot(const nlohmann::json& j, const std::string& written_json, const std::string& png) {
-  if (!written_json.empty()) {
-    run_plot_script("plot_fit.py", {written_json, png});
-    return;
-  }
-  run_plot_script_on("plot_fit.py", j, png);
-}
-
 int run_fit(const FitOptions& o, const GlobalOptions& global) {
-  const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  if (!(gravity > 0.0) || !std::isfinite(gravity))
-    throw InputError(
-        {}, "--gravity: expected a finite positive acceleration, found \"" + o.gravity + "\"");
-  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
-  if (!o.through_rig && (!o.scene.empty() || !o.overrides.empty()))
-    throw InputError({},
-                     "--scene and --set name the rig --through-rig simulates; add "
-                     "--through-rig");
-  std::string png;
-  if (o.plot_option->count() > 0) {
-    if (!o.plot.empty()) {
-      png = o.plot;
-    } else if (!o.out.empty()) {
-      png = (std::filesystem::path(o.out) / "fit.png").string();
-    } else {
-      throw InputError({},
-                       "--plot: expected a PNG to draw (--plot fit.png), or --out DIR for "
-                       "DIR/fit.png; found neither");
-    }
+  FitRequest request;
+  request.series = o.file;
+  request.gravity = o.gravity;
+  request.out = o.out;
+  if (o.plot_option->count() > 0) request.plot = o.plot;
+  if (const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo)) {
+    request.mc = mc->draws;
+    request.seed = mc->seed;
   }
-  // Output places are checked before any work; a plot that fails still leaves the results.
-  if (!o.out.empty()) prepare_output_folder(o.out, "out");
-  if (!png.empty()) prepare_output_file(png, "plot");
-
-  SpacingSeries series = read_spacing_series(o.file);
-  for (const std::string& w : series.warnings) fmt::print(stderr, "{}\n", w);
-  SpacingFitReport report = fit_spacing_series(std::move(series), gravity);
-  require_physical(report);
-  if (mc)
-    report.monte_carlo =
-        thick_plate_fit_monte_carlo(report.series.measurements(), {.gravity = gravity}, *mc);
-  if (o.through_rig) {
-    SceneOptions scene_options;
-    scene_options.file = o.scene.empty() ? default_scene() : o.scene;
-    scene_options.overrides = o.overrides;
-    RigFitRequest request{.scene = load_scene_with_options(scene_options, global),
-                          .gravity = gravity};
-    request.workers = o.workers;
-    try {
-      report.rig = fit_through_rig(report.series.measurements(), request);
-    } catch (const RigFitError& e) {
-      fmt::print(stderr,
-                 "error: --through-rig: {}; the closed-form fit stands (run without "
-                 "--through-rig), or simulate a scene that oscillates there\n",
-                 e.what());
-      return 3;
-    }
-  }
-
-  const nlohmann::json j = spacing_fit_json(report);
-  std::string written_json;
-  std::vector<std::string> written;
-  if (!o.out.empty()) {
-    written_json = (std::filesystem::path(o.out) / "fit.json").string();
-    const std::string csv = (std::filesystem::path(o.out) / "fit.csv").string();
-    write_file_atomic(csv, spacing_fit_csv(report));
-    write_file_atomic(written_json, j.dump(1) + "\n");
-    written = {csv, written_json};
-  }
-  std::string plot_failure;
-  if (!png.empty()) {
-    try {
-      draw_plot(j, written_json, png);
-      written.push_back(png);
-    } catch (const std::runtime_error& e) {
-      plot_failure = e.what();
-    }
+  request.through_rig = o.through_rig;
+  if (!o.scene.empty()) request.scene.file = o.scene;
+  request.scene.asset_dir = global.asset_dir;
+  request.set = o.overrides;
+  request.jobs = o.workers;
+  const FitResult result = fit_series(request);
+  for (const std::string& w : result.warnings) fmt::print(stderr, "{}\n", spelled(w));
+  if (!result.rig_failure.empty()) {
+    fmt::print(stderr,
+               "error: --through-rig: {}; the closed-form fit stands (run without "
+               "--through-rig), or simulate a scene that oscillates there\n",
+               spelled(result.rig_failure));
+    return exit_status(result.outcome());
   }
   if (o.json) {
-    nlohmann::json out = j;
-    out["plot"] =
-        png.empty() || !plot_failure.empty() ? nlohmann::json(nullptr) : nlohmann::json(png);
+    nlohmann::json out = result.json;
+    out["plot"] = result.plot.empty() ? nlohmann::json(nullptr) : nlohmann::json(result.plot);
     fmt::print("{}\n", out.dump(2));
   } else {
-    print_report(report);
-    if (!written.empty()) {
+    print_report(result.report);
+    if (!result.written.empty()) {
       std::string list;
-      for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
+      for (const std::string& w : result.written) list += (list.empty() ? "" : ", ") + w;
       fmt::print("\n  written: {}\n", list);
     }
   }
-  return plot_failure_status(plot_failure);
+  return plot_failure_status(result.plot_failure);
 }
 
 }  // namespace

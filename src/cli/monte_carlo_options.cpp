@@ -27,16 +27,17 @@ std::optional<MonteCarloRequest> monte_carlo_request(const MonteCarloOptions& o)
   const auto [end, ec] = std::from_chars(o.draws.data(), o.draws.data() + o.draws.size(), draws);
   if (ec != std::errc{} || end != o.draws.data() + o.draws.size() || draws < 1 ||
       draws > kMaxMonteCarloDraws)
-    throw InputError({}, fmt::format("--mc: expected the number of draws, a whole number from 1 "
-                                     "to {} (e.g. --mc 100000), found \"{}\"",
-                                     kMaxMonteCarloDraws, o.draws));
+    throw InputError(SourceLocation::of_field("monte_carlo.draws", o.draws),
+                     fmt::format("expected the number of draws, a whole number from 1 to {} (e.g. "
+                                 "--mc 100000), found \"{}\"",
+                                 kMaxMonteCarloDraws, o.draws));
   std::uint64_t seed = 0;
   const auto [seed_end, seed_ec] =
       std::from_chars(o.seed.data(), o.seed.data() + o.seed.size(), seed);
   if (seed_ec != std::errc{} || seed_end != o.seed.data() + o.seed.size())
-    throw InputError({}, fmt::format("--seed: expected a whole number from 0 to 2^64 - 1, found "
-                                     "\"{}\"",
-                                     o.seed));
+    throw InputError(
+        SourceLocation::of_field("seed", o.seed),
+        fmt::format("expected a whole number from 0 to 2^64 - 1, found \"{}\"", o.seed));
   return MonteCarloRequest{.draws = static_cast<int>(draws), .seed = seed, .keep_samples = true};
 }
 

@@ -16,9 +16,6 @@ struct MonteCarloOptions {
   std::string seed = "1";  // --seed: fixed by default, so a report can be reproduced
 };
 
-// The most draws accepted: each accepted draw is kept for the histogram (8 bytes a quantity).
-inline constexpr int kMaxMonteCarloDraws = 10'000'000;
-
 void add_monte_carlo_options(CLI::App& command, MonteCarloOptions& options);
 
 // The request, or nullopt without --mc. Throws InputError for a count that is not a whole number

@@ -25,6 +25,10 @@ struct MuKMeasurement {
   double gravity = kDefaultGravity;
 };
 
+// The most draws a request may ask for: each accepted draw is kept for the histogram (8 bytes a
+// quantity).
+inline constexpr int kMaxMonteCarloDraws = 10'000'000;
+
 struct MonteCarloRequest {
   int draws = 0;             // > 0
   std::uint64_t seed = 1;    // the same seed gives the same bits

@@ -16,5 +16,6 @@ void bind_estimate(py::module_& m);      // Estimate, estimate, estimate_file
 void bind_analytic(py::module_& m);      // AnalyticReport, analytic
 void bind_paper_table(py::module_& m);   // PaperTable, paper_table
 void bind_sweep(py::module_& m);         // sweep
+void bind_fit(py::module_& m);           // fit
 
 }  // namespace fl::python

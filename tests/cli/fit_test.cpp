@@ -97,7 +97,7 @@ TEST_F(Fit, OutWritesCsvAndJsonAndPlotDrawsThePng) {
   // --plot without a file and without --out has nowhere to draw.
   const test::CommandResult none = lab("fit " + exact_series() + " --plot");
   EXPECT_EQ(none.status, 2);
-  EXPECT_NE(none.err.find("--plot: expected a PNG to draw"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("--plot: error: expected a PNG to draw"), std::string::npos) << none.err;
 }
 
 TEST_F(Fit, BadSeriesExitWithTwoAndTheCellAtFault) {
@@ -172,7 +172,8 @@ TEST_F(Fit, MonteCarloCountsOfZeroOrLessOrNotANumberAreRefused) {
          {"fit " + file, std::string("analytic --period 0.79s --period-err 0.02s")}) {
       const test::CommandResult r = lab(command + " --mc " + n);
       EXPECT_EQ(r.status, 2) << command << " --mc " << n;
-      EXPECT_NE(r.err.find("--mc: expected the number of draws, a whole number from 1 to "
+      EXPECT_NE(r.err.find("--mc " + std::string(n) +
+                           ": error: expected the number of draws, a whole number from 1 to "
                            "10000000"),
                 std::string::npos)
           << r.err;

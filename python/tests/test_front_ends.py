@@ -130,3 +130,29 @@ def test_a_bad_fit_is_the_same_error():
         fl.fit(SERIES, scene=SCENES / "minimal.yaml")
     assert caught.value.field == "scene"
     assert "--through-rig" in done.stderr and "through_rig" in str(caught.value)
+
+
+def test_an_analytic_report_is_the_commands():
+    printed = json.loads(cli("analytic", "--period", "0.79s", "--period-err", "0.03s",
+                             "--h-c", "3mm", "--json").stdout)
+    assert fl.analytic(period="0.79s", period_err="0.03s", h_c="3mm").json() == printed
+    # The defaults are the request's, the same in both: the paper's rig.
+    assert fl.analytic(mu_k=0.29).json() == json.loads(cli("analytic", "--mu-k", "0.29",
+                                                           "--json").stdout)
+
+
+@pytest.mark.parametrize("options,arguments,field", [
+    (["--mu-k", "0.3", "--mu-s", "0.2"], {"mu_k": 0.3, "mu_s": 0.2}, "mu_s"),
+    (["--mu-k", "0.3", "--period-err", "0.01s"], {"mu_k": 0.3, "period_err": "0.01s"},
+     "period_err"),
+    (["--mu-k", "0.3", "--temperature", "77K"], {"mu_k": 0.3, "temperature": "77K"},
+     "temperature"),
+    (["--material", "plexiglass"], {"material": "plexiglass"}, "material"),
+])
+def test_a_bad_analytic_request_is_the_same_error(options, arguments, field):
+    done = cli("analytic", *options, status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.analytic(**arguments)
+    assert caught.value.field == field
+    assert located_field(done.stderr).startswith("--" + field.replace("_", "-"))
+    assert located_field(str(caught.value)).startswith(field)

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/field_spelling.hpp"
 #include "cli/monte_carlo_options.hpp"
 #include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
@@ -22,6 +23,7 @@
 #include "io/paper_table_yaml.hpp"
 #include "io/unknown_material.hpp"
 #include "lab/analytic/analytic_report.hpp"
+#include "lab/request/analytic_request.hpp"
 #include "lab/request/lab_data.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
@@ -29,21 +31,23 @@
 namespace fl::cli {
 namespace {
 
+// The options' texts; the defaults shown in --help are the request's.
 struct AnalyticOptions {
-  std::string spacing = "89 mm";
-  std::string spacing_err = "2 mm";
+  AnalyticRequest request;
+  std::string spacing = quantity_input_text(request.spacing);
+  std::string spacing_err = quantity_input_text(request.spacing_err);
   std::string mu_k;
   std::string period;
   std::string period_err = "0 s";
   std::string material;
   std::string temperature = "300 K";
-  std::string h_c = "0 mm";
-  std::string h_c_err = "0 mm";
-  std::string gravity = "9.81 m/s^2";
-  std::string roller_radius = "10 mm";
-  std::string roller_speed = "1600 rpm";
-  std::string amplitude = "20 mm";
-  std::string law = "coulomb";
+  std::string h_c = quantity_input_text(request.h_c);
+  std::string h_c_err = quantity_input_text(request.h_c_err);
+  std::string gravity = quantity_input_text(request.gravity);
+  std::string roller_radius = quantity_input_text(request.roller_radius);
+  std::string roller_speed = quantity_input_text(request.roller_speed);
+  std::string amplitude = quantity_input_text(request.amplitude);
+  std::string law = request.law;
   std::string mu_s;
   std::string v_s;
   std::string beta;
@@ -51,22 +55,6 @@ struct AnalyticOptions {
   MonteCarloOptions monte_carlo;
   std::string plot;
 };
-
-// The material and its row of Table I that --material and --temperature name.
-std::pair<const PaperMaterial*, const PaperMeasurement*> paper_row(const PaperTable& table,
-                                                                   const AnalyticOptions& o) {
-  const PaperMaterial* material = table.find(o.material);
-  if (material == nullptr)
-    throw InputError({}, "--material: unknown material \"" + o.material + "\"; " +
-                             unknown_material_note(table, o.material));
-  const double temperature =
-      option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
-  const PaperMeasurement* row = PaperTable::at(*material, temperature);
-  if (row == nullptr)
-    throw InputError({}, fmt::format("--temperature: the paper measured {} at 300 K{} only",
-                                     material->name, material->cold ? " and 77 K" : ""));
-  return {material, row};
-}
 
 void print_report(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
@@ -161,83 +149,46 @@ void print_report(const AnalyticReport& r) {
                  : std::string());
 }
 
-void draw_histogram(const AnalyticReport& report, const std::string& png) {
-  run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
+// The options as the request's fields: the optional ones only when given.
+AnalyticRequest request_of(const AnalyticOptions& o, const CLI::App& sub,
+                           const GlobalOptions& global) {
+  AnalyticRequest r;
+  r.spacing = o.spacing;
+  r.spacing_err = o.spacing_err;
+  if (!o.mu_k.empty()) r.mu_k = o.mu_k;
+  if (!o.period.empty()) r.period = o.period;
+  if (!o.material.empty()) r.material = o.material;
+  if (sub.count("--period-err") > 0) r.period_err = o.period_err;
+  if (sub.count("--temperature") > 0) r.temperature = o.temperature;
+  r.h_c = o.h_c;
+  r.h_c_err = o.h_c_err;
+  r.gravity = o.gravity;
+  r.roller_radius = o.roller_radius;
+  r.roller_speed = o.roller_speed;
+  r.amplitude = o.amplitude;
+  r.law = o.law;
+  if (!o.mu_s.empty()) r.mu_s = o.mu_s;
+  if (!o.v_s.empty()) r.v_s = o.v_s;
+  if (!o.beta.empty()) r.beta = o.beta;
+  if (const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo)) {
+    r.mc = mc->draws;
+    r.seed = mc->seed;
+  }
+  r.plot = o.plot;
+  r.assets = global.asset_dir;
+  return r;
 }
 
-int run_analytic(const AnalyticOptions& o, const GlobalOptions& global) {
-  AnalyticSetUp set_up;
-  set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
-  set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
-  set_up.h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
-  set_up.h_c_err = option_quantity(o.h_c_err, Dimension::kLength, "--h-c-err");
-  if (!(set_up.h_c_err >= 0.0) || !std::isfinite(set_up.h_c_err))
-    throw InputError(
-        {}, "--h-c-err: expected an uncertainty of 0 or more, found \"" + o.h_c_err + "\"");
-  set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  set_up.roller_radius = option_quantity(o.roller_radius, Dimension::kLength, "--roller-radius");
-  set_up.roller_speed = option_quantity(o.roller_speed, Dimension::kAngularSpeed, "--roller-speed");
-  set_up.amplitude = option_quantity(o.amplitude, Dimension::kLength, "--amplitude");
-  const std::optional<FrictionLawKind> law = friction_law_kind_from_name(o.law);
-  if (!law) throw InputError({}, "--law: expected coulomb or stribeck, found \"" + o.law + "\"");
-  set_up.law = *law;
-  if (!o.mu_s.empty()) set_up.mu_s = option_quantity(o.mu_s, Dimension::kDimensionless, "--mu-s");
-  if (!o.v_s.empty()) set_up.v_s = option_quantity(o.v_s, Dimension::kSpeed, "--v-s");
-  if (!o.beta.empty()) set_up.beta = option_quantity(o.beta, Dimension::kInverseSpeed, "--beta");
-  if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || !o.beta.empty()))
-    throw InputError({}, "--v-s and --beta belong to the stribeck law; add --law stribeck");
-  const int given =
-      (o.mu_k.empty() ? 0 : 1) + (o.period.empty() ? 0 : 1) + (o.material.empty() ? 0 : 1);
-  if (given != 1)
-    throw InputError({}, "give exactly one of --mu-k, --period or --material (found " +
-                             std::to_string(given) + ")");
-
-  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
-  if (mc && !o.mu_k.empty())
-    throw InputError({},
-                     "--mc: carries a measured period's uncertainty into mu_k; a given mu_k "
-                     "has none: give --period T --period-err dT (or --material) instead of "
-                     "--mu-k");
-  if (!o.plot.empty() && !mc)
-    throw InputError({},
-                     "--plot: draws the Monte Carlo's histogram of mu_k; add --mc N (e.g. "
-                     "--mc 100000)");
-  // The plot's place is checked before any work; a plot that fails still leaves the results.
-  if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
-
-  AnalyticReport report;
-  if (!o.mu_k.empty()) {
-    report =
-        analytic_for_mu_k(set_up, option_quantity(o.mu_k, Dimension::kDimensionless, "--mu-k"));
-  } else if (!o.period.empty()) {
-    const double period = option_quantity(o.period, Dimension::kTime, "--period");
-    const double period_err = option_quantity(o.period_err, Dimension::kTime, "--period-err");
-    report = analytic_for_period(set_up, period, period_err);
-  } else {
-    const PaperTable table = load_paper_table(paper_table_path(asset_dir(global.asset_dir)));
-    const auto [material, row] = paper_row(table, o);
-    report = analytic_for_material(set_up, *material, *row);
-  }
-  if (mc) add_monte_carlo(report, *mc);
-  std::string plot_failure;
-  if (!o.plot.empty()) {
-    try {
-      draw_histogram(report, o.plot);
-    } catch (const std::runtime_error& e) {
-      plot_failure = e.what();
-    }
-  }
+int run_analytic(const AnalyticOptions& o, const CLI::App& sub, const GlobalOptions& global) {
+  const AnalyticResult result = analyze(request_of(o, sub, global));
+  for (const std::string& w : result.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
   if (o.json) {
-    nlohmann::json j = analytic_json(report);
-    if (mc)
-      j["plot"] = o.plot.empty() || !plot_failure.empty() ? nlohmann::json(nullptr)
-                                                          : nlohmann::json(o.plot);
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", result.json().dump(2));
   } else {
-    print_report(report);
-    if (!o.plot.empty() && plot_failure.empty()) fmt::print("  plot: {}\n", o.plot);
+    print_report(result.report);
+    if (!result.plot.empty()) fmt::print("  plot: {}\n", result.plot);
   }
-  return plot_failure_status(plot_failure);
+  return plot_failure_status(result.plot_failure);
 }
 
 }  // namespace
@@ -280,20 +231,7 @@ Command add_analytic_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--plot", options->plot,
                   "With --mc: draw the histogram of mu_k's draws to this PNG");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
-  return Command{sub, [options, &global, sub] {
-                   // Options the report would ignore are refused.
-                   if (sub->count("--period-err") > 0 && options->period.empty())
-                     throw InputError({},
-                                      "--period-err is the uncertainty of --period (with "
-                                      "--material the paper's dT is used); give --period, or "
-                                      "drop --period-err");
-                   if (sub->count("--temperature") > 0 && options->material.empty())
-                     throw InputError({},
-                                      "--temperature picks the row of --material in the "
-                                      "paper's table; give --material, or drop "
-                                      "--temperature");
-                   return run_analytic(*options, global);
-                 }};
+  return Command{sub, [options, &global, sub] { return run_analytic(*options, *sub, global); }};
 }
 
 }  // namespace fl::cli

@@ -11,8 +11,10 @@
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
 #include "lab/analytic/analytic_report.hpp"
+#include "lab/request/analytic_request.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/field_spelling.hpp"
 #include "python/json_values.hpp"
 #include "python/lab_data.hpp"
 
@@ -21,50 +23,36 @@ namespace {
 
 AnalyticReport analytic(const Quantity& spacing, const Quantity& spacing_err,
                         const std::optional<Quantity>& mu_k, const std::optional<Quantity>& period,
-                        const Quantity& period_err, const std::optional<std::string>& material,
-                        const Quantity& temperature, const Quantity& h_c, const Quantity& gravity,
-                        const Quantity& roller_radius, const Quantity& roller_speed,
-                        const Quantity& amplitude, const std::string& law,
-                        const std::optional<Quantity>& mu_s, const std::optional<Quantity>& v_s,
-                        const std::optional<Quantity>& beta, const std::optional<Path>& assets) {
-  AnalyticSetUp set_up;
-  set_up.spacing = quantity_argument(spacing, Dimension::kLength, "spacing");
-  set_up.spacing_err = quantity_argument(spacing_err, Dimension::kLength, "spacing_err");
-  set_up.h_c = quantity_argument(h_c, Dimension::kLength, "h_c");
-  set_up.gravity = quantity_argument(gravity, Dimension::kAcceleration, "gravity");
-  set_up.roller_radius = quantity_argument(roller_radius, Dimension::kLength, "roller_radius");
-  set_up.roller_speed = quantity_argument(roller_speed, Dimension::kAngularSpeed, "roller_speed");
-  set_up.amplitude = quantity_argument(amplitude, Dimension::kLength, "amplitude");
-  const std::optional<FrictionLawKind> kind = friction_law_kind_from_name(law);
-  if (!kind) throw InputError({}, "law: expected coulomb or stribeck, found \"" + law + "\"");
-  set_up.law = *kind;
-  set_up.mu_s = optional_quantity(mu_s, Dimension::kDimensionless, "mu_s");
-  set_up.v_s = optional_quantity(v_s, Dimension::kSpeed, "v_s");
-  if (beta) set_up.beta = quantity_argument(*beta, Dimension::kInverseSpeed, "beta");
-  if (set_up.law == FrictionLawKind::kCoulomb && (set_up.v_s || beta))
-    throw InputError({}, "v_s and beta belong to the stribeck law; add law=\"stribeck\"");
-  const int given = (mu_k ? 1 : 0) + (period ? 1 : 0) + (material ? 1 : 0);
-  if (given != 1)
-    throw InputError(
-        {}, "give exactly one of mu_k, period or material (found " + std::to_string(given) + ")");
-
-  if (mu_k)
-    return analytic_for_mu_k(set_up, quantity_argument(*mu_k, Dimension::kDimensionless, "mu_k"));
-  if (period)
-    return analytic_for_period(set_up, quantity_argument(*period, Dimension::kTime, "period"),
-                               quantity_argument(period_err, Dimension::kTime, "period_err"));
-  const PaperTable& table = paper_table_in(asset_dir(assets));
-  const std::string& key = *material;
-  const PaperMaterial* found = table.find(key);
-  if (found == nullptr)
-    throw InputError(
-        {}, "material: unknown material \"" + key + "\"; " + unknown_material_note(table, key));
-  const double kelvin = quantity_argument(temperature, Dimension::kTemperature, "temperature");
-  const PaperMeasurement* row = PaperTable::at(*found, kelvin);
-  if (row == nullptr)
-    throw InputError({}, "temperature: the paper measured " + found->name + " at 300 K" +
-                             (found->cold ? " and 77 K" : "") + " only");
-  return analytic_for_material(set_up, *found, *row);
+                        const std::optional<Quantity>& period_err,
+                        const std::optional<std::string>& material,
+                        const std::optional<Quantity>& temperature, const Quantity& h_c,
+                        const Quantity& gravity, const Quantity& roller_radius,
+                        const Quantity& roller_speed, const Quantity& amplitude,
+                        const std::string& law, const std::optional<Quantity>& mu_s,
+                        const std::optional<Quantity>& v_s, const std::optional<Quantity>& beta,
+                        const std::optional<Path>& assets) {
+  AnalyticRequest r;
+  r.spacing = spacing;
+  r.spacing_err = spacing_err;
+  r.mu_k = mu_k;
+  r.period = period;
+  r.period_err = period_err;
+  r.material = material;
+  r.temperature = temperature;
+  r.h_c = h_c;
+  r.gravity = gravity;
+  r.roller_radius = roller_radius;
+  r.roller_speed = roller_speed;
+  r.amplitude = amplitude;
+  r.law = law;
+  r.mu_s = mu_s;
+  r.v_s = v_s;
+  r.beta = beta;
+  if (assets) r.assets = assets->string();
+  AnalyticResult result = analyze(r);
+  for (const std::string& warning : result.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, spelled(warning).c_str(), 1);
+  return std::move(result.report);
 }
 
 void bind_law_types(py::module_& m) {
@@ -180,18 +168,24 @@ restoring force (period_thick, tipping_amplitude, ...) are None without one.)")
           "json", [](const R& r) { return python_value(analytic_json(r)); },
           "The object `frictionlab analytic --json` prints.");
 
-  m.def("analytic", &analytic, py::kw_only(), py::arg("spacing") = "89 mm",
-        py::arg("spacing_err") = "2 mm", py::arg("mu_k") = py::none(),
-        py::arg("period") = py::none(), py::arg("period_err") = "0 s",
-        py::arg("material") = py::none(), py::arg("temperature") = "300 K", py::arg("h_c") = "0 mm",
-        py::arg("gravity") = "9.81 m/s^2", py::arg("roller_radius") = "10 mm",
-        py::arg("roller_speed") = "1600 rpm", py::arg("amplitude") = "20 mm",
-        py::arg("law") = "coulomb", py::arg("mu_s") = py::none(), py::arg("v_s") = py::none(),
-        py::arg("beta") = py::none(), py::arg("assets") = py::none(),
+  // The defaults are the request's (lab/request/analytic_request.hpp), shown as text.
+  const AnalyticRequest d;
+  m.def("analytic", &analytic, py::kw_only(), py::arg("spacing") = quantity_input_text(d.spacing),
+        py::arg("spacing_err") = quantity_input_text(d.spacing_err), py::arg("mu_k") = py::none(),
+        py::arg("period") = py::none(), py::arg("period_err") = py::none(),
+        py::arg("material") = py::none(), py::arg("temperature") = py::none(),
+        py::arg("h_c") = quantity_input_text(d.h_c),
+        py::arg("gravity") = quantity_input_text(d.gravity),
+        py::arg("roller_radius") = quantity_input_text(d.roller_radius),
+        py::arg("roller_speed") = quantity_input_text(d.roller_speed),
+        py::arg("amplitude") = quantity_input_text(d.amplitude), py::arg("law") = d.law,
+        py::arg("mu_s") = py::none(), py::arg("v_s") = py::none(), py::arg("beta") = py::none(),
+        py::arg("assets") = py::none(),
         R"(The analytic model for a set-up, as `frictionlab analytic`; returns an AnalyticReport.
 
-Give exactly one of mu_k, period (with period_err) or material (a key of the paper's Table I,
-with temperature "300K" or "77K"). Quantities are text with units ("3.6mm", "200rpm") or SI
+Give exactly one of mu_k, period (with period_err, default 0 s) or material (a key of the
+paper's Table I, with temperature "300K" or "77K", default 300 K); period_err without period
+and temperature without material are refused, as the command refuses them. Quantities are text with units ("3.6mm", "200rpm") or SI
 numbers; the defaults are the command's. law: "coulomb" (with mu_s) or "stribeck" (mu_s,
 v_s, beta). Raises InputError for bad input.)");
 }

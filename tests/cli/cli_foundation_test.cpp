@@ -67,7 +67,7 @@ TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
     const char* message;
   };
   for (const Case& c : {
-           Case{"analytic --mu-k 0.3 --spacing 89kg", "--spacing: expected a length"},
+           Case{"analytic --mu-k 0.3 --spacing 89kg", "--spacing: error: expected a length"},
            Case{"analytic --mu-k 0.3 --spacing 89", ""},  // SI: 89 m is valid, not an error
            Case{"analytic --mu-k -1", "mu_k must be a finite positive number"},
            Case{"analytic --period 0s", "the period T must be a finite positive number"},
@@ -110,9 +110,12 @@ TEST(Cli, FlexibleFoamTipsTheMinimalPlateAndAThickPlateIsRefused) {
 TEST(Cli, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
   const auto r = lab("analytic --material plexiglass");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--material: unknown material \"plexiglass\"; the paper's materials are "
-                       "lego, paper, "),
-            std::string::npos)
+  EXPECT_NE(
+      r.err.find(
+          "--material plexiglass: error: unknown material \"plexiglass\"; the paper's materials "
+          "are "
+          "lego, paper, "),
+      std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("did you mean 'plexiglas'?"), std::string::npos) << r.err;
 }

@@ -246,9 +246,9 @@ TEST(AnalyticMonteCarlo, TextReportAndHistogramAndRefusals) {
     const char* message;
   };
   for (const Case& c : {
-           Case{"analytic --mu-k 0.29 --mc 1000", "--mc: carries a measured period's"},
-           Case{"analytic --period 0.79s --plot x.png", "--plot: draws the Monte Carlo's"},
-           Case{"analytic --period 0.79s --mc 100 --h-c-err -1mm", "--h-c-err: expected"},
+           Case{"analytic --mu-k 0.29 --mc 1000", "--mc: error: carries a measured period's"},
+           Case{"analytic --period 0.79s --plot x.png", "--plot: error: draws the Monte Carlo's"},
+           Case{"analytic --period 0.79s --mc 100 --h-c-err -1mm", "--h-c-err: error: expected"},
        }) {
     const test::CommandResult bad = test::run_command(kExe + " " + c.args);
     EXPECT_EQ(bad.status, 2) << c.args;

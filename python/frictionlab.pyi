@@ -432,6 +432,9 @@ def estimate_file(
     spacing_err: Quantity = "2 mm",
     gravity: Quantity = "9.81 m/s^2",
     geometry: str = "auto",
+    columns: str = "",
+    rate: Optional[Quantity] = None,
+    time_unit: str = "",
 ) -> Estimate: ...
 
 # ---- the analytic model ----

@@ -84,7 +84,7 @@ def test_bad_samples_are_located():
         fl.estimate([0.0, 0.001], [500, 70000], name="log")
     with pytest.raises(fl.InputError, match="as many ADC values as times"):
         fl.estimate([0.0, 0.001], [500])
-    with pytest.raises(fl.InputError, match="geometry: expected auto, one or pair"):
+    with pytest.raises(fl.InputError, match="geometry='three': error: expected auto, one or pair"):
         fl.estimate([0.0, 0.001], [500, 500], geometry="three")
-    with pytest.raises(fl.InputError, match="spacing: the roller spacing must be"):
+    with pytest.raises(fl.InputError, match="spacing: error: expected the roller spacing as a finite positive length"):
         fl.estimate([0.0, 0.001], [500, 500], spacing=-1)

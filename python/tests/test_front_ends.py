@@ -156,3 +156,16 @@ def test_a_bad_analytic_request_is_the_same_error(options, arguments, field):
     assert caught.value.field == field
     assert located_field(done.stderr).startswith("--" + field.replace("_", "-"))
     assert located_field(str(caught.value)).startswith(field)
+
+
+def test_a_log_read_by_its_fields_is_the_commands_estimate():
+    log = LOGS / "no-time-column.csv"
+    printed = json.loads(cli("estimate", log, "--rate", "500Hz", "--json").stdout)
+    returned = fl.estimate_file(log, rate="500Hz").json()
+    printed.pop("plot"), printed.pop("monte_carlo")
+    assert returned == printed
+    # Without the rate, both ask for it, each in its own spelling.
+    done = cli("estimate", log, status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.estimate_file(log)
+    assert "--rate 1kHz" in done.stderr and "rate='1kHz'" in str(caught.value)

@@ -22,6 +22,7 @@
 #include "cli/commands.hpp"
 #include "cli/estimate_follow.hpp"
 #include "cli/estimate_report.hpp"
+#include "cli/field_spelling.hpp"
 #include "cli/log_options.hpp"
 #include "cli/monte_carlo_options.hpp"
 #include "cli/monte_carlo_report.hpp"
@@ -35,22 +36,21 @@
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/logs/log_table.hpp"
+#include "lab/request/estimate_request.hpp"
+#include "lab/request/outcome.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
 
 namespace fl::cli {
 namespace {
 
-// The exit status when some of several logs gave no period (docs/cli.md).
-constexpr int kSomeLogsFailed = 3;
-
+// The options' texts; the defaults shown in --help are the request's.
 struct EstimateOptions {
   std::vector<std::string> logs;
-  std::string log;  // the one log, when one is named
-  std::string spacing = "89 mm";
-  std::string spacing_err = "2 mm";
-  std::string gravity = "9.81 m/s^2";
-  std::string geometry = "auto";
+  std::string spacing = quantity_input_text(EstimateRequest{}.spacing);
+  std::string spacing_err = quantity_input_text(EstimateRequest{}.spacing_err);
+  std::string gravity = quantity_input_text(EstimateRequest{}.gravity);
+  std::string geometry = EstimateRequest{}.geometry;
   LogReadingOptions reading;
   std::string plot;
   bool json = false;
@@ -67,40 +67,8 @@ struct EstimateOptions {
   std::string mc_plot;
 };
 
-LogSetUp set_up_from(const EstimateOptions& o) {
-  LogSetUp set_up;
-  set_up.spacing = option_quantity(o.spacing, Dimension::kLength, "--spacing");
-  set_up.spacing_err = option_quantity(o.spacing_err, Dimension::kLength, "--spacing-err");
-  set_up.gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  if (!(set_up.spacing > 0.0) || !std::isfinite(set_up.spacing))
-    throw InputError({}, "--spacing: the roller spacing must be a finite positive length");
-  if (!(set_up.spacing_err >= 0.0) || !std::isfinite(set_up.spacing_err))
-    throw InputError({}, "--spacing-err: the uncertainty must be a finite length, not negative");
-  if (!(set_up.gravity > 0.0) || !std::isfinite(set_up.gravity))
-    throw InputError({}, "--gravity: g must be a finite positive acceleration");
-  set_up.geometry = parse_geometry(o.geometry);
-  return set_up;
-}
-
 void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& png) {
   run_plot_script_on("plot_hall.py", hall_plot_data(log, est), png);
-}
-
-void draw_histogram(const AnalyticReport& report, const std::string& png) {
-  run_plot_script_on("plot_mc.py", monte_carlo_plot_data(report), png);
-}
-
-// The logs named when they are many (a table): more than one argument, a pattern, or a folder of
-// several logs; nothing when they are one (its own report).
-std::optional<std::vector<std::string>> many_logs(const std::vector<std::string>& logs) {
-  if (logs.empty() || (logs.size() == 1 && logs.front() == "-")) return std::nullopt;
-  std::error_code ec;
-  if (logs.size() == 1 && !is_log_pattern(logs.front()) &&
-      !std::filesystem::is_directory(logs.front(), ec))
-    return std::nullopt;
-  std::vector<std::string> found = expand_log_arguments(logs);
-  if (logs.size() == 1 && !is_log_pattern(logs.front()) && found.size() <= 1) return std::nullopt;
-  return found;
 }
 
 void print_log_table(const std::vector<LogTableRow>& rows) {
@@ -125,159 +93,77 @@ void print_log_table(const std::vector<LogTableRow>& rows) {
       "them\n");
 }
 
-int run_many_logs(const EstimateOptions& o, const std::vector<std::string>& logs,
-                  const LogSetUp& set_up, const HallLogOptions& reading) {
-  if (!o.plot.empty())
-    throw InputError({},
-                     "--plot draws one log's signal; with several logs give --out DIR for "
-                     "the table, or estimate one log with --plot");
-  if (!o.follow.empty() || !o.raw_log.empty() || !o.duration.empty())
-    throw InputError({},
-                     "--follow, --log and --duration read the rig's serial port, not logs "
-                     "(give one: estimate LOG..., or estimate --follow PORT)");
-  if (std::find(o.logs.begin(), o.logs.end(), "-") != o.logs.end())
-    throw InputError({}, "- (standard input) is one log: estimate it alone, not among others");
-  if (!o.out.empty()) prepare_output_folder(o.out, "out");
-  LogTableDefaults defaults;
-  defaults.set_up = set_up;
-  defaults.reading = reading;
-  if (!o.material.empty()) defaults.material = o.material;
-  if (!o.temperature.empty())
-    defaults.temperature = option_quantity(o.temperature, Dimension::kTemperature, "--temperature");
-  std::vector<LogTableRow> rows;
-  for (const std::string& log : logs) rows.push_back(estimate_log_row(log, defaults));
-  const nlohmann::json j = log_table_json(rows);
-  std::string written;
-  if (!o.out.empty()) {
-    const std::string csv = o.out + "/estimates.csv";
-    const std::string json = o.out + "/estimates.json";
-    write_file_atomic(csv, log_table_csv(rows));
-    write_file_atomic(json, nlohmann::json{{"logs", j}}.dump(1) + "\n");
-    written = csv + ", " + json;
+// The options as the request's fields: what was given.
+EstimateRequest request_of(const EstimateOptions& o, const CLI::App& sub) {
+  EstimateRequest r;
+  r.logs = o.logs;
+  r.spacing = o.spacing;
+  r.spacing_err = o.spacing_err;
+  r.gravity = o.gravity;
+  r.geometry = o.geometry;
+  r.columns = o.reading.columns;
+  if (!o.reading.rate.empty()) r.rate = o.reading.rate;
+  r.time_unit = o.reading.time_unit;
+  r.plot = o.plot;
+  r.out = o.out;
+  if (!o.material.empty()) r.material = o.material;
+  if (!o.temperature.empty()) r.temperature = o.temperature;
+  r.follow_port = o.follow;
+  if (sub.count("--baud") > 0) r.follow_baud = o.baud;
+  r.follow_raw_log = o.raw_log;
+  if (!o.duration.empty()) r.follow_duration = o.duration;
+  if (const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo)) {
+    r.mc = mc->draws;
+    r.seed = mc->seed;
   }
-  if (o.json) {
-    fmt::print("{}\n", nlohmann::json{{"logs", j}}.dump(2));
-  } else {
-    print_log_table(rows);
-    if (!written.empty()) fmt::print("  written: {}\n", written);
-  }
-  const auto failed = std::count_if(rows.begin(), rows.end(),
-                                    [](const LogTableRow& r) { return r.status != "ok"; });
-  if (failed == 0) return 0;
-  fmt::print(stderr, "error: {} of {} logs gave no period (their rows say why)\n", failed,
-             rows.size());
-  return kSomeLogsFailed;
+  if (!o.h_c.empty()) r.h_c = o.h_c;
+  if (!o.h_c_err.empty()) r.h_c_err = o.h_c_err;
+  r.mc_plot = o.mc_plot;
+  return r;
 }
 
-int run_estimate(const EstimateOptions& o) {
-  const LogSetUp set_up = set_up_from(o);
-  const HallLogOptions reading = log_reading(o.reading);
-  const bool monte_carlo =
-      !o.monte_carlo.draws.empty() || !o.h_c.empty() || !o.h_c_err.empty() || !o.mc_plot.empty();
-  const std::optional<std::vector<std::string>> many = many_logs(o.logs);
-  if (monte_carlo && (many || !o.follow.empty()))
-    throw InputError({},
-                     "--mc and its options estimate one log's mu_k by Monte Carlo; give one "
-                     "log (not several, nor --follow)");
-  if (many) return run_many_logs(o, *many, set_up, reading);
-  if (!o.out.empty())
-    throw InputError({},
-                     "--out writes the table of several logs; for one log use --json (or "
-                     "--log with --follow), or name several logs");
-  if (!o.material.empty() || !o.temperature.empty())
-    throw InputError({},
-                     "--material and --temperature go into the table of several logs; one "
-                     "log's estimate does not use them");
-  if (!o.follow.empty()) {
-    if (!o.log.empty())
-      throw InputError({}, "--follow: reads the rig's serial port, not a log file; found both \"" +
-                               o.follow + "\" and \"" + o.log +
-                               "\" (give one: estimate LOG, or estimate --follow PORT)");
-    if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
-    if (!o.raw_log.empty()) prepare_output_file(o.raw_log, "follow.raw_log");
+int run_log_table(const EstimateOptions& o, const PreparedEstimate& p) {
+  const LogTableResult result = estimate_log_table(p);
+  std::string written;
+  for (const std::string& w : result.written) written += (written.empty() ? "" : ", ") + w;
+  if (o.json) {
+    fmt::print("{}\n", result.json().dump(2));
+  } else {
+    print_log_table(result.rows);
+    if (!written.empty()) fmt::print("  written: {}\n", written);
+  }
+  if (result.failed() > 0)
+    fmt::print(stderr, "error: {} of {} logs gave no period (their rows say why)\n",
+               result.failed(), result.rows.size());
+  return exit_status(result.outcome());
+}
+
+int run_estimate(const EstimateOptions& o, const CLI::App& sub) {
+  const PreparedEstimate p = prepare_estimate(request_of(o, sub));
+  for (const std::string& w : p.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
+  if (p.job == EstimateJob::kLogTable) return run_log_table(o, p);
+  if (p.job == EstimateJob::kFollow) {
     FollowRequest request;
-    request.port = o.follow;
-    request.baud = option_quantity(o.baud, Dimension::kDimensionless, "--baud");
-    request.raw_log = o.raw_log;
-    if (!o.duration.empty())
-      request.duration_s = option_quantity(o.duration, Dimension::kTime, "--duration");
-    request.set_up = set_up;
-    request.reading = reading;
+    request.port = p.follow_port;
+    request.baud = p.follow_baud;
+    request.raw_log = p.follow_raw_log;
+    request.duration_s = p.follow_duration;
+    request.set_up = p.set_up;
+    request.reading = p.reading;
     request.json = o.json;
-    request.plot = o.plot;
+    request.plot = p.plot;
     request.draw_plot = draw_plot;
     return follow_rig(request);
   }
-  if (o.log.empty())
-    throw InputError({},
-                     "estimate: expected a log (a file, a folder holding one, or - for "
-                     "standard input), or --follow PORT for the rig's serial port");
-  if (!o.raw_log.empty() || !o.duration.empty())
-    throw InputError({}, "--log and --duration go with --follow PORT");
-
-  const std::optional<MonteCarloRequest> mc = monte_carlo_request(o.monte_carlo);
-  if (!mc && (!o.h_c.empty() || !o.h_c_err.empty() || !o.mc_plot.empty()))
-    throw InputError({},
-                     "--h-c, --h-c-err and --mc-plot go with --mc N (the Monte Carlo of "
-                     "mu_k); add --mc 100000, or drop them");
-  const double h_c = o.h_c.empty() ? 0.0 : option_quantity(o.h_c, Dimension::kLength, "--h-c");
-  const double h_c_err =
-      o.h_c_err.empty() ? 0.0 : option_quantity(o.h_c_err, Dimension::kLength, "--h-c-err");
-  if (!(h_c >= 0.0) || !std::isfinite(h_c) || !(h_c_err >= 0.0) || !std::isfinite(h_c_err))
-    throw InputError({}, "--h-c and --h-c-err: expected finite lengths, not negative");
-  // The plots' places are checked before any work; a plot that fails still leaves the results.
-  if (!o.plot.empty()) prepare_output_file(o.plot, "plot");
-  if (!o.mc_plot.empty()) prepare_output_file(o.mc_plot, "mc_plot");
-  const HallLog log = read_hall_log(o.log, reading);
-  // The log's sidecar, as for a table of logs: its rig over the command line's.
-  std::string sidecar_note;
-  const LogSetUp log_set_up = set_up_for_log(log.file, set_up, &sidecar_note);
-  if (!sidecar_note.empty()) fmt::print(stderr, "note: {}\n", sidecar_note);
-  const LogEstimate est = estimate_log(log, log_set_up, !o.plot.empty());
-  std::string plot_note;
-  std::string plot_failure;
-  if (!o.plot.empty()) {
-    try {
-      draw_plot(log, est, o.plot);
-      plot_note = " (the plot " + o.plot + " shows the signal)";
-    } catch (const std::runtime_error& e) {
-      plot_failure = e.what();
-    }
-  }
-  require_periods(log, est, plot_note);
-  const GeometryCheck check = check_geometry(log, est);
-  require_geometry(log, est, check, plot_note);
-
-  // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
-  // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).
-  std::optional<AnalyticReport> mc_report;
-  if (mc) {
-    AnalyticSetUp mc_set_up;
-    mc_set_up.spacing = log_set_up.spacing;
-    mc_set_up.spacing_err = log_set_up.spacing_err;
-    mc_set_up.gravity = log_set_up.gravity;
-    mc_set_up.h_c = h_c;
-    mc_set_up.h_c_err = h_c_err;
-    mc_report = analytic_for_period(mc_set_up, est.stats.period_s, est.stats.period_std_s);
-    add_monte_carlo(*mc_report, *mc);
-    if (!o.mc_plot.empty()) {
-      try {
-        draw_histogram(*mc_report, o.mc_plot);
-      } catch (const std::runtime_error& e) {
-        plot_failure += (plot_failure.empty() ? "" : "; ") + std::string(e.what());
-      }
-    }
-  }
+  const OneLogEstimate result = estimate_one_log(p);
+  if (!result.sidecar_note.empty()) fmt::print(stderr, "note: {}\n", result.sidecar_note);
   if (o.json) {
-    nlohmann::json j = estimate_json(log, est, plot_failure.empty() ? o.plot : "");
-    j["monte_carlo"] =
-        mc_report ? monte_carlo_json(*mc_report->monte_carlo) : nlohmann::json(nullptr);
-    fmt::print("{}\n", j.dump(2));
-    return plot_failure_status(plot_failure);
+    fmt::print("{}\n", result.json().dump(2));
+    return plot_failure_status(result.plot_failure);
   }
-  print_estimate(log, est, check, plot_failure.empty() ? o.plot : "");
-  if (mc_report) print_mu_k_monte_carlo(*mc_report, 19, o.mc_plot);
-  return plot_failure_status(plot_failure);
+  print_estimate(result.log, result.estimate, result.check, result.plot);
+  if (result.monte_carlo) print_mu_k_monte_carlo(*result.monte_carlo, 19, result.mc_plot);
+  return plot_failure_status(result.plot_failure);
 }
 
 }  // namespace
@@ -329,14 +215,7 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
   sub->add_option("--h-c-err", options->h_c_err, "With --mc: the uncertainty of --h-c");
   sub->add_option("--mc-plot", options->mc_plot,
                   "With --mc: draw the histogram of mu_k's draws to this PNG");
-  return Command{sub, [options, sub] {
-                   if (sub->count("--baud") > 0 && options->follow.empty())
-                     throw InputError({},
-                                      "--baud is the serial port's rate for --follow PORT; "
-                                      "a log file has none: drop it, or add --follow");
-                   if (options->logs.size() == 1) options->log = options->logs.front();
-                   return run_estimate(*options);
-                 }};
+  return Command{sub, [options, sub] { return run_estimate(*options, *sub); }};
 }
 
 }  // namespace fl::cli

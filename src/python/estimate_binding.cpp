@@ -12,9 +12,10 @@
 #include "io/input_error.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
-#include "lab/logs/log_table.hpp"
+#include "lab/request/estimate_request.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/field_spelling.hpp"
 #include "python/json_values.hpp"
 #include "python/record_arrays.hpp"
 
@@ -27,40 +28,28 @@ struct Estimate {
   LogEstimate estimate;
 };
 
-fl_estimator::Geometry geometry_argument(const std::string& text) {
-  if (text == "auto") return fl_estimator::kAutoGeometry;
-  if (text == "one") return fl_estimator::kOnePulse;
-  if (text == "pair") return fl_estimator::kPulsePair;
-  throw InputError({}, "geometry: expected auto, one or pair, found \"" + text + "\"");
-}
-
-LogSetUp set_up_argument(const Quantity& spacing, const Quantity& spacing_err,
-                         const Quantity& gravity, const std::string& geometry) {
-  LogSetUp set_up;
-  set_up.spacing = quantity_argument(spacing, Dimension::kLength, "spacing");
-  set_up.spacing_err = quantity_argument(spacing_err, Dimension::kLength, "spacing_err");
-  set_up.gravity = quantity_argument(gravity, Dimension::kAcceleration, "gravity");
-  if (!(set_up.spacing > 0.0) || !std::isfinite(set_up.spacing))
-    throw InputError({}, "spacing: the roller spacing must be a finite positive length");
-  if (!(set_up.spacing_err >= 0.0) || !std::isfinite(set_up.spacing_err))
-    throw InputError({}, "spacing_err: the uncertainty must be a finite length, not negative");
-  if (!(set_up.gravity > 0.0) || !std::isfinite(set_up.gravity))
-    throw InputError({}, "gravity: g must be a finite positive acceleration");
-  set_up.geometry = geometry_argument(geometry);
-  return set_up;
-}
-
-// Runs the estimator; InputError, located in the log, when it gives no T +- dT.
-Estimate estimate_of(HallLog log, const LogSetUp& set_up) {
-  Estimate out{std::move(log), {}};
+// The request's answer as the module's Estimate; the GIL released while the estimator runs.
+Estimate estimate_of(const EstimateRequest& request) {
+  const PreparedEstimate prepared = prepare_estimate(request);
+  for (const std::string& warning : prepared.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, spelled(warning).c_str(), 1);
+  OneLogEstimate result;
   {
     const py::gil_scoped_release released;
-    out.estimate = estimate_log(out.log, set_up, false);
+    result = estimate_one_log(prepared);
   }
-  require_periods(out.log, out.estimate, "");
-  // Evenly spaced pulses may be two per period: never half the period (lab/geometry_check).
-  require_geometry(out.log, out.estimate, check_geometry(out.log, out.estimate), "");
-  return out;
+  return Estimate{std::move(result.log), std::move(result.estimate)};
+}
+
+// The arguments both functions share, as the request's fields.
+EstimateRequest request_of(const Quantity& spacing, const Quantity& spacing_err,
+                           const Quantity& gravity, const std::string& geometry) {
+  EstimateRequest r;
+  r.spacing = spacing;
+  r.spacing_err = spacing_err;
+  r.gravity = gravity;
+  r.geometry = geometry;
+  return r;
 }
 
 using Samples = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -150,17 +139,21 @@ in single precision, as the rig's Arduino does. json() is the object
                py::repr(py::float_(static_cast<double>(s.mu_k))).cast<std::string>() + ">";
       });
 
+  // The defaults are the request's (lab/request/estimate_request.hpp), shown as text.
+  const EstimateRequest d;
   m.def(
       "estimate",
       [](const Samples& t, const Samples& adc, const Quantity& spacing, const Quantity& spacing_err,
          const Quantity& gravity, const std::string& geometry, const std::string& name) {
-        const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
-        return estimate_of(hall_log_from_samples(doubles(t, "t"), doubles(adc, "adc"), name),
-                           set_up);
+        EstimateRequest r = request_of(spacing, spacing_err, gravity, geometry);
+        r.samples = hall_log_from_samples(doubles(t, "t"), doubles(adc, "adc"), name);
+        return estimate_of(r);
       },
-      py::arg("t"), py::arg("adc"), py::kw_only(), py::arg("spacing") = "89 mm",
-      py::arg("spacing_err") = "2 mm", py::arg("gravity") = "9.81 m/s^2",
-      py::arg("geometry") = "auto", py::arg("name") = "samples",
+      py::arg("t"), py::arg("adc"), py::kw_only(),
+      py::arg("spacing") = quantity_input_text(d.spacing),
+      py::arg("spacing_err") = quantity_input_text(d.spacing_err),
+      py::arg("gravity") = quantity_input_text(d.gravity), py::arg("geometry") = d.geometry,
+      py::arg("name") = "samples",
       R"(T +- dT and mu_k +- d mu_k from a Hall signal, by the rig's own estimator.
 
 t: sample times [s], increasing (e.g. result.hall["t_us"] * 1e-6); adc: the ADC values
@@ -171,22 +164,27 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
   m.def(
       "estimate_file",
       [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
-         const Quantity& gravity, const std::string& geometry) {
-        const LogSetUp set_up = set_up_argument(spacing, spacing_err, gravity, geometry);
-        HallLog log = read_hall_log(path.string());
-        // The log's sidecar over the arguments, as for `frictionlab estimate LOG`.
-        const LogSetUp rig = set_up_for_log(log.file, set_up, nullptr);
-        return estimate_of(std::move(log), rig);
+         const Quantity& gravity, const std::string& geometry, const std::string& columns,
+         const std::optional<Quantity>& rate, const std::string& time_unit) {
+        EstimateRequest r = request_of(spacing, spacing_err, gravity, geometry);
+        r.logs = {path.string()};
+        r.columns = columns;
+        r.rate = rate;
+        r.time_unit = time_unit;
+        return estimate_of(r);
       },
-      py::arg("path"), py::kw_only(), py::arg("spacing") = "89 mm", py::arg("spacing_err") = "2 mm",
-      py::arg("gravity") = "9.81 m/s^2", py::arg("geometry") = "auto",
+      py::arg("path"), py::kw_only(), py::arg("spacing") = quantity_input_text(d.spacing),
+      py::arg("spacing_err") = quantity_input_text(d.spacing_err),
+      py::arg("gravity") = quantity_input_text(d.gravity), py::arg("geometry") = d.geometry,
+      py::arg("columns") = "", py::arg("rate") = py::none(), py::arg("time_unit") = "",
       R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
 
 The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",
 "t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...). Arguments as estimate; the
 log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity, geometry) is read over
-them, as the command reads it.
-Raises InputError located in the log (file:line:column).)");
+them, as the command reads it. columns ("t_us,adc", "_,t_ms,adc"), rate ("1kHz") and
+time_unit ("us", "ms", "s") say how to read a log whose header does not, as the command's
+--columns, --rate and --time-unit. Raises InputError located in the log (file:line:column).)");
 }
 
 }  // namespace fl::python

@@ -174,8 +174,9 @@ TEST_F(Estimate, BadLogsExitWithStatusTwoAndSayWhatWasFound) {
                 dir + "/three.csv:"},
            Case{write_csv("few.csv", test::generate(few), "t_us,adc", false), dir + "/few.csv:"},
            Case{dir + "/missing.csv", dir + "/missing.csv: error: cannot open the log"},
-           Case{dir + "/x.csv --geometry banana", "error: --geometry: expected auto, one or pair"},
-           Case{dir + "/x.csv --spacing 89kg", "error: --spacing: expected a length"},
+           Case{dir + "/x.csv --geometry banana",
+                "--geometry banana: error: expected auto, one or pair"},
+           Case{dir + "/x.csv --spacing 89kg", "--spacing: error: expected a length"},
        }) {
     const test::CommandResult r = lab(c.args);
     EXPECT_EQ(r.status, 2) << c.args << "\n" << r.out << r.err;

@@ -1,0 +1,254 @@
+#include "lab/request/estimate_request.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "io/atomic_file.hpp"
+#include "io/field_ref.hpp"
+#include "io/input_error.hpp"
+#include "io/log_files.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+
+namespace fl {
+namespace {
+
+// The logs named when they are many (a table): more than one, a pattern, or a folder of several
+// logs; nothing when they are one (its own report).
+std::optional<std::vector<std::string>> many_logs(const std::vector<std::string>& logs) {
+  if (logs.empty() || (logs.size() == 1 && logs.front() == "-")) return std::nullopt;
+  std::error_code ec;
+  if (logs.size() == 1 && !is_log_pattern(logs.front()) &&
+      !std::filesystem::is_directory(logs.front(), ec))
+    return std::nullopt;
+  std::vector<std::string> found = expand_log_arguments(logs);
+  if (logs.size() == 1 && !is_log_pattern(logs.front()) && found.size() <= 1) return std::nullopt;
+  return found;
+}
+
+}  // namespace
+
+PreparedEstimate prepare_estimate(const EstimateRequest& r) {
+  FieldChecks checks;
+  PreparedEstimate p;
+  p.set_up.spacing =
+      checks.positive(r.spacing, Dimension::kLength, "spacing", "the roller spacing");
+  p.set_up.spacing_err =
+      checks.not_negative(r.spacing_err, Dimension::kLength, "spacing_err", "the uncertainty");
+  p.set_up.gravity = checks.positive(r.gravity, Dimension::kAcceleration, "gravity", "g");
+  if (const std::optional<fl_estimator::Geometry> g = geometry_from_option(r.geometry))
+    p.set_up.geometry = *g;
+  else
+    checks.problem("geometry", r.geometry,
+                   "expected auto, one or pair, found \"" + r.geometry + "\"");
+  p.reading.columns = r.columns;
+  p.reading.time_unit = r.time_unit;
+  if (r.rate) {
+    p.reading.rate_hz = checks.quantity(*r.rate, Dimension::kFrequency, "rate");
+    if (!checks.has("rate") && (!(p.reading.rate_hz > 0.0) || !std::isfinite(p.reading.rate_hz)))
+      checks.problem("rate", quantity_input_text(*r.rate),
+                     "expected a positive sample rate (for example 1kHz), found \"" +
+                         quantity_input_text(*r.rate) + "\"");
+  }
+  const bool follow = !r.follow_port.empty();
+  if (r.follow_baud && !follow)
+    checks.problem("follow.baud", field_ref("follow.baud") + " is the serial port's rate for " +
+                                      field_ref("follow.port") +
+                                      "; a log file has none: drop it, or add " +
+                                      field_ref("follow.port"));
+  const bool monte_carlo = r.mc || r.h_c || r.h_c_err || !r.mc_plot.empty();
+  const std::optional<std::vector<std::string>> many = r.samples ? std::nullopt : many_logs(r.logs);
+  if (monte_carlo && (many || follow))
+    checks.problem("monte_carlo.draws",
+                   field_ref("monte_carlo.draws") +
+                       " and its fields estimate one log's mu_k by Monte Carlo; give one log "
+                       "(not several, nor " +
+                       field_ref("follow.port") + ")");
+  if (many) {
+    p.job = EstimateJob::kLogTable;
+    if (!r.plot.empty())
+      checks.problem("plot", field_ref("plot") +
+                                 " draws one log's signal; with several logs give " +
+                                 field_ref("out") + " for the table, or estimate one log with " +
+                                 field_ref("plot"));
+    if (follow || !r.follow_raw_log.empty() || r.follow_duration)
+      checks.problem(follow                      ? "follow.port"
+                     : !r.follow_raw_log.empty() ? "follow.raw_log"
+                                                 : "follow.duration",
+                     field_ref("follow.port") + ", " + field_ref("follow.raw_log") + " and " +
+                         field_ref("follow.duration") +
+                         " read the rig's serial port, not logs (give one: logs, or " +
+                         field_ref("follow.port") + ")");
+    if (std::find(r.logs.begin(), r.logs.end(), "-") != r.logs.end())
+      checks.problem("logs", "-",
+                     "- (standard input) is one log: estimate it alone, not among others");
+    p.logs = *many;
+    p.table.set_up = p.set_up;
+    p.table.reading = p.reading;
+    p.table.material = r.material;
+    if (r.temperature)
+      p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
+    checks.throw_if_any();
+    if (!r.out.empty()) prepare_output_folder(r.out, "out");
+    p.out = r.out;
+    p.warnings = checks.warnings();
+    return p;
+  }
+  if (!r.out.empty())
+    checks.problem("out", field_ref("out") +
+                              " writes the table of several logs; for one log its result is "
+                              "the estimate itself (or give " +
+                              field_ref("follow.raw_log") + " with " + field_ref("follow.port") +
+                              "), or name several logs");
+  if (r.material || r.temperature)
+    checks.problem(r.material ? "material" : "temperature",
+                   field_ref("material") + " and " + field_ref("temperature") +
+                       " go into the table of several logs; one log's estimate does not use "
+                       "them");
+  if (follow) {
+    p.job = EstimateJob::kFollow;
+    if (!r.logs.empty() || r.samples)
+      checks.problem("follow.port", r.follow_port,
+                     "reads the rig's serial port, not a log file; found both \"" + r.follow_port +
+                         "\" and \"" + (r.logs.empty() ? "" : r.logs.front()) +
+                         "\" (give one: a log, or " + field_ref("follow.port") + ")");
+    p.follow_port = r.follow_port;
+    if (r.follow_baud)
+      p.follow_baud = checks.quantity(*r.follow_baud, Dimension::kDimensionless, "follow.baud");
+    p.follow_raw_log = r.follow_raw_log;
+    p.follow_duration = checks.quantity(r.follow_duration, Dimension::kTime, "follow.duration");
+    checks.throw_if_any();
+    if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
+    if (!r.follow_raw_log.empty()) prepare_output_file(r.follow_raw_log, "follow.raw_log");
+    p.plot = r.plot;
+    p.warnings = checks.warnings();
+    return p;
+  }
+  p.job = EstimateJob::kOneLog;
+  if (r.logs.empty() && !r.samples)
+    checks.problem("logs",
+                   "expected a log (a file, a folder holding one, or - for standard "
+                   "input), or " +
+                       field_ref("follow.port") + " for the rig's serial port");
+  if (!r.follow_raw_log.empty() || r.follow_duration)
+    checks.problem(!r.follow_raw_log.empty() ? "follow.raw_log" : "follow.duration",
+                   field_ref("follow.raw_log") + " and " + field_ref("follow.duration") +
+                       " go with " + field_ref("follow.port"));
+  if (r.mc && (*r.mc < 1 || *r.mc > kMaxMonteCarloDraws))
+    checks.problem("monte_carlo.draws", std::to_string(*r.mc),
+                   fmt::format("expected the number of draws, a whole number from 1 to {}, found "
+                               "{}",
+                               kMaxMonteCarloDraws, *r.mc));
+  if (!r.mc && (r.h_c || r.h_c_err || !r.mc_plot.empty()))
+    checks.problem(r.h_c       ? "h_c"
+                   : r.h_c_err ? "h_c_err"
+                               : "mc_plot",
+                   field_ref("h_c") + ", " + field_ref("h_c_err") + " and " + field_ref("mc_plot") +
+                       " go with " + field_ref("monte_carlo.draws") +
+                       " (the Monte Carlo of mu_k); add " +
+                       field_ref("monte_carlo.draws", "100000") + ", or drop them");
+  if (r.h_c) p.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
+  if (r.h_c_err)
+    p.h_c_err = checks.not_negative(*r.h_c_err, Dimension::kLength, "h_c_err", "an uncertainty");
+  checks.throw_if_any();
+  // The plots' places are checked before any work; a plot that fails still leaves the results.
+  if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
+  if (!r.mc_plot.empty()) prepare_output_file(r.mc_plot, "mc_plot");
+  if (r.mc)
+    p.monte_carlo =
+        MonteCarloRequest{.draws = static_cast<int>(*r.mc), .seed = r.seed, .keep_samples = true};
+  if (!r.logs.empty()) p.log = r.logs.front();
+  p.samples = r.samples;
+  p.plot = r.plot;
+  p.mc_plot = r.mc_plot;
+  p.warnings = checks.warnings();
+  return p;
+}
+
+nlohmann::json OneLogEstimate::json() const {
+  nlohmann::json j = log_estimate_json(log, estimate);
+  j["plot"] = plot.empty() ? nlohmann::json(nullptr) : nlohmann::json(plot);
+  j["monte_carlo"] =
+      monte_carlo ? monte_carlo_json(*monte_carlo->monte_carlo) : nlohmann::json(nullptr);
+  return j;
+}
+
+Outcome OneLogEstimate::outcome() const {
+  return plot_failure.empty() ? Outcome::kDone : Outcome::kIncomplete;
+}
+
+OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
+  OneLogEstimate out;
+  out.log = p.samples ? *p.samples : read_hall_log(p.log, p.reading);
+  // The log's sidecar over the request's rig.
+  const LogSetUp set_up =
+      p.samples ? p.set_up : set_up_for_log(out.log.file, p.set_up, &out.sidecar_note);
+  out.estimate = estimate_log(out.log, set_up, !p.plot.empty());
+  std::string plot_note;
+  if (!p.plot.empty()) {
+    try {
+      run_plot_script_on("plot_hall.py", hall_plot_data(out.log, out.estimate), p.plot);
+      out.plot = p.plot;
+      plot_note = " (the plot " + p.plot + " shows the signal)";
+    } catch (const std::runtime_error& e) {
+      out.plot_failure = e.what();
+    }
+  }
+  require_periods(out.log, out.estimate, plot_note);
+  out.check = check_geometry(out.log, out.estimate);
+  require_geometry(out.log, out.estimate, out.check, plot_note);
+  // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
+  // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).
+  if (p.monte_carlo) {
+    AnalyticSetUp mc;
+    mc.spacing = set_up.spacing;
+    mc.spacing_err = set_up.spacing_err;
+    mc.gravity = set_up.gravity;
+    mc.h_c = p.h_c;
+    mc.h_c_err = p.h_c_err;
+    out.monte_carlo =
+        analytic_for_period(mc, out.estimate.stats.period_s, out.estimate.stats.period_std_s);
+    add_monte_carlo(*out.monte_carlo, *p.monte_carlo);
+    if (!p.mc_plot.empty()) {
+      try {
+        run_plot_script_on("plot_mc.py", monte_carlo_plot_data(*out.monte_carlo), p.mc_plot);
+        out.mc_plot = p.mc_plot;
+      } catch (const std::runtime_error& e) {
+        out.plot_failure += (out.plot_failure.empty() ? "" : "; ") + std::string(e.what());
+      }
+    }
+  }
+  return out;
+}
+
+nlohmann::json LogTableResult::json() const {
+  return {{"logs", log_table_json(rows)}};
+}
+
+int LogTableResult::failed() const {
+  return static_cast<int>(std::count_if(rows.begin(), rows.end(),
+                                        [](const LogTableRow& r) { return r.status != "ok"; }));
+}
+
+Outcome LogTableResult::outcome() const {
+  return failed() == 0 ? Outcome::kDone : Outcome::kFailed;
+}
+
+LogTableResult estimate_log_table(const PreparedEstimate& p) {
+  LogTableResult out;
+  for (const std::string& log : p.logs) out.rows.push_back(estimate_log_row(log, p.table));
+  if (!p.out.empty()) {
+    const std::string csv = p.out + "/estimates.csv";
+    const std::string json = p.out + "/estimates.json";
+    write_file_atomic(csv, log_table_csv(out.rows));
+    write_file_atomic(json, out.json().dump(1) + "\n");
+    out.written = {csv, json};
+  }
+  return out;
+}
+
+}  // namespace fl

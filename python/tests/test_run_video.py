@@ -75,7 +75,7 @@ def test_title_orbit_and_captions(tmp_path):
 def test_frame_arguments_without_frames_are_refused(tmp_path):
     for name, value in [("title", "Friction"), ("orbit", "10deg/s"), ("camera", "top"),
                         ("fps", 10), ("captions", tmp_path / "c.yaml")]:
-        with pytest.raises(fl.InputError, match=rf"^{name}: error: this argument shapes the frames"):
+        with pytest.raises(fl.InputError, match=rf"^{name}: error: this shapes the frames"):
             fl.run(SCENES / "minimal.yaml", duration="0.2s", **{name: value})
 
 

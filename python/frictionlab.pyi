@@ -357,6 +357,7 @@ class RunSummary:
     real_time_factor: float
     steps_per_second: float
     harmonic: bool
+    def __getitem__(self, key: str) -> Any: ...
     def json(self) -> dict[str, Any]: ...
 
 class RunResult(RunSummary):

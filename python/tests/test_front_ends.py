@@ -169,3 +169,40 @@ def test_a_log_read_by_its_fields_is_the_commands_estimate():
     with pytest.raises(fl.InputError) as caught:
         fl.estimate_file(log)
     assert "--rate 1kHz" in done.stderr and "rate='1kHz'" in str(caught.value)
+
+
+def test_fit_reads_a_sweeps_own_results(tmp_path):
+    # Three spacings of minimal.yaml (mu_k 0.29, h_c 2.58 mm): the fit of the sweep's own
+    # results.csv finds the scene's mu_k and h_c, from either front end.
+    sweep = tmp_path / "spacing.yaml"
+    sweep.write_text(f"format: 1\nname: three\nscene: {SCENES / 'minimal.yaml'}\n"
+                     "set:\n  world.duration: 6 s\n"
+                     "axes:\n  - key: rollers.spacing\n    values: [80 mm, 89 mm, 100 mm]\n")
+    fl.sweep(sweep, out=tmp_path / "out")
+    results = tmp_path / "out" / "results.csv"
+    printed = json.loads(cli("fit", results, "--json").stdout)
+    returned = fl.fit(results)
+    printed.pop("plot")
+    assert returned.json() == printed
+    assert returned.mu_k == pytest.approx(0.29, abs=3 * returned.mu_k_err)
+    assert returned.mu_k == pytest.approx(0.29, rel=5e-3)
+    assert returned.h_c == pytest.approx(2.58e-3, abs=3 * returned.h_c_err)
+
+
+def test_a_sweep_that_varies_more_than_the_spacing_is_no_series(tmp_path):
+    results = tmp_path / "results.csv"
+    results.write_text("index,plate.material,rollers.spacing,seed,status,spacing_m,period_s,"
+                       "period_std_error_s\n0,lego,80 mm,1,ok,0.08,0.74,0.0001\n")
+    done = cli("fit", results, status=2)
+    assert "varies plate.material besides the roller spacing" in done.stderr
+
+
+def test_every_mu_k_from_a_measured_period_carries_dl(tmp_path):
+    # compare --log refits mu_k from the log's period on the rig's l +- dl (the estimate's
+    # default dl, the paper's 2 mm): its uncertainty is at least dl / l (mu_k ~ l for the thin
+    # formula, about so for the thick), not the period's 0.007 % alone.
+    done = json.loads(cli("compare", "--log", LOGS / "clean.csv", "--out", tmp_path,
+                          "--json").stdout)
+    assert done["spacing_err_m"] == pytest.approx(0.002)
+    dl_over_l = done["spacing_err_m"] / done["spacing_m"]
+    assert done["mu_k_refit_err_quadrature"] / done["mu_k_refit"] >= 0.95 * dl_over_l

@@ -2,6 +2,7 @@
 field of the typed summary against the command's JSON, floats exactly."""
 
 import functools
+import json
 import math
 
 import pytest
@@ -285,3 +286,14 @@ def test_a_run_too_short_for_a_turning_point_measures_no_amplitude():
     assert "none measured" in str(short)
     longer = fl.run(SCENES / "minimal.yaml", duration="0.5s", record=False)
     assert longer.amplitude_start == pytest.approx(0.020, rel=1e-3)
+
+
+def test_every_key_of_summary_json_is_an_item_of_the_summary(tmp_path):
+    # A field added to the one table (lab/run/summary_fields.cpp) reaches Python without a
+    # binding of its own: summary[key] is summary.json's value.
+    r = fl.run(SCENES / "minimal.yaml", duration="2s", out=tmp_path, record=False)
+    written = json.loads((tmp_path / "summary.json").read_text())
+    for key, value in written.items():
+        assert r[key] == value, key
+    with pytest.raises(KeyError, match="no key"):
+        r["no_such_key"]

@@ -19,6 +19,7 @@
 #include "cli/option_quantity.hpp"
 #include "cli/plot_failure.hpp"
 #include "core/paper_table.hpp"
+#include "core/units.hpp"
 #include "io/input_error.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "io/unknown_material.hpp"
@@ -58,7 +59,7 @@ struct AnalyticOptions {
 
 void print_report(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
-  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+  constexpr double kRpm = kRpmPerRadPerSecond;
   fmt::print("frictionlab analytic: the friction oscillator for {}\n", r.source);
   fmt::print("  roller spacing l             {:.1f} +- {:.1f} mm\n", s.spacing * 1e3,
              s.spacing_err * 1e3);

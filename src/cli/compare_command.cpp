@@ -21,6 +21,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
+#include "io/plus_minus.hpp"
 #include "lab/compare/compare.hpp"
 #include "lab/compare/log_against_rig.hpp"
 #include "lab/request/lab_data.hpp"
@@ -123,10 +124,11 @@ void print_log_report(const LogAgainstRig& r, const std::string& written) {
       "  the scene's mu_k       {:.4f}: T = {}\n", row.mu_k_simulated,
       row.period_simulated ? fmt::format("{:.6f} s", *row.period_simulated) : std::string("-"));
   if (row.mu_k_refit)
-    fmt::print("  mu_k refitted          {:.4f} +- {:.4f} (quadrature, from dT): T = {:.6f} s{}\n",
-               *row.mu_k_refit, row.mu_k_refit_err_quadrature.value_or(NAN),
-               row.period_at_refit.value_or(NAN),
-               row.refit_note.empty() ? "" : " (" + row.refit_note + ")");
+    fmt::print(
+        "  mu_k refitted          {} (quadrature, from dT and dl = {:.1f} mm): T = {:.6f} s{}\n",
+        plus_minus(*row.mu_k_refit, row.mu_k_refit_err_quadrature.value_or(NAN), 4),
+        row.spacing_err.value_or(0.0) * 1e3, row.period_at_refit.value_or(NAN),
+        row.refit_note.empty() ? "" : " (" + row.refit_note + ")");
   else
     fmt::print("  mu_k refitted          none{}\n",
                row.refit_note.empty() ? "" : ": " + row.refit_note);

@@ -73,24 +73,26 @@ void draw_plot(const HallLog& log, const LogEstimate& est, const std::string& pn
 
 void print_log_table(const std::vector<LogTableRow>& rows) {
   fmt::print("frictionlab estimate: {} logs\n\n", rows.size());
-  fmt::print("  {:<24} {:>7}  {:>20}  {:>9}  {:>18}  {}\n", "log", "l [mm]", "T +- dT [s]",
-             "N (disc.)", "mu_k +- worst", "material");
+  fmt::print("  {:<24} {:>7}  {:>20}  {:>8}  {:>9}  {:>18}  {}\n", "log", "l [mm]", "T +- sd [s]",
+             "se [s]", "N (disc.)", "mu_k +- worst", "material");
   for (const LogTableRow& r : rows) {
     const std::string label = r.label.size() > 24 ? r.label.substr(0, 21) + "..." : r.label;
     if (r.status != "ok") {
-      fmt::print("  {:<24} {:>7.1f}  failed: {}\n", label, r.set_up.spacing * 1e3, r.error);
+      fmt::print("  {:<24} {:>7.1f}  failed: {}\n", label, r.set_up.spacing * 1e3,
+                 spelled(r.error));
       continue;
     }
     fmt::print(
-        "  {:<24} {:>7.1f}  {:>9.6f} +- {:>8.6f}  {:>4} ({:>2})  {:>8.4f} +- {:>6.4f}  {}{}\n",
-        label, r.set_up.spacing * 1e3, *r.period, *r.period_err, *r.periods_used,
+        "  {:<24} {:>7.1f}  {:>9.6f} +- {:>8.6f}  {:>8.6f}  {:>4} ({:>2})  {:>8.4f} +- {:>6.4f}  "
+        "{}{}\n",
+        label, r.set_up.spacing * 1e3, *r.period, *r.period_std, *r.period_err, *r.periods_used,
         *r.periods_discarded, *r.mu_k, *r.mu_k_err_worst, r.material.value_or("-"),
         r.temperature ? fmt::format(" at {:g} K", *r.temperature) : std::string());
   }
   fmt::print(
-      "\n  dT is the standard error of the mean period; mu_k is the paper's thin formula and its "
-      "worst-case error\n  (from the periods' standard deviation and dl), as the rig computes "
-      "them\n");
+      "\n  sd is the standard deviation of a log's periods (the paper's dT), se the standard error "
+      "of their mean;\n  mu_k is the paper's thin formula and its worst-case error (from sd and "
+      "dl), as the rig computes them\n");
 }
 
 // The options as the request's fields: what was given.

@@ -22,6 +22,7 @@
 #include "cli/field_spelling.hpp"
 #include "cli/monte_carlo_options.hpp"
 #include "cli/plot_failure.hpp"
+#include "io/plus_minus.hpp"
 #include "lab/compare/spacing_fit_report.hpp"
 #include "lab/request/fit_request.hpp"
 
@@ -44,7 +45,7 @@ struct FitOptions {
 
 std::string pm(std::optional<double> value, std::optional<double> err, double scale, int digits) {
   if (!value) return "-";
-  return err ? fmt::format("{:.{}f} +- {:.{}f}", *value * scale, digits, *err * scale, digits)
+  return err ? plus_minus(*value * scale, *err * scale, digits)
              : fmt::format("{:.{}f}", *value * scale, digits);
 }
 
@@ -77,9 +78,9 @@ void print_report(const SpacingFitReport& r) {
              f.chi2_per_dof ? fmt::format(" (chi^2/dof {:.3f})", *f.chi2_per_dof)
                             : std::string(" (two rows: the line goes through both; no check)"));
   fmt::print(
-      "  thin formula           mu_k = {:.4f} +- {:.4f} from a line through the origin "
-      "(chi^2/dof {:.3g}): the paper's formula, h_c = 0\n",
-      f.mu_k_thin_line, f.mu_k_thin_line_err,
+      "  thin formula           mu_k = {} from a line through the origin (chi^2/dof {:.3g}): the "
+      "paper's formula, h_c = 0\n",
+      plus_minus(f.mu_k_thin_line, f.mu_k_thin_line_err, 4),
       f.rows.size() > 1 ? f.thin_chi2 / static_cast<double>(f.rows.size() - 1)
                         : std::numeric_limits<double>::quiet_NaN());
   fmt::print("\n  {:>4} {:<14} {:>16} {:>20} {:>10} {:>9} {:>10}", "line", "label", "l [mm]",

@@ -6,11 +6,10 @@
 
 #include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 void check_oscillator(double spacing, double mu_k, double h_c, double gravity) {
   check_positive(spacing, "the roller spacing l", "m");

@@ -6,11 +6,10 @@
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 struct SlipTerms {
   double omega2 = 0.0;  // Omega^2(v) [1/s^2]

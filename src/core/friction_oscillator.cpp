@@ -7,11 +7,10 @@
 
 #include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Omega^2 = 2 g mu / (l - 2 mu h_c), or a refusal when there is no restoring force.
 double omega_at(const PlateOnRollers& plate, double mu) {

@@ -4,6 +4,7 @@
 
 #include "core/domain_check.hpp"
 #include "core/normal_draws.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 
@@ -18,7 +19,7 @@ MuKMonteCarlo mu_k_monte_carlo(const MuKMeasurement& m, const MonteCarloRequest&
   check_non_negative(m.h_c_err, "h_c's uncertainty", "m");
   check_positive(m.gravity, "gravity g", "m/s^2");
 
-  constexpr double kTwoPiSquared = 2.0 * std::numbers::pi * std::numbers::pi;
+  constexpr double kTwoPiSquared = 2.0 * kPi * kPi;
   MuKMonteCarlo out;
   out.draws = request.draws;
   out.seed = request.seed;

@@ -1,4 +1,5 @@
 #include "core/normal_draws.hpp"
+#include "core/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -17,7 +18,7 @@ double NormalDraws::standard() {
   }
   // Box-Muller: two uniforms give two independent standard normals; keep the second.
   const double radius = std::sqrt(-2.0 * std::log(uniform_open_zero()));
-  const double angle = 2.0 * std::numbers::pi * uniform_open_zero();
+  const double angle = 2.0 * kPi * uniform_open_zero();
   spare_ = radius * std::sin(angle);
   has_spare_ = true;
   return radius * std::cos(angle);

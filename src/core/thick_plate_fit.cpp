@@ -4,11 +4,12 @@
 #include <numbers>
 
 #include "core/domain_check.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
 
-constexpr double kTwoPiSquared = 2.0 * std::numbers::pi * std::numbers::pi;
+constexpr double kTwoPiSquared = 2.0 * kPi * kPi;
 
 struct Line {
   double slope = 0.0;

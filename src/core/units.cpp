@@ -17,8 +17,6 @@ struct Unit {
   double offset;  // SI value of the unit's zero (only degrees Celsius have one)
 };
 
-constexpr double kPi = std::numbers::pi;
-
 // The first symbol of each list is the SI unit; every list is the complete set accepted.
 constexpr std::array kDimensionless{Unit{"", 1.0, 0.0}, Unit{"%", 0.01, 0.0},
                                     Unit{"ppm", 1e-6, 0.0}};
@@ -29,7 +27,7 @@ constexpr std::array kTime{Unit{"s", 1.0, 0.0},   Unit{"ms", 1e-3, 0.0},  Unit{"
 constexpr std::array kMass{Unit{"kg", 1.0, 0.0}, Unit{"g", 1e-3, 0.0}, Unit{"mg", 1e-6, 0.0}};
 constexpr std::array kAngle{Unit{"rad", 1.0, 0.0}, Unit{"deg", kPi / 180.0, 0.0},
                             Unit{"°", kPi / 180.0, 0.0}, Unit{"mrad", 1e-3, 0.0}};
-constexpr std::array kAngularSpeed{Unit{"rad/s", 1.0, 0.0}, Unit{"rpm", 2.0 * kPi / 60.0, 0.0},
+constexpr std::array kAngularSpeed{Unit{"rad/s", 1.0, 0.0}, Unit{"rpm", kRadPerSecondPerRpm, 0.0},
                                    Unit{"rev/s", 2.0 * kPi, 0.0}, Unit{"deg/s", kPi / 180.0, 0.0}};
 constexpr std::array kSpeed{Unit{"m/s", 1.0, 0.0}, Unit{"cm/s", 1e-2, 0.0},
                             Unit{"mm/s", 1e-3, 0.0}};

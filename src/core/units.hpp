@@ -3,11 +3,17 @@
 // where a text came from add the location to the error.
 #pragma once
 
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
 namespace fl {
+
+// The lab's one pi, and its one conversion between rad/s and rpm (the unit "rpm" of quantities).
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kRadPerSecondPerRpm = 2.0 * kPi / 60.0;
+inline constexpr double kRpmPerRadPerSecond = 60.0 / (2.0 * kPi);
 
 // The physical dimension a quantity must have; it decides which units are accepted.
 enum class Dimension {

@@ -56,8 +56,50 @@ std::string known_names() {
 
 // The header: which column of the file holds which quantity (none for a column read past: the
 // notes and the status of frictionlab estimate's table; `status` is where that column is, or -1).
+// A sweep's results.csv (docs/sweep-format.md): its columns are the run's, SI, with the axes
+// between `index` and `seed`. Its spacing is spacing_m, its period the estimator's period_s with
+// the standard error of its mean as dT (period_std_error_s), its label the point's index; every
+// other column is read past. A sweep that varies anything but the spacing is refused: its rows
+// are not one rig's series.
+bool sweep_results_header(const std::vector<CsvCell>& cells) {
+  const auto has = [&](std::string_view name) {
+    return std::any_of(cells.begin(), cells.end(),
+                       [&](const CsvCell& c) { return lower(c.text) == name; });
+  };
+  return has("index") && has("seed") && has("status") && has("spacing_m") && has("period_s") &&
+         has("period_std_error_s");
+}
+
+std::vector<std::optional<SeriesColumn>> read_sweep_header(const std::vector<CsvCell>& cells,
+                                                           int* status) {
+  std::vector<std::optional<SeriesColumn>> order;
+  bool axes = false;
+  for (const CsvCell& cell : cells) {
+    const std::string name = lower(cell.text);
+    if (name == "index") {
+      axes = true;
+      order.push_back(SeriesColumn::kLabel);
+      continue;
+    }
+    if (name == "seed") axes = false;
+    if (axes && name != "rollers.spacing")
+      throw InputError(cell.where,
+                       fmt::format("this sweep varies {} besides the roller spacing, so its rows "
+                                   "are not one rig's series; fit a sweep whose only axis is "
+                                   "rollers.spacing (or a CSV of one value of {})",
+                                   cell.text, cell.text));
+    if (name == "status") *status = static_cast<int>(order.size());
+    order.push_back(name == "spacing_m"            ? std::optional(SeriesColumn::kSpacing)
+                    : name == "period_s"           ? std::optional(SeriesColumn::kPeriod)
+                    : name == "period_std_error_s" ? std::optional(SeriesColumn::kPeriodErr)
+                                                   : std::nullopt);
+  }
+  return order;
+}
+
 std::vector<std::optional<SeriesColumn>> read_header(const std::vector<CsvCell>& cells,
                                                      const std::string& file, int* status) {
+  if (sweep_results_header(cells)) return read_sweep_header(cells, status);
   std::vector<std::optional<SeriesColumn>> order;
   std::array<int, 5> seen{};  // column of the file (1-based) where each was named, 0 if not
   *status = -1;
@@ -174,16 +216,29 @@ SpacingSeries parse_spacing_series(std::string_view text, const std::string& fil
   series.header_line = table.header.front().where.line;
   int status = -1;
   const std::vector<std::optional<SeriesColumn>> order = read_header(table.header, file, &status);
+  series.sweep_results = sweep_results_header(table.header);
   for (const auto& c : order) {
     series.has_spacing_err = series.has_spacing_err || c == SeriesColumn::kSpacingErr;
     series.has_label = series.has_label || c == SeriesColumn::kLabel;
   }
   for (const std::vector<CsvCell>& fields : table.rows) {
     const int line_number = fields.front().where.line;
-    // A row of frictionlab estimate's table whose log gave no period.
+    // A row of frictionlab estimate's table whose log gave no period, or a sweep's point that
+    // failed or whose estimator accepted no period.
     if (status >= 0 && fields[static_cast<std::size_t>(status)].text != "ok") {
       ++series.rows_left_out;
       continue;
+    }
+    if (series.sweep_results) {
+      bool no_period = false;
+      for (std::size_t i = 0; i < fields.size(); ++i)
+        no_period = no_period ||
+                    ((order[i] == SeriesColumn::kPeriod || order[i] == SeriesColumn::kPeriodErr) &&
+                     fields[i].text.empty());
+      if (no_period) {
+        ++series.rows_left_out;
+        continue;
+      }
     }
     SpacingSeriesRow row;
     row.line = line_number;

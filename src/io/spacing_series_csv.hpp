@@ -4,8 +4,10 @@
 // "0.79 s", "5ms"); a plain number is SI. Blank lines and lines starting with `#` are skipped
 // (io/csv_table). The table `frictionlab estimate LOG...` writes is read as it is: its
 // `rollers.spacing` is the spacing, rows whose `status` is not "ok" are left out, its notes and
-// scene keys are read past (io/estimate_table_columns.hpp). Every cell is checked where it stands:
-// errors are located file:line:column.
+// scene keys are read past (io/estimate_table_columns.hpp). So is a sweep's results.csv whose only
+// axis is rollers.spacing: spacing_m, period_s and period_std_error_s are its spacing, period and
+// dT, its points that failed or gave no period are left out. Every cell is checked where it
+// stands: errors are located file:line:column.
 #pragma once
 
 #include <string>
@@ -34,7 +36,10 @@ struct SpacingSeries {
   bool has_spacing_err = false;
   bool has_label = false;
   std::vector<SpacingSeriesRow> rows;
-  int rows_left_out = 0;  // rows of frictionlab estimate's table whose log gave no period
+  // Rows of an estimate table whose log gave no period, or of a sweep's results whose point
+  // failed or gave no period.
+  int rows_left_out = 0;
+  bool sweep_results = false;  // the file is a sweep's results.csv
   // Cells read in a way the user may not have meant (a plain number of metres for a spacing of
   // 2 m or more), each located, for the command to print.
   std::vector<std::string> warnings;

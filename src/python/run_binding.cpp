@@ -16,6 +16,7 @@
 
 #include "lab/request/run_request.hpp"
 #include "lab/run/run_outputs.hpp"
+#include "lab/run/summary_fields.hpp"
 #include "lab/video/video_module.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
@@ -364,6 +365,24 @@ A value the run did not measure is None, never 0. str(summary) is the summary
           },
           "The object `frictionlab run --json` prints (docs/cli.md): summary.json's keys and "
           "timing.json's.")
+      .def(
+          "__getitem__",
+          [](const S& s, const std::string& key) {
+            // Every field of the one table (lab/run/summary_fields.hpp) by its summary.json key,
+            // a field added there included, with no binding of its own.
+            const nlohmann::json j = summary_json(s);
+            const auto it = j.find(key);
+            if (it == j.end()) {
+              for (const SummaryField& f : summary_fields())
+                if (f.summary_key != nullptr && key == f.summary_key) return py::object(py::none());
+              throw py::key_error("summary.json has no key \"" + key +
+                                  "\" (docs/cli.md lists them)");
+            }
+            return python_value(*it);
+          },
+          py::arg("key"),
+          "summary[\"period_s\"]: any key of summary.json (docs/cli.md), SI; None where the run "
+          "has no value.")
       .def("__str__", [](const S& s) { return spelled(summary_text(s)); })
       .def("__repr__", [](const py::object& self) {
         const S& s = self.cast<const S&>();

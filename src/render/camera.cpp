@@ -1,4 +1,5 @@
 #include "render/camera.hpp"
+#include "core/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -48,7 +49,7 @@ Eigen::Matrix4f view_matrix(const Camera& camera) {
 }
 
 Eigen::Matrix4f projection_matrix(const Camera& camera, int width, int height) {
-  const float fov = camera.fov_y_degrees * std::numbers::pi_v<float> / 180.0f;
+  const float fov = camera.fov_y_degrees * static_cast<float>(kPi) / 180.0f;
   return perspective(fov, static_cast<float>(width) / static_cast<float>(height), camera.near_plane,
                      camera.far_plane);
 }

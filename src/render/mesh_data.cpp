@@ -1,4 +1,5 @@
 #include "render/mesh_data.hpp"
+#include "core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,7 +91,7 @@ MeshData make_cylinder(float radius, float length, int segments, const Color& co
   MeshData m;
   const float half = length / 2.0f;
   const auto angle = [&](int i) {
-    return 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(segments);
+    return 2.0f * static_cast<float>(kPi) * static_cast<float>(i) / static_cast<float>(segments);
   };
   // Sides: one quad per segment, smooth normals; the first segment carries the stripe colour.
   for (int i = 0; i < segments; ++i) {

@@ -1,4 +1,5 @@
 #include "render/overlay.hpp"
+#include "core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -85,8 +86,8 @@ void Overlay::dashed_polyline(std::span<const Eigen::Vector2f> points, float wid
 void Overlay::dot(const Eigen::Vector2f& centre, float radius, const Color& color) {
   constexpr int kSides = 16;
   for (int i = 0; i < kSides; ++i) {
-    const float a0 = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i) / kSides;
-    const float a1 = 2.0f * std::numbers::pi_v<float> * static_cast<float>(i + 1) / kSides;
+    const float a0 = 2.0f * static_cast<float>(kPi) * static_cast<float>(i) / kSides;
+    const float a1 = 2.0f * static_cast<float>(kPi) * static_cast<float>(i + 1) / kSides;
     triangle(centre, centre + radius * Eigen::Vector2f(std::cos(a0), std::sin(a0)),
              centre + radius * Eigen::Vector2f(std::cos(a1), std::sin(a1)), color);
   }

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/units.hpp"
 #include "render/force_overlay.hpp"
 #include "render/overlay_palette.hpp"
 #include "render/rig_overlay.hpp"
@@ -96,7 +97,7 @@ void draw_phase_portrait(Overlay& o, const Rect& panel, float s, const PhasePort
   o.polyline(trace, 1.5f * s, kWhite);
   // The theory's ellipse over it, dashed, a point every 3 degrees.
   if (state.theory && state.theory->omega > 0.0) {
-    const double period = 2.0 * std::numbers::pi / state.theory->omega;
+    const double period = 2.0 * kPi / state.theory->omega;
     std::vector<Eigen::Vector2f> ellipse;
     for (int i = 0; i <= 120; ++i) {
       const double t = period * i / 120.0;

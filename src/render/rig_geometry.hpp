@@ -8,9 +8,11 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "core/units.hpp"
+
 namespace fl::render::rig {
 
-inline constexpr double kPi = std::numbers::pi;
+using fl::kPi;  // the lab's one pi (core/units.hpp)
 
 inline Eigen::Vector3f vec(const std::array<double, 3>& v) {
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/units.hpp"
 #include "render/overlay_palette.hpp"
 
 namespace fl::render {
@@ -20,7 +21,7 @@ using palette::kWhite;
 const Color kTrace{1.0f, 0.78f, 0.15f, 1.0f};
 const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shaded
 
-constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
+constexpr double kRpm = kRpmPerRadPerSecond;
 
 std::string slow_motion_text(double factor) {
   if (std::fabs(factor - 1.0) < 1e-9) return "real time";

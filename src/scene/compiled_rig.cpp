@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "core/integrator_error.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
@@ -32,8 +33,7 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   inertia[static_cast<std::size_t>(layout.motor)] += drive.motor.inertia;
   const RollersDesc& r = scene.rollers;
   const double inner = std::max(0.0, r.radius - r.wall);
-  const double tube =
-      r.density * std::numbers::pi * (r.radius * r.radius - inner * inner) * r.length;
+  const double tube = r.density * kPi * (r.radius * r.radius - inner * inner) * r.length;
   for (std::size_t i = 0; i < 2; ++i)
     inertia[i] += 0.5 * tube * (r.radius * r.radius + inner * inner);
   for (std::size_t k = 0; k < n; ++k)
@@ -76,7 +76,7 @@ CompiledRig compile_rig(Scene scene) {
   rig.amplitude_initial = std::fabs(scene.plate.offset);
   if (rig.restoring) {
     rig.period_thick = period_thick(l, mu, h_c, g);
-    rig.omega = 2.0 * std::numbers::pi / *rig.period_thick;
+    rig.omega = 2.0 * kPi / *rig.period_thick;
     rig.integrator_bias = integrator_period_bias(*rig.omega, scene.world.time_step);
     rig.conditioning = mu_k_with_uncertainty(*rig.period_thick, 0.0, l, 0.0, h_c, g);
     rig.amplitude_initial =
@@ -86,6 +86,12 @@ CompiledRig compile_rig(Scene scene) {
         roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
   }
   rig.scene = std::move(scene);
+  return rig;
+}
+
+CompiledRig with_time_step(CompiledRig rig, double time_step) {
+  rig.scene.world.time_step = time_step;
+  if (rig.omega) rig.integrator_bias = integrator_period_bias(*rig.omega, time_step);
   return rig;
 }
 

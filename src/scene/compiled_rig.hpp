@@ -80,6 +80,10 @@ struct CompiledRig {
 // the drive's gears cannot span the rollers (drive_layout).
 CompiledRig compile_rig(Scene scene);
 
+// The same rig stepped at another time step: the step and what follows from it (the integrator's
+// predicted bias) changed, nothing compiled again.
+CompiledRig with_time_step(CompiledRig rig, double time_step);
+
 // The same, shared: what many readers hold (a sweep point, a run and its video).
 std::shared_ptr<const CompiledRig> compile_rig_shared(Scene scene);
 

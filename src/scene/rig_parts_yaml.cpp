@@ -4,6 +4,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/units.hpp"
 #include "io/input_error.hpp"
 #include "scene/ramp_yaml.hpp"
 
@@ -21,7 +22,7 @@ const assets::PartSpec& part_at(const YamlNode& node, const CatalogGetter& catal
 
 int read_turn(const std::optional<YamlNode>& node) {
   if (!node) return 0;
-  const double degrees = node->quantity(Dimension::kAngle) * 180.0 / std::numbers::pi;
+  const double degrees = node->quantity(Dimension::kAngle) * 180.0 / kPi;
   const long rounded = std::lround(degrees);
   if (std::fabs(degrees - static_cast<double>(rounded)) > 1e-9 || rounded % 90 != 0)
     node->fail("LEGO parts turn by 0, 90, 180 or 270 degrees on the stud grid");

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/analytic_model.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 
@@ -30,7 +31,7 @@ PlateMass plate_mass(const Scene& scene) {
   }
   for (const MagnetDesc& magnet : scene.magnets) {
     const double r = 0.5 * magnet.diameter;
-    const double m = magnet.density * std::numbers::pi * r * r * magnet.thickness;
+    const double m = magnet.density * kPi * r * r * magnet.thickness;
     parts.push_back({m, magnet.x, p.thickness + magnet.height + 0.5 * magnet.thickness,
                      m * (3.0 * r * r + magnet.thickness * magnet.thickness) / 12.0});
   }

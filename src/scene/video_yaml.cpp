@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/units.hpp"
 #include "io/yaml_node.hpp"
 
 namespace fl {
@@ -71,7 +72,7 @@ std::string video_camera_problem(std::string_view preset) {
 }
 
 std::string video_orbit_problem(double rad_per_second) {
-  if (!std::isfinite(rad_per_second) || std::fabs(rad_per_second) > 2.0 * std::numbers::pi)
+  if (!std::isfinite(rad_per_second) || std::fabs(rad_per_second) > 2.0 * kPi)
     return "expected an orbit of at most 360 deg/s (e.g. \"10 deg/s\")";
   return {};
 }
@@ -112,7 +113,7 @@ VideoDesc read_video(const YamlNode& node) {
       placed.target = read_point(camera->at("target"));
       if (auto fov = camera->find("fov")) {
         placed.fov = fov->quantity(Dimension::kAngle);
-        const double degrees = placed.fov * 180.0 / std::numbers::pi;
+        const double degrees = placed.fov * 180.0 / kPi;
         if (!(degrees >= 5.0 && degrees <= 120.0))
           fov->fail("expected a vertical field of view from 5 deg to 120 deg");
       }

@@ -1,4 +1,5 @@
 #include "sensor/dipole_field.hpp"
+#include "core/units.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,7 +8,7 @@ namespace fl {
 
 double magnet_moment(const MagnetDesc& magnet) {
   const double r = 0.5 * magnet.diameter;
-  return magnet.remanence * std::numbers::pi * r * r * magnet.thickness / kMu0;
+  return magnet.remanence * kPi * r * r * magnet.thickness / kMu0;
 }
 
 Vec3 dipole_field(const Vec3& moment, const Vec3& at, const Vec3& point) {
@@ -16,7 +17,7 @@ Vec3 dipole_field(const Vec3& moment, const Vec3& at, const Vec3& point) {
   const double d = std::sqrt(d2);
   const double m_dot_r = moment[0] * r[0] + moment[1] * r[1] + moment[2] * r[2];
   // mu_0 / (4 pi) = 1e-7 exactly enough (kMu0 / (4 pi)).
-  const double k = kMu0 / (4.0 * std::numbers::pi) / (d2 * d2 * d);
+  const double k = kMu0 / (4.0 * kPi) / (d2 * d2 * d);
   return {k * (3.0 * m_dot_r * r[0] - d2 * moment[0]), k * (3.0 * m_dot_r * r[1] - d2 * moment[1]),
           k * (3.0 * m_dot_r * r[2] - d2 * moment[2])};
 }

@@ -290,8 +290,13 @@ TEST(GrowthRate, LinearisedRateByHand) {
   const double mu = 0.29 + 0.1 * kFast;
   EXPECT_NEAR(m.mu, mu, 1e-15);
   EXPECT_NEAR(m.slope, 0.1, 1e-15);
-  EXPECT_NEAR(m.gamma, -kG * kL * 0.1 / (2.0 * (kL - 2.0 * mu * 0.0025)), 1e-14);
-  EXPECT_NEAR(m.period, 2.0 * kPi / std::sqrt(m.omega * m.omega - m.gamma * m.gamma), 1e-14);
+  const double gamma = -kG * kL * 0.1 / (2.0 * (kL - 2.0 * mu * 0.0025));
+  EXPECT_NEAR(m.gamma, gamma, 1e-14);
+  // The damped oscillator's period from the hand-written Omega and gamma, not the result's own:
+  // Omega^2 = 2 mu g / (l - 2 mu h_c), T = 2 pi / sqrt(Omega^2 - gamma^2).
+  const double omega2 = 2.0 * mu * kG / (kL - 2.0 * mu * 0.0025);
+  EXPECT_NEAR(m.omega, std::sqrt(omega2), 1e-13);
+  EXPECT_NEAR(m.period, 2.0 * kPi / std::sqrt(omega2 - gamma * gamma), 1e-13);
   EXPECT_NEAR(m.period_0, period_thick(kL, mu, 0.0025, kG), 1e-14);
 }
 

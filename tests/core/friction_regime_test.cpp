@@ -70,12 +70,19 @@ TEST(FrictionRegime, CoulombAt200RpmSticksAndCarriesItsCycle) {
       predict_friction_regime(coulomb(0.29, 0.29), plate, kSlow, 0.03);
   EXPECT_EQ(clipped.regime, Regime::kClipped);
   ASSERT_TRUE(clipped.cycle.has_value());
-  EXPECT_NEAR(clipped.cycle->amplitude, kSlow / clipped.motion.omega, 1e-16);
+  // Written out, not read back from the prediction: the slipping plate's angular frequency,
+  // Omega^2 = 2 mu_k g / (l - 2 mu_k h_c), and the clip at the amplitude whose largest speed is
+  // the rollers' surface speed, A Omega = v_r.
+  const double omega = std::sqrt(2.0 * 0.29 * kG / (kL - 2.0 * 0.29 * 0.0025));
+  EXPECT_NEAR(clipped.cycle->amplitude, kSlow / omega, 1e-15);
   const FrictionRegimePrediction sticks =
       predict_friction_regime(coulomb(0.29, 0.435), plate, kSlow, 0.03);
   EXPECT_EQ(sticks.regime, Regime::kStickSlip);
   ASSERT_TRUE(sticks.stick_time.has_value());
-  EXPECT_NEAR(*sticks.stick_time, std::asin(sticks.margin) / sticks.motion.omega, 1e-15);
+  // From rest at x = A: x = A cos(Omega t), so the plate's speed A Omega sin(Omega t) first
+  // reaches v_r at t = asin(v_r / (A Omega)) / Omega.
+  EXPECT_NEAR(sticks.margin, kSlow / (0.03 * omega), 1e-13);
+  EXPECT_NEAR(*sticks.stick_time, std::asin(kSlow / (0.03 * omega)) / omega, 1e-13);
   const FrictionRegimePrediction slips =
       predict_friction_regime(coulomb(0.29, 0.435), plate, kFast, 0.03);
   EXPECT_EQ(slips.regime, Regime::kOscillates);

@@ -13,6 +13,7 @@
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_table.hpp"
 #include "lab/run/experiment.hpp"
 #include "scene/compiled_rig.hpp"
 
@@ -176,7 +177,9 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
   require_geometry(log, measured, check_geometry(log, measured), "");
   r.measured = facts_of(measured);
 
-  // The refit: the log as one measured row, T +- its standard error.
+  // The refit: the log as one measured row, T +- its standard error, on the rig's l +- dl (dl the
+  // log's sidecar's, else the estimate's default, the paper's 2 mm): every mu_k from a measured
+  // period carries dl (docs/cli.md).
   MeasuredRows rows;
   rows.file = log.path;
   MeasuredRow row;
@@ -186,6 +189,7 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
   row.period.uncertainty = measured.stats.period_sem_s;
   row.period.decimals = 6;
   row.period.uncertainty_decimals = 6;
+  row.spacing_err = set_up_for_log(log.file, LogSetUp{}, nullptr).spacing_err;
   rows.rows.push_back(row);
   r.fit = run_compare(rows, options);
   const CompareRow& fitted = r.fit.rows.front();
@@ -244,6 +248,7 @@ nlohmann::json log_against_rig_json(const LogAgainstRig& r) {
   return {{"log", r.log},
           {"scene", r.fit.scene},
           {"spacing_m", row.spacing},
+          {"spacing_err_m", json_or_null(row.spacing_err)},
           {"h_c_m", row.h_c},
           {"period_measured_s", row.period_measured.value},
           {"period_measured_err_s", row.period_measured.uncertainty},

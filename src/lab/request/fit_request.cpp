@@ -91,6 +91,12 @@ FitResult fit_series(const FitRequest& r) {
   FitResult result;
   SpacingSeries series = read_spacing_series(r.series);
   result.warnings = series.warnings;
+  if (series.rows_left_out > 0)
+    result.warnings.push_back(fmt::format(
+        "{}: {} row{} left out: {}", series.file, series.rows_left_out,
+        series.rows_left_out == 1 ? "" : "s",
+        series.sweep_results ? "points that failed or whose estimator accepted no period"
+                             : "logs that gave no period (status other than ok)"));
   result.warnings.insert(result.warnings.end(), checks.warnings().begin(), checks.warnings().end());
   result.report = fit_spacing_series(std::move(series), gravity);
   SpacingFitReport& report = result.report;

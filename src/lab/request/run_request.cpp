@@ -15,6 +15,7 @@
 #include "lab/run/step_choice.hpp"
 #include "lab/video/video_recorder.hpp"
 #include "scene/captions_yaml.hpp"
+#include "scene/compiled_rig.hpp"
 #include "scene/video_format.hpp"
 
 namespace fl {
@@ -106,19 +107,21 @@ PreparedRun prepare_run(const RunRequest& r) {
   SceneSource source = r.scene;
   source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
   out.scene = load_scene_source(std::move(source));
+  // The rig, compiled once for the whole run: the step the accuracy picks changes only the step
+  // and the bias that follows from it.
+  CompiledRig rig = compile_rig(*out.scene.scene);
   if (target) {
-    Scene changed = *out.scene.scene;
     try {
-      changed.world.time_step = step_for_accuracy(changed, *target);
+      rig = with_time_step(std::move(rig), step_for_accuracy(rig, *target));
     } catch (const DomainError& e) {
       checks.problem("accuracy", quantity_input_text(*r.accuracy), e.what());
       checks.throw_if_any();
     }
-    out.chosen_time_step = changed.world.time_step;
-    if (changed.world.duration / changed.world.time_step <= kMostSteps)
-      out.chosen_bias = predicted_integrator_bias(changed);
-    out.scene.scene = std::make_shared<const Scene>(std::move(changed));
+    out.chosen_time_step = rig.scene.world.time_step;
+    out.chosen_bias = rig.integrator_bias;
+    out.scene.scene = std::make_shared<const Scene>(rig.scene);
   }
+  out.rig = std::make_shared<const CompiledRig>(std::move(rig));
   const Scene& scene = *out.scene.scene;
   // A step the run can take, places to write, and a plot's needs, before the run.
   if (scene.world.duration / scene.world.time_step > kMostSteps)
@@ -182,7 +185,7 @@ RunResult execute_run(const PreparedRun& run, const RunControl& control) {
 
   RunResult result;
   result.chosen_time_step = run.chosen_time_step;
-  const CompiledRig rig = compile_rig(scene);
+  const CompiledRig& rig = *run.rig;
   result.summary = run_experiment(rig, options, &result.recording);
   // The video up to its last frame, playable, even when the run was interrupted.
   if (recorder)

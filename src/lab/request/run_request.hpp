@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -21,6 +22,7 @@
 #include "lab/run/experiment.hpp"
 #include "lab/run/run_summary.hpp"
 #include "lab/video/video_settings.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
@@ -57,6 +59,7 @@ struct RunRequest {
 // its files' places made ready. Made by prepare_run only.
 struct PreparedRun {
   LoadedScene scene;
+  std::shared_ptr<const CompiledRig> rig;  // compiled once, at the chosen step
   std::optional<double> chosen_time_step;  // s, when `accuracy` picked it
   std::optional<double> chosen_bias;       // its predicted integrator bias (relative)
   std::optional<VideoRequest> frames;      // when the run draws frames

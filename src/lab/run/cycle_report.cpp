@@ -10,11 +10,12 @@
 #include "core/analytic_model.hpp"
 #include "core/friction_oscillator.hpp"
 #include "core/stick_slip_cycle.hpp"
+#include "core/units.hpp"
 
 namespace fl {
 namespace {
 
-constexpr double kRpm = 60.0 / (2.0 * std::numbers::pi);
+constexpr double kRpm = kRpmPerRadPerSecond;
 
 std::string cell(const std::optional<double>& v) {
   return v ? fmt::format("{}", *v) : std::string();

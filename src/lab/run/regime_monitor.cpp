@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/friction_oscillator.hpp"
+#include "core/units.hpp"
 #include "lab/run/law_resolution.hpp"
 
 namespace fl {
@@ -53,8 +54,7 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   penetration_bound_ = std::min(0.5e-3, 0.1 * scene.rollers.radius);
   speed_bound_ = 2.0 * v + 0.5;
   start_abs_x_ = std::fabs(scene.plate.offset);
-  turn_ = rig.roller_speed_nominal > 0.0 ? 2.0 * 3.14159265358979323846 / rig.roller_speed_nominal
-                                         : 0.0;
+  turn_ = rig.roller_speed_nominal > 0.0 ? 2.0 * kPi / rig.roller_speed_nominal : 0.0;
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
   // The law's growth rate linearised about the rollers' speed (none where it has no meaning).

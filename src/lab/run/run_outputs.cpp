@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/units.hpp"
 #include "io/atomic_file.hpp"
 #include "lab/run/cycle_report.hpp"
 #include "lab/run/summary_fields.hpp"
@@ -18,7 +19,7 @@ nlohmann::json timing_json(const RunSummary& s) {
 
 namespace {
 
-constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+constexpr double kRpm = kRpmPerRadPerSecond;
 
 // The gear train's line: the ratio and senses are measured over the steps in which the motor and
 // both rollers turned, and the line says when that was only part of the run.

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "core/units.hpp"
 #include "lab/run/experiment.hpp"
 #include "lab/run/regime_theory.hpp"
 
@@ -67,7 +68,7 @@ Trial try_step(const Scene& base, double dt, Regime expected) {
 
 std::string describe_case(const CompiledRig& rig) {
   const Scene& s = rig.scene;
-  constexpr double kRpm = 60.0 / (2.0 * 3.14159265358979323846);
+  constexpr double kRpm = kRpmPerRadPerSecond;
   return fmt::format(
       "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
       "dt {:.3g} ms",

@@ -581,6 +581,7 @@ def sweep(
     out: Optional[PathLike] = None,
     fresh: bool = False,
     shard: Optional[str] = None,
+    plot: bool = False,
     progress: Optional[Callable[[dict[str, Any]], None]] = None,
     assets: Optional[PathLike] = None,
 ) -> dict[str, SweepColumn]: ...

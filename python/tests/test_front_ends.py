@@ -206,3 +206,17 @@ def test_every_mu_k_from_a_measured_period_carries_dl(tmp_path):
     assert done["spacing_err_m"] == pytest.approx(0.002)
     dl_over_l = done["spacing_err_m"] / done["spacing_m"]
     assert done["mu_k_refit_err_quadrature"] / done["mu_k_refit"] >= 0.95 * dl_over_l
+
+
+def test_a_bad_sweep_request_is_bad_input_in_both(tmp_path):
+    sweep = SCENES / "sweeps" / "spacing.yaml"
+    with pytest.raises(fl.InputError) as caught:
+        fl.sweep(sweep, jobs=0, out=tmp_path)
+    assert caught.value.field == "jobs"
+    done = cli("sweep", sweep, "--shard", "4/3", "--out", tmp_path, status=2)
+    with pytest.raises(fl.InputError) as caught:
+        fl.sweep(sweep, shard="4/3", out=tmp_path)
+    assert caught.value.field == "shard"
+    assert message(done.stderr) == message(str(caught.value))
+    assert located_field(done.stderr) == "--shard 4/3"
+    assert located_field(str(caught.value)) == "shard='4/3'"

@@ -120,7 +120,7 @@ void print_report(const SpacingFitReport& r) {
     }
   }
   if (r.rig) {
-    const RigFit& rig = *r.rig;
+    const FitThroughRig& rig = *r.rig;
     const ThickPlateFit& g = rig.fit;
     fmt::print(
         "\n  through the rig        scene {}: every row simulated at its spacing ({} simulations, "

@@ -16,8 +16,10 @@
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "cli/stop_signals.hpp"
+#include "lab/request/outcome.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
+#include "lab/request/sweep_request.hpp"
 #include "lab/sweep/sweep_run.hpp"
 
 namespace fl::cli {
@@ -77,26 +79,12 @@ class ProgressReport {
   std::size_t last_done_ = static_cast<std::size_t>(-1);
 };
 
-std::vector<std::string> plot_sweep(const std::string& dir) {
-  namespace fs = std::filesystem;
-  run_plot_script("plot_sweep.py", {(fs::path(dir) / "results.csv").string(),
-                                    (fs::path(dir) / "sweep.json").string(), dir});
-  std::vector<std::string> pngs;
-  for (const auto& entry : fs::directory_iterator(dir))
-    if (entry.path().extension() == ".png") pngs.push_back(entry.path().string());
-  std::sort(pngs.begin(), pngs.end());
-  return pngs;
-}
-
 std::string counts_text(const std::map<std::string, int>& counts) {
   std::string out;
   for (const auto& [key, n] : counts)
     if (n > 0) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, key);
   return out.empty() ? "none" : out;
 }
-
-// The exit status of a sweep whose results hold points without a result (docs/cli.md).
-constexpr int kPointsFailed = 3;
 
 // Says on stderr how many of the points in a sweep's results gave no result (failed: a guard
 // stopped the run; invalid: the scene refused the point's overrides) and where their errors are;
@@ -130,33 +118,32 @@ struct SweepCommandOptions {
 };
 
 int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global) {
-  const SceneInputs sources = scene_sources(global);
-  const SceneInputs inputs{sources.paper, sources.parts};
-  const SweepSpec spec = load_sweep_file(o.file, inputs);
-  SweepRunOptions options;
-  options.out_dir = o.out.empty() ? "out/sweep/" + spec.name : o.out;
-  prepare_output_folder(options.out_dir, "out");
-  options.workers = o.workers;
-  if (!o.shard.empty()) options.shard = parse_shard(o.shard);
-  options.fresh = o.fresh;
-  options.inputs = inputs;
-  options.stop = &stop_requested();
+  SweepRequest request;
+  request.file = o.file;
+  if (o.workers != 0) request.jobs = o.workers;
+  request.out = o.out;
+  request.plot = o.plot;
+  request.shard = o.shard;
+  request.fresh = o.fresh;
+  request.assets = global.asset_dir;
+  const PreparedSweep prepared = prepare_sweep(request);
+  const SweepSpec& spec = prepared.spec;
+  const SweepRunOptions& options = prepared.options;
   const std::string label =
       options.shard ? fmt::format("{} (shard {}/{})", spec.name, options.shard->k, options.shard->n)
                     : spec.name;
   ProgressReport report(label);
-  options.progress = [&report](const SweepProgress& p) { report(p); };
 
-  SweepOutcome outcome;
+  SweepResult result;
   {
     StopSignals signals;
-    outcome = run_sweep(spec, options);
+    result = execute_sweep(prepared, &stop_requested(),
+                           [&report](const SweepProgress& p) { report(p); });
   }
   report.end();
+  const SweepOutcome& outcome = result.outcome;
   if (!outcome.root) return 0;
-
-  std::vector<std::string> pngs;
-  if (o.plot && outcome.complete) pngs = plot_sweep(options.out_dir);
+  const std::vector<std::string>& pngs = result.plots;
   if (o.json) {
     nlohmann::json j{{"sweep", spec.name},
                      {"out", options.out_dir},
@@ -202,10 +189,12 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
     }
   }
   if (outcome.interrupted) return stop_exit_status();
-  if (outcome.complete &&
-      report_failed_points("sweep", outcome.status, outcome.points, outcome.files) > 0)
-    return kPointsFailed;
-  return 0;
+  if (outcome.complete)
+    report_failed_points("sweep", outcome.status, outcome.points, outcome.files);
+  if (!result.plot_failure.empty())
+    fmt::print(stderr, "error: no plots: {}; the results above are complete\n",
+               result.plot_failure);
+  return exit_status(result.outcome_of());
 }
 
 struct MergeCommandOptions {
@@ -234,9 +223,10 @@ int run_merge_command(const MergeCommandOptions& o) {
     for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
     for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
   }
-  return report_failed_points("merge", outcome.status, outcome.points, outcome.files) > 0
-             ? kPointsFailed
-             : 0;
+  return exit_status(report_failed_points("merge", outcome.status, outcome.points, outcome.files) >
+                             0
+                         ? Outcome::kFailed
+                         : Outcome::kDone);
 }
 
 }  // namespace

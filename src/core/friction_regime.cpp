@@ -17,7 +17,7 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // What the slip-dependent cases need, computed once.
-struct Rig {
+struct SlipDependentCase {
   const FrictionLaw& law;
   const PlateOnRollers& plate;
   double surface_speed = 0.0;
@@ -78,21 +78,21 @@ struct Rig {
 // A = sqrt((v_r / Omega)^2 + (Omega^2 x_b^2 + 2 dE) / Omega^2) (v_r / Omega when x_b <= 0, where
 // the stick ends at a speed maximum): if gamma(A) >= 0 it grows back to a roller's speed (the
 // stick-slip persists), else it shrinks to the largest slip cycle below A, or to rest.
-void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
-  const double omega2 = rig.omega * rig.omega;
+void after_stick(const SlipDependentCase& slip, FrictionRegimePrediction& out) {
+  const double omega2 = slip.omega * slip.omega;
   bool persists = false;
-  double after = rig.reach;               // the slipping amplitude after a failed arc
-  double swing2 = rig.reach * rig.reach;  // the arc's amplitude squared at its turning point
-  if (rig.x_b > 0.0) {
-    const double gain = slip_arc_energy_gain(rig.law, rig.plate, rig.surface_speed);
-    const double kick = omega2 * rig.x_b * rig.x_b;
+  double after = slip.reach;                // the slipping amplitude after a failed arc
+  double swing2 = slip.reach * slip.reach;  // the arc's amplitude squared at its turning point
+  if (slip.x_b > 0.0) {
+    const double gain = slip_arc_energy_gain(slip.law, slip.plate, slip.surface_speed);
+    const double kick = omega2 * slip.x_b * slip.x_b;
     persists = kick + 2.0 * gain >= 0.0;
-    swing2 = rig.x_b * rig.x_b + rig.reach * rig.reach + gain / omega2;
-    after = std::sqrt(std::max(rig.reach * rig.reach + (kick + 2.0 * gain) / omega2, 0.0));
+    swing2 = slip.x_b * slip.x_b + slip.reach * slip.reach + gain / omega2;
+    after = std::sqrt(std::max(slip.reach * slip.reach + (kick + 2.0 * gain) / omega2, 0.0));
   }
-  if (!persists && after > 0.0) persists = rig.rate(after) >= 0.0;
+  if (!persists && after > 0.0) persists = slip.rate(after) >= 0.0;
   if (persists) {
-    if (std::sqrt(std::max(swing2, 0.0)) >= rig.tipping) {
+    if (std::sqrt(std::max(swing2, 0.0)) >= slip.tipping) {
       out.regime = Regime::kTips;
       out.tip_time = out.stick_time;
       return;
@@ -101,8 +101,8 @@ void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
     return;
   }
   const std::optional<double> root =
-      after > 0.0 ? rig.first_root(after, 1e-4 * after) : std::nullopt;
-  if (root && rig.rate(*root * 0.999) > 0.0) {
+      after > 0.0 ? slip.first_root(after, 1e-4 * after) : std::nullopt;
+  if (root && slip.rate(*root * 0.999) > 0.0) {
     out.settled_amplitude = root;
     out.regime = Regime::kOscillates;
     return;
@@ -111,19 +111,19 @@ void after_stick(const Rig& rig, FrictionRegimePrediction& out) {
 }
 
 // A slip-dependent law, the plate slipping throughout its first cycle (A < v_r / Omega).
-void slipping_start(const Rig& rig, double amplitude, double horizon, double tolerance,
-                    FrictionRegimePrediction& out) {
+void slipping_start(const SlipDependentCase& slip, double amplitude, double horizon,
+                    double tolerance, FrictionRegimePrediction& out) {
   const double g = out.growth_rate;
   if (g == 0.0) {
     out.regime = Regime::kOscillates;
     return;
   }
-  const double ceiling = std::min(rig.reach, rig.tipping);
+  const double ceiling = std::min(slip.reach, slip.tipping);
   const std::optional<double> root =
-      g > 0.0 ? rig.first_root(amplitude, ceiling) : rig.first_root(amplitude, 1e-4 * amplitude);
+      g > 0.0 ? slip.first_root(amplitude, ceiling) : slip.first_root(amplitude, 1e-4 * amplitude);
   const double changed = amplitude * (g > 0.0 ? 1.0 + tolerance : 1.0 - tolerance);
   const bool changes_in_horizon = (!root || (g > 0.0 ? changed < *root : changed > *root)) &&
-                                  rig.travel_time(amplitude, changed) <= horizon;
+                                  slip.travel_time(amplitude, changed) <= horizon;
   if (root) {
     out.settled_amplitude = root;
     const bool moving = std::isfinite(horizon) && changes_in_horizon;
@@ -134,8 +134,8 @@ void slipping_start(const Rig& rig, double amplitude, double horizon, double tol
     out.regime = changes_in_horizon ? Regime::kDecays : Regime::kOscillates;
     return;
   }
-  const double time = rig.travel_time(amplitude, ceiling);
-  if (rig.tipping <= rig.reach) {
+  const double time = slip.travel_time(amplitude, ceiling);
+  if (slip.tipping <= slip.reach) {
     out.tip_time = time;
     if (time <= horizon) {
       out.regime = Regime::kTips;
@@ -144,7 +144,7 @@ void slipping_start(const Rig& rig, double amplitude, double horizon, double tol
   } else {
     out.stick_time = time;
     if (time <= horizon) {
-      after_stick(rig, out);
+      after_stick(slip, out);
       return;
     }
   }
@@ -175,14 +175,14 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
     return out;
   }
   out.motion = linearised_motion(law, plate, surface_speed);
-  const Rig rig{law,
-                plate,
-                surface_speed,
-                out.motion.omega,
-                surface_speed / out.motion.omega,
-                out.tipping_offset,
-                out.break_offset};
-  out.margin = rig.reach / amplitude;
+  const SlipDependentCase slip{law,
+                               plate,
+                               surface_speed,
+                               out.motion.omega,
+                               surface_speed / out.motion.omega,
+                               out.tipping_offset,
+                               out.break_offset};
+  out.margin = slip.reach / amplitude;
   if (amplitude >= out.tipping_offset) {
     out.regime = Regime::kTips;
     out.tip_time = 0.0;
@@ -197,7 +197,7 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
       return out;
     }
     out.stick_time = std::asin(out.margin) / out.motion.omega;
-    if (std::hypot(out.break_offset, rig.reach) >= out.tipping_offset) {
+    if (std::hypot(out.break_offset, slip.reach) >= out.tipping_offset) {
       out.regime = Regime::kTips;
       out.tip_time = out.stick_time;
       return out;
@@ -209,11 +209,11 @@ FrictionRegimePrediction predict_friction_regime(const FrictionLaw& law,
 
   if (out.margin <= 1.0) {
     out.stick_time = std::asin(out.margin) / out.motion.omega;
-    after_stick(rig, out);
+    after_stick(slip, out);
     return out;
   }
-  out.growth_rate = rig.rate(amplitude);
-  slipping_start(rig, amplitude, horizon, steady_tolerance, out);
+  out.growth_rate = slip.rate(amplitude);
+  slipping_start(slip, amplitude, horizon, steady_tolerance, out);
   return out;
 }
 

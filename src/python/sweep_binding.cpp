@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/request/sweep_request.hpp"
 #include "lab/sweep/sweep_results.hpp"
 #include "lab/sweep/sweep_run.hpp"
 #include "python/arguments.hpp"
@@ -67,23 +68,23 @@ py::object column(const std::vector<const json*>& values) {
 }
 
 py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Path>& out,
-               bool fresh, const std::optional<std::string>& shard, const py::object& progress,
-               const std::optional<Path>& assets) {
-  const SceneInputs inputs = scene_inputs(asset_dir(assets));
-  const SweepSpec spec = load_sweep_file(file.string(), inputs);
-  SweepRunOptions options;
-  options.out_dir = out ? out->string() : "out/sweep/" + spec.name;
-  if (jobs && *jobs < 1) throw py::value_error("jobs: expected a positive number of workers");
-  options.workers = jobs.value_or(0);
-  if (shard) options.shard = parse_shard(*shard);
-  options.fresh = fresh;
-  options.inputs = inputs;
+               bool fresh, const std::optional<std::string>& shard, bool plot,
+               const py::object& progress, const std::optional<Path>& assets) {
+  SweepRequest request;
+  request.file = file.string();
+  request.jobs = jobs;
+  if (out) request.out = out->string();
+  request.fresh = fresh;
+  if (shard) request.shard = *shard;
+  request.plot = plot;
+  if (assets) request.assets = assets->string();
+  const PreparedSweep prepared = prepare_sweep(request);
+  const SweepRunOptions& options = prepared.options;
   std::atomic<bool> stop{false};
-  options.stop = &stop;
   // Called on this thread while the points run: Ctrl-C (or an error in the callback) stops
   // handing out points; the running ones finish and are kept, so the same call resumes.
   std::optional<py::error_already_set> interrupted;
-  options.progress = [&](const SweepProgress& p) {
+  const auto on_progress = [&](const SweepProgress& p) {
     const py::gil_scoped_acquire acquired;
     if (interrupted) return;
     try {
@@ -97,11 +98,14 @@ py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Pa
       stop = true;
     }
   };
+  SweepResult result;
   {
     const py::gil_scoped_release released;
-    run_sweep(spec, options);
+    result = execute_sweep(prepared, &stop, on_progress);
   }
   if (interrupted) throw *interrupted;
+  if (!result.plot_failure.empty())
+    PyErr_WarnEx(PyExc_UserWarning, ("no plots: " + result.plot_failure).c_str(), 1);
 
   const SweepStore store = SweepStore::open(options.out_dir);
   const std::map<std::size_t, PointResult> points = store.load_points();
@@ -129,16 +133,18 @@ py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Pa
 void bind_sweep(py::module_& m) {
   m.def("sweep", &sweep, py::arg("file"), py::kw_only(), py::arg("jobs") = py::none(),
         py::arg("out") = py::none(), py::arg("fresh") = false, py::arg("shard") = py::none(),
-        py::arg("progress") = py::none(), py::arg("assets") = py::none(),
+        py::arg("plot") = false, py::arg("progress") = py::none(), py::arg("assets") = py::none(),
         R"(Runs every point of a sweep file (docs/sweep-format.md), as `frictionlab sweep`.
 
 jobs: worker threads (default: every core). out: the sweep's folder (default
 out/sweep/NAME, as the command's), where plan.json, points/, results.csv and sweep.json are
 written; points found done there are not run again (fresh=True discards them). shard: "K/N"
-runs the points whose index % N == K-1. progress: called as points finish with a dict
+runs the points whose index % N == K-1. plot: draw the results' plots into out, as
+`frictionlab sweep --plot` (a plot that fails warns; the results stand). progress: called as points finish with a dict
 (total, done, resumed, failed, invalid, elapsed_s: failed, a guard stopped the run;
 invalid, the scene refused the point's values). Ctrl-C stops handing out points; the running
-ones finish and are kept, and KeyboardInterrupt is raised.
+ones finish and are kept, and KeyboardInterrupt is raised. Bad input (jobs below 1, a shard
+that is not K/N, an out that cannot be written) raises InputError before any point runs.
 
 Returns the rows of every finished point in the folder, in point order, as columns
 {name: values} in results.csv's order: numbers as NumPy masked arrays (masked where the

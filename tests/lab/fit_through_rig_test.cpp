@@ -38,7 +38,8 @@ std::vector<SpacingPeriod> measured_by(const Scene& scene, double period_err) {
 TEST(FitThroughRig, TheMinimalScenesOwnSeriesGivesItsMuKBack) {
   const Scene scene = test::scene_file("minimal.yaml");
   const std::vector<SpacingPeriod> series = measured_by(scene, 0.05e-3);
-  const RigFit fit = fit_through_rig(series, {.scene = scene, .gravity = scene.world.gravity});
+  const FitThroughRig fit =
+      fit_through_rig(series, {.scene = scene, .gravity = scene.world.gravity});
   ASSERT_TRUE(fit.fit.mu_k);
   EXPECT_TRUE(fit.converged);
   EXPECT_LT(std::fabs(*fit.fit.mu_k - kMuK), *fit.fit.mu_k_err)
@@ -46,7 +47,7 @@ TEST(FitThroughRig, TheMinimalScenesOwnSeriesGivesItsMuKBack) {
   EXPECT_LT(std::fabs(*fit.fit.h_c - fit.h_c_scene), *fit.fit.h_c_err);
   EXPECT_EQ(fit.simulations, fit.iterations * 5);
   EXPECT_EQ(fit.mu_k_path.size(), static_cast<std::size_t>(fit.iterations) + 1);
-  for (const RigFitRow& row : fit.rows) {
+  for (const FitThroughRigRow& row : fit.rows) {
     EXPECT_EQ(row.period_simulated_source, "hall estimator");
     // At 1 ms the rig and the closed form agree to the estimator's scatter (docs/physics.md).
     EXPECT_NEAR(row.correction, 1.0, 1e-4);
@@ -60,7 +61,8 @@ TEST(FitThroughRig, ACoarseStepsPhaseErrorIsTakenOutOfHc) {
   Scene scene = test::scene_file("minimal.yaml");
   scene.world.time_step = 1.0 / 60.0;
   const std::vector<SpacingPeriod> series = measured_by(scene, 0.05e-3);
-  const RigFit fit = fit_through_rig(series, {.scene = scene, .gravity = scene.world.gravity});
+  const FitThroughRig fit =
+      fit_through_rig(series, {.scene = scene, .gravity = scene.world.gravity});
   ASSERT_TRUE(fit.fit.mu_k && fit.closed_form.h_c);
   EXPECT_LT(std::fabs(*fit.fit.mu_k - kMuK), *fit.fit.mu_k_err);
   EXPECT_LT(std::fabs(*fit.fit.h_c - fit.h_c_scene), *fit.fit.h_c_err);
@@ -86,7 +88,7 @@ TEST(FitThroughRig, ARowWhoseRunGivesNoPeriodIsRefusedWithTheReason) {
   try {
     fit_through_rig(series, {.scene = scene, .gravity = 9.81});
     ADD_FAILURE() << "no error";
-  } catch (const RigFitError& e) {
+  } catch (const FitThroughRigError& e) {
     const std::string message = e.what();
     EXPECT_NE(message.find("row 1 (l = 30.0 mm): the scene simulated at mu_k = 0.29"),
               std::string::npos)

@@ -18,9 +18,9 @@
 namespace fl {
 namespace {
 
-class Rig {
+class RowSimulator {
  public:
-  explicit Rig(const CompareOptions& options)
+  explicit RowSimulator(const CompareOptions& options)
       : options_(options), paper_(shared_once(options.paper)), parts_(shared_once(options.parts)) {}
 
   // The rig's scene for a row, read once: the scene's keys, then the row's own keys and the run's
@@ -51,7 +51,8 @@ class Rig {
   std::atomic<int> simulations_{0};
 };
 
-void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptions& options) {
+void refit(RowSimulator& simulator, const Scene& row_scene, CompareRow& row,
+           const CompareOptions& options) {
   const double target = row.period_measured.value;
   const double l = row.spacing;
   const double h_c = row.h_c;
@@ -61,7 +62,7 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptio
     CompareRun r;
     r.mu_k = mu;
     r.spacing = spacing.value_or(l);
-    const SimulatedPeriod s = rig.simulate(scene_with_mu_k(row_scene, mu, spacing));
+    const SimulatedPeriod s = simulator.simulate(scene_with_mu_k(row_scene, mu, spacing));
     r.regime = s.regime;
     if (s.oscillates()) r.period = s.period;
     row.runs.push_back(r);
@@ -118,14 +119,14 @@ void refit(Rig& rig, const Scene& row_scene, CompareRow& row, const CompareOptio
 
 // The row's scene and its rig's numbers (spacing, h_c, g, the first run's mu_k, the initial
 // amplitude), before any simulation.
-struct RowRig {
+struct RowScene {
   Scene scene;
   double amplitude = 0.0;  // m
   double h_c = 0.0;        // m
   double gravity = 0.0;    // m/s^2
 };
 
-CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
+CompareRow compare_row(RowSimulator& simulator, CompareRow row, const RowScene& row_setup,
                        const CompareOptions& options) {
   const double l = row.spacing;
   const double h_c = row.h_c;
@@ -149,7 +150,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
 
   SimulatedPeriod s;
   try {
-    s = rig.simulate(row_rig.scene);
+    s = simulator.simulate(row_setup.scene);
   } catch (const std::exception& e) {
     row.status = "failed";
     row.reason = plain_fields(e.what());
@@ -161,10 +162,10 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
     row.status = "no oscillation";
     const double tipping = tipping_amplitude(l, mu, h_c);
     row.reason = s.no_oscillation_reason();
-    if (row_rig.amplitude >= tipping)
+    if (row_setup.amplitude >= tipping)
       row.reason = fmt::format(
           "the plate tips: its amplitude {:.1f} mm reaches l/2 - mu_k h_c = {:.1f} mm ({})",
-          row_rig.amplitude * 1e3, tipping * 1e3, row.reason);
+          row_setup.amplitude * 1e3, tipping * 1e3, row.reason);
     row.refit_note = "not fitted: " + whose + " mu_k gives no Coulomb oscillation";
     return row;
   }
@@ -176,7 +177,7 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;
   try {
-    refit(rig, row_rig.scene, row, options);
+    refit(simulator, row_setup.scene, row, options);
   } catch (const std::exception& e) {
     row.mu_k_refit.reset();
     row.mu_k_refit_err_worst.reset();
@@ -188,9 +189,10 @@ CompareRow compare_row(Rig& rig, CompareRow row, const RowRig& row_rig,
 
 // The row's rig, built (not run) so that a key that makes no rig is refused at its cell before
 // any simulation.
-RowRig build_row_rig(const Rig& rig, const MeasuredRow& measured, double duration) {
+RowScene build_row_scene(const RowSimulator& simulator, const MeasuredRow& measured,
+                         double duration) {
   try {
-    RowRig out{rig.scene(measured, duration)};
+    RowScene out{simulator.scene(measured, duration)};
     const CompiledRig compiled = compile_rig(out.scene);
     out.amplitude = compiled.amplitude_initial;
     out.h_c = compiled.plate.h_c;
@@ -218,14 +220,15 @@ std::string name_or_empty(const std::optional<Regime>& regime) {
 
 CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  Rig rig(options);
+  RowSimulator simulator(options);
   CompareResult result;
   result.measurements = measured.file;
   // The rig's own numbers, from the scene as the rows will see it (LEGO's mu_k for the amplitude).
   {
     std::vector<SceneOverride> overrides = options.overrides;
     overrides.push_back({"friction.mu_k", "0.29"});
-    const Scene base = load_scene_file(options.scene_file, overrides, rig.paper(), rig.parts());
+    const Scene base =
+        load_scene_file(options.scene_file, overrides, simulator.paper(), simulator.parts());
     result.scene = base.name;
     result.spacing = base.rollers.spacing;
     const CompiledRig compiled = compile_rig(base);
@@ -242,7 +245,7 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
 
   // Every row's rig built first: a row whose keys make no rig stops the comparison before any run.
   std::vector<CompareRow> rows;
-  std::vector<RowRig> rigs;
+  std::vector<RowScene> row_scenes;
   for (const MeasuredRow& m : measured.rows) {
     CompareRow row;
     row.label = m.label;
@@ -251,15 +254,15 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     row.mu_k_reported = m.mu_k;
     row.spacing_err = m.spacing_err;
     row.duration = std::max(result.duration, options.min_periods * m.period.value);
-    RowRig row_rig = build_row_rig(rig, m, row.duration);
-    row.material = row_rig.scene.plate.material;
-    row.temperature = row_rig.scene.friction.temperature;
-    row.mu_k_simulated = row_rig.scene.friction.mu_k;
-    row.spacing = row_rig.scene.rollers.spacing;
-    row.h_c = row_rig.h_c;
-    row.gravity = row_rig.gravity;
+    RowScene row_setup = build_row_scene(simulator, m, row.duration);
+    row.material = row_setup.scene.plate.material;
+    row.temperature = row_setup.scene.friction.temperature;
+    row.mu_k_simulated = row_setup.scene.friction.mu_k;
+    row.spacing = row_setup.scene.rollers.spacing;
+    row.h_c = row_setup.h_c;
+    row.gravity = row_setup.gravity;
     rows.push_back(std::move(row));
-    rigs.push_back(std::move(row_rig));
+    row_scenes.push_back(std::move(row_setup));
   }
 
   result.workers = options.workers > 0 ? options.workers : hardware_workers();
@@ -268,7 +271,7 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     WorkPool<std::pair<std::size_t, CompareRow>> pool(
         std::max(1, std::min<int>(result.workers, static_cast<int>(rows.size()))),
         [&](std::size_t i) {
-          return std::make_pair(i, compare_row(rig, rows[i], rigs[i], options));
+          return std::make_pair(i, compare_row(simulator, rows[i], row_scenes[i], options));
         });
     for (std::size_t i = 0; i < rows.size(); ++i) pool.push(i);
     pool.close();
@@ -281,7 +284,7 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
       }
     }
   }
-  result.simulations = rig.simulations();
+  result.simulations = simulator.simulations();
   result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

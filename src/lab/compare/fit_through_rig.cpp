@@ -19,7 +19,7 @@ namespace {
 // Every row of the series simulated at mu_k, in parallel; each run is a fresh world, so the
 // result does not depend on the order the workers take them in.
 std::vector<SimulatedPeriod> simulate_rows(std::span<const SpacingPeriod> series, double mu_k,
-                                           const RigFitRequest& request) {
+                                           const FitThroughRigRequest& request) {
   std::vector<Scene> scenes;
   for (const SpacingPeriod& row : series) {
     Scene scene;
@@ -47,7 +47,7 @@ std::vector<SimulatedPeriod> simulate_rows(std::span<const SpacingPeriod> series
     for (auto& [i, s] : pool.take(std::chrono::milliseconds(250))) out[i] = std::move(s);
   for (std::size_t i = 0; i < series.size(); ++i) {
     if (!out[i].oscillates())
-      throw RigFitError(fmt::format(
+      throw FitThroughRigError(fmt::format(
           "row {} (l = {:.1f} mm): the scene simulated at mu_k = {:.5g} gives no period: {}", i + 1,
           series[i].spacing * 1e3, mu_k, out[i].no_oscillation_reason()));
   }
@@ -56,8 +56,9 @@ std::vector<SimulatedPeriod> simulate_rows(std::span<const SpacingPeriod> series
 
 }  // namespace
 
-RigFit fit_through_rig(std::span<const SpacingPeriod> series, const RigFitRequest& request) {
-  RigFit out;
+FitThroughRig fit_through_rig(std::span<const SpacingPeriod> series,
+                              const FitThroughRigRequest& request) {
+  FitThroughRig out;
   out.scene = request.scene.name;
   out.h_c_scene = plate_mass(request.scene).h_c;
   out.gravity = request.gravity;
@@ -78,7 +79,7 @@ RigFit fit_through_rig(std::span<const SpacingPeriod> series, const RigFitReques
     out.simulations += static_cast<int>(series.size());
     ++out.iterations;
     for (std::size_t i = 0; i < series.size(); ++i) {
-      RigFitRow& row = out.rows[i];
+      FitThroughRigRow& row = out.rows[i];
       row.period_simulated = *simulated[i].period;
       row.period_simulated_source = simulated[i].source();
       // The closed form for the very plate simulated: what the simulation adds to it is the

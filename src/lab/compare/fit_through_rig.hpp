@@ -20,12 +20,12 @@ namespace fl {
 
 // A row whose simulation gave no period (the plate did not oscillate, a guard stopped the run):
 // the rig cannot say what the closed form leaves out there.
-class RigFitError : public std::runtime_error {
+class FitThroughRigError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-struct RigFitRequest {
+struct FitThroughRigRequest {
   Scene scene;  // the rig; each run sets rollers.spacing, friction.mu_k and world.gravity
   double gravity = kDefaultGravity;  // [m/s^2], the series' (the scene is simulated at it)
   double tolerance = 1e-4;           // stop when mu_k changes by less than this, relative
@@ -36,7 +36,7 @@ struct RigFitRequest {
   int workers = 0;  // rows simulated in parallel; 0: every core
 };
 
-struct RigFitRow {
+struct FitThroughRigRow {
   double period_simulated = 0.0;        // [s] at the row's spacing and the last simulated mu_k
   std::string period_simulated_source;  // "hall estimator" or "trajectory (...)"
   double period_closed_form = 0.0;      // [s] thick formula, same mu_k, the scene's h_c
@@ -44,22 +44,23 @@ struct RigFitRow {
   double period_corrected = 0.0;        // [s] the measured period times the correction
 };
 
-struct RigFit {
+struct FitThroughRig {
   std::string scene;       // the scene's name
   double h_c_scene = 0.0;  // [m] the scene's plate, what the simulations have
   double gravity = 0.0;
-  ThickPlateFit closed_form;      // the series as measured (where the iteration starts)
-  ThickPlateFit fit;              // the corrected series, at the last iteration
-  std::vector<RigFitRow> rows;    // in the series' order
-  std::vector<double> mu_k_path;  // mu_k at the start and after each iteration
+  ThickPlateFit closed_form;           // the series as measured (where the iteration starts)
+  ThickPlateFit fit;                   // the corrected series, at the last iteration
+  std::vector<FitThroughRigRow> rows;  // in the series' order
+  std::vector<double> mu_k_path;       // mu_k at the start and after each iteration
   int iterations = 0;
   bool converged = false;
   int simulations = 0;
 };
 
-// Throws RigFitError when a row's run gives no period, fl::DomainError for a series the fit
+// Throws FitThroughRigError when a row's run gives no period, fl::DomainError for a series the fit
 // refuses or whose closed-form fit has no mu_k (a falling line), and InputError naming the row
 // and the scene's key when the scene cannot be built at a row's spacing.
-RigFit fit_through_rig(std::span<const SpacingPeriod> series, const RigFitRequest& request);
+FitThroughRig fit_through_rig(std::span<const SpacingPeriod> series,
+                              const FitThroughRigRequest& request);
 
 }  // namespace fl

@@ -28,7 +28,7 @@ nlohmann::json monte_carlo_json(const ThickPlateFitMonteCarlo& mc) {
           {"correlation", json_or_null(mc.correlation)}};
 }
 
-nlohmann::json rig_json(const RigFit& rig) {
+nlohmann::json rig_json(const FitThroughRig& rig) {
   const ThickPlateFit& f = rig.fit;
   return {{"scene", rig.scene},
           {"h_c_scene_m", rig.h_c_scene},
@@ -73,7 +73,7 @@ nlohmann::json spacing_fit_json(const SpacingFitReport& r) {
                        {"residual_sigma", out.residual_sigma},
                        {"mu_k_thin", out.mu_k_thin}};
     if (r.rig) {
-      const RigFitRow& rig = r.rig->rows[i];
+      const FitThroughRigRow& rig = r.rig->rows[i];
       row["period_simulated_s"] = rig.period_simulated;
       row["period_simulated_source"] = rig.period_simulated_source;
       row["period_closed_form_s"] = rig.period_closed_form;
@@ -138,7 +138,7 @@ std::string spacing_fit_csv(const SpacingFitReport& r) {
                        in.measurement.period_err, out.period_squared_err, number(out.period_fit),
                        out.residual_sigma, out.mu_k_thin);
     if (r.rig) {
-      const RigFitRow& rig = r.rig->rows[i];
+      const FitThroughRigRow& rig = r.rig->rows[i];
       csv += fmt::format(",{},{},{},{}", rig.period_simulated, rig.correction, rig.period_corrected,
                          r.rig->fit.rows[i].residual_sigma);
     }

@@ -21,7 +21,7 @@ struct SpacingFitReport {
   double gravity = kDefaultGravity;  // [m/s^2]
   ThickPlateFit fit;
   std::optional<ThickPlateFitMonteCarlo> monte_carlo;
-  std::optional<RigFit> rig;
+  std::optional<FitThroughRig> rig;
 };
 
 // Fits the series (and nothing else: the Monte Carlo and the rig are the caller's to add).

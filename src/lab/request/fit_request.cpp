@@ -109,11 +109,12 @@ FitResult fit_series(const FitRequest& r) {
     SceneSource source = r.scene;
     if (source.file.empty() && source.text.empty()) source.file = default_scene();
     source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
-    RigFitRequest rig{.scene = *load_scene_source(std::move(source)).scene, .gravity = gravity};
+    FitThroughRigRequest rig{.scene = *load_scene_source(std::move(source)).scene,
+                             .gravity = gravity};
     rig.workers = r.jobs;
     try {
       report.rig = fit_through_rig(report.series.measurements(), rig);
-    } catch (const RigFitError& e) {
+    } catch (const FitThroughRigError& e) {
       result.rig_failure = e.what();
     }
   }

@@ -1,0 +1,86 @@
+#include "lab/request/sweep_request.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include "io/field_ref.hpp"
+#include "lab/request/field_checks.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+
+namespace fl {
+
+std::vector<std::string> plot_sweep(const std::string& dir) {
+  namespace fs = std::filesystem;
+  run_plot_script("plot_sweep.py", {(fs::path(dir) / "results.csv").string(),
+                                    (fs::path(dir) / "sweep.json").string(), dir});
+  std::vector<std::string> pngs;
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".png") pngs.push_back(entry.path().string());
+  std::sort(pngs.begin(), pngs.end());
+  return pngs;
+}
+
+PreparedSweep prepare_sweep(const SweepRequest& r) {
+  FieldChecks checks;
+  if (r.jobs && *r.jobs < 1)
+    checks.problem("jobs", std::to_string(*r.jobs),
+                   "expected a positive number of workers, found " + std::to_string(*r.jobs) +
+                       "; leave it out for every core");
+  std::optional<Shard> shard;
+  if (!r.shard.empty()) {
+    try {
+      shard = parse_shard(r.shard);
+    } catch (const InputError& e) {
+      checks.problem("shard", r.shard, without_location(e.what()));
+    }
+  }
+  checks.throw_if_any();
+  PreparedSweep p;
+  p.options.inputs = scene_inputs(asset_dir(r.assets));
+  p.spec = load_sweep_file(r.file, p.options.inputs);
+  p.options.out_dir = r.out.empty() ? "out/sweep/" + p.spec.name : r.out;
+  prepare_output_folder(p.options.out_dir, "out");
+  p.options.workers = r.jobs.value_or(0);
+  p.options.shard = shard;
+  p.options.fresh = r.fresh;
+  p.plot = r.plot;
+  return p;
+}
+
+int SweepResult::points_without_result() const {
+  if (!outcome.complete) return 0;
+  int n = 0;
+  for (const char* key : {"failed", "invalid"})
+    if (const auto it = outcome.status.find(key); it != outcome.status.end()) n += it->second;
+  return n;
+}
+
+Outcome SweepResult::outcome_of() const {
+  if (outcome.interrupted) return Outcome::kInterrupted;
+  if (points_without_result() > 0) return Outcome::kFailed;
+  if (!plot_failure.empty()) return Outcome::kIncomplete;
+  return Outcome::kDone;
+}
+
+SweepResult execute_sweep(const PreparedSweep& sweep, const std::atomic<bool>* stop,
+                          std::function<void(const SweepProgress&)> progress) {
+  SweepRunOptions options = sweep.options;
+  options.stop = stop;
+  options.progress = std::move(progress);
+  SweepResult result;
+  result.outcome = run_sweep(sweep.spec, options);
+  if (sweep.plot && result.outcome.root && result.outcome.complete) {
+    try {
+      result.plots = plot_sweep(options.out_dir);
+    } catch (const std::runtime_error& e) {
+      result.plot_failure = e.what();
+    }
+  }
+  return result;
+}
+
+}  // namespace fl

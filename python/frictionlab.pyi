@@ -621,3 +621,39 @@ def fit(
     set: Overrides = None,
     jobs: int = 0,
 ) -> FitReport: ...
+
+# ---- comparisons and the studies of the numerics: each returns the command's --json object ----
+
+def compare(
+    *,
+    measured: Optional[PathLike] = None,
+    log: Optional[PathLike] = None,
+    scene: Optional[PathLike] = None,
+    set: Overrides = None,
+    duration: Optional[Quantity] = None,
+    jobs: int = 0,
+    out: PathLike = "out/compare",
+    plot: bool = False,
+    refit: bool = True,
+    geometry: str = "",
+    columns: str = "",
+    rate: Optional[Quantity] = None,
+    time_unit: str = "",
+    assets: Optional[PathLike] = None,
+) -> dict[str, Any]: ...
+def accuracy(
+    scene: Union[Scene, PathLike],
+    *,
+    set: Overrides = None,
+    periods: int = 10,
+    out: PathLike = "out/accuracy",
+    plot: bool = False,
+) -> dict[str, Any]: ...
+def stability(
+    *,
+    dir: Optional[PathLike] = None,
+    only: str = "",
+    jobs: Optional[int] = None,
+    out: Optional[PathLike] = None,
+    assets: Optional[PathLike] = None,
+) -> dict[str, Any]: ...

@@ -220,3 +220,22 @@ def test_a_bad_sweep_request_is_bad_input_in_both(tmp_path):
     assert message(done.stderr) == message(str(caught.value))
     assert located_field(done.stderr) == "--shard 4/3"
     assert located_field(str(caught.value)) == "shard='4/3'"
+
+
+def test_a_comparison_and_the_studies_are_the_commands(tmp_path):
+    # compare --log and stability --only are quick; accuracy at its fewest periods.
+    printed = json.loads(cli("compare", "--log", LOGS / "clean.csv", "--out", tmp_path / "c",
+                             "--json").stdout)
+    returned = fl.compare(log=LOGS / "clean.csv", out=tmp_path / "p")
+    assert returned["mu_k_refit"] == printed["mu_k_refit"]
+    assert returned["period_measured_s"] == printed["period_measured_s"]
+    printed = json.loads(cli("stability", "--only", "mu-1", "--json").stdout)
+    returned = fl.stability(only="mu-1")
+    assert [c["found"] for c in returned["cases"]] == [c["found"] for c in printed["cases"]]
+    assert returned["unexpected"] == printed["unexpected"] == 0
+    with pytest.raises(fl.InputError) as caught:
+        fl.accuracy(SCENES / "minimal.yaml", periods=2, out=tmp_path / "a")
+    assert caught.value.field == "periods"
+    done = cli("accuracy", SCENES / "minimal.yaml", "--periods", "2", "--out", tmp_path / "a",
+               status=2)
+    assert message(done.stderr) == message(str(caught.value))

@@ -24,6 +24,7 @@
 #include "io/plus_minus.hpp"
 #include "lab/compare/compare.hpp"
 #include "lab/compare/log_against_rig.hpp"
+#include "lab/request/compare_request.hpp"
 #include "lab/request/lab_data.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/request/output_paths.hpp"
@@ -46,13 +47,6 @@ struct CompareCommandOptions {
   bool json = false;
   bool no_refit = false;
 };
-
-// The rig's scene: scenes/paper-rig.yaml from the working folder, else from the source tree.
-std::string default_scene() {
-  const std::string relative = "scenes/paper-rig.yaml";
-  if (std::filesystem::exists(relative)) return relative;
-  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
-}
 
 // As the row wrote it, to at most 6 decimals (a table written by frictionlab estimate carries
 // every digit of a float).
@@ -166,126 +160,58 @@ void print_log_report(const LogAgainstRig& r, const std::string& written) {
   if (!written.empty()) fmt::print("\n  written: {}\n", written);
 }
 
-int run_compare_log(const CompareCommandOptions& o, CompareOptions options) {
-  const HallLog log = read_hall_log(o.log, log_reading(o.reading));
-  const LogAgainstRig r =
-      compare_log_with_rig(log, parse_geometry(o.geometry.empty() ? "auto" : o.geometry), options);
-  const nlohmann::json j = log_against_rig_json(r);
-  const std::string report = o.out + "/compare-log.json";
-  const std::string traces = o.out + "/compare-log-traces.json";
-  write_file_atomic(report, j.dump(1) + "\n");
-  write_file_atomic(traces, log_against_rig_plot_data(r).dump() + "\n");
-  std::string written = report + ", " + traces;
-  std::string plot_failure;
-  if (o.plot) {
-    const std::string png = o.out + "/compare-log.png";
-    try {
-      run_plot_script("plot_log_vs_sim.py", {traces, png});
-      written += ", " + png;
-    } catch (const std::runtime_error& e) {
-      plot_failure = e.what();
-    }
-  }
-  if (o.json)
-    fmt::print("{}\n", j.dump(2));
-  else
-    print_log_report(r, written);
-  return plot_failure_status(plot_failure);
-}
-
 int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& global) {
-  const std::string assets = asset_dir(global.asset_dir);
-  if (o.log.empty() && (!o.geometry.empty() || o.reading.any()))
-    throw InputError({},
-                     "--geometry, --columns, --rate and --time-unit say how to read a log; "
-                     "they go with --log LOG");
-  if (!o.log.empty() && !o.measured.empty())
-    throw InputError({},
-                     "--log compares one Hall log with its simulation, --measured a table of "
-                     "periods; give one");
-  const bool paper = o.measured.empty() && o.log.empty();
-  const MeasuredRows measured =
-      o.log.empty() ? read_measured_rows(paper ? paper_measurements_path(assets) : o.measured)
-                    : MeasuredRows{};
-  CompareOptions options;
-  options.scene_file = o.scene.empty() ? default_scene() : o.scene;
-  const SceneInputs sources = scene_sources(global);
-  options.paper = sources.paper;
-  options.parts = sources.parts;
-  for (const std::string& text : o.overrides) {
-    SceneOverride over = parse_override(text);
-    // What the comparison or the rows set would silently win over the option.
-    const bool duration = over.path == "world.duration";
-    const bool by_rows =
-        std::any_of(measured.rows.begin(), measured.rows.end(), [&](const auto& r) {
-          return std::any_of(r.keys.begin(), r.keys.end(),
-                             [&](const SceneOverride& k) { return k.path == over.path; });
-        });
-    // With --log, mu_k is where the refit starts (the scene's own otherwise).
-    const bool start_mu_k = !o.log.empty() && over.path == "friction.mu_k";
-    if ((compare_sets_key(over.path) && !start_mu_k) || by_rows)
-      throw InputError(
-          SourceLocation{"--set " + text, 0, 0},
-          fmt::format("expected a key compare leaves to the scene, found {}, which {}; {}",
-                      over.path,
-                      by_rows ? "rows of " + measured.file + " set for themselves"
-                              : "compare sets for each row (mu_k by the refit, and the run's "
-                                "length)",
-                      duration ? "use --duration instead"
-                               : "drop it, or simulate that set-up with frictionlab run"));
-    options.overrides.push_back(std::move(over));
-  }
-  if (!o.duration.empty()) {
-    option_quantity(o.duration, Dimension::kTime, "--duration");
-    options.overrides.push_back({"world.duration", o.duration});
-    options.min_periods = 0;
-  }
-  prepare_output_folder(o.out, "out");
-  options.workers = o.workers;
-  options.refit = !o.no_refit;
+  CompareRequest request;
+  request.scene = o.scene;
+  request.measured = o.measured;
+  request.log = o.log;
+  request.geometry = o.geometry;
+  request.columns = o.reading.columns;
+  if (!o.reading.rate.empty()) request.rate = o.reading.rate;
+  request.time_unit = o.reading.time_unit;
+  request.set = o.overrides;
+  if (!o.duration.empty()) request.duration = o.duration;
+  request.jobs = o.workers;
+  request.out = o.out;
+  request.plot = o.plot;
+  request.refit = !o.no_refit;
+  request.assets = global.asset_dir;
   const bool tty = isatty(2) == 1;
-  options.progress = [tty](std::size_t done, std::size_t total) {
-    if (tty) {
-      fmt::print(stderr, "\r\033[Kcompare: {}/{} rows", done, total);
-      if (done == total) fmt::print(stderr, "\n");
-    }
-  };
-  if (!o.log.empty()) return run_compare_log(o, options);
-  const CompareResult result = run_compare(measured, options);
-  nlohmann::json j = compare_json(result);
-  // Rows of a table of logs whose log gave no period: left out, and said.
-  nlohmann::json skipped = nlohmann::json::array();
-  for (const SkippedRow& row : measured.skipped)
-    skipped.push_back({{"label", row.label}, {"line", row.where.line}, {"reason", row.reason}});
-  j["skipped"] = skipped;
-  const std::string csv = o.out + "/compare.csv";
-  const std::string json = o.out + "/compare.json";
-  write_file_atomic(csv, compare_csv(result));
-  write_file_atomic(json, j.dump(1) + "\n");
-  std::string png;
-  if (o.plot) {
-    png = o.out + "/compare.png";
-    run_plot_script("plot_compare.py", {json, png});
+  const CompareRequestResult result =
+      compare_measurements(request, [tty](std::size_t done, std::size_t total) {
+        if (tty) {
+          fmt::print(stderr, "\r\033[Kcompare: {}/{} rows", done, total);
+          if (done == total) fmt::print(stderr, "\n");
+        }
+      });
+  std::string written;
+  for (const std::string& w : result.written) written += (written.empty() ? "" : ", ") + w;
+  if (result.log) {
+    if (o.json)
+      fmt::print("{}\n", result.json.dump(2));
+    else
+      print_log_report(*result.log, written);
+    return plot_failure_status(result.plot_failure);
   }
-  // Your own rows (--measured) must each give a result: one that does not fails the command. The
-  // paper's own table shows its rows the model cannot oscillate (flexible foam at 300 K).
-  const int without = paper ? 0 : result.rows_without_result(options.refit);
-  const int status = exit_status(without > 0 ? Outcome::kFailed : Outcome::kDone);
+  const CompareResult& table = *result.table;
+  const int without = result.rows_without_result();
   if (without > 0)
     fmt::print(stderr, "error: {} of {} rows gave no {} (their rows say why)\n", without,
-               result.rows.size(), options.refit ? "refitted mu_k" : "simulated period");
+               table.rows.size(), request.refit ? "refitted mu_k" : "simulated period");
   if (o.json) {
-    fmt::print("{}\n", j.dump(2));
-    return status;
+    fmt::print("{}\n", result.json.dump(2));
+  } else {
+    print_table(table, result.paper);
+    for (const SkippedRow& row : result.skipped)
+      fmt::print("  left out: {} (line {}, {}: no period to compare)\n", row.label, row.where.line,
+                 row.reason);
+    fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", table.simulations, table.wall_s,
+               table.workers, table.workers == 1 ? "" : "s");
+    fmt::print("  written: {}\n", written);
   }
-  print_table(result, paper);
-  for (const SkippedRow& row : measured.skipped)
-    fmt::print("  left out: {} (line {}, {}: no period to compare)\n", row.label, row.where.line,
-               row.reason);
-  fmt::print("\n  {} simulations in {:.1f} s on {} worker{}\n", result.simulations, result.wall_s,
-             result.workers, result.workers == 1 ? "" : "s");
-  fmt::print("  written: {}, {}{}\n", csv, json, png.empty() ? "" : ", " + png);
-  return status;
+  if (!result.plot_failure.empty())
+    fmt::print(stderr, "error: no plot: {}; the results above are complete\n", result.plot_failure);
+  return exit_status(result.outcome());
 }
 
 }  // namespace

@@ -13,15 +13,12 @@
 #include "lab/run/hall_estimator.hpp"
 #include "lab/run/regime_monitor.hpp"
 #include "lab/run/regime_theory.hpp"
+#include "lab/run/run_monitors.hpp"
 #include "lab/run/solver_convergence.hpp"
 #include "lab/run/warming_report.hpp"
 
 namespace fl {
 namespace {
-
-PlatePose pose_of(double t, const PlateState& s) {
-  return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate, s.y, s.yaw};
-}
 
 // The estimator's mean period against the trajectory's: they measure the same motion, so they
 // must agree within the estimator's standard error (three of them) plus 0.05 % for the
@@ -62,69 +59,9 @@ void theory_numbers(const CompiledRig& rig, RunSummary& out) {
     out.growth_rate_theory = p.growth_rate;
 }
 
-// Running means and extremes of the drive's state.
-class DriveStats {
- public:
-  explicit DriveStats(const CompiledRig& rig) {
-    if (rig.drive) design_ratio_ = rig.drive->gearbox_ratio;
-  }
-
-  void add(const DriveState& d, const std::array<RollerContact, 2>& contacts, double radius) {
-    ++n_;
-    motor_speed_ += std::fabs(d.motor_speed);
-    motor_torque_ += d.motor_torque;
-    roller_[0] += d.roller_speeds[0];
-    roller_[1] += d.roller_speeds[1];
-    // A stalled train has no ratio and no senses: only the steps in which all three turn count.
-    if (d.motor_speed != 0.0 && d.roller_speeds[0] != 0.0 && d.roller_speeds[1] != 0.0) {
-      ++turning_;
-      const double ratio = std::fabs(d.roller_speeds[0] / d.motor_speed);
-      ratio_ += ratio;
-      ratio_error_ = std::max(ratio_error_, std::fabs(ratio / design_ratio_ - 1.0));
-      opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
-    }
-    // The plate's friction F_i (on the plate, along x) acts back on roller i's top: torque
-    // -a F_i about y; counted positive when it opposes the roller's turning.
-    for (int i = 0; i < 2; ++i) {
-      const double sense = d.roller_speeds[static_cast<std::size_t>(i)] >= 0.0 ? 1.0 : -1.0;
-      load_ += sense * radius * contacts[static_cast<std::size_t>(i)].friction_force;
-    }
-  }
-
-  DriveReport report() const {
-    DriveReport r;
-    const double n = std::max<double>(1.0, static_cast<double>(n_));
-    r.motor_speed = motor_speed_ / n;
-    r.motor_torque = motor_torque_ / n;
-    r.roller_speeds = {roller_[0] / n, roller_[1] / n};
-    r.gearbox_ratio = design_ratio_;
-    r.turning_fraction = static_cast<double>(turning_) / n;
-    if (turning_ > 0) {
-      r.speed_ratio = ratio_ / static_cast<double>(turning_);
-      r.speed_ratio_error = ratio_error_;
-      r.senses_opposite = opposite_;
-    }
-    r.load_torque = load_ / n;
-    return r;
-  }
-
- private:
-  double design_ratio_ = 1.0;
-  long long n_ = 0, turning_ = 0;
-  double motor_speed_ = 0.0, motor_torque_ = 0.0, ratio_ = 0.0, ratio_error_ = 0.0, load_ = 0.0;
-  std::array<double, 2> roller_{};
-  bool opposite_ = true;
-};
-
-}  // namespace
-
-// One run at the scene's own solver iterations. `unconverged` is set when the convergence check
-// stopped it (the run's failure then says so).
-static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
-                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
-  const auto wall_start = std::chrono::steady_clock::now();
+// What the summary says of the rig before it runs: the set-up, the analytic model's numbers.
+void rig_figures(const CompiledRig& rig, RunSummary& out) {
   const Scene& scene = rig.scene;
-  RunSummary out;
   out.scene = scene.name;
   out.seed = scene.world.seed;
   out.spacing = rig.spacing;
@@ -151,140 +88,13 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     out.condition_spacing = rig.conditioning->condition_spacing;
     out.condition_h_c = rig.conditioning->condition_h_c;
   }
-  const double g = rig.gravity;
-  RigWorld world(rig);
+}
 
-  // Only what the scene names: no sensor, no Hall signal and no estimator.
-  std::optional<HallSignal> hall;
-  std::optional<HallEstimator> estimator;
-  if (scene.sensor && !scene.magnets.empty()) {
-    hall.emplace(rig);
-    estimator.emplace(rig.spacing, g);
-  }
-  StepView view;
-  const auto on_sample = [&](const HallSample& sample) {
-    estimator->add(sample);
-    if (options.record_hall && recording != nullptr) recording->hall.push_back(sample);
-    if (options.observer) view.new_samples.push_back(sample);
-  };
-
-  RegimeMonitor monitor(rig);
-  SolverConvergence convergence(rig);
-  CycleTracker cycles;
-  const bool record_cycles = options.record_cycles && recording != nullptr;
-  // The ramped rollers' speed, averaged over the run's steps.
-  double ramp_speed_sum = 0.0;
-  long long ramp_steps = 0;
-  PlateState state = world.plate();
-  monitor.start(state);
-  const OscillationTracker& tracker = monitor.tracker();
-  if (record_cycles) cycles.add(0.0, state.x, state.vx, world.roller_surface_speeds());
-  if (options.record_trajectory && recording != nullptr)
-    recording->trajectory.push_back({0.0, state, world.contacts()});
-  // The observer sees the world after each step.
-  const auto observe = [&](double t, const PlateState& plate,
-                           const std::array<RollerContact, 2>& contacts) {
-    if (!options.observer) return;
-    view.t = t;
-    view.plate = plate;
-    view.contacts = contacts;
-    view.roller_angles = world.roller_angles();
-    view.roller_speeds = world.roller_speeds();
-    view.drive = world.drive();
-    view.shafts = world.shafts();
-    view.estimator = estimator ? &*estimator : nullptr;
-    view.monitor = &monitor;
-    options.observer(view);
-    view.new_samples.clear();
-  };
-  observe(0.0, state, world.contacts());
-
-  const long long steps = std::llround(scene.world.duration / scene.world.time_step);
-  out.min_normal_force = std::numeric_limits<double>::infinity();
-  double t_previous = 0.0;
-  PlateState previous = state;
-  std::optional<RunFailure> failure;
-  DriveStats drive_stats(rig);
-  for (long long i = 0; i < steps && !failure; ++i) {
-    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) {
-      out.interrupted_at = world.time();
-      break;
-    }
-    if (options.progress && i % 1000 == 0) options.progress(world.time());
-    world.step();
-    const double t = world.time();
-    state = world.plate();
-    const auto contacts = world.contacts();
-    const std::array<double, 2> surface = world.roller_surface_speeds();
-    failure = monitor.observe(t, state, contacts, surface, world.roller_angles());
-    if (!failure) {
-      unconverged = convergence.observe(t, previous, state, contacts);
-      if (unconverged)
-        failure = RunFailure{Regime::kNumericallyFailed, t,
-                             fmt::format("roller {}", unconverged->roller), "normal force",
-                             fmt::format("the contact solver did not converge at {} iterations: {}",
-                                         scene.world.solver_iterations, unconverged->describe())};
-    }
-    // What a guard stopped is not recorded: the outputs hold every trustworthy step.
-    if (failure) break;
-    if (record_cycles) cycles.add(t, state.x, state.vx, surface);
-    if (rig.roller_speed_ramp) {
-      ramp_speed_sum += std::fabs(world.roller_speeds()[0]);
-      ++ramp_steps;
-    }
-    if (hall) hall->sample_between(pose_of(t_previous, previous), pose_of(t, state), on_sample);
-    if (options.record_trajectory && recording != nullptr)
-      recording->trajectory.push_back({t, state, contacts});
-    observe(t, state, contacts);
-    out.plate_speed_max = std::max(out.plate_speed_max, std::fabs(state.vx));
-    if (const auto d = world.drive()) drive_stats.add(*d, contacts, scene.rollers.radius);
-    for (const RollerContact& c : contacts) {
-      out.min_normal_force = std::min(out.min_normal_force, c.normal_force);
-      out.max_penetration = std::max(out.max_penetration, c.penetration);
-    }
-    previous = state;
-    t_previous = t;
-  }
-  out.steps = world.steps();
-  out.duration = world.time();
-  if (record_cycles) recording->cycles = cycles.cycles();
-  if (rig.roller_speed_ramp) {
-    out.roller_speed = ramp_steps > 0 ? ramp_speed_sum / static_cast<double>(ramp_steps)
-                                      : rig.roller_speed_ramp->at(0.0);
-  }
-  if (failure) out.failure = failure->message;
-  if (scene.drive) {
-    out.drive = drive_stats.report();
-    out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
-  }
-
-  if (!tracker.turning_amplitudes().empty()) {
-    out.amplitude_start = tracker.turning_amplitudes().front();
-    out.amplitude_end = tracker.turning_amplitudes().back();
-  }
-  out.amplitude_drift_per_period = tracker.amplitude_drift_per_period();
-  if (estimator) out.estimator = estimator->report();
-  if (estimator && options.record_hall && recording != nullptr)
-    recording->periods = estimator->periods();
-  if (rig.warming)
-    out.warming = warming_report(*rig.warming,
-                                 estimator ? estimator->periods() : std::vector<EstimatedPeriod>{},
-                                 rig.spacing, rig.plate.h_c, g, out.duration);
-  // The rollers' surface speed: the set one, or the drive's mean under load.
-  const double surface_speed = out.roller_speed * scene.rollers.radius;
-  out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
-                                              : std::numeric_limits<double>::infinity();
-
-  if (scene.rollers.runout > 0.0) {
-    out.runout = scene.rollers.runout;
-    const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
-    out.runout_threshold =
-        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
-                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
-                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
-  }
-
-  const RegimeFinding finding = monitor.finding(failure);
+// The regime the run's monitor found, with what the trajectory showed in numbers and the friction
+// law's closed forms for them; returns the time from which the motion is harmonic (after a
+// clip's last stick, or where a growth or decay began).
+double add_regime(const CompiledRig& rig, const RegimeFinding& finding, RunSummary& out,
+                  RunRecording* recording) {
   out.regime = finding.regime;
   out.regime_since = finding.since;
   out.regime_evidence = finding.evidence;
@@ -295,7 +105,6 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
     out.highest_jump = finding.highest_jump;
     if (recording != nullptr) recording->jumps = finding.jump_list;
   }
-  // A clipped oscillation's period is read after its last stick.
   double harmonic_since = 0.0;
   if (finding.motion && finding.motion->regime == finding.regime) {
     const MotionFinding& m = *finding.motion;
@@ -318,15 +127,14 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
         m.regime == Regime::kGrows || m.regime == Regime::kDecays)
       theory_numbers(rig, out);
   }
-  if (const auto p = tracker.period(harmonic_since)) {
-    out.period_trajectory = p->slope;
-    out.period_trajectory_err = p->slope_std_error;
-  }
-  if (out.estimator && out.period_trajectory)
-    out.estimator_disagreement =
-        cross_check(*out.estimator, *out.period_trajectory, out.clock_error.value_or(0.0));
+  return harmonic_since;
+}
 
-  // The headline: a period only for a harmonic oscillation, where the paper's model holds.
+// The headline: a period only for a harmonic oscillation, where the paper's model holds; mu_k as
+// the rig would report it, from the estimator's period, or from the trajectory's (said so) when
+// the scene has no sensor or its estimator accepted none.
+void decide_headline(RunSummary& out) {
+  const double g = out.gravity;
   if (!out.harmonic()) {
     out.period_trajectory.reset();
     out.period_trajectory_err.reset();
@@ -373,6 +181,126 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
       out.mu_k_source.reset();
     }
   }
+}
+
+}  // namespace
+
+// One run at the scene's own solver iterations. `unconverged` is set when the convergence check
+// stopped it (the run's failure then says so).
+static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
+                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  const Scene& scene = rig.scene;
+  RunSummary out;
+  rig_figures(rig, out);
+  const double g = rig.gravity;
+  RigWorld world(rig);
+
+  // The monitors, only those the scene and the options name; the loop knows none by name.
+  RegimeGuard regime(rig);
+  ConvergenceGuard convergence(rig);
+  std::vector<RunMonitor*> monitors{&regime, &convergence};
+  std::optional<CycleRecorder> cycles;
+  if (options.record_cycles && recording != nullptr) monitors.push_back(&cycles.emplace());
+  std::optional<RampSpeedAverage> ramp;
+  if (rig.roller_speed_ramp) monitors.push_back(&ramp.emplace());
+  std::optional<StepObserver> observer;
+  if (options.observer) observer.emplace(options.observer, &regime.monitor());
+  std::optional<HallChannel> hall;
+  if (scene.sensor && !scene.magnets.empty()) {
+    hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
+                 observer ? observer->new_samples() : nullptr);
+    monitors.push_back(&*hall);
+    if (observer) observer->set_estimator(&hall->estimator());
+  }
+  std::optional<TrajectoryRecorder> trajectory;
+  if (options.record_trajectory && recording != nullptr)
+    monitors.push_back(&trajectory.emplace(recording->trajectory));
+  if (observer) monitors.push_back(&*observer);
+  RunExtremes extremes;
+  monitors.push_back(&extremes);
+  std::optional<DriveStats> drive;
+  if (scene.drive) monitors.push_back(&drive.emplace(rig));
+
+  PlateState state = world.plate();
+  for (RunMonitor* m : monitors) m->start(world, state);
+  const OscillationTracker& tracker = regime.monitor().tracker();
+  const long long steps = std::llround(scene.world.duration / scene.world.time_step);
+  double t_previous = 0.0;
+  PlateState previous = state;
+  std::optional<RunFailure> failure;
+  for (long long i = 0; i < steps; ++i) {
+    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) {
+      out.interrupted_at = world.time();
+      break;
+    }
+    if (options.progress && i % 1000 == 0) options.progress(world.time());
+    world.step();
+    state = world.plate();
+    const std::array<RollerContact, 2> contacts = world.contacts();
+    const std::array<double, 2> surface = world.roller_surface_speeds();
+    const StepContext step{world.time(), t_previous, state, previous, contacts, surface, world};
+    // The guards first: what a guard stopped is not recorded, so the outputs hold every
+    // trustworthy step.
+    for (RunMonitor* m : monitors)
+      if ((failure = m->check(step))) break;
+    if (failure) break;
+    for (RunMonitor* m : monitors) m->record(step);
+    previous = state;
+    t_previous = step.t;
+  }
+  unconverged = convergence.unconverged();
+  out.steps = world.steps();
+  out.duration = world.time();
+  out.plate_speed_max = extremes.plate_speed_max;
+  out.min_normal_force = extremes.min_normal_force;
+  out.max_penetration = extremes.max_penetration;
+  if (cycles) recording->cycles = cycles->cycles();
+  if (ramp) out.roller_speed = ramp->mean().value_or(rig.roller_speed_ramp->at(0.0));
+  if (failure) out.failure = failure->message;
+  if (drive) {
+    out.drive = drive->report();
+    out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
+  }
+
+  if (!tracker.turning_amplitudes().empty()) {
+    out.amplitude_start = tracker.turning_amplitudes().front();
+    out.amplitude_end = tracker.turning_amplitudes().back();
+  }
+  out.amplitude_drift_per_period = tracker.amplitude_drift_per_period();
+  if (hall) out.estimator = hall->estimator().report();
+  if (hall && options.record_hall && recording != nullptr)
+    recording->periods = hall->estimator().periods();
+  if (rig.warming)
+    out.warming = warming_report(
+        *rig.warming, hall ? hall->estimator().periods() : std::vector<EstimatedPeriod>{},
+        rig.spacing, rig.plate.h_c, g, out.duration);
+  // The rollers' surface speed: the set one, or the drive's mean under load.
+  const double surface_speed = out.roller_speed * scene.rollers.radius;
+  out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
+                                              : std::numeric_limits<double>::infinity();
+
+  if (scene.rollers.runout > 0.0) {
+    out.runout = scene.rollers.runout;
+    const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
+    out.runout_threshold =
+        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
+                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
+                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
+  }
+
+  const RegimeFinding finding = regime.monitor().finding(failure);
+  // A clipped oscillation's period is read after its last stick.
+  const double harmonic_since = add_regime(rig, finding, out, recording);
+  if (const auto p = tracker.period(harmonic_since)) {
+    out.period_trajectory = p->slope;
+    out.period_trajectory_err = p->slope_std_error;
+  }
+  if (out.estimator && out.period_trajectory)
+    out.estimator_disagreement =
+        cross_check(*out.estimator, *out.period_trajectory, out.clock_error.value_or(0.0));
+
+  decide_headline(out);
 
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   out.real_time_factor = out.duration / out.wall_s;

@@ -1,0 +1,169 @@
+#include "lab/request/compare_request.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "core/paper_table.hpp"
+#include "io/atomic_file.hpp"
+#include "io/field_ref.hpp"
+#include "io/hall_log.hpp"
+#include "io/input_error.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "lab/logs/log_estimate.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/output_paths.hpp"
+#include "lab/request/plot_script.hpp"
+#include "lab/request/scene_source.hpp"
+
+namespace fl {
+namespace {
+
+// The rig's scene when the request names none: scenes/paper-rig.yaml from the working folder,
+// else from the source tree.
+std::string default_scene() {
+  const std::string relative = "scenes/paper-rig.yaml";
+  if (std::filesystem::exists(relative)) return relative;
+  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
+}
+
+}  // namespace
+
+int CompareRequestResult::rows_without_result() const {
+  // The paper's own table shows the rows the model cannot oscillate (flexible foam at 300 K):
+  // only your own rows must each give a result.
+  if (!table || paper) return 0;
+  return table->rows_without_result(refit_asked);
+}
+
+Outcome CompareRequestResult::outcome() const {
+  if (rows_without_result() > 0) return Outcome::kFailed;
+  if (!plot_failure.empty()) return Outcome::kIncomplete;
+  return Outcome::kDone;
+}
+
+CompareRequestResult compare_measurements(const CompareRequest& r,
+                                          std::function<void(std::size_t, std::size_t)> progress) {
+  FieldChecks checks;
+  const bool with_log = !r.log.empty();
+  if (!with_log && (!r.geometry.empty() || !r.columns.empty() || r.rate || !r.time_unit.empty()))
+    checks.problem(!r.geometry.empty()  ? "geometry"
+                   : !r.columns.empty() ? "columns"
+                   : r.rate             ? "rate"
+                                        : "time_unit",
+                   field_ref("geometry") + ", " + field_ref("columns") + ", " + field_ref("rate") +
+                       " and " + field_ref("time_unit") + " say how to read a log; they go with " +
+                       field_ref("log"));
+  if (with_log && !r.measured.empty())
+    checks.problem("log", r.log,
+                   field_ref("log") + " compares one Hall log with its simulation, " +
+                       field_ref("measured") + " a table of periods; give one");
+  if (r.jobs < 0)
+    checks.problem("jobs", std::to_string(r.jobs),
+                   "expected a positive number of rows at once, found " + std::to_string(r.jobs));
+  HallLogOptions reading;
+  reading.columns = r.columns;
+  reading.time_unit = r.time_unit;
+  if (r.rate) reading.rate_hz = checks.quantity(*r.rate, Dimension::kFrequency, "rate");
+  const std::optional<fl_estimator::Geometry> geometry =
+      geometry_from_option(r.geometry.empty() ? "auto" : r.geometry);
+  if (!geometry)
+    checks.problem("geometry", r.geometry,
+                   "expected auto, one or pair, found \"" + r.geometry + "\"");
+  std::vector<SceneOverride> overrides = read_overrides(r.set, checks);
+  if (r.duration) checks.quantity(*r.duration, Dimension::kTime, "duration");
+  checks.throw_if_any();
+
+  CompareRequestResult result;
+  result.refit_asked = r.refit;
+  result.paper = r.measured.empty() && !with_log;
+  const std::string assets = asset_dir(r.assets);
+  const MeasuredRows measured =
+      with_log ? MeasuredRows{}
+               : read_measured_rows(result.paper ? paper_measurements_path(assets) : r.measured);
+  CompareOptions options;
+  options.scene_file = r.scene.empty() ? default_scene() : r.scene;
+  const SceneInputs inputs = scene_inputs(assets);
+  options.paper = inputs.paper;
+  options.parts = inputs.parts;
+  for (SceneOverride& over : overrides) {
+    // What the comparison or the rows set would silently win over the request's own key.
+    const bool duration = over.path == "world.duration";
+    const bool by_rows =
+        std::any_of(measured.rows.begin(), measured.rows.end(), [&](const auto& row) {
+          return std::any_of(row.keys.begin(), row.keys.end(),
+                             [&](const SceneOverride& k) { return k.path == over.path; });
+        });
+    // With a log, mu_k is where the refit starts (the scene's own otherwise).
+    const bool start_mu_k = with_log && over.path == "friction.mu_k";
+    if ((compare_sets_key(over.path) && !start_mu_k) || by_rows)
+      checks.problem(
+          "set", over.path + "=" + over.value,
+          fmt::format("expected a key compare leaves to the scene, found {}, which {}; {}",
+                      over.path,
+                      by_rows ? "rows of " + measured.file + " set for themselves"
+                              : "compare sets for each row (mu_k by the refit, and the run's "
+                                "length)",
+                      duration ? "use " + field_ref("duration") + " instead"
+                               : "drop it, or simulate that set-up with a run"));
+    options.overrides.push_back(std::move(over));
+  }
+  checks.throw_if_any();
+  if (r.duration) {
+    options.overrides.push_back({"world.duration", quantity_input_text(*r.duration)});
+    options.min_periods = 0;
+  }
+  prepare_output_folder(r.out, "out");
+  options.workers = r.jobs;
+  options.refit = r.refit;
+  options.progress = std::move(progress);
+
+  if (with_log) {
+    const HallLog log = read_hall_log(r.log, reading);
+    result.log = compare_log_with_rig(log, *geometry, options);
+    result.json = log_against_rig_json(*result.log);
+    const std::string report = r.out + "/compare-log.json";
+    const std::string traces = r.out + "/compare-log-traces.json";
+    write_file_atomic(report, result.json.dump(1) + "\n");
+    write_file_atomic(traces, log_against_rig_plot_data(*result.log).dump() + "\n");
+    result.written = {report, traces};
+    if (r.plot) {
+      const std::string png = r.out + "/compare-log.png";
+      try {
+        run_plot_script("plot_log_vs_sim.py", {traces, png});
+        result.written.push_back(png);
+      } catch (const std::runtime_error& e) {
+        result.plot_failure = e.what();
+      }
+    }
+    return result;
+  }
+  result.table = run_compare(measured, options);
+  result.skipped = measured.skipped;
+  result.json = compare_json(*result.table);
+  // Rows of a table of logs whose log gave no period: left out, and said.
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const SkippedRow& row : measured.skipped)
+    skipped.push_back({{"label", row.label}, {"line", row.where.line}, {"reason", row.reason}});
+  result.json["skipped"] = skipped;
+  const std::string csv = r.out + "/compare.csv";
+  const std::string json = r.out + "/compare.json";
+  write_file_atomic(csv, compare_csv(*result.table));
+  write_file_atomic(json, result.json.dump(1) + "\n");
+  result.written = {csv, json};
+  if (r.plot) {
+    const std::string png = r.out + "/compare.png";
+    try {
+      run_plot_script("plot_compare.py", {json, png});
+      result.written.push_back(png);
+    } catch (const std::runtime_error& e) {
+      result.plot_failure = e.what();
+    }
+  }
+  return result;
+}
+
+}  // namespace fl

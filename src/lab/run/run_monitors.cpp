@@ -1,0 +1,162 @@
+#include "lab/run/run_monitors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace fl {
+namespace {
+
+PlatePose pose_of(double t, const PlateState& s) {
+  return PlatePose{t, s.x, s.z, s.pitch, s.vx, s.vz, s.pitch_rate, s.y, s.yaw};
+}
+
+}  // namespace
+
+void RegimeGuard::start(const RigWorld& /*world*/, const PlateState& plate) {
+  monitor_.start(plate);
+}
+
+std::optional<RunFailure> RegimeGuard::check(const StepContext& step) {
+  return monitor_.observe(step.t, step.plate, step.contacts, step.surface_speeds,
+                          step.world.roller_angles());
+}
+
+std::optional<RunFailure> ConvergenceGuard::check(const StepContext& step) {
+  unconverged_ = convergence_.observe(step.t, step.previous, step.plate, step.contacts);
+  if (!unconverged_) return std::nullopt;
+  return RunFailure{Regime::kNumericallyFailed, step.t,
+                    fmt::format("roller {}", unconverged_->roller), "normal force",
+                    fmt::format("the contact solver did not converge at {} iterations: {}",
+                                rig_.scene.world.solver_iterations, unconverged_->describe())};
+}
+
+HallChannel::HallChannel(const CompiledRig& rig, std::vector<HallSample>* recording,
+                         std::vector<HallSample>* view_samples)
+    : hall_(rig),
+      estimator_(rig.spacing, rig.gravity),
+      recording_(recording),
+      view_samples_(view_samples) {}
+
+void HallChannel::record(const StepContext& step) {
+  hall_.sample_between(pose_of(step.t_previous, step.previous), pose_of(step.t, step.plate),
+                       [this](const HallSample& sample) {
+                         estimator_.add(sample);
+                         if (recording_ != nullptr) recording_->push_back(sample);
+                         if (view_samples_ != nullptr) view_samples_->push_back(sample);
+                       });
+}
+
+void CycleRecorder::start(const RigWorld& world, const PlateState& plate) {
+  tracker_.add(0.0, plate.x, plate.vx, world.roller_surface_speeds());
+}
+
+void CycleRecorder::record(const StepContext& step) {
+  tracker_.add(step.t, step.plate.x, step.plate.vx, step.surface_speeds);
+}
+
+void TrajectoryRecorder::start(const RigWorld& world, const PlateState& plate) {
+  rows_.push_back({0.0, plate, world.contacts()});
+}
+
+void TrajectoryRecorder::record(const StepContext& step) {
+  rows_.push_back({step.t, step.plate, step.contacts});
+}
+
+void RampSpeedAverage::record(const StepContext& step) {
+  sum_ += std::fabs(step.world.roller_speeds()[0]);
+  ++steps_;
+}
+
+std::optional<double> RampSpeedAverage::mean() const {
+  if (steps_ == 0) return std::nullopt;
+  return sum_ / static_cast<double>(steps_);
+}
+
+RunExtremes::RunExtremes() : min_normal_force(std::numeric_limits<double>::infinity()) {}
+
+void RunExtremes::record(const StepContext& step) {
+  plate_speed_max = std::max(plate_speed_max, std::fabs(step.plate.vx));
+  for (const RollerContact& c : step.contacts) {
+    min_normal_force = std::min(min_normal_force, c.normal_force);
+    max_penetration = std::max(max_penetration, c.penetration);
+  }
+}
+
+DriveStats::DriveStats(const CompiledRig& rig) : radius_(rig.scene.rollers.radius) {
+  if (rig.drive) design_ratio_ = rig.drive->gearbox_ratio;
+}
+
+void DriveStats::record(const StepContext& step) {
+  const std::optional<DriveState> state = step.world.drive();
+  if (!state) return;
+  const DriveState& d = *state;
+  ++n_;
+  motor_speed_ += std::fabs(d.motor_speed);
+  motor_torque_ += d.motor_torque;
+  roller_[0] += d.roller_speeds[0];
+  roller_[1] += d.roller_speeds[1];
+  // A stalled train has no ratio and no senses: only the steps in which all three turn count.
+  if (d.motor_speed != 0.0 && d.roller_speeds[0] != 0.0 && d.roller_speeds[1] != 0.0) {
+    ++turning_;
+    const double ratio = std::fabs(d.roller_speeds[0] / d.motor_speed);
+    ratio_ += ratio;
+    ratio_error_ = std::max(ratio_error_, std::fabs(ratio / design_ratio_ - 1.0));
+    opposite_ = opposite_ && d.roller_speeds[0] * d.roller_speeds[1] < 0.0;
+  }
+  // The plate's friction F_i (on the plate, along x) acts back on roller i's top: torque
+  // -a F_i about y; counted positive when it opposes the roller's turning.
+  for (int i = 0; i < 2; ++i) {
+    const double sense = d.roller_speeds[static_cast<std::size_t>(i)] >= 0.0 ? 1.0 : -1.0;
+    load_ += sense * radius_ * step.contacts[static_cast<std::size_t>(i)].friction_force;
+  }
+}
+
+DriveReport DriveStats::report() const {
+  DriveReport r;
+  const double n = std::max<double>(1.0, static_cast<double>(n_));
+  r.motor_speed = motor_speed_ / n;
+  r.motor_torque = motor_torque_ / n;
+  r.roller_speeds = {roller_[0] / n, roller_[1] / n};
+  r.gearbox_ratio = design_ratio_;
+  r.turning_fraction = static_cast<double>(turning_) / n;
+  if (turning_ > 0) {
+    r.speed_ratio = ratio_ / static_cast<double>(turning_);
+    r.speed_ratio_error = ratio_error_;
+    r.senses_opposite = opposite_;
+  }
+  r.load_torque = load_ / n;
+  return r;
+}
+
+StepObserver::StepObserver(std::function<void(const StepView&)> observer,
+                           const RegimeMonitor* monitor)
+    : observer_(std::move(observer)) {
+  view_.monitor = monitor;
+}
+
+void StepObserver::start(const RigWorld& world, const PlateState& plate) {
+  show(0.0, plate, world.contacts(), world);
+}
+
+void StepObserver::record(const StepContext& step) {
+  show(step.t, step.plate, step.contacts, step.world);
+}
+
+void StepObserver::show(double t, const PlateState& plate,
+                        const std::array<RollerContact, 2>& contacts, const RigWorld& world) {
+  view_.t = t;
+  view_.plate = plate;
+  view_.contacts = contacts;
+  view_.roller_angles = world.roller_angles();
+  view_.roller_speeds = world.roller_speeds();
+  view_.drive = world.drive();
+  view_.shafts = world.shafts();
+  observer_(view_);
+  view_.new_samples.clear();
+}
+
+}  // namespace fl

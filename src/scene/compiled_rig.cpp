@@ -1,8 +1,10 @@
 #include "scene/compiled_rig.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include "core/friction_oscillator.hpp"
 #include "core/integrator_error.hpp"
 #include "core/units.hpp"
 
@@ -53,6 +55,30 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   return out;
 }
 
+// The run's guards from the rig (before it takes the scene).
+CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
+  CompiledRig::RunGuards g;
+  const double plate_mass = rig.plate.mass;
+  g.surface_speed = rig.roller_speed_nominal * scene.rollers.radius;
+  const double v = std::max(g.surface_speed, std::fabs(scene.plate.velocity));
+  g.energy = 10.0 * (0.5 * plate_mass * v * v + plate_mass * scene.world.gravity *
+                                                    (scene.plate.length + scene.rollers.radius));
+  g.penetration = std::min(0.5e-3, 0.1 * scene.rollers.radius);
+  g.speed = 2.0 * v + 0.5;
+  g.turn = rig.roller_speed_nominal > 0.0 ? 2.0 * kPi / rig.roller_speed_nominal : 0.0;
+  if (rig.friction.depends_on_slip() && rig.restoring) {
+    try {
+      g.linearised_growth =
+          linearised_motion(rig.friction, {rig.spacing, rig.plate.h_c, rig.gravity},
+                            g.surface_speed)
+              .gamma;
+    } catch (const DomainError&) {
+      g.linearised_growth.reset();
+    }
+  }
+  return g;
+}
+
 }  // namespace
 
 CompiledRig compile_rig(Scene scene) {
@@ -85,6 +111,8 @@ CompiledRig compile_rig(Scene scene) {
     rig.slip_threshold =
         roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
   }
+  if (h_c > 0.0) rig.mu_k_restoring_limit = l / (2.0 * h_c);
+  rig.guards = run_guards(rig, scene);
   rig.scene = std::move(scene);
   return rig;
 }

@@ -74,6 +74,25 @@ struct CompiledRig {
 
   // The guide towers' friction on the plate (ABS on the slab), apart from mu_k.
   double guide_friction = 0.3;
+
+  // The largest mu_k that leaves this plate a restoring force, l / (2 h_c); none for h_c <= 0
+  // (a compare refit keeps its trials below it).
+  std::optional<double> mu_k_restoring_limit;
+
+  // What a run's guards hold it to (lab/run/regime_monitor.hpp), from the rig alone.
+  struct RunGuards {
+    double surface_speed = 0.0;  // m/s, the rollers' surface at their nominal speed
+    // J: friction cannot drive the plate faster than the rollers' surface, and gravity gives at
+    // most m g times the plate's length; ten times more energy than both is a numerical blow-up.
+    double energy = 0.0;
+    double penetration = 0.0;  // m: a plate deeper into a roller has failed numerically
+    double speed = 0.0;        // m/s: and a plate faster than this
+    double turn = 0.0;         // s, one turn of a roller at its nominal speed (0: still)
+    // 1/s, a slip-dependent law's growth rate linearised about the rollers' speed (with a
+    // restoring force, where it has a meaning).
+    std::optional<double> linearised_growth;
+  };
+  RunGuards guards;
 };
 
 // Compiles a scene that passed check_scene (scene_checks.hpp). Throws std::invalid_argument when

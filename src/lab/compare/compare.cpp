@@ -51,13 +51,13 @@ class RowSimulator {
   std::atomic<int> simulations_{0};
 };
 
-void refit(RowSimulator& simulator, const Scene& row_scene, CompareRow& row,
-           const CompareOptions& options) {
+// `mu_k_limit`: the row's rig's l / (2 h_c), above which it has no restoring force.
+void refit(RowSimulator& simulator, const Scene& row_scene, std::optional<double> mu_k_limit,
+           CompareRow& row, const CompareOptions& options) {
   const double target = row.period_measured.value;
   const double l = row.spacing;
-  const double h_c = row.h_c;
-  // Above l / (2 h_c) there is no restoring force: keep every trial below it.
-  const double mu_ceiling = h_c > 0.0 ? 0.999 * l / (2.0 * h_c) : 1e9;
+  // Keep every trial below the rig's limit.
+  const double mu_ceiling = mu_k_limit ? 0.999 * *mu_k_limit : 1e9;
   const auto run = [&](double mu, std::optional<double> spacing = std::nullopt) {
     CompareRun r;
     r.mu_k = mu;
@@ -121,9 +121,10 @@ void refit(RowSimulator& simulator, const Scene& row_scene, CompareRow& row,
 // amplitude), before any simulation.
 struct RowScene {
   Scene scene;
-  double amplitude = 0.0;  // m
-  double h_c = 0.0;        // m
-  double gravity = 0.0;    // m/s^2
+  double amplitude = 0.0;                           // m
+  double h_c = 0.0;                                 // m
+  double gravity = 0.0;                             // m/s^2
+  std::optional<double> mu_k_limit = std::nullopt;  // l / (2 h_c): no restoring force above it
 };
 
 CompareRow compare_row(RowSimulator& simulator, CompareRow row, const RowScene& row_setup,
@@ -177,7 +178,7 @@ CompareRow compare_row(RowSimulator& simulator, CompareRow row, const RowScene& 
     row.residual_sigma = (*s.period - t_measured) / row.period_measured.uncertainty;
   if (!options.refit) return row;
   try {
-    refit(simulator, row_setup.scene, row, options);
+    refit(simulator, row_setup.scene, row_setup.mu_k_limit, row, options);
   } catch (const std::exception& e) {
     row.mu_k_refit.reset();
     row.mu_k_refit_err_worst.reset();
@@ -197,6 +198,7 @@ RowScene build_row_scene(const RowSimulator& simulator, const MeasuredRow& measu
     out.amplitude = compiled.amplitude_initial;
     out.h_c = compiled.plate.h_c;
     out.gravity = compiled.gravity;
+    out.mu_k_limit = compiled.mu_k_restoring_limit;
     return out;
   } catch (const InputError& e) {
     // An error in one of the row's keys is located at its cell; any other at the row's line.

@@ -42,30 +42,17 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
       h_c_(rig.plate.h_c),
       slip_dependent_(rig.friction.depends_on_slip()),
       law_(rig.friction) {
+  // The guards' bounds and the law's linearised growth are the compiled rig's.
   const Scene& scene = rig.scene;
-  const double plate_mass = mass_;
-  surface_speed_ = rig.roller_speed_nominal * scene.rollers.radius;
-  // Friction cannot drive the plate faster than the rollers' surface, and gravity gives at most
-  // m g times the plate's length: ten times more energy than both is a numerical blow-up.
-  const double v = std::max(surface_speed_, std::fabs(scene.plate.velocity));
-  energy_bound_ =
-      10.0 * (0.5 * plate_mass * v * v +
-              plate_mass * scene.world.gravity * (scene.plate.length + scene.rollers.radius));
-  penetration_bound_ = std::min(0.5e-3, 0.1 * scene.rollers.radius);
-  speed_bound_ = 2.0 * v + 0.5;
+  surface_speed_ = rig.guards.surface_speed;
+  energy_bound_ = rig.guards.energy;
+  penetration_bound_ = rig.guards.penetration;
+  speed_bound_ = rig.guards.speed;
   start_abs_x_ = std::fabs(scene.plate.offset);
-  turn_ = rig.roller_speed_nominal > 0.0 ? 2.0 * kPi / rig.roller_speed_nominal : 0.0;
+  turn_ = rig.guards.turn;
   previous_x_ = scene.plate.offset;
   z0_ = h_c_;
-  // The law's growth rate linearised about the rollers' speed (none where it has no meaning).
-  if (slip_dependent_ && rig.restoring) {
-    try {
-      linearised_growth_ =
-          linearised_motion(rig.friction, {rig.spacing, h_c_, rig.gravity}, surface_speed_).gamma;
-    } catch (const DomainError&) {
-      linearised_growth_.reset();
-    }
-  }
+  linearised_growth_ = rig.guards.linearised_growth;
 }
 
 void RegimeMonitor::start(const PlateState& s) {

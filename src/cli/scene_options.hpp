@@ -25,11 +25,4 @@ void add_scene_options(CLI::App& command, SceneOptions& options);
 // overrides and the duration are the request's own fields.
 SceneSource scene_source_of(const SceneOptions& options, const GlobalOptions& global);
 
-// The paper's table and the LEGO part index under the asset folder (--assets), each read the
-// first time a scene names it.
-SceneInputs scene_sources(const GlobalOptions& global);
-
-// Loads the scene with its overrides; the paper's table is read only if the scene names it.
-Scene load_scene_with_options(const SceneOptions& options, const GlobalOptions& global);
-
 }  // namespace fl::cli

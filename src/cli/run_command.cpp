@@ -69,7 +69,7 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
   const PreparedRun prepared = prepare_run(request_of(o, global));
   for (const std::string& warning : prepared.warnings)
     fmt::print(stderr, "warning: {}\n", spelled(warning));
-  const Scene& scene = *prepared.scene.scene;
+  const double duration = prepared.rig->world.duration;
   if (prepared.chosen_time_step && !o.json)
     fmt::print("--accuracy {}: time step {:.4g} ms (predicted integrator bias {:.2e})\n",
                o.accuracy, *prepared.chosen_time_step * 1e3, prepared.chosen_bias.value_or(0.0));
@@ -87,8 +87,8 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
       if (wall < 3.0 || wall - shown < 0.25) return;
       shown = wall;
-      fmt::print(stderr, "\r\033[Krun: t = {:.1f} of {:.1f} s ({:.0f} %)", t, scene.world.duration,
-                 100.0 * t / scene.world.duration);
+      fmt::print(stderr, "\r\033[Krun: t = {:.1f} of {:.1f} s ({:.0f} %)", t, duration,
+                 100.0 * t / duration);
     };
   RunResult result;
   {

@@ -5,7 +5,7 @@
 namespace fl {
 
 Drivetrain::Drivetrain(const CompiledRig& rig)
-    : drive_(rig.drive.value()), motor_(rig.scene.drive.value().motor) {
+    : drive_(rig.drive.value()), motor_(rig.drive.value().parts.motor) {
   // The train starts at its no-load speed for the duty.
   const double duty = rig.duty_ramp ? rig.duty_ramp->at(0.0) : motor_.duty;
   omega_ = drive_.motor_sense * duty * motor_.no_load_speed;

@@ -31,7 +31,6 @@ class FrictionWorld final : public btDiscreteDynamicsWorld {
 struct RigWorld::Impl {
   std::shared_ptr<const CompiledRig> owned;  // when the world compiled its scene itself
   const CompiledRig& rig;
-  const Scene& scene;
   double dt = 0.0;
   double contact_erp = 0.0;  // Bullet's position correction per step (m_erp2)
   long long steps = 0;
@@ -67,15 +66,15 @@ struct RigWorld::Impl {
   // starts resting on them (its bottom through both tops, moving with them), not dropped onto
   // them.
   void rest_on_off_centre_rollers() {
-    const double l = scene.rollers.spacing;
-    const double e = scene.rollers.runout;
+    const double l = rig.rollers.spacing;
+    const double e = rig.rollers.runout;
     std::array<double, 2> top{}, top_speed{};  // each top's height and vertical speed at t = 0
     for (std::size_t i = 0; i < 2; ++i) {
-      const double angle = scene.rollers.runout_phase[i];
+      const double angle = rig.rollers.runout_phase[i];
       top[i] = -e * std::sin(angle);
       top_speed[i] = -roller_omega[i] * e * std::cos(angle);
     }
-    const double x = scene.plate.offset;
+    const double x = rig.plate_desc.offset;
     const double slope = (top[1] - top[0]) / l;
     const double bottom = 0.5 * (top[0] + top[1]) + slope * x;
     const double pitch = -std::atan(slope);  // the body's x axis is (cos p, 0, -sin p)
@@ -96,14 +95,14 @@ struct RigWorld::Impl {
   // start.
   void place_off_centre(int i) {
     const std::size_t k = static_cast<std::size_t>(i);
-    const double e = scene.rollers.runout;
-    const double angle = scene.rollers.runout_phase[k] + roller_angle[k];
+    const double e = rig.rollers.runout;
+    const double angle = rig.rollers.runout_phase[k] + roller_angle[k];
     // R_y(theta) (e, 0, 0) = (e cos theta, 0, -e sin theta).
     const double ox = e * std::cos(angle);
     const double oz = -e * std::sin(angle);
-    const double shaft_x = (i == 0 ? -0.5 : 0.5) * scene.rollers.spacing;
+    const double shaft_x = (i == 0 ? -0.5 : 0.5) * rig.rollers.spacing;
     btTransform t = rollers[k]->getWorldTransform();
-    t.setOrigin(btVector3(shaft_x + ox, 0, -scene.rollers.radius + oz));
+    t.setOrigin(btVector3(shaft_x + ox, 0, -rig.rollers.radius + oz));
     rollers[k]->setWorldTransform(t);
     const double w = roller_omega[k];
     rollers[k]->setLinearVelocity(btVector3(w * oz, 0, -w * ox));
@@ -118,17 +117,14 @@ struct RigWorld::Impl {
     for (int i = 0; i < 2; ++i) {
       impl->rollers[i]->setAngularVelocity(btVector3(0, impl->roller_omega[i], 0));
       impl->rollers[i]->setLinearVelocity(btVector3(0, 0, 0));
-      if (impl->scene.rollers.runout > 0.0) impl->place_off_centre(i);
+      if (impl->rig.rollers.runout > 0.0) impl->place_off_centre(i);
     }
   }
 };
 
 RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep)
-    : owned(std::move(keep)),
-      rig(compiled),
-      scene(compiled.scene),
-      dt(compiled.scene.world.time_step) {
-  const Scene& s = scene;
+    : owned(std::move(keep)), rig(compiled), dt(compiled.world.time_step) {
+  const CompiledRig& s = rig;
   const PlateMass& mass = rig.plate;
   world.setGravity(btVector3(0, 0, -s.world.gravity));
   btContactSolverInfo& info = world.getSolverInfo();
@@ -194,7 +190,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   // face lies h_c below the centre of mass (the contact line), as long and wide as the plate;
   // only that face and the sides ever touch anything. Mass and pitch inertia come from the
   // parts (slab, payload, magnets), not from the box.
-  const PlateDesc& p = s.plate;
+  const PlateDesc& p = s.plate_desc;
   plate_shape = std::make_unique<btBoxShape>(btVector3(0.5 * p.length, 0.5 * p.width, mass.h_c));
   // Inertia about x and z does not act (the motion is planar) but must be positive.
   const btVector3 inertia(mass.inertia_pitch, mass.inertia_pitch, mass.inertia_pitch);
@@ -289,7 +285,7 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
   const btVector3 bottom = body.getOrigin() - up * rig.plate.h_c;
   for (std::size_t i = 0; i < 2; ++i) {
     const double above = (bottom - rollers[i]->getWorldTransform().getOrigin()).dot(up);
-    out[i].gap = std::max(above - scene.rollers.radius, 0.0);
+    out[i].gap = std::max(above - rig.rollers.radius, 0.0);
   }
   return out;
 }
@@ -309,8 +305,8 @@ void RigWorld::step() {
     // step: -a F_i about y for a friction force F_i (along x) on the plate at roller i's top.
     // The most the plate's static friction holds the rollers with, seen at the motor.
     const std::array<RollerContact, 2>& last = impl_->contacts;
-    const double a = impl_->scene.rollers.radius;
-    const double duty = rig.duty_ramp ? rig.duty_ramp->at(t_next) : impl_->scene.drive->motor.duty;
+    const double a = impl_->rig.rollers.radius;
+    const double duty = rig.duty_ramp ? rig.duty_ramp->at(t_next) : rig.drive->parts.motor.duty;
     const std::vector<double>& u = rig.drive->shaft_ratios;
     const double holding = rig.friction.mu_s * a *
                            (std::fabs(u[0]) * std::max(last[0].normal_force, 0.0) +
@@ -321,7 +317,7 @@ void RigWorld::step() {
   } else if (rig.roller_speed_ramp) {
     // The ideal drive's scheduled speed at the step's end (the speed the solver holds the
     // rollers at over the step; what roller_speeds() reads after it).
-    const double sense = impl_->scene.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
+    const double sense = impl_->rig.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
     const double speed = rig.roller_speed_ramp->at(t_next);
     impl_->roller_omega = {sense * speed, -sense * speed};
   }
@@ -383,7 +379,7 @@ std::array<double, 2> RigWorld::roller_angles() const {
 }
 
 std::array<double, 2> RigWorld::roller_surface_speeds() const {
-  const double a = impl_->scene.rollers.radius;
+  const double a = impl_->rig.rollers.radius;
   const std::array<double, 2> omega = roller_speeds();
   return {omega[0] * a, omega[1] * a};
 }

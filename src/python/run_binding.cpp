@@ -152,7 +152,7 @@ PythonRunResult run(const SceneArgument& scene_to_run, const std::optional<Quant
   result.video = std::move(done.video);
   result.plot_failure = done.plot_failure;
   if (record) {
-    const bool sensor = prepared.scene.scene->sensor.has_value();
+    const bool sensor = prepared.rig->sensor.has_value();
     RunRecording& recording = done.recording;
     result.trajectory = trajectory_array(std::move(recording.trajectory));
     if (sensor) result.hall = hall_array(std::move(recording.hall));

@@ -85,7 +85,7 @@ RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* cata
                          assets::MeshLibrary* meshes, bool cut_away_near_side = false);
 
 // Whether the scene names LEGO parts (a frame, blocks on the plate, a gear train).
-bool scene_uses_parts(const Scene& scene);
+bool rig_uses_parts(const CompiledRig& rig);
 
 // For a camera that does not move (no orbit): leaves out of the static parts drawn without
 // casting shadows (the frame; their shadows come from hidden casters) every triangle that

@@ -57,7 +57,7 @@ class ModelBuilder {
  public:
   ModelBuilder(const CompiledRig& rig, const assets::PartCatalog* catalog,
                assets::MeshLibrary* meshes, bool cut_away)
-      : rig_(rig), scene_(rig.scene), catalog_(catalog), meshes_(meshes), cut_away_(cut_away) {}
+      : rig_(rig), catalog_(catalog), meshes_(meshes), cut_away_(cut_away) {}
 
   RigModel build();
 
@@ -79,7 +79,6 @@ class ModelBuilder {
   void finish_bounds();
 
   const CompiledRig& rig_;
-  const Scene& scene_;
   const assets::PartCatalog* catalog_;
   assets::MeshLibrary* meshes_;
   bool cut_away_ = false;  // leave out the frame's parts on the near side
@@ -89,9 +88,9 @@ class ModelBuilder {
 };
 
 void ModelBuilder::add_shafts() {
-  const double l = scene_.rollers.spacing;
-  const double a = scene_.rollers.radius;
-  if (scene_.drive) {
+  const double l = rig_.rollers.spacing;
+  const double a = rig_.rollers.radius;
+  if (rig_.drive) {
     layout_ = &rig_.drive->layout;
     for (const ShaftPlacement& s : layout_->shafts) model_.shafts.push_back({s.role, s.x, s.z});
   } else {
@@ -103,9 +102,9 @@ void ModelBuilder::add_shafts() {
 void ModelBuilder::add_static() {
   // The frame's LEGO parts, merged into one mesh.
   std::vector<LegoPlacement> parts;
-  const float near_edge = static_cast<float>(-0.5 * scene_.plate.width) + 1e-4f;
-  if (scene_.frame) {
-    for (const FramePart& fp : scene_.frame->parts) {
+  const float near_edge = static_cast<float>(-0.5 * rig_.plate_desc.width) + 1e-4f;
+  if (rig_.frame) {
+    for (const FramePart& fp : rig_.frame->parts) {
       const assets::PartSpec& spec = need_part(catalog_, fp.part);
       LegoPlacement p;
       p.spec = &spec;
@@ -125,7 +124,7 @@ void ModelBuilder::add_static() {
     }
   }
   // The ground: the frame's lowest face (the table it stands on), else below the lowest part.
-  const double a = scene_.rollers.radius;
+  const double a = rig_.rollers.radius;
   float ground = static_cast<float>(-2.0 * a - 0.03);
   if (!parts.empty()) {
     ground = std::numeric_limits<float>::max();
@@ -134,7 +133,7 @@ void ModelBuilder::add_static() {
     }
   } else if (layout_) {
     for (const GearPlacement& g : layout_->gears) {
-      const double r = scene_.drive->gear(g.teeth).pitch_radius + 0.001;
+      const double r = rig_.drive->parts.gear(g.teeth).pitch_radius + 0.001;
       ground = std::min(ground, static_cast<float>(model_.shafts[g.shaft].z - r - 0.01));
     }
   }
@@ -147,24 +146,24 @@ void ModelBuilder::add_static() {
                                               &model_.stats.frame_triangles_drawn);
 
   // Without a frame, the rollers' axles rest on two plain stands each.
-  if (!scene_.frame) {
+  if (!rig_.frame) {
     for (int k = 0; k < 2; ++k) {
       const RigShaft& s = model_.shafts[static_cast<std::size_t>(k)];
-      rig::add_axle_stands(static_extra_, s.x, s.z, scene_.rollers.length, ground);
+      rig::add_axle_stands(static_extra_, s.x, s.z, rig_.rollers.length, ground);
     }
   }
 
   // The Hall sensor: the chip (centred on the sensor's position) under its board, held by an
   // arm from a post beside the plate's path.
-  if (scene_.sensor) {
-    model_.sensor = vec(scene_.sensor->position);
-    rig::add_hall_sensor(static_extra_, model_.sensor, scene_.plate.width, ground);
+  if (rig_.sensor) {
+    model_.sensor = vec(rig_.sensor->position);
+    rig::add_hall_sensor(static_extra_, model_.sensor, rig_.plate_desc.width, ground);
   }
 
   // The motor: a can on its shaft, beyond its gear.
   if (layout_) {
     const RigShaft& m = model_.shafts[static_cast<std::size_t>(layout_->motor)];
-    double gear_y = 0.5 * scene_.rollers.length;
+    double gear_y = 0.5 * rig_.rollers.length;
     for (const GearPlacement& g : layout_->gears)
       if (g.shaft == layout_->motor) gear_y = std::max(gear_y, g.y);
     rig::add_motor(static_extra_, m.x, m.z, gear_y, ground);
@@ -182,7 +181,7 @@ void ModelBuilder::add_static() {
 }
 
 void ModelBuilder::add_plate() {
-  const PlateDesc& p = scene_.plate;
+  const PlateDesc& p = rig_.plate_desc;
   const PlateMass& mass = rig_.plate;
   const float x_c = static_cast<float>(mass.x_c);
   const float bottom = static_cast<float>(-mass.h_c);
@@ -210,7 +209,7 @@ void ModelBuilder::add_plate() {
   rig::MergedParts merged = rig::merge_visible(blocks, &full, &drawn);
   // The magnets: nickel-plated discs, magnetised along z.
   const Color nickel{0.80f, 0.80f, 0.83f, 1.0f};
-  for (const MagnetDesc& m : scene_.magnets) {
+  for (const MagnetDesc& m : rig_.magnets) {
     plate.append(
         rig::make_plain_cylinder(static_cast<float>(m.diameter / 2.0),
                                  static_cast<float>(m.thickness), 24, nickel),
@@ -230,7 +229,7 @@ void ModelBuilder::add_plate() {
   // The magnet nearest the sensor, at rest (the sensor camera looks at it).
   const RigPose rest = rest_pose(rig_);
   double best = std::numeric_limits<double>::infinity();
-  for (const MagnetDesc& m : scene_.magnets) {
+  for (const MagnetDesc& m : rig_.magnets) {
     const Eigen::Vector3f at =
         plate_transform(rest) * Eigen::Vector3f(static_cast<float>(m.x) - x_c, 0.0f,
                                                 top + static_cast<float>(m.height + m.thickness));
@@ -240,12 +239,12 @@ void ModelBuilder::add_plate() {
       model_.magnet = at;
     }
   }
-  if (scene_.magnets.empty()) model_.magnet = model_.sensor;
+  if (rig_.magnets.empty()) model_.magnet = model_.sensor;
 }
 
 void ModelBuilder::add_rollers_and_axles() {
-  const float a = static_cast<float>(scene_.rollers.radius);
-  const float length = static_cast<float>(scene_.rollers.length);
+  const float a = static_cast<float>(rig_.rollers.radius);
+  const float length = static_cast<float>(rig_.rollers.length);
   // The rollers, in every blur level.
   std::vector<std::size_t> variants;
   for (const double sweep : kBlurSweeps)
@@ -259,7 +258,7 @@ void ModelBuilder::add_rollers_and_axles() {
   }
   // An axle through each shaft, across its gears (and the frame, for the rollers).
   const assets::PartSpec* axle =
-      catalog_ != nullptr && scene_uses_parts(scene_) ? catalog_->find("axle-12") : nullptr;
+      catalog_ != nullptr && rig_uses_parts(rig_) ? catalog_->find("axle-12") : nullptr;
   std::size_t axle_mesh = 0;
   float axle_length = 1.0f;
   if (axle != nullptr && axle->axle) {
@@ -336,7 +335,7 @@ void ModelBuilder::add_gears() {
 void ModelBuilder::finish_bounds() {
   RigPose pose = rest_pose(rig_);
   // The harmonic amplitude (the offset when there is no harmonic motion).
-  const double amplitude = std::max(std::fabs(scene_.plate.offset), rig_.amplitude_initial);
+  const double amplitude = std::max(std::fabs(rig_.plate_desc.offset), rig_.amplitude_initial);
   Eigen::AlignedBox3f box;
   for (const double x : {-amplitude, amplitude}) {
     pose.plate_x = x;
@@ -379,8 +378,8 @@ RigModel ModelBuilder::build() {
 
 }  // namespace
 
-bool scene_uses_parts(const Scene& scene) {
-  return scene.frame.has_value() || scene.drive.has_value() || !scene.plate.blocks.empty();
+bool rig_uses_parts(const CompiledRig& rig) {
+  return rig.frame.has_value() || rig.drive.has_value() || !rig.plate_desc.blocks.empty();
 }
 
 RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,

@@ -191,14 +191,14 @@ float overlay_scale(int width, int height) {
   return std::min(static_cast<float>(width) / 640.0f, static_cast<float>(height) / 360.0f);
 }
 
-std::string rig_heading(const Scene& scene, const std::string& material) {
+std::string rig_heading(const CompiledRig& rig, const std::string& material) {
   std::string heading =
       material + " on " +
-      (scene.rollers.material == "pvc" ? std::string("PVC") : scene.rollers.material) + " rollers";
-  if (scene.friction.temperature_set)
-    heading += fmt::format("  \xc2\xb7  {}{:.0f} K", scene.friction.warming ? "from " : "",
-                           scene.friction.temperature);
-  heading += fmt::format("  \xc2\xb7  l = {:.0f} mm", scene.rollers.spacing * 1e3);
+      (rig.rollers.material == "pvc" ? std::string("PVC") : rig.rollers.material) + " rollers";
+  if (rig.friction_source.temperature_set)
+    heading += fmt::format("  \xc2\xb7  {}{:.0f} K", rig.warming ? "from " : "",
+                           rig.friction_source.temperature);
+  heading += fmt::format("  \xc2\xb7  l = {:.0f} mm", rig.rollers.spacing * 1e3);
   return heading;
 }
 
@@ -306,43 +306,42 @@ std::string format_plus_minus(double value, double uncertainty) {
 
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,
                           int fps, const std::string& title) {
-  const Scene& scene = rig.scene;
   TitleCard card;
   card.title = title.empty() ? "The friction (Timoshenko) oscillator" : title;
   card.subtitle = fmt::format("{} on {} rollers, {:.0f} K", material,
-                              scene.rollers.material == "pvc" ? "PVC" : scene.rollers.material,
-                              scene.friction.temperature);
+                              rig.rollers.material == "pvc" ? "PVC" : rig.rollers.material,
+                              rig.friction_source.temperature);
   const double rpm = rig.roller_speed_nominal * kRpm;
   card.lines.push_back(fmt::format(
       "roller spacing l = {:.0f} mm, rollers {:.0f} mm across, {} at {:.0f} rpm",
-      scene.rollers.spacing * 1e3, scene.rollers.radius * 2e3,
-      scene.rollers.sense == RollerSense::kInward ? "tops turning inward" : "tops turning outward",
+      rig.rollers.spacing * 1e3, rig.rollers.radius * 2e3,
+      rig.rollers.sense == RollerSense::kInward ? "tops turning inward" : "tops turning outward",
       rpm));
-  if (scene.drive) {
-    const DriveDesc& d = *scene.drive;
+  if (rig.drive) {
+    const DriveDesc& d = rig.drive->parts;
     card.lines.push_back(fmt::format(
         "{:.0f} V motor at {:.0f} % duty ({:.0f} rpm), {:g}:1 gearbox, idlers couple the rollers",
         d.motor.rated_voltage, d.motor.duty * 100.0, d.motor.duty * d.motor.no_load_speed * kRpm,
         rig.drive->gearbox_ratio));
   }
   std::string payload =
-      fmt::format("plate {:.0f} \xc3\x97 {:.0f} \xc3\x97 {:g} mm", scene.plate.length * 1e3,
-                  scene.plate.width * 1e3, scene.plate.thickness * 1e3);
-  if (!scene.plate.blocks.empty())
-    payload += fmt::format(", {} LEGO brick{}", scene.plate.blocks.size(),
-                           scene.plate.blocks.size() == 1 ? "" : "s");
-  if (!scene.magnets.empty())
-    payload +=
-        fmt::format(", {} magnet{}", scene.magnets.size(), scene.magnets.size() == 1 ? "" : "s");
-  if (scene.sensor)
-    payload += fmt::format("; Hall sensor at x = {:.0f} mm", scene.sensor->position[0] * 1e3);
+      fmt::format("plate {:.0f} \xc3\x97 {:.0f} \xc3\x97 {:g} mm", rig.plate_desc.length * 1e3,
+                  rig.plate_desc.width * 1e3, rig.plate_desc.thickness * 1e3);
+  if (!rig.plate_desc.blocks.empty())
+    payload += fmt::format(", {} LEGO brick{}", rig.plate_desc.blocks.size(),
+                           rig.plate_desc.blocks.size() == 1 ? "" : "s");
+  if (!rig.magnets.empty())
+    payload += fmt::format(", {} magnet{}", rig.magnets.size(), rig.magnets.size() == 1 ? "" : "s");
+  if (rig.sensor)
+    payload += fmt::format("; Hall sensor at x = {:.0f} mm", rig.sensor->position[0] * 1e3);
   card.lines.push_back(payload);
-  card.lines.push_back(fmt::format("released {:.0f} mm off centre; \xce\xbc\xe2\x82\x96 = {:.3g}{}",
-                                   scene.plate.offset * 1e3, rig.mu_k,
-                                   scene.friction.from_paper ? " (the paper's value)" : ""));
-  if (scene.friction.paper_period && scene.friction.paper_mu_k)
-    card.lines.push_back("the paper measured T = " + measured_text(*scene.friction.paper_period) +
-                         " s, \xce\xbc\xe2\x82\x96 = " + measured_text(*scene.friction.paper_mu_k));
+  card.lines.push_back(fmt::format(
+      "released {:.0f} mm off centre; \xce\xbc\xe2\x82\x96 = {:.3g}{}", rig.plate_desc.offset * 1e3,
+      rig.friction.mu_k, rig.friction_source.paper_material ? " (the paper's value)" : ""));
+  if (rig.friction_source.paper_period && rig.friction_source.paper_mu_k)
+    card.lines.push_back(
+        "the paper measured T = " + measured_text(*rig.friction_source.paper_period) +
+        " s, \xce\xbc\xe2\x82\x96 = " + measured_text(*rig.friction_source.paper_mu_k));
   card.footer = fmt::format("simulated by frictionlab  \xc2\xb7  {}  \xc2\xb7  {} fps",
                             slow_motion_text(slow_motion), fps);
   return card;

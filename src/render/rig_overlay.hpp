@@ -105,7 +105,7 @@ void draw_guard_banner(Overlay& overlay, int width, int height, const std::strin
 
 // The top bar's heading: "LEGO blocks on PVC rollers · 77 K · l = 89 mm" (the temperature when
 // the scene names one; "from 77 K" when the rollers warm).
-std::string rig_heading(const Scene& scene, const std::string& material);
+std::string rig_heading(const CompiledRig& rig, const std::string& material);
 
 // The results panel's text: T (or what the estimator is waiting for), mu_k, the paper's values.
 struct ResultsText {

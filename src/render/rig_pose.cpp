@@ -8,7 +8,7 @@ namespace fl::render {
 
 RigPose rest_pose(const CompiledRig& rig) {
   RigPose pose;
-  pose.plate_x = rig.scene.plate.offset;
+  pose.plate_x = rig.plate_desc.offset;
   pose.plate_z = rig.plate.h_c;
   const std::size_t shafts = rig.drive ? rig.drive->layout.shafts.size() : 2;
   pose.shaft_angles.assign(shafts, 0.0);

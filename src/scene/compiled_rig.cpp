@@ -14,6 +14,7 @@ namespace {
 CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double mu_k) {
   const DriveDesc& drive = scene.drive.value();
   CompiledDrive out;
+  out.parts = drive;
   out.layout = drive_layout(scene);
   const DriveLayout& layout = out.layout;
   const std::size_t n = layout.shafts.size();
@@ -69,7 +70,8 @@ CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
   if (rig.friction.depends_on_slip() && rig.restoring) {
     try {
       g.linearised_growth =
-          linearised_motion(rig.friction, {rig.spacing, rig.plate.h_c, rig.gravity},
+          linearised_motion(rig.friction,
+                            {scene.rollers.spacing, rig.plate.h_c, scene.world.gravity},
                             g.surface_speed)
               .gamma;
     } catch (const DomainError&) {
@@ -79,24 +81,34 @@ CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
   return g;
 }
 
+FrictionSource friction_source(const FrictionDesc& f) {
+  FrictionSource out;
+  if (f.from_paper) {
+    out.paper_material = f.paper_material;
+    out.paper_period = f.paper_period;
+    out.paper_mu_k = f.paper_mu_k;
+  }
+  out.temperature = f.temperature;
+  out.temperature_set = f.temperature_set;
+  return out;
+}
+
 }  // namespace
 
 CompiledRig compile_rig(Scene scene) {
   CompiledRig rig;
   rig.plate = plate_mass(scene);
   rig.friction = friction_law(scene.friction);
-  rig.mu_k = rig.friction.mu_k;
   if (const std::optional<WarmingDesc>& w = scene.friction.warming)
     rig.warming.emplace(scene.friction.temperature, w->room_temperature, w->time_constant, w->hold,
                         rig.friction.mu_k, w->mu_k_room.value_or(rig.friction.mu_k));
-  rig.spacing = scene.rollers.spacing;
-  rig.gravity = scene.world.gravity;
   rig.roller_speed_nominal = nominal_roller_speed(scene);
   rig.roller_speed_ramp = roller_speed_ramp(scene);
   rig.duty_ramp = duty_ramp(scene);
-  if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.mu_k);
+  if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
-  const double l = rig.spacing, mu = rig.mu_k, h_c = rig.plate.h_c, g = rig.gravity;
+  const double l = scene.rollers.spacing, mu = rig.friction.mu_k, h_c = rig.plate.h_c,
+               g = scene.world.gravity;
   rig.period_thin = period_thin(l, mu, g);
   rig.restoring = has_restoring_force(l, mu, h_c);
   rig.amplitude_initial = std::fabs(scene.plate.offset);
@@ -113,13 +125,25 @@ CompiledRig compile_rig(Scene scene) {
   }
   if (h_c > 0.0) rig.mu_k_restoring_limit = l / (2.0 * h_c);
   rig.guards = run_guards(rig, scene);
-  rig.scene = std::move(scene);
+  rig.name = std::move(scene.name);
+  rig.world = scene.world;
+  rig.rollers = std::move(scene.rollers);
+  rig.plate_desc = std::move(scene.plate);
+  rig.magnets = std::move(scene.magnets);
+  rig.sensor = std::move(scene.sensor);
+  rig.frame = std::move(scene.frame);
+  rig.friction_source = friction_source(scene.friction);
   return rig;
 }
 
 CompiledRig with_time_step(CompiledRig rig, double time_step) {
-  rig.scene.world.time_step = time_step;
+  rig.world.time_step = time_step;
   if (rig.omega) rig.integrator_bias = integrator_period_bias(*rig.omega, time_step);
+  return rig;
+}
+
+CompiledRig with_solver_iterations(CompiledRig rig, int iterations) {
+  rig.world.solver_iterations = iterations;
   return rig;
 }
 

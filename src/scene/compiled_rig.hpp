@@ -20,6 +20,7 @@ namespace fl {
 
 // The drive's gear train as built (scenes with a `drive`).
 struct CompiledDrive {
+  DriveDesc parts;  // the motor, the stages and the gears, as the scene gives them
   DriveLayout layout;
   std::vector<double> shaft_ratios;  // each shaft's speed over the motor's, signed, from the teeth
   double gearbox_ratio = 1.0;        // the gearbox's speed-up, motor to roller 0 (|ratio|)
@@ -33,15 +34,32 @@ struct CompiledDrive {
   double stall_load_torque = 0.0;  // N m at the motor, of that load
 };
 
+// Where the plate's friction comes from: what a run reports and a video tells beside the law.
+struct FrictionSource {
+  std::optional<std::string> paper_material;  // the paper's Table I key, when the law is its row
+  std::optional<Measured> paper_period;       // T +- dT [s], the paper's for that material
+  std::optional<Measured> paper_mu_k;
+  double temperature = 300.0;    // K, of the rollers at the start
+  bool temperature_set = false;  // the scene named it (videos show it then)
+};
+
 struct CompiledRig {
-  Scene scene;
+  // What the rig is built of, as its scene describes it; the scene's outputs, video settings and
+  // expected regime are not the rig's and stay with the scene. Each value is read from one place:
+  // l is rollers.spacing, g world.gravity, the step world.time_step, the friction `friction`.
+  std::string name;  // the scene's: a file stem or "inline"
+  WorldDesc world;
+  RollersDesc rollers;
+  PlateDesc plate_desc;  // the plate's size, material, payload, blocks and start
+  std::vector<MagnetDesc> magnets;
+  std::optional<SensorDesc> sensor;
+  std::optional<FrameDesc> frame;  // absent: no frame, no guides, no mesh
+  FrictionSource friction_source;
 
   // The plate as built (slab, payload, blocks, magnets).
   PlateMass plate;
-  FrictionLaw friction;  // plate on the rollers (scene.friction as one value)
-  double mu_k = 0.0;     // the law's kinetic coefficient at large slip (Coulomb's mu_k)
-  double spacing = 0.0;  // l, m
-  double gravity = 0.0;  // m/s^2
+  FrictionLaw friction;  // plate on the rollers (the scene's friction as one law; its mu_k is
+                         // the kinetic coefficient at large slip, Coulomb's mu_k)
 
   // The rollers' speed without load [rad/s]: rollers.speed for the ideal drive, the duty's
   // share of the motor's no-load speed times the gearbox's speed-up for the motor drive; for a
@@ -102,6 +120,9 @@ CompiledRig compile_rig(Scene scene);
 // The same rig stepped at another time step: the step and what follows from it (the integrator's
 // predicted bias) changed, nothing compiled again.
 CompiledRig with_time_step(CompiledRig rig, double time_step);
+
+// The same rig solved with another number of contact-solver iterations (nothing follows from it).
+CompiledRig with_solver_iterations(CompiledRig rig, int iterations);
 
 // The same, shared: what many readers hold (a sweep point, a run and its video).
 std::shared_ptr<const CompiledRig> compile_rig_shared(Scene scene);

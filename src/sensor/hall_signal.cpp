@@ -17,13 +17,11 @@ double hermite(double s, double h, double p0, double p1, double v0, double v1) {
 
 }  // namespace
 
-HallSignal::HallSignal(const CompiledRig& rig)
-    : sensor_(rig.scene.sensor.value()), rng_(rig.scene.world.seed) {
-  const Scene& scene = rig.scene;
+HallSignal::HallSignal(const CompiledRig& rig) : sensor_(rig.sensor.value()), rng_(rig.world.seed) {
   const PlateMass& pm = rig.plate;
-  for (const MagnetDesc& m : scene.magnets) {
+  for (const MagnetDesc& m : rig.magnets) {
     magnets_.push_back(
-        {{m.x - pm.x_c, 0.0, scene.plate.thickness + m.height + 0.5 * m.thickness - pm.h_c},
+        {{m.x - pm.x_c, 0.0, rig.plate_desc.thickness + m.height + 0.5 * m.thickness - pm.h_c},
          magnet_moment(m)});
   }
   const double norm = std::hypot(sensor_.axis[0], sensor_.axis[1], sensor_.axis[2]);

@@ -23,7 +23,7 @@ Scene minimal(std::vector<SceneOverride> overrides) {
 }
 
 PlateOnRollers plate_of(const CompiledRig& rig) {
-  return {rig.spacing, rig.plate.h_c, rig.gravity};
+  return {rig.rollers.spacing, rig.plate.h_c, rig.world.gravity};
 }
 
 double surface_speed(const Scene& s) {
@@ -90,7 +90,8 @@ TEST(FrictionLawAccuracy, ClippedAmplitudeLagsByHalfAStepsKineticSpeedChange) {
     const RunSummary r = run_experiment(rig, options, &recording);
     ASSERT_EQ(r.regime, Regime::kClipped) << step << ": " << r.regime_evidence;
     ASSERT_TRUE(r.amplitude_clipped.has_value());
-    const double predicted = rig.mu_k * rig.gravity * s.world.time_step / (2.0 * omega);
+    const double predicted =
+        rig.friction.mu_k * rig.world.gravity * s.world.time_step / (2.0 * omega);
     const double deficit = surface_speed(s) / omega - *r.amplitude_clipped;
     EXPECT_NEAR(deficit / predicted, 1.0, 0.1) << step;
     deficits.push_back(deficit);

@@ -61,7 +61,8 @@ TEST(ImperfectScenes, WarmingRollersShortenThePeriodAsTheirMuKRises) {
   ASSERT_TRUE(rig.warming && r.summary.warming);
   for (const EstimatedPeriod& p : r.recording.periods) {
     const double mu = rig.warming->mu_k(0.5 * (p.start + p.end));
-    EXPECT_NEAR(p.period / period_thick(rig.spacing, mu, rig.plate.h_c, rig.gravity), 1.0, 2e-3)
+    EXPECT_NEAR(p.period / period_thick(rig.rollers.spacing, mu, rig.plate.h_c, rig.world.gravity),
+                1.0, 2e-3)
         << p.start;
   }
   const WarmingReport& w = *r.summary.warming;

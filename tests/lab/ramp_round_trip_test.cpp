@@ -86,7 +86,7 @@ TEST(RampRoundTrip, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipFo
   // top speed comes within mu_k g dt / 2 of v_r (docs/physics.md), which raises the threshold by
   // that (0.9 % at 1 ms).
   ASSERT_NE(first_stuck, nullptr);
-  const double lag = r.rig.friction.mu_k * r.rig.gravity * r.scene.world.time_step / 2;
+  const double lag = r.rig.friction.mu_k * r.rig.world.gravity * r.scene.world.time_step / 2;
   EXPECT_GE(ramp.at(first_stuck->start), threshold);
   EXPECT_LE(ramp.at(first_stuck->start + first_stuck->period), threshold + lag / a);
 
@@ -111,8 +111,8 @@ TEST(RampRoundTrip, WithStaticFrictionTheStickSlipCycleFollowsTheSpeedUpToTippin
   ASSERT_FALSE(r.summary.failure) << *r.summary.failure;
   const Ramp ramp(r.scene.rollers.speed_ramp);
   const double a = r.scene.rollers.radius;
-  const PlateOnRollers plate{r.rig.spacing, r.rig.plate.h_c, r.rig.gravity};
-  const double tipping_offset = r.rig.spacing / 2 - r.rig.friction.mu_k * r.rig.plate.h_c;
+  const PlateOnRollers plate{r.rig.rollers.spacing, r.rig.plate.h_c, r.rig.world.gravity};
+  const double tipping_offset = r.rig.rollers.spacing / 2 - r.rig.friction.mu_k * r.rig.plate.h_c;
   // The speed whose stick-slip amplitude is the tipping offset, by bisection (the closed form
   // refuses the offset itself).
   double low = 100 * kRpm, high = 1000 * kRpm;

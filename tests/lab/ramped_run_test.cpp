@@ -39,7 +39,7 @@ TEST(RampedRun, IdealCoulombPeriodStaysThickAndAmplitudeIsClippedBelowTheThresho
   ASSERT_NEAR(a0, 0.020, 1e-12);
   // The clipped cycle of core/stick_slip_cycle.hpp at mu_s = mu_k: amplitude v_r / Omega, the
   // period unchanged.
-  const PlateOnRollers plate{rig.spacing, rig.plate.h_c, rig.gravity};
+  const PlateOnRollers plate{rig.rollers.spacing, rig.plate.h_c, rig.world.gravity};
   const StickSlipCycle clipped = stick_slip_cycle(rig.friction, plate, 0.1);
   ASSERT_TRUE(clipped.clipped);
   ASSERT_NEAR(clipped.period, period, 1e-12 * period);

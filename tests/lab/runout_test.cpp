@@ -33,7 +33,7 @@ double least_support(const Scene& s) {
     if (i < 3) continue;  // the resting contact settles (as the regime monitor's first steps)
     for (const RollerContact& c : world.contacts()) least = std::min(least, c.normal_force);
   }
-  return least / (rig.plate.mass * rig.gravity);
+  return least / (rig.plate.mass * rig.world.gravity);
 }
 
 // The run-out at which the plate first hops: at the middle (amplitude 0), or at the turning
@@ -41,7 +41,7 @@ double least_support(const Scene& s) {
 double threshold(const Scene& s, double amplitude) {
   const CompiledRig rig = compile_rig(s);
   const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
-  return runout_hop_threshold(rig.spacing, k, rig.gravity, s.rollers.speed,
+  return runout_hop_threshold(rig.rollers.spacing, k, rig.world.gravity, s.rollers.speed,
                               s.rollers.runout_phase[0] + s.rollers.runout_phase[1], amplitude,
                               rig.friction.mu_k * rig.plate.h_c);
 }
@@ -71,7 +71,7 @@ TEST(Runout, TheLightestLoadFollowsTheClosedFormForAnyPhases) {
     const CompiledRig rig = compile_rig(base);
     const double lever = rig.friction.mu_k * rig.plate.h_c;
     const double static_share =
-        (0.5 * rig.spacing - amplitude - lever) / (rig.spacing - 2.0 * lever);
+        (0.5 * rig.rollers.spacing - amplitude - lever) / (rig.rollers.spacing - 2.0 * lever);
     for (const double fraction : {0.5, 0.9}) {
       Scene below = base;
       below.rollers.runout = fraction * e_star;

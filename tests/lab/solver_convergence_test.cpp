@@ -51,8 +51,8 @@ Scene close_rollers() {
 // off by exactly d; the even split is not off at all.
 TEST(SolverConvergence, FindsTheSplitTheBalanceNeeds) {
   const CompiledRig rig = compile_rig(close_rollers());
-  const double m = rig.plate.mass, I = rig.plate.inertia_pitch, g = rig.gravity;
-  const double dt = rig.scene.world.time_step, l = rig.spacing, h = rig.plate.h_c;
+  const double m = rig.plate.mass, I = rig.plate.inertia_pitch, g = rig.world.gravity;
+  const double dt = rig.world.time_step, l = rig.rollers.spacing, h = rig.plate.h_c;
   PlateState rest;
   rest.z = h;
   std::array<RollerContact, 2> contacts{};
@@ -241,7 +241,8 @@ FixedIterations step_at(int iterations) {
   std::sort(errors.begin(), errors.end());
   out.typical = errors[errors.size() / 2];
   out.worst = errors.back();
-  const double thick = period_thick(rig.spacing, rig.mu_k, rig.plate.h_c, rig.gravity);
+  const double thick =
+      period_thick(rig.rollers.spacing, rig.friction.mu_k, rig.plate.h_c, rig.world.gravity);
   if (const auto p = tracker.period()) out.period_error = p->slope / thick - 1.0;
   out.bias = integrator_period_bias(2.0 * std::numbers::pi / thick, scene.world.time_step);
   return out;

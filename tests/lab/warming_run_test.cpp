@@ -36,7 +36,7 @@ TEST(WarmingRun, EachPeriodIsTheThickPlatesAtTheRollersMuKThen) {
     // mu_k at the period's middle: over one period it moves by at most 4 % (the steepest, just
     // after the hold), and a linear change averages to its middle value.
     const double mu = rig.warming->mu_k(0.5 * (p.start + p.end));
-    const double expected = period_thick(rig.spacing, mu, rig.plate.h_c, rig.gravity);
+    const double expected = period_thick(rig.rollers.spacing, mu, rig.plate.h_c, rig.world.gravity);
     worst = std::max(worst, std::fabs(p.period / expected - 1.0));
   }
   // Measured: 1.1e-3 at worst, where mu_k changes fastest (the estimator times a turning point by

@@ -99,9 +99,9 @@ TEST(RigModel, TheFrameLeavesOutOnlyWhatNoCameraSees) {
   EXPECT_EQ(meshes.files_read(), 2u);
 }
 
-TEST(RigModel, ASceneWithoutLegoPartsNeedsNoIndexAndNoMesh) {
+TEST(RigModel, ARigWithoutLegoPartsNeedsNoIndexAndNoMesh) {
   const Scene scene = test::scene_file("minimal.yaml");
-  ASSERT_FALSE(scene_uses_parts(scene));
+  ASSERT_FALSE(rig_uses_parts(compile_rig(scene)));
   // No catalogue, no mesh library: built from boxes and cylinders alone.
   const RigModel rig = build_rig_model(compile_rig(scene), nullptr, nullptr);
   EXPECT_EQ(rig.stats.meshes_read, 0u);
@@ -109,7 +109,7 @@ TEST(RigModel, ASceneWithoutLegoPartsNeedsNoIndexAndNoMesh) {
   EXPECT_EQ(rig.shafts.size(), 2u);
   EXPECT_GT(rig.triangles(rest_pose(compile_rig(scene)), 0.0), 500u);
   // The paper's rig does need them.
-  EXPECT_TRUE(scene_uses_parts(test::paper_rig()));
+  EXPECT_TRUE(rig_uses_parts(compile_rig(test::paper_rig())));
   EXPECT_THROW(build_rig_model(compile_rig(test::paper_rig()), nullptr, nullptr),
                std::invalid_argument);
 }
@@ -538,16 +538,17 @@ TEST(RigOverlay, TheHallPlotsAxesCarryValues) {
 
 TEST(RigOverlay, TheTopBarNamesTheTemperatureTheSceneSets) {
   Scene scene = test::paper_rig();
-  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+  EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
             "LEGO blocks on PVC rollers  \xc2\xb7  300 K  \xc2\xb7  l = 89 mm");
   scene.friction.temperature = 77.0;
-  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+  EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
             "LEGO blocks on PVC rollers  \xc2\xb7  77 K  \xc2\xb7  l = 89 mm");
   scene.friction.warming = WarmingDesc{};
-  EXPECT_EQ(rig_heading(scene, "LEGO blocks"),
+  EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
             "LEGO blocks on PVC rollers  \xc2\xb7  from 77 K  \xc2\xb7  l = 89 mm");
   scene.friction.temperature_set = false;  // a scene that names none
-  EXPECT_EQ(rig_heading(scene, "LEGO blocks"), "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm");
+  EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
+            "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm");
 }
 
 // The file's extension picks the format; a GIF is drawn small unless asked otherwise.

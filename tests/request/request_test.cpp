@@ -111,12 +111,12 @@ TEST(RunRequest, TheAccuracyPicksAStepOfTheFormOneOverN) {
   r.duration = QuantityInput{"1 s"};
   const PreparedRun prepared = prepare_run(r);
   ASSERT_TRUE(prepared.chosen_time_step.has_value());
-  EXPECT_DOUBLE_EQ(prepared.scene.scene->world.time_step, *prepared.chosen_time_step);
+  EXPECT_DOUBLE_EQ(prepared.rig->world.time_step, *prepared.chosen_time_step);
   const double n = 1.0 / *prepared.chosen_time_step;
   EXPECT_NEAR(n, std::round(n), 1e-9);
   ASSERT_TRUE(prepared.chosen_bias.has_value());
   EXPECT_LE(std::fabs(*prepared.chosen_bias), 1e-4);
-  EXPECT_DOUBLE_EQ(prepared.scene.scene->world.duration, 1.0);
+  EXPECT_DOUBLE_EQ(prepared.rig->world.duration, 1.0);
 }
 
 TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {

@@ -31,7 +31,7 @@ TEST(CompareMeasured, RowsAtTheirOwnSpacingsRefitTheClosedFormsMuK) {
   // The minimal rig's h_c (its plate does not change with the spacing).
   const Scene scene = load_scene_file(kMinimal, {}, kPaper, {});
   const double h_c = compile_rig(scene).plate.h_c;
-  const double g = compile_rig(scene).gravity;
+  const double g = compile_rig(scene).world.gravity;
   const double mu = 0.33;
   std::string csv = "label,rollers.spacing,period,period_err,spacing_err\n";
   const double spacings[] = {0.070, 0.089, 0.110};

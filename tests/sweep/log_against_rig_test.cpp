@@ -83,10 +83,10 @@ double predicted_drift(const CompiledRig& rig, double end, int count) {
   std::vector<double> middles, periods;
   double t = end;
   for (int i = 0; i < count; ++i) {
-    double period =
-        period_thick(rig.spacing, rig.warming->mu_k(t - 0.4), rig.plate.h_c, rig.gravity);
-    period =
-        period_thick(rig.spacing, rig.warming->mu_k(t - 0.5 * period), rig.plate.h_c, rig.gravity);
+    double period = period_thick(rig.rollers.spacing, rig.warming->mu_k(t - 0.4), rig.plate.h_c,
+                                 rig.world.gravity);
+    period = period_thick(rig.rollers.spacing, rig.warming->mu_k(t - 0.5 * period), rig.plate.h_c,
+                          rig.world.gravity);
     middles.push_back(t - 0.5 * period);
     periods.push_back(period);
     t -= period;

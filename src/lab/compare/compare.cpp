@@ -197,7 +197,7 @@ RowScene build_row_scene(const RowSimulator& simulator, const MeasuredRow& measu
     const CompiledRig compiled = compile_rig(out.scene);
     out.amplitude = compiled.amplitude_initial;
     out.h_c = compiled.plate.h_c;
-    out.gravity = compiled.gravity;
+    out.gravity = compiled.world.gravity;
     out.mu_k_limit = compiled.mu_k_restoring_limit;
     return out;
   } catch (const InputError& e) {
@@ -235,7 +235,7 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     result.spacing = base.rollers.spacing;
     const CompiledRig compiled = compile_rig(base);
     result.h_c = compiled.plate.h_c;
-    result.gravity = compiled.gravity;
+    result.gravity = compiled.world.gravity;
     result.amplitude = compiled.amplitude_initial;
     result.duration = base.world.duration;
   }

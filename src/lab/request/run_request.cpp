@@ -106,10 +106,12 @@ PreparedRun prepare_run(const RunRequest& r) {
   PreparedRun out;
   SceneSource source = r.scene;
   source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
-  out.scene = load_scene_source(std::move(source));
+  const LoadedScene loaded = load_scene_source(std::move(source));
+  const Scene& scene = *loaded.scene;
+  out.output = scene.output;
   // The rig, compiled once for the whole run: the step the accuracy picks changes only the step
   // and the bias that follows from it.
-  CompiledRig rig = compile_rig(*out.scene.scene);
+  CompiledRig rig = compile_rig(scene);
   if (target) {
     try {
       rig = with_time_step(std::move(rig), step_for_accuracy(rig, *target));
@@ -117,25 +119,22 @@ PreparedRun prepare_run(const RunRequest& r) {
       checks.problem("accuracy", quantity_input_text(*r.accuracy), e.what());
       checks.throw_if_any();
     }
-    out.chosen_time_step = rig.scene.world.time_step;
+    out.chosen_time_step = rig.world.time_step;
     out.chosen_bias = rig.integrator_bias;
-    out.scene.scene = std::make_shared<const Scene>(rig.scene);
   }
-  out.rig = std::make_shared<const CompiledRig>(std::move(rig));
-  const Scene& scene = *out.scene.scene;
   // A step the run can take, places to write, and a plot's needs, before the run.
-  if (scene.world.duration / scene.world.time_step > kMostSteps)
-    checks.problem(
-        "accuracy", r.accuracy ? quantity_input_text(*r.accuracy) : std::string(),
-        fmt::format("expected a time step the run can take, found {:.3g} s: {:.3g} s "
-                    "of simulated time would take {:.3g} steps, more than 1e9; ask "
-                    "for a looser accuracy or a shorter {}",
-                    scene.world.time_step, scene.world.duration,
-                    scene.world.duration / scene.world.time_step, field_ref("duration")));
+  const WorldDesc& world = rig.world;
+  if (world.duration / world.time_step > kMostSteps)
+    checks.problem("accuracy", r.accuracy ? quantity_input_text(*r.accuracy) : std::string(),
+                   fmt::format("expected a time step the run can take, found {:.3g} s: {:.3g} s "
+                               "of simulated time would take {:.3g} steps, more than 1e9; ask "
+                               "for a looser accuracy or a shorter {}",
+                               world.time_step, world.duration, world.duration / world.time_step,
+                               field_ref("duration")));
   if (r.plot && r.out.empty())
     checks.problem("plot", "expected " + field_ref("out") +
                                " as well: the plot is drawn from its periods.csv; add it");
-  if (r.plot && (!scene.sensor || scene.magnets.empty() || !scene.output.hall ||
+  if (r.plot && (!rig.sensor || rig.magnets.empty() || !scene.output.hall ||
                  !scene.output.periods || !scene.output.summary))
     checks.problem("plot",
                    "expected a scene with a Hall sensor, magnets and output.hall, "
@@ -148,10 +147,11 @@ PreparedRun prepare_run(const RunRequest& r) {
   if (!r.still.empty()) prepare_output_file(r.still, "still");
   if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
   if (r.draws_frames()) {
-    effective_video(scene, frames);  // the settings against the scene's, by field
-    frames.asset_dir = asset_dir(out.scene.source.asset_dir);
+    out.video = effective_video(scene, frames);  // the settings against the scene's, by field
+    frames.asset_dir = asset_dir(loaded.source.asset_dir);
     out.frames = std::move(frames);
   }
+  out.rig = std::make_shared<const CompiledRig>(std::move(rig));
   out.out = r.out;
   out.plot = r.plot;
   out.record = r.record;
@@ -167,15 +167,14 @@ Outcome RunResult::outcome() const {
 }
 
 RunResult execute_run(const PreparedRun& run, const RunControl& control) {
-  const Scene& scene = *run.scene.scene;
   RunOptions options;
-  options.record_trajectory = run.record || (!run.out.empty() && scene.output.trajectory);
-  options.record_hall = run.record || (!run.out.empty() && scene.output.hall);
-  options.record_cycles = run.record || (!run.out.empty() && scene.output.cycles);
+  options.record_trajectory = run.record || (!run.out.empty() && run.output.trajectory);
+  options.record_hall = run.record || (!run.out.empty() && run.output.hall);
+  options.record_cycles = run.record || (!run.out.empty() && run.output.cycles);
   // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.
   std::unique_ptr<VideoRecorder> recorder;
   if (run.frames) {
-    recorder = std::make_unique<VideoRecorder>(scene, *run.frames);
+    recorder = std::make_unique<VideoRecorder>(run.rig, run.video, *run.frames);
     if (const std::string note = recorder->note(); !note.empty() && control.note)
       control.note(note);
     options.observer = [&recorder](const StepView& view) { recorder->observe(view); };
@@ -192,7 +191,7 @@ RunResult execute_run(const PreparedRun& run, const RunControl& control) {
     result.video =
         recorder->finish(VideoEnding{result.summary.failure.value_or(""), result.summary.duration});
   if (!run.out.empty()) {
-    write_run_outputs(run.out, rig, result.summary, result.recording);
+    write_run_outputs(run.out, run.output, rig, result.summary, result.recording);
     result.out = run.out;
   }
   // The plot last, after the results it draws are written: its failure loses none.

@@ -58,11 +58,12 @@ struct RunRequest {
 // A run read and checked: the scene loaded (with the chosen step), the frames' request resolved,
 // its files' places made ready. Made by prepare_run only.
 struct PreparedRun {
-  LoadedScene scene;
   std::shared_ptr<const CompiledRig> rig;  // compiled once, at the chosen step
+  OutputDesc output;                       // the scene's output part: which files `out` holds
   std::optional<double> chosen_time_step;  // s, when `accuracy` picked it
   std::optional<double> chosen_bias;       // its predicted integrator bias (relative)
   std::optional<VideoRequest> frames;      // when the run draws frames
+  VideoDesc video;                         // and how: the scene's video part with the request's
   std::string out;
   bool plot = false;
   bool record = false;

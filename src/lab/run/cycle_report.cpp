@@ -34,7 +34,7 @@ struct CycleTheory {
 CycleTheory theory_at(const CompiledRig& rig, double surface_speed) {
   CycleTheory out;
   if (!rig.restoring || !(surface_speed > 0.0)) return out;
-  const PlateOnRollers plate{rig.spacing, rig.plate.h_c, rig.gravity};
+  const PlateOnRollers plate{rig.rollers.spacing, rig.plate.h_c, rig.world.gravity};
   try {
     out.slip_limit_amplitude =
         surface_speed / sliding_angular_frequency(rig.friction, plate, surface_speed);
@@ -61,7 +61,7 @@ std::string ramp_direction(const CompiledRig& rig, const CycleRecord& cycle) {
 }
 
 std::string cycles_csv(const CompiledRig& rig, const std::vector<CycleRecord>& cycles) {
-  const double a = rig.scene.rollers.radius;
+  const double a = rig.rollers.radius;
   std::string out =
       "start_s,period_s,amplitude_m,x_min_m,x_max_m,roller_speed_rpm,surface_speed_m_s,ramp,"
       "stuck,stick_s,slip_limit_amplitude_m,stick_slip_amplitude_m,stick_slip_period_s\n";

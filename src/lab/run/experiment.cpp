@@ -61,23 +61,22 @@ void theory_numbers(const CompiledRig& rig, RunSummary& out) {
 
 // What the summary says of the rig before it runs: the set-up, the analytic model's numbers.
 void rig_figures(const CompiledRig& rig, RunSummary& out) {
-  const Scene& scene = rig.scene;
-  out.scene = scene.name;
-  out.seed = scene.world.seed;
-  out.spacing = rig.spacing;
-  out.mu_k_set = rig.mu_k;
+  out.scene = rig.name;
+  out.seed = rig.world.seed;
+  out.spacing = rig.rollers.spacing;
+  out.mu_k_set = rig.friction.mu_k;
   out.h_c = rig.plate.h_c;
   out.plate_mass = rig.plate.mass;
-  out.gravity = rig.gravity;
-  out.temperature = scene.friction.temperature;
-  out.time_step = scene.world.time_step;
-  if (scene.sensor && scene.sensor->clock_error != 0.0) out.clock_error = scene.sensor->clock_error;
-  out.solver_iterations = scene.world.solver_iterations;
-  out.roller_speed = scene.rollers.speed;
-  if (scene.friction.from_paper) {
-    out.paper_material = scene.friction.paper_material;
-    out.paper_period = scene.friction.paper_period;
-    out.paper_mu_k = scene.friction.paper_mu_k;
+  out.gravity = rig.world.gravity;
+  out.temperature = rig.friction_source.temperature;
+  out.time_step = rig.world.time_step;
+  if (rig.sensor && rig.sensor->clock_error != 0.0) out.clock_error = rig.sensor->clock_error;
+  out.solver_iterations = rig.world.solver_iterations;
+  out.roller_speed = rig.rollers.speed;
+  if (const FrictionSource& source = rig.friction_source; source.paper_material) {
+    out.paper_material = *source.paper_material;
+    out.paper_period = source.paper_period;
+    out.paper_mu_k = source.paper_mu_k;
   }
   out.period_thin = rig.period_thin;
   out.period_thick = rig.period_thick;
@@ -190,10 +189,9 @@ void decide_headline(RunSummary& out) {
 static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
                            RunRecording* recording, std::optional<SolverResidual>& unconverged) {
   const auto wall_start = std::chrono::steady_clock::now();
-  const Scene& scene = rig.scene;
   RunSummary out;
   rig_figures(rig, out);
-  const double g = rig.gravity;
+  const double g = rig.world.gravity;
   RigWorld world(rig);
 
   // The monitors, only those the scene and the options name; the loop knows none by name.
@@ -207,7 +205,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   std::optional<StepObserver> observer;
   if (options.observer) observer.emplace(options.observer, &regime.monitor());
   std::optional<HallChannel> hall;
-  if (scene.sensor && !scene.magnets.empty()) {
+  if (rig.sensor && !rig.magnets.empty()) {
     hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
                  observer ? observer->new_samples() : nullptr);
     monitors.push_back(&*hall);
@@ -220,12 +218,12 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   RunExtremes extremes;
   monitors.push_back(&extremes);
   std::optional<DriveStats> drive;
-  if (scene.drive) monitors.push_back(&drive.emplace(rig));
+  if (rig.drive) monitors.push_back(&drive.emplace(rig));
 
   PlateState state = world.plate();
   for (RunMonitor* m : monitors) m->start(world, state);
   const OscillationTracker& tracker = regime.monitor().tracker();
-  const long long steps = std::llround(scene.world.duration / scene.world.time_step);
+  const long long steps = std::llround(rig.world.duration / rig.world.time_step);
   double t_previous = 0.0;
   PlateState previous = state;
   std::optional<RunFailure> failure;
@@ -274,19 +272,19 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
   if (rig.warming)
     out.warming = warming_report(
         *rig.warming, hall ? hall->estimator().periods() : std::vector<EstimatedPeriod>{},
-        rig.spacing, rig.plate.h_c, g, out.duration);
+        rig.rollers.spacing, rig.plate.h_c, g, out.duration);
   // The rollers' surface speed: the set one, or the drive's mean under load.
-  const double surface_speed = out.roller_speed * scene.rollers.radius;
+  const double surface_speed = out.roller_speed * rig.rollers.radius;
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
                                               : std::numeric_limits<double>::infinity();
 
-  if (scene.rollers.runout > 0.0) {
-    out.runout = scene.rollers.runout;
+  if (rig.rollers.runout > 0.0) {
+    out.runout = rig.rollers.runout;
     const double k = std::sqrt(rig.plate.inertia_pitch / rig.plate.mass);
     out.runout_threshold =
-        runout_hop_threshold(rig.spacing, k, g, out.roller_speed,
-                             scene.rollers.runout_phase[0] + scene.rollers.runout_phase[1],
-                             std::fabs(scene.plate.offset), rig.friction.mu_k * rig.plate.h_c);
+        runout_hop_threshold(rig.rollers.spacing, k, g, out.roller_speed,
+                             rig.rollers.runout_phase[0] + rig.rollers.runout_phase[1],
+                             std::fabs(rig.plate_desc.offset), rig.friction.mu_k * rig.plate.h_c);
   }
 
   const RegimeFinding finding = regime.monitor().finding(failure);
@@ -317,7 +315,7 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
   // The solver did not converge: run again from the start at twice the iterations, up to the cap,
   // so that the result is exactly a run of the scene at the iterations it ends with. A run that
   // hands its steps to an observer (a video) has already shown them, and stops instead.
-  const int asked = rig.scene.world.solver_iterations;
+  const int asked = rig.world.solver_iterations;
   std::string history;
   int iterations = asked;
   double previous_error = 0.0;
@@ -327,7 +325,7 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
                            100.0 * unconverged->relative());
     const SolverRetry retry =
         solver_retry(iterations, kMaxSolverIterations, unconverged->error, previous_error,
-                     static_cast<bool>(options.observer), history, rig.scene.world.time_step);
+                     static_cast<bool>(options.observer), history, rig.world.time_step);
     previous_error = unconverged->error;
     if (!retry.iterations) {
       out.failure = *out.failure + "; " + retry.advice;
@@ -336,11 +334,9 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
       break;
     }
     iterations = *retry.iterations;
-    Scene scene = rig.scene;
-    scene.world.solver_iterations = iterations;
     if (recording != nullptr) *recording = RunRecording{};
     unconverged.reset();
-    out = run_once(compile_rig(scene), options, recording, unconverged);
+    out = run_once(with_solver_iterations(rig, iterations), options, recording, unconverged);
     if (!unconverged)
       out.solver_iterations_raised = fmt::format(
           "from {} to {}: the contact solver had not converged at {}", asked, iterations, history);

@@ -36,21 +36,20 @@ bool finite(const PlateState& s) {
 }  // namespace
 
 RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
-    : scene_(rig.scene),
+    : rig_(rig),
       mass_(rig.plate.mass),
       inertia_(rig.plate.inertia_pitch),
       h_c_(rig.plate.h_c),
       slip_dependent_(rig.friction.depends_on_slip()),
       law_(rig.friction) {
   // The guards' bounds and the law's linearised growth are the compiled rig's.
-  const Scene& scene = rig.scene;
   surface_speed_ = rig.guards.surface_speed;
   energy_bound_ = rig.guards.energy;
   penetration_bound_ = rig.guards.penetration;
   speed_bound_ = rig.guards.speed;
-  start_abs_x_ = std::fabs(scene.plate.offset);
+  start_abs_x_ = std::fabs(rig.plate_desc.offset);
   turn_ = rig.guards.turn;
-  previous_x_ = scene.plate.offset;
+  previous_x_ = rig.plate_desc.offset;
   z0_ = h_c_;
   linearised_growth_ = rig.guards.linearised_growth;
 }
@@ -72,7 +71,7 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   }
   const double energy = 0.5 * mass_ * (s.vx * s.vx + s.vz * s.vz) +
                         0.5 * inertia_ * s.pitch_rate * s.pitch_rate +
-                        mass_ * scene_.world.gravity * (s.z - z0_);
+                        mass_ * rig_.world.gravity * (s.z - z0_);
   if (energy > energy_bound_) {
     return RunFailure{Regime::kNumericallyFailed, t, "plate", "energy",
                       fmt::format("t = {:.6f} s: the plate's energy {:.3g} J exceeds {:.3g} J, ten "
@@ -101,18 +100,18 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                     t, s.vx, surface_speed_)};
   }
   // A step that carries the plate a quarter of the roller spacing resolves nothing of the motion.
-  if (std::fabs(s.x - previous_x_) > 0.25 * scene_.rollers.spacing) {
+  if (std::fabs(s.x - previous_x_) > 0.25 * rig_.rollers.spacing) {
     return RunFailure{
         Regime::kNumericallyFailed, t, "plate", "x",
         fmt::format("t = {:.6f} s: the plate jumped {:.1f} mm in one step of {:.3g} ms, "
                     "more than a quarter of the roller spacing: the time step is too "
                     "large for this scene",
-                    t, (s.x - previous_x_) * 1e3, scene_.world.time_step * 1e3)};
+                    t, (s.x - previous_x_) * 1e3, rig_.world.time_step * 1e3)};
   }
   // The plate leaves the rig when a roller is no longer under it, or it falls.
-  const double half_l = 0.5 * scene_.rollers.spacing;
-  const double half_length = 0.5 * scene_.plate.length;
-  if (std::fabs(s.x) + half_l > half_length || s.z < -scene_.rollers.radius) {
+  const double half_l = 0.5 * rig_.rollers.spacing;
+  const double half_length = 0.5 * rig_.plate_desc.length;
+  if (std::fabs(s.x) + half_l > half_length || s.z < -rig_.rollers.radius) {
     return RunFailure{Regime::kLost, t, "plate", "x",
                       fmt::format("t = {:.6f} s: the plate left the rollers (centre of mass at x = "
                                   "{:.1f} mm, z = {:.1f} mm; a roller is no longer under it)",
@@ -138,7 +137,7 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   // Which way friction pushes while the plate rests on both rollers: toward the centre is the
   // restoring force of the oscillator; away from it, there is none. A plate that left a roller
   // within the last turn is landing, not resting: the impacts share its weight as they come.
-  const double weight = mass_ * scene_.world.gravity;
+  const double weight = mass_ * rig_.world.gravity;
   const bool landing = last_lift_off_ && t - *last_lift_off_ <= turn_;
   if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
       std::fabs(s.x) > 1e-6 && !landing) {
@@ -156,7 +155,7 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
       ++friction_toward_;
     }
   }
-  const long long step = std::llround(t / scene_.world.time_step);
+  const long long step = std::llround(t / rig_.world.time_step);
   if (step < kSettleSteps) return std::nullopt;
 
   for (int i = 0; i < 2; ++i) {
@@ -189,7 +188,7 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   }
   const double surface_mean = 0.5 * (std::fabs(surface[0]) + std::fabs(surface[1]));
   if (surface_mean > kStallFraction * surface_speed_) turning_until_ = t;
-  if (t >= 0.75 * scene_.world.duration) {
+  if (t >= 0.75 * rig_.world.duration) {
     late_surface_sum_ += surface_mean;
     ++late_steps_;
   }
@@ -287,7 +286,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = fmt::format(
         "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
         "t = {:.4f} s: the plate lifted off it{}",
-        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_,
+        tip_roller_, tip_force_, mass_ * rig_.world.gravity, *tip_since_,
         failure ? "; then " + failure->message : std::string());
     return f;
   }
@@ -303,7 +302,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = fmt::format(
         "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
         "t = {:.4f} s: the plate lifted off it",
-        tip_roller_, tip_force_, mass_ * scene_.world.gravity, *tip_since_);
+        tip_roller_, tip_force_, mass_ * rig_.world.gravity, *tip_since_);
     return f;
   }
   if (surface_speed_ == 0.0) {
@@ -333,7 +332,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
   evidence.turning_amplitudes = tracker_.turning_amplitudes();
   evidence.amplitude_start = start_abs_x_;
   evidence.duration = last_t_;
-  evidence.time_step = scene_.world.time_step;
+  evidence.time_step = rig_.world.time_step;
   evidence.slip_dependent = slip_dependent_;
   MotionFinding motion = diagnose_motion(evidence);
   f.regime = motion.regime;
@@ -347,7 +346,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
       growth = motion.growth_rate;
   }
   if (const std::optional<UnresolvedLaw> unresolved = unresolved_law(
-          law_, scene_.world.gravity, scene_.world.time_step, !sticks_.empty(), growth)) {
+          law_, rig_.world.gravity, rig_.world.time_step, !sticks_.empty(), growth)) {
     f.regime = Regime::kNumericallyFailed;
     f.since = 0.0;
     f.evidence = unresolved->reason + " (the run looked " + regime_name(motion.regime) + ": " +
@@ -382,7 +381,7 @@ bool RegimeMonitor::lift_offs_are_jumps() const {
   // off (and may chatter) near its turning points, or stays off; on true rollers a roller's angle
   // changes nothing, so nothing can be locked to it. Each roller's jumps are read against its own
   // angle, which a drive under load turns a little slower than the speed set.
-  if (scene_.rollers.runout <= 0.0 || lift_offs_.empty() || turn_ <= 0.0) return false;
+  if (rig_.rollers.runout <= 0.0 || lift_offs_.empty() || turn_ <= 0.0) return false;
   // A lift-off still on at the end that has lasted a turn and a quarter of the run is the plate off
   // a roller for good.
   for (const PlateJump& l : lift_offs_)

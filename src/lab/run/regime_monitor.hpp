@@ -79,7 +79,7 @@ class RegimeMonitor {
   const OscillationTracker& tracker() const { return tracker_; }
 
  private:
-  const Scene& scene_;
+  const CompiledRig& rig_;
   double mass_, inertia_, h_c_;
   bool slip_dependent_;
   FrictionLaw law_;

@@ -50,11 +50,10 @@ std::string explain(const FrictionRegimePrediction& p, double amplitude, double 
 }  // namespace
 
 TheoryRegime regime_from_theory(const CompiledRig& rig) {
-  const Scene& s = rig.scene;
-  const double l = rig.spacing;
-  const double mu = rig.mu_k;
+  const double l = rig.rollers.spacing;
+  const double mu = rig.friction.mu_k;
   const double h_c = rig.plate.h_c;
-  if (s.rollers.sense == RollerSense::kOutward)
+  if (rig.rollers.sense == RollerSense::kOutward)
     return {Regime::kNoRestoringForce, "the rollers turn outward: friction pushes the plate away",
             std::nullopt};
   if (!rig.restoring)
@@ -73,10 +72,10 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   // The rollers' speed: set (ideal drive), or the motor's under the plate's friction load.
   // A ramped ideal drive: its slowest speed over the run, where the plate is likeliest to stick.
   double roller_speed = rig.roller_speed_ramp
-                            ? rig.roller_speed_ramp->smallest(0.0, s.world.duration)
-                            : s.rollers.speed;
+                            ? rig.roller_speed_ramp->smallest(0.0, rig.world.duration)
+                            : rig.rollers.speed;
   if (rig.drive) {
-    const MotorDesc& motor = s.drive->motor;
+    const MotorDesc& motor = rig.drive->parts.motor;
     if (!rig.drive->roller_speed_loaded)
       return {Regime::kSticks,
               fmt::format("the motor stalls: the plate's friction needs {:.3g} N m at the motor, "
@@ -88,10 +87,10 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   }
   if (roller_speed <= 0.0)
     return {Regime::kSticks, "the rollers stand still: friction holds the plate", std::nullopt};
-  const PlateOnRollers plate{l, h_c, s.world.gravity};
+  const PlateOnRollers plate{l, h_c, rig.world.gravity};
   try {
     const FrictionRegimePrediction p = predict_friction_regime(
-        rig.friction, plate, roller_speed * s.rollers.radius, amplitude, s.world.duration);
+        rig.friction, plate, roller_speed * rig.rollers.radius, amplitude, rig.world.duration);
     return {p.regime, explain(p, amplitude, p.tipping_offset), p};
   } catch (const DomainError& e) {
     // A law the closed forms refuse here (the linearised motion creeps instead of oscillating,

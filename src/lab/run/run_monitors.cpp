@@ -31,13 +31,13 @@ std::optional<RunFailure> ConvergenceGuard::check(const StepContext& step) {
   return RunFailure{Regime::kNumericallyFailed, step.t,
                     fmt::format("roller {}", unconverged_->roller), "normal force",
                     fmt::format("the contact solver did not converge at {} iterations: {}",
-                                rig_.scene.world.solver_iterations, unconverged_->describe())};
+                                rig_.world.solver_iterations, unconverged_->describe())};
 }
 
 HallChannel::HallChannel(const CompiledRig& rig, std::vector<HallSample>* recording,
                          std::vector<HallSample>* view_samples)
     : hall_(rig),
-      estimator_(rig.spacing, rig.gravity),
+      estimator_(rig.rollers.spacing, rig.world.gravity),
       recording_(recording),
       view_samples_(view_samples) {}
 
@@ -86,7 +86,7 @@ void RunExtremes::record(const StepContext& step) {
   }
 }
 
-DriveStats::DriveStats(const CompiledRig& rig) : radius_(rig.scene.rollers.radius) {
+DriveStats::DriveStats(const CompiledRig& rig) : radius_(rig.rollers.radius) {
   if (rig.drive) design_ratio_ = rig.drive->gearbox_ratio;
 }
 

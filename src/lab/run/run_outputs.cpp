@@ -239,20 +239,16 @@ std::string jumps_csv(const RunRecording& r) {
   return out;
 }
 
-void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
-                       const RunRecording& recording) {
-  const Scene& scene = rig.scene;
-  if (scene.output.cycles)
-    write_file_atomic(folder + "/cycles.csv", cycles_csv(rig, recording.cycles));
-  if (scene.output.trajectory)
-    write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
-  if (scene.output.hall && scene.sensor)
-    write_file_atomic(folder + "/hall.csv", hall_csv(recording));
-  if (scene.output.periods && scene.output.hall && scene.sensor)
+void write_run_outputs(const std::string& folder, const OutputDesc& output, const CompiledRig& rig,
+                       const RunSummary& summary, const RunRecording& recording) {
+  if (output.cycles) write_file_atomic(folder + "/cycles.csv", cycles_csv(rig, recording.cycles));
+  if (output.trajectory) write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
+  if (output.hall && rig.sensor) write_file_atomic(folder + "/hall.csv", hall_csv(recording));
+  if (output.periods && output.hall && rig.sensor)
     write_file_atomic(folder + "/periods.csv", periods_csv(recording));
-  if (scene.output.jumps && !recording.jumps.empty())
+  if (output.jumps && !recording.jumps.empty())
     write_file_atomic(folder + "/jumps.csv", jumps_csv(recording));
-  if (scene.output.summary) {
+  if (output.summary) {
     write_file_atomic(folder + "/summary.json", summary_json(summary).dump(2) + "\n");
     write_file_atomic(folder + "/timing.json", timing_json(summary).dump(2) + "\n");
   }

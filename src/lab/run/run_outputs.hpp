@@ -25,9 +25,8 @@ std::string jumps_csv(const RunRecording& recording);
 
 // Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
 // the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file
-// atomically. All but timing.json are bit-identical
-// between runs.
-void write_run_outputs(const std::string& folder, const CompiledRig& rig, const RunSummary& summary,
-                       const RunRecording& recording);
+// atomically. All but timing.json are bit-identical between runs.
+void write_run_outputs(const std::string& folder, const OutputDesc& output, const CompiledRig& rig,
+                       const RunSummary& summary, const RunRecording& recording);
 
 }  // namespace fl

@@ -22,8 +22,8 @@ std::string SolverResidual::describe() const {
 SolverConvergence::SolverConvergence(const CompiledRig& rig)
     : mass_(rig.plate.mass),
       inertia_(rig.plate.inertia_pitch),
-      dt_(rig.scene.world.time_step),
-      weight_(rig.plate.mass * rig.gravity) {}
+      dt_(rig.world.time_step),
+      weight_(rig.plate.mass * rig.world.gravity) {}
 
 std::optional<SolverResidual> SolverConvergence::observe(
     double t, const PlateState& before, const PlateState& after,

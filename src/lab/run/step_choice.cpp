@@ -13,7 +13,7 @@ namespace {
 
 double omega_of(const CompiledRig& rig) {
   if (!rig.omega)
-    throw DomainError(describe("the scene has no oscillation (l = ", rig.spacing * 1e3,
+    throw DomainError(describe("the scene has no oscillation (l = ", rig.rollers.spacing * 1e3,
                                " mm <= 2 mu_k h_c), so no step gives a period accuracy"));
   return *rig.omega;
 }

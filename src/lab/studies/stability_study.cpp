@@ -67,14 +67,13 @@ Trial try_step(const Scene& base, double dt, Regime expected) {
 }
 
 std::string describe_case(const CompiledRig& rig) {
-  const Scene& s = rig.scene;
   constexpr double kRpm = kRpmPerRadPerSecond;
   return fmt::format(
       "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
       "dt {:.3g} ms",
-      rig.mu_k, rig.spacing * 1e3, rig.plate.h_c * 1e3, rig.roller_speed_nominal * kRpm,
-      s.rollers.sense == RollerSense::kOutward ? " outward" : "", std::fabs(s.plate.offset) * 1e3,
-      rig.plate.mass * 1e3, s.world.time_step * 1e3);
+      rig.friction.mu_k, rig.rollers.spacing * 1e3, rig.plate.h_c * 1e3,
+      rig.roller_speed_nominal * kRpm, rig.rollers.sense == RollerSense::kOutward ? " outward" : "",
+      std::fabs(rig.plate_desc.offset) * 1e3, rig.plate.mass * 1e3, rig.world.time_step * 1e3);
 }
 
 }  // namespace

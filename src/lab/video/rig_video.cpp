@@ -68,22 +68,22 @@ int shadow_map_size(int height) {
 }
 
 // How the material is called in the paper's table ("LEGO blocks"), else its key.
-std::string material_name(const Scene& scene, const std::string& asset_dir) {
-  if (!scene.friction.from_paper) return scene.plate.material;
+std::string material_name(const CompiledRig& rig, const std::string& asset_dir) {
+  if (!rig.friction_source.paper_material) return rig.plate_desc.material;
   const PaperTable table = load_paper_table(paper_table_path(asset_dir));
-  const PaperMaterial* row = table.find(scene.friction.paper_material);
-  return row != nullptr ? row->name : scene.plate.material;
+  const PaperMaterial* row = table.find(*rig.friction_source.paper_material);
+  return row != nullptr ? row->name : rig.plate_desc.material;
 }
 
 // The engine's state is this file's alone (the module hands out only VideoEngine).
 struct RigVideo final : public VideoEngine {
-  RigVideo(const Scene& s, const VideoRequest& r);
+  RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc& v, const VideoRequest& r);
   void observe(const VideoStep& step) override;
   VideoReport finish(const VideoEnding& ending) override;
   std::string note() const override { return backend_note; }
 
-  const CompiledRig rig;  // the scene compiled once, for the model, the pose and the title
-  const Scene& scene;
+  std::shared_ptr<const CompiledRig> owned;  // the run's rig, for the model, the pose and the title
+  const CompiledRig& rig;
   VideoRequest request;
   VideoDesc video;
   std::size_t run_frames = 0;
@@ -143,16 +143,17 @@ struct RigVideo final : public VideoEngine {
   render::RigOverlayState overlay_state(double t) const;
 };
 
-RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
-    : rig(compile_rig(s)), scene(rig.scene), request(r), video(effective_video(s, r)) {
+RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc& v,
+                   const VideoRequest& r)
+    : owned(std::move(compiled)), rig(*owned), request(r), video(v) {
   const auto start = Clock::now();
-  run_frames = run_frame_count(video, scene.world.duration);
+  run_frames = run_frame_count(video, rig.world.duration);
   title_frames = title_frame_count(video);
   frame_interval = 1.0 / (video.fps * video.slow_motion);
   // A quarter of the frame interval (a 90 degree shutter): at 1600 rpm and 30 fps the rollers'
   // mark smears over 80 degrees, a streak that still shows where it is.
   exposure = 0.25 * frame_interval;
-  has_sensor = scene.sensor.has_value() && !scene.magnets.empty();
+  has_sensor = rig.sensor.has_value() && !rig.magnets.empty();
   try {
     // The encoder first: a build without libav says so before anything is drawn.
     if (!request.video.empty()) {
@@ -178,7 +179,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     // LEGO parts only when the scene names some: the part index and their meshes.
     std::optional<assets::PartCatalog> catalog;
     assets::MeshLibrary meshes;
-    if (render::scene_uses_parts(scene))
+    if (render::rig_uses_parts(rig))
       catalog = assets::load_part_catalog(assets::part_catalog_path(request.asset_dir));
     // The front camera looks through the near wall: it is cut away, so the rollers show.
     const bool cut_away = !video.placed && video.camera == "front";
@@ -188,7 +189,7 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
     report.frame_triangles_full = model.stats.frame_triangles_full;
     camera = render::rig_camera(model, video);
     force_scale = render::force_scale(camera, video.width, video.height, Eigen::Vector3f::Zero(),
-                                      rig.spacing, rig.plate.mass * rig.gravity);
+                                      rig.rollers.spacing, rig.plate.mass * rig.world.gravity);
     force_arrows = video.placed || video.camera != "sensor";
     // A camera that stays put never sees the frame's back faces: leave them out.
     if (video.orbit == 0.0) render::cull_back_faces(model, camera.position);
@@ -207,9 +208,9 @@ RigVideo::RigVideo(const Scene& s, const VideoRequest& r)
   } catch (const std::invalid_argument& e) {
     throw VideoUnavailable(std::string("the rig cannot be drawn: ") + e.what());
   }
-  material = material_name(scene, request.asset_dir);
+  material = material_name(rig, request.asset_dir);
   title = render::make_title_card(rig, material, video.slow_motion, video.fps, video.title_text);
-  heading = render::rig_heading(scene, material);
+  heading = render::rig_heading(rig, material);
   report.width = video.width;
   report.height = video.height;
   report.fps = video.fps;
@@ -271,7 +272,7 @@ void RigVideo::take_estimator(const VideoStep& step) {
 void RigVideo::take_motion(const VideoStep& step) {
   // The arrows start on the plate's near edge (the side the cameras look from, -y), where the
   // contact lines end.
-  const float near_y = static_cast<float>(-0.5 * scene.plate.width);
+  const float near_y = static_cast<float>(-0.5 * rig.plate_desc.width);
   for (std::size_t k = 0; k < 2; ++k) {
     const VideoContact& c = step.contacts[k];
     forces.rollers[k] = render::ContactForce{
@@ -282,19 +283,19 @@ void RigVideo::take_motion(const VideoStep& step) {
       Eigen::Vector3f(static_cast<float>(step.plate_x), near_y, static_cast<float>(step.plate_z));
   if (motion.empty()) {
     // The theory starts where the run does.
-    if (rig.restoring && scene.rollers.sense == RollerSense::kInward && rig.omega)
+    if (rig.restoring && rig.rollers.sense == RollerSense::kInward && rig.omega)
       theory = render::ThickPlateCurve{step.plate_x, step.plate_vx, *rig.omega};
     theory_label =
         theory && rig.period_thick
             ? fmt::format("theory: thick plate, \xce\xbc\xe2\x82\x96 = {:.3g}, T = {:.4f} s",
-                          rig.mu_k, *rig.period_thick)
+                          rig.friction.mu_k, *rig.period_thick)
             : std::string("no theory: the rollers do not restore the plate");
     x_range = std::max({1e-3, 1.15 * std::fabs(step.plate_x), 1.15 * rig.amplitude_initial});
   }
   motion.emplace_back(step.t, step.plate_x);
   if (video.phase_portrait) {
     phase.emplace_back(step.t, step.plate_x, step.plate_vx);
-    slip_speed = std::fabs(step.roller_speed) * scene.rollers.radius;
+    slip_speed = std::fabs(step.roller_speed) * rig.rollers.radius;
   }
   const auto time_of = [](const auto& p) { return p.x(); };
   drop_unshown(motion, step.t, time_of);
@@ -322,8 +323,8 @@ render::RigOverlayState RigVideo::overlay_state(double t) const {
   o.has_sensor = has_sensor;
   o.estimator = estimator;
   o.material = material;
-  o.paper_period = scene.friction.paper_period;
-  o.paper_mu_k = scene.friction.paper_mu_k;
+  o.paper_period = rig.friction_source.paper_period;
+  o.paper_mu_k = rig.friction_source.paper_mu_k;
   o.regime = regime;
   o.forces = forces;
   o.force_scale = force_scale;
@@ -466,8 +467,10 @@ VideoReport RigVideo::finish(const VideoEnding& ending) {
 
 }  // namespace
 
-std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request) {
-  return std::make_unique<RigVideo>(scene, request);
+std::unique_ptr<VideoEngine> make_video_engine(std::shared_ptr<const CompiledRig> rig,
+                                               const VideoDesc& video,
+                                               const VideoRequest& request) {
+  return std::make_unique<RigVideo>(std::move(rig), video, request);
 }
 
 }  // namespace fl

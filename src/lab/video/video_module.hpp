@@ -2,12 +2,12 @@
 // shared object that holds the renderer (and through it OSMesa, libav and assimp), opened with
 // dlopen only when a run asks for frames. Sweeps, MPI and the plain commands never load it.
 //
-// Only plain values cross: the scene, the request, each step as a VideoStep (copied from the
-// run's StepView by the recorder, video_recorder.cpp) and the report, so the module does not
-// depend on the experiment's types. The module exports one C function, kVideoModuleEntry,
-// returning its VideoModule; the executable refuses a module whose VideoModuleAbi differs from
-// its own (built from other sources: a coarse check of the interface's version and the sizes of
-// what crosses).
+// Only these cross: the compiled rig (the run's own, not compiled again), the video's settings and
+// the request, each step as a VideoStep (copied from the run's StepView by the recorder,
+// video_recorder.cpp) and the report, so the module does not depend on the experiment's types. The
+// module exports one C function, kVideoModuleEntry, returning its VideoModule; the executable
+// refuses a module whose VideoModuleAbi differs from its own (built from other sources: a coarse
+// check of the interface's version and the sizes of what crosses).
 //
 // Where the executable looks: $FRICTIONLAB_VIDEO_MODULE if set, else frictionlab-video.so in the
 // folder of the running executable (/proc/self/exe), where the build puts it.
@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "lab/video/video_settings.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
@@ -102,17 +102,19 @@ class VideoEngine {
   virtual std::string note() const = 0;
 };
 
-// Makes the engine: creates the GL context, builds and uploads the rig, opens the sinks. Throws
-// VideoUnavailable, InputError. Defined in the video library (rig_video.cpp), which the module
-// and the tests link.
-std::unique_ptr<VideoEngine> make_video_engine(const Scene& scene, const VideoRequest& request);
+// Makes the engine: creates the GL context, builds and uploads the rig, opens the sinks. `video`
+// is the scene's video settings with the request's (effective_video). Throws VideoUnavailable,
+// InputError. Defined in the video library (rig_video.cpp), which the module and the tests link.
+std::unique_ptr<VideoEngine> make_video_engine(std::shared_ptr<const CompiledRig> rig,
+                                               const VideoDesc& video, const VideoRequest& request);
 
 // Raise when anything that crosses the seam changes.
-inline constexpr int kVideoModuleVersion = 4;
+inline constexpr int kVideoModuleVersion = 5;
 
 struct VideoModuleAbi {
   int version = kVideoModuleVersion;
-  std::size_t scene_size = sizeof(Scene);
+  std::size_t rig_size = sizeof(CompiledRig);
+  std::size_t video_size = sizeof(VideoDesc);
   std::size_t request_size = sizeof(VideoRequest);
   std::size_t step_size = sizeof(VideoStep);
   std::size_t report_size = sizeof(VideoReport);
@@ -123,7 +125,8 @@ struct VideoModuleAbi {
 
 struct VideoModule {
   VideoModuleAbi abi;
-  std::unique_ptr<VideoEngine> (*make_engine)(const Scene& scene, const VideoRequest& request);
+  std::unique_ptr<VideoEngine> (*make_engine)(std::shared_ptr<const CompiledRig> rig,
+                                              const VideoDesc& video, const VideoRequest& request);
 };
 
 // The name of the module's entry: extern "C" const VideoModule* frictionlab_video_module().

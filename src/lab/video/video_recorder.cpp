@@ -90,10 +90,10 @@ struct VideoRecorder::Impl {
   double next_regime_t = 0.0;  // s, when the diagnosis is read again
 };
 
-VideoRecorder::VideoRecorder(const Scene& scene, const VideoRequest& request)
+VideoRecorder::VideoRecorder(std::shared_ptr<const CompiledRig> rig, const VideoDesc& video,
+                             const VideoRequest& request)
     : impl_(std::make_unique<Impl>()) {
-  effective_video(scene, request);  // bad options are bad input, with or without the module
-  impl_->engine = load_video_module().make_engine(scene, request);
+  impl_->engine = load_video_module().make_engine(std::move(rig), video, request);
 }
 
 VideoRecorder::~VideoRecorder() = default;

@@ -15,16 +15,17 @@
 
 #include "lab/run/experiment.hpp"
 #include "lab/video/video_settings.hpp"
-#include "scene/scene.hpp"
+#include "scene/compiled_rig.hpp"
 
 namespace fl {
 
 class VideoRecorder {
  public:
-  // Checks the request, opens the video module, which creates the GL context, builds and uploads
-  // the rig, and opens the sinks, so that anything missing fails before the physics runs.
-  // Throws VideoUnavailable, InputError.
-  VideoRecorder(const Scene& scene, const VideoRequest& request);
+  // Opens the video module, which creates the GL context, builds and uploads the rig, and opens
+  // the sinks, so that anything missing fails before the physics runs. `video` is the scene's
+  // video settings with the request's (effective_video). Throws VideoUnavailable, InputError.
+  VideoRecorder(std::shared_ptr<const CompiledRig> rig, const VideoDesc& video,
+                const VideoRequest& request);
   VideoRecorder(const VideoRecorder&) = delete;
   VideoRecorder& operator=(const VideoRecorder&) = delete;
   ~VideoRecorder();

@@ -184,83 +184,127 @@ void decide_headline(RunSummary& out) {
 
 }  // namespace
 
-// One run at the scene's own solver iterations. `unconverged` is set when the convergence check
-// stopped it (the run's failure then says so).
-static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
-                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
-  const auto wall_start = std::chrono::steady_clock::now();
-  RunSummary out;
-  rig_figures(rig, out);
-  const double g = rig.world.gravity;
-  RigWorld world(rig);
+struct RunLoop::Impl {
+  Impl(const CompiledRig& r, const RunOptions& o, RunRecording* rec)
+      : rig(r), options(o), recording(rec), world(r), regime(r), convergence(r) {}
 
+  const CompiledRig& rig;
+  const RunOptions& options;
+  RunRecording* recording;
+  std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
+  RigWorld world;
   // The monitors, only those the scene and the options name; the loop knows none by name.
-  RegimeGuard regime(rig);
-  ConvergenceGuard convergence(rig);
+  RegimeGuard regime;
+  ConvergenceGuard convergence;
   std::vector<RunMonitor*> monitors{&regime, &convergence};
   std::optional<CycleRecorder> cycles;
-  if (options.record_cycles && recording != nullptr) monitors.push_back(&cycles.emplace());
   std::optional<RampSpeedAverage> ramp;
-  if (rig.roller_speed_ramp) monitors.push_back(&ramp.emplace());
   std::optional<StepObserver> observer;
-  if (options.observer) observer.emplace(options.observer, &regime.monitor());
   std::optional<HallChannel> hall;
-  if (rig.sensor && !rig.magnets.empty()) {
-    hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
-                 observer ? observer->new_samples() : nullptr);
-    monitors.push_back(&*hall);
-    if (observer) observer->set_estimator(&hall->estimator());
-  }
   std::optional<TrajectoryRecorder> trajectory;
-  if (options.record_trajectory && recording != nullptr)
-    monitors.push_back(&trajectory.emplace(recording->trajectory));
-  if (observer) monitors.push_back(&*observer);
   RunExtremes extremes;
-  monitors.push_back(&extremes);
   std::optional<DriveStats> drive;
-  if (rig.drive) monitors.push_back(&drive.emplace(rig));
 
-  PlateState state = world.plate();
-  for (RunMonitor* m : monitors) m->start(world, state);
-  const OscillationTracker& tracker = regime.monitor().tracker();
-  const long long steps = std::llround(rig.world.duration / rig.world.time_step);
+  long long steps = 0;  // the scene's duration in steps
+  long long step = 0;   // taken
+  PlateState state;
+  PlateState previous;
   double t_previous = 0.0;
-  PlateState previous = state;
   std::optional<RunFailure> failure;
-  for (long long i = 0; i < steps; ++i) {
-    if (options.stop != nullptr && options.stop->load(std::memory_order_relaxed)) {
-      out.interrupted_at = world.time();
-      break;
-    }
-    if (options.progress && i % 1000 == 0) options.progress(world.time());
-    world.step();
-    state = world.plate();
-    const std::array<RollerContact, 2> contacts = world.contacts();
-    const std::array<double, 2> surface = world.roller_surface_speeds();
-    const StepContext step{world.time(), t_previous, state, previous, contacts, surface, world};
-    // The guards first: what a guard stopped is not recorded, so the outputs hold every
-    // trustworthy step.
-    for (RunMonitor* m : monitors)
-      if ((failure = m->check(step))) break;
-    if (failure) break;
-    for (RunMonitor* m : monitors) m->record(step);
-    previous = state;
-    t_previous = step.t;
+  std::optional<double> interrupted_at;
+  bool ended = false;
+};
+
+RunLoop::RunLoop(const CompiledRig& rig, const RunOptions& options, RunRecording* recording)
+    : impl_(std::make_unique<Impl>(rig, options, recording)) {
+  Impl& r = *impl_;
+  if (options.record_cycles && recording != nullptr) r.monitors.push_back(&r.cycles.emplace());
+  if (rig.roller_speed_ramp) r.monitors.push_back(&r.ramp.emplace());
+  if (options.observer) r.observer.emplace(options.observer, &r.regime.monitor());
+  if (rig.sensor && !rig.magnets.empty()) {
+    r.hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
+                   r.observer ? r.observer->new_samples() : nullptr);
+    r.monitors.push_back(&*r.hall);
+    if (r.observer) r.observer->set_estimator(&r.hall->estimator());
   }
-  unconverged = convergence.unconverged();
-  out.steps = world.steps();
-  out.duration = world.time();
-  out.plate_speed_max = extremes.plate_speed_max;
-  out.min_normal_force = extremes.min_normal_force;
-  out.max_penetration = extremes.max_penetration;
-  if (cycles) recording->cycles = cycles->cycles();
-  if (ramp) out.roller_speed = ramp->mean().value_or(rig.roller_speed_ramp->at(0.0));
-  if (failure) out.failure = failure->message;
-  if (drive) {
-    out.drive = drive->report();
+  if (options.record_trajectory && recording != nullptr)
+    r.monitors.push_back(&r.trajectory.emplace(recording->trajectory));
+  if (r.observer) r.monitors.push_back(&*r.observer);
+  r.monitors.push_back(&r.extremes);
+  if (rig.drive) r.monitors.push_back(&r.drive.emplace(rig));
+
+  r.state = r.world.plate();
+  for (RunMonitor* m : r.monitors) m->start(r.world, r.state);
+  r.previous = r.state;
+  r.steps = std::llround(rig.world.duration / rig.world.time_step);
+  r.ended = r.steps <= 0;
+}
+
+RunLoop::~RunLoop() = default;
+
+bool RunLoop::step() {
+  Impl& r = *impl_;
+  if (r.ended) return false;
+  if (r.options.stop != nullptr && r.options.stop->load(std::memory_order_relaxed)) {
+    r.interrupted_at = r.world.time();
+    r.ended = true;
+    return false;
+  }
+  if (r.options.progress && r.step % 1000 == 0) r.options.progress(r.world.time());
+  r.world.step();
+  ++r.step;
+  r.state = r.world.plate();
+  const std::array<RollerContact, 2> contacts = r.world.contacts();
+  const std::array<double, 2> surface = r.world.roller_surface_speeds();
+  const StepContext step{r.world.time(), r.t_previous, r.state, r.previous,
+                         contacts,       surface,      r.world};
+  // The guards first: what a guard stopped is not recorded, so the outputs hold every
+  // trustworthy step.
+  for (RunMonitor* m : r.monitors)
+    if ((r.failure = m->check(step))) break;
+  if (r.failure) {
+    r.ended = true;
+    return false;
+  }
+  for (RunMonitor* m : r.monitors) m->record(step);
+  r.previous = r.state;
+  r.t_previous = step.t;
+  r.ended = r.step >= r.steps;
+  return !r.ended;
+}
+
+bool RunLoop::ended() const {
+  return impl_->ended;
+}
+
+double RunLoop::time() const {
+  return impl_->world.time();
+}
+
+RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
+  Impl& r = *impl_;
+  const CompiledRig& rig = r.rig;
+  const RunOptions& options = r.options;
+  RunRecording* recording = r.recording;
+  const std::optional<HallChannel>& hall = r.hall;
+  const OscillationTracker& tracker = r.regime.monitor().tracker();
+  const double g = rig.world.gravity;
+  RunSummary out;
+  rig_figures(rig, out);
+  out.interrupted_at = r.interrupted_at;
+  unconverged = r.convergence.unconverged();
+  out.steps = r.world.steps();
+  out.duration = r.world.time();
+  out.plate_speed_max = r.extremes.plate_speed_max;
+  out.min_normal_force = r.extremes.min_normal_force;
+  out.max_penetration = r.extremes.max_penetration;
+  if (r.cycles) recording->cycles = r.cycles->cycles();
+  if (r.ramp) out.roller_speed = r.ramp->mean().value_or(rig.roller_speed_ramp->at(0.0));
+  if (r.failure) out.failure = r.failure->message;
+  if (r.drive) {
+    out.drive = r.drive->report();
     out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
   }
-
   if (!tracker.turning_amplitudes().empty()) {
     out.amplitude_start = tracker.turning_amplitudes().front();
     out.amplitude_end = tracker.turning_amplitudes().back();
@@ -287,7 +331,7 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
                              std::fabs(rig.plate_desc.offset), rig.friction.mu_k * rig.plate.h_c);
   }
 
-  const RegimeFinding finding = regime.monitor().finding(failure);
+  const RegimeFinding finding = r.regime.monitor().finding(r.failure);
   // A clipped oscillation's period is read after its last stick.
   const double harmonic_since = add_regime(rig, finding, out, recording);
   if (const auto p = tracker.period(harmonic_since)) {
@@ -300,10 +344,21 @@ static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
 
   decide_headline(out);
 
-  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  out.wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - r.wall_start).count();
   out.real_time_factor = out.duration / out.wall_s;
   out.steps_per_second = static_cast<double>(out.steps) / out.wall_s;
   return out;
+}
+
+// One run at the rig's own solver iterations. `unconverged` is set when the convergence check
+// stopped it (the run's failure then says so).
+static RunSummary run_once(const CompiledRig& rig, const RunOptions& options,
+                           RunRecording* recording, std::optional<SolverResidual>& unconverged) {
+  RunLoop loop(rig, options, recording);
+  while (loop.step()) {
+  }
+  return loop.finish(unconverged);
 }
 
 RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -66,6 +67,32 @@ struct RunOptions {
   const std::atomic<bool>* stop = nullptr;
   // Called every 1000 steps with the simulated time [s], when set.
   std::function<void(double)> progress;
+};
+
+struct SolverResidual;
+
+// One run, a step at a time: what run_experiment loops over, and what a live front end (the
+// browser's session) steps at the pace it shows. It builds the world and only the monitors the
+// scene and the options name. The rig, the options and the recording must outlive it.
+class RunLoop {
+ public:
+  RunLoop(const CompiledRig& rig, const RunOptions& options, RunRecording* recording = nullptr);
+  RunLoop(const RunLoop&) = delete;
+  RunLoop& operator=(const RunLoop&) = delete;
+  ~RunLoop();
+
+  // One step (the observer, when set, sees it); false once the run has ended: its duration
+  // reached, a guard stopped it, or `stop` was raised (checked before the step).
+  bool step();
+  bool ended() const;
+  double time() const;  // s, simulated
+  // The run's summary: call once, when it has ended (or to end it where it stands). `unconverged`
+  // is set when the solver's convergence check stopped it.
+  RunSummary finish(std::optional<SolverResidual>& unconverged);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 // A run whose contact solver does not converge (lab/run/solver_convergence.hpp) starts again at

@@ -35,6 +35,16 @@ bool finite(const PlateState& s) {
 
 }  // namespace
 
+std::string regime_so_far(const RegimeFinding& f) {
+  std::string line = f.since > 0.0
+                         ? fmt::format("{} since t = {:.3f} s", regime_name(f.regime), f.since)
+                         : std::string(regime_name(f.regime));
+  if (f.jumps > 0)
+    line += fmt::format("; {} jump{} off a roller, up to {:.1f} mm", f.jumps,
+                        f.jumps == 1 ? "" : "s", f.highest_jump.value_or(0.0) * 1e3);
+  return line;
+}
+
 RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
     : rig_(rig),
       mass_(rig.plate.mass),

@@ -52,6 +52,10 @@ struct RunFailure {
   std::string message;                         // the whole sentence
 };
 
+// The diagnosis so far as one line: "oscillates since t = 1.234 s; 2 jumps off a roller, up to
+// 0.3 mm" (what a video and a live page show while the run goes on).
+std::string regime_so_far(const RegimeFinding& finding);
+
 class RegimeMonitor {
  public:
   // The rig must outlive the monitor.

@@ -239,19 +239,29 @@ std::string jumps_csv(const RunRecording& r) {
   return out;
 }
 
+std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
+                                                                  const CompiledRig& rig,
+                                                                  const RunSummary& summary,
+                                                                  const RunRecording& recording) {
+  std::vector<std::pair<std::string, std::string>> files;
+  if (output.cycles) files.emplace_back("cycles.csv", cycles_csv(rig, recording.cycles));
+  if (output.trajectory) files.emplace_back("trajectory.csv", trajectory_csv(recording));
+  if (output.hall && rig.sensor) files.emplace_back("hall.csv", hall_csv(recording));
+  if (output.periods && output.hall && rig.sensor)
+    files.emplace_back("periods.csv", periods_csv(recording));
+  if (output.jumps && !recording.jumps.empty())
+    files.emplace_back("jumps.csv", jumps_csv(recording));
+  if (output.summary) {
+    files.emplace_back("summary.json", summary_json(summary).dump(2) + "\n");
+    files.emplace_back("timing.json", timing_json(summary).dump(2) + "\n");
+  }
+  return files;
+}
+
 void write_run_outputs(const std::string& folder, const OutputDesc& output, const CompiledRig& rig,
                        const RunSummary& summary, const RunRecording& recording) {
-  if (output.cycles) write_file_atomic(folder + "/cycles.csv", cycles_csv(rig, recording.cycles));
-  if (output.trajectory) write_file_atomic(folder + "/trajectory.csv", trajectory_csv(recording));
-  if (output.hall && rig.sensor) write_file_atomic(folder + "/hall.csv", hall_csv(recording));
-  if (output.periods && output.hall && rig.sensor)
-    write_file_atomic(folder + "/periods.csv", periods_csv(recording));
-  if (output.jumps && !recording.jumps.empty())
-    write_file_atomic(folder + "/jumps.csv", jumps_csv(recording));
-  if (output.summary) {
-    write_file_atomic(folder + "/summary.json", summary_json(summary).dump(2) + "\n");
-    write_file_atomic(folder + "/timing.json", timing_json(summary).dump(2) + "\n");
-  }
+  for (const auto& [name, text] : run_output_files(output, rig, summary, recording))
+    write_file_atomic(folder + "/" + name, text);
 }
 
 }  // namespace fl

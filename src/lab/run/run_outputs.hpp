@@ -3,6 +3,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -22,6 +24,12 @@ std::string hall_csv(const RunRecording& recording);
 std::string periods_csv(const RunRecording& recording);
 // Each jump of the plate: the roller it left, when, how high, at which roller angle.
 std::string jumps_csv(const RunRecording& recording);
+
+// The files of a run, by name, as the scene's output part asks: what write_run_outputs writes.
+std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
+                                                                  const CompiledRig& rig,
+                                                                  const RunSummary& summary,
+                                                                  const RunRecording& recording);
 
 // Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
 // the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file

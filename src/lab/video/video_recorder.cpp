@@ -41,13 +41,7 @@ void copy_step(const StepView& view, VideoStep& out, double& next_regime_t) {
   out.roller_speed = view.roller_speeds[0];
   // The diagnosis so far, read every 10 ms of simulated time (a frame's worth at most).
   if (view.monitor != nullptr && (out.regime.empty() || view.t >= next_regime_t)) {
-    const RegimeFinding f = view.monitor->finding(std::nullopt);
-    out.regime = f.since > 0.0
-                     ? fmt::format("{} since t = {:.3f} s", regime_name(f.regime), f.since)
-                     : std::string(regime_name(f.regime));
-    if (f.jumps > 0)
-      out.regime += fmt::format("; {} jump{} off a roller, up to {:.1f} mm", f.jumps,
-                                f.jumps == 1 ? "" : "s", f.highest_jump.value_or(0.0) * 1e3);
+    out.regime = regime_so_far(view.monitor->finding(std::nullopt));
     next_regime_t = view.t + 0.01;
   }
   out.new_samples.clear();

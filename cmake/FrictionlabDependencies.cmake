@@ -92,6 +92,12 @@ if(FRICTIONLAB_WITH_MPI AND NOT MPI_C_FOUND)
   message(FATAL_ERROR "FRICTIONLAB_WITH_MPI=ON but MPI was not found (apt-get install libopenmpi-dev openmpi-bin)")
 endif()
 
+pkg_check_modules(HTTPLIB QUIET IMPORTED_TARGET cpp-httplib)
+option(FRICTIONLAB_WITH_SERVE "frictionlab serve: the lab in a browser, through cpp-httplib" ${HTTPLIB_FOUND})
+if(FRICTIONLAB_WITH_SERVE AND NOT HTTPLIB_FOUND)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_SERVE=ON but cpp-httplib was not found (apt-get install libcpp-httplib-dev)")
+endif()
+
 find_package(Python3 QUIET COMPONENTS Interpreter)
 
 if(FRICTIONLAB_BUILD_TESTS)

@@ -1,0 +1,102 @@
+// frictionlab serve: the lab in a browser. Prints the page's address and serves it until Ctrl-C
+// or SIGTERM (the server is serve/lab_server.hpp; its API docs/web-api.md).
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "cli/commands.hpp"
+#include "cli/stop_signals.hpp"
+#include "io/input_error.hpp"
+#include "lab/request/lab_data.hpp"
+
+#if FRICTIONLAB_WITH_SERVE
+#include "serve/lab_server.hpp"
+#endif
+
+namespace fl::cli {
+namespace {
+
+struct ServeCommandOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::string scenes = FRICTIONLAB_DEFAULT_SCENES_DIR;
+  std::string web;
+};
+
+// The built page: beside the executable (web/), where the build puts it.
+std::string default_web_dir() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string("web") : (exe.parent_path() / "web").string();
+}
+
+int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
+#if FRICTIONLAB_WITH_SERVE
+  std::error_code ec;
+  if (!std::filesystem::is_directory(o.scenes, ec))
+    throw InputError(SourceLocation{o.scenes},
+                     "expected a folder of scenes (*.yaml), found none there; give --scenes DIR");
+  serve::ServeOptions options;
+  options.host = o.host;
+  options.port = o.port;
+  options.scenes_dir = o.scenes;
+  options.web_dir = o.web.empty() ? default_web_dir() : o.web;
+  options.asset_dir = asset_dir(global.asset_dir);
+  options.version = std::string("frictionlab ") + FRICTIONLAB_VERSION;
+  if (!std::filesystem::exists(std::filesystem::path(options.web_dir) / "index.html", ec))
+    throw InputError(SourceLocation{options.web_dir},
+                     "expected the built page (index.html), found none: build it (cmake --build "
+                     "--preset release builds web/ when Node.js and npm are installed) or give "
+                     "--web DIR");
+  serve::LabServer server(options);
+  const int port = server.bind();
+  const std::string shown = o.host == "0.0.0.0" ? "127.0.0.1" : o.host;
+  fmt::print("frictionlab serve: the lab at http://{}:{}/ (Ctrl-C ends it)\n", shown, port);
+  std::fflush(stdout);
+  StopSignals signals;
+  std::thread watcher([&server] {
+    while (!stop_requested().load()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    server.stop();
+  });
+  server.listen();
+  // listen() returns on stop(), or when the server failed; the watcher ends with the signal.
+  if (!stop_requested().load()) {
+    watcher.detach();
+    fmt::print(stderr, "frictionlab serve: the server stopped\n");
+    return 1;
+  }
+  watcher.join();
+  fmt::print("frictionlab serve: stopped ({} session{} open)\n", server.sessions(),
+             server.sessions() == 1 ? "" : "s");
+  return 0;
+#else
+  (void)o;
+  (void)global;
+  throw InputError(SourceLocation{},
+                   "this build has no server: install libcpp-httplib-dev and build again");
+#endif
+}
+
+}  // namespace
+
+Command add_serve_command(CLI::App& app, const GlobalOptions& global) {
+  auto options = std::make_shared<ServeCommandOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "serve", "The lab in a browser: serves the page and its live simulations; prints the URL");
+  sub->add_option("--port", options->port, "Port to listen on (0: any free one)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 65535));
+  sub->add_option("--host", options->host,
+                  "Address to listen on (0.0.0.0 shares it with the network)")
+      ->capture_default_str();
+  sub->add_option("--scenes", options->scenes, "Folder of the scenes the page offers, by name")
+      ->capture_default_str();
+  sub->add_option("--web", options->web,
+                  "Folder of the built page (default: web/ beside the executable)");
+  return {sub, [options, &global] { return run_serve(*options, global); }};
+}
+
+}  // namespace fl::cli

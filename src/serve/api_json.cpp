@@ -1,0 +1,177 @@
+#include "serve/api_json.hpp"
+
+#include <fmt/format.h>
+
+#include "core/units.hpp"
+#include "io/input_error.hpp"
+#include "lab/request/field_checks.hpp"
+#include "serve/web_spelling.hpp"
+
+namespace fl::serve {
+namespace {
+
+using nlohmann::json;
+
+json or_null(const std::optional<double>& v) {
+  return v ? json(*v) : json(nullptr);
+}
+
+json vec3(const Vec3& v) {
+  return json::array({v[0], v[1], v[2]});
+}
+
+json paper_json(const CompiledRig& rig, const PaperTable& table) {
+  const FrictionSource& source = rig.friction_source;
+  if (!source.paper_material || !source.paper_period || !source.paper_mu_k) return nullptr;
+  const PaperMaterial* row = table.find(*source.paper_material);
+  return {{"material", row != nullptr ? row->name : *source.paper_material},
+          {"key", *source.paper_material},
+          {"temperature_K", source.temperature},
+          {"period", source.paper_period->value},
+          {"period_err", source.paper_period->uncertainty},
+          {"mu_k", source.paper_mu_k->value},
+          {"mu_k_err", source.paper_mu_k->uncertainty}};
+}
+
+}  // namespace
+
+json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable& table,
+              const std::string& version) {
+  json out{{"scenes", json::array()}, {"materials", json::array()}, {"version", version}};
+  for (const SceneEntry& s : scenes)
+    out["scenes"].push_back({{"name", s.name}, {"title", s.title}});
+  for (const PaperMaterial& m : table.materials) {
+    json temperatures = json::array({m.room.temperature});
+    if (m.cold) temperatures.push_back(m.cold->temperature);
+    out["materials"].push_back(
+        {{"key", m.key}, {"name", m.name}, {"temperatures_K", temperatures}});
+  }
+  return out;
+}
+
+json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable& table) {
+  const PlateDesc& p = rig.plate_desc;
+  json blocks = json::array();
+  for (const PlateBlock& b : p.blocks)
+    blocks.push_back({{"part", b.part}, {"x", b.x}, {"y", b.y}, {"turn_deg", b.turn}});
+  json magnets = json::array();
+  for (const MagnetDesc& m : rig.magnets)
+    magnets.push_back(
+        {{"x", m.x}, {"height", m.height}, {"diameter", m.diameter}, {"thickness", m.thickness}});
+  json frame = json::array();
+  if (rig.frame)
+    for (const FramePart& part : rig.frame->parts)
+      frame.push_back({{"part", part.part},
+                       {"position", vec3(part.position)},
+                       {"turn_deg", part.turn},
+                       {"color", json::array({part.color[0], part.color[1], part.color[2]})}});
+  json sensor = nullptr;
+  if (rig.sensor)
+    sensor = {{"x", rig.sensor->position[0]},
+              {"y", rig.sensor->position[1]},
+              {"z", rig.sensor->position[2]}};
+  return {
+      {"scene", scene},
+      {"spacing", rig.rollers.spacing},
+      {"roller_radius", rig.rollers.radius},
+      {"roller_length", rig.rollers.length},
+      {"roller_sense", rig.rollers.sense == RollerSense::kInward ? "inward" : "outward"},
+      {"roller_speed_rpm", rig.roller_speed_nominal * kRpmPerRadPerSecond},
+      {"drive", rig.drive.has_value()},
+      {"motor_duty", rig.drive ? json(rig.drive->parts.motor.duty) : json(nullptr)},
+      {"runout", rig.rollers.runout},
+      {"plate",
+       {{"length", p.length},
+        {"width", p.width},
+        {"thickness", p.thickness},
+        {"mass", rig.plate.mass},
+        {"h_c", rig.plate.h_c},
+        {"material", p.material},
+        {"blocks", blocks}}},
+      {"magnets", magnets},
+      {"sensor", sensor},
+      {"frame", frame},
+      {"offset", p.offset},
+      {"duration", rig.world.duration},
+      {"time_step", rig.world.time_step},
+      {"seed", rig.world.seed},
+      {"gravity", rig.world.gravity},
+      {"friction_law", rig.friction.depends_on_slip() ? "slip-dependent" : "coulomb"},
+      {"mu_k", rig.friction.mu_k},
+      {"temperature_K", rig.friction_source.temperature},
+      {"period_thin", rig.period_thin},
+      {"period_thick", or_null(rig.period_thick)},
+      {"omega", or_null(rig.omega)},
+      {"tipping_amplitude", or_null(rig.tipping_amplitude)},
+      {"paper", paper_json(rig, table)},
+  };
+}
+
+json frame_json(const LiveFrame& f, bool playing, double speed) {
+  json hall = json::array();
+  for (const HallSample& s : f.hall)
+    hall.push_back(json::array({static_cast<double>(s.t_us) * 1e-6, s.adc}));
+  json periods = json::array();
+  for (const EstimatedPeriod& p : f.periods)
+    periods.push_back(json::array({p.start, p.end, p.period, p.status == fl_estimator::kAccepted}));
+  json estimate = nullptr;
+  if (f.estimate)
+    estimate = {{"periods_used", f.estimate->periods_used},
+                {"periods_discarded", f.estimate->periods_discarded},
+                {"pulses", f.estimate->pulses},
+                {"period", f.estimate->period},
+                {"period_sd", f.estimate->period_std},
+                {"period_se", f.estimate->period_std_error},
+                {"mu_k", f.estimate->mu_k},
+                {"mu_k_err", f.estimate->mu_k_err_quadrature},
+                {"mu_k_err_worst", f.estimate->mu_k_err_worst}};
+  return {
+      {"t", f.t},
+      {"x", f.plate.x},
+      {"y", f.plate.y},
+      {"z", f.plate.z},
+      {"pitch", f.plate.pitch},
+      {"yaw", f.plate.yaw},
+      {"vx", f.plate.vx},
+      {"roller_angles", json::array({f.roller_angles[0], f.roller_angles[1]})},
+      {"contacts",
+       json::array(
+           {{{"normal", f.contacts[0].normal_force}, {"friction", f.contacts[0].friction_force}},
+            {{"normal", f.contacts[1].normal_force}, {"friction", f.contacts[1].friction_force}}})},
+      {"hall", hall},
+      {"pulses", f.pulses},
+      {"periods", periods},
+      {"estimate", estimate},
+      {"regime", f.regime},
+      {"playing", playing},
+      {"speed", speed}};
+}
+
+json problems_json(const std::exception& error) {
+  json problems = json::array();
+  if (const auto* request = dynamic_cast<const RequestError*>(&error)) {
+    for (const FieldProblem& p : request->problems())
+      problems.push_back({{"field", p.field},
+                          {"value", p.value ? json(*p.value) : json(nullptr)},
+                          {"message", web_spelled(p.message)}});
+  } else if (const auto* input = dynamic_cast<const InputError*>(&error)) {
+    const SourceLocation& where = input->where();
+    // A located message from a file (the scene's) keeps its location: it is not the page's.
+    const std::string message =
+        where.field.empty() ? std::string(input->what()) : without_location(input->what());
+    problems.push_back({{"field", where.field.empty() ? "scene" : where.field},
+                        {"value", where.field_value ? json(*where.field_value) : json(nullptr)},
+                        {"message", web_spelled(message)}});
+  } else {
+    problems.push_back({{"field", nullptr}, {"value", nullptr}, {"message", error.what()}});
+  }
+  return {{"error", fmt::format("the set-up has {} problem{}", problems.size(),
+                                problems.size() == 1 ? "" : "s")},
+          {"problems", problems}};
+}
+
+json error_json(const std::string& message) {
+  return {{"error", message}, {"problems", json::array()}};
+}
+
+}  // namespace fl::serve

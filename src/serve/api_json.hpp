@@ -1,0 +1,34 @@
+// The web API's bodies (docs/web-api.md) from the lab's values: what the page is offered, a
+// session's rig, a live frame, and the problems of a request the lab refused.
+#pragma once
+
+#include <exception>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/paper_table.hpp"
+#include "lab/live/live_run.hpp"
+#include "lab/request/session_request.hpp"
+#include "scene/compiled_rig.hpp"
+
+namespace fl::serve {
+
+// GET /api/lab: the scenes offered and the paper's Table I.
+nlohmann::json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable& table,
+                        const std::string& version);
+
+// A session's rig: its geometry, start, the analytic model's numbers, the paper's values.
+nlohmann::json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable& table);
+
+// One `state` event of the stream.
+nlohmann::json frame_json(const LiveFrame& frame, bool playing, double speed);
+
+// A 400's body: every problem of an InputError (a RequestError's by field), spelled for the page.
+nlohmann::json problems_json(const std::exception& error);
+
+// A 4xx's body for a problem of the API itself (a malformed body, an unknown session).
+nlohmann::json error_json(const std::string& message);
+
+}  // namespace fl::serve

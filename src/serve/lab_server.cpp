@@ -1,0 +1,283 @@
+#include "serve/lab_server.hpp"
+
+#include <atomic>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <random>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+#include <httplib.h>
+
+#include "io/input_error.hpp"
+#include "lab/request/lab_data.hpp"
+#include "serve/api_json.hpp"
+#include "serve/lab_session.hpp"
+
+namespace fl::serve {
+namespace {
+
+using nlohmann::json;
+
+constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
+constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
+constexpr std::size_t kMostSetEntries = 64;
+constexpr int kThreads = 64;  // each stream holds one while the page listens
+
+void send_json(httplib::Response& res, int status, const json& body) {
+  res.status = status;
+  res.set_content(body.dump(), "application/json");
+}
+
+std::string event(const char* name, const json& data) {
+  return fmt::format("event: {}\ndata: {}\n\n", name, data.dump());
+}
+
+// A request's JSON body, or a 400 said and nullopt.
+std::optional<json> body_of(const httplib::Request& req, httplib::Response& res) {
+  json body = json::parse(req.body, nullptr, /*allow_exceptions=*/false);
+  if (body.is_discarded() || !body.is_object()) {
+    send_json(res, 400,
+              error_json("expected a JSON object as the request's body, found " +
+                         (req.body.empty() ? std::string("none") : "text that is not one")));
+    return std::nullopt;
+  }
+  return body;
+}
+
+std::string content_type(const std::string& name) {
+  if (name.ends_with(".json")) return "application/json";
+  if (name.ends_with(".csv")) return "text/csv";
+  return "application/octet-stream";
+}
+
+}  // namespace
+
+struct LabServer::Impl {
+  ServeOptions options;
+  httplib::Server server;
+  mutable std::mutex mutex;
+  std::map<std::string, std::shared_ptr<LabSession>> sessions;
+  std::mt19937_64 ids{std::random_device{}()};
+  std::atomic<bool> stopping{false};
+
+  std::shared_ptr<LabSession> find(const std::string& id) const {
+    const std::lock_guard lock(mutex);
+    const auto it = sessions.find(id);
+    return it == sessions.end() ? nullptr : it->second;
+  }
+  void end_idle() {
+    const auto now = Clock::now();
+    const auto idle = std::chrono::minutes(options.idle_minutes);
+    const std::lock_guard lock(mutex);
+    std::erase_if(sessions, [&](const auto& s) { return now - s.second->last_seen() > idle; });
+  }
+  void routes();
+  void create(const httplib::Request& req, httplib::Response& res);
+  void stream(const std::shared_ptr<LabSession>& session, httplib::Response& res);
+  void control(LabSession& session, const httplib::Request& req, httplib::Response& res);
+};
+
+void LabServer::Impl::routes() {
+  server.Get("/api/lab", [this](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200,
+              lab_json(list_scenes(options.scenes_dir), paper_table_in(options.asset_dir),
+                       options.version));
+  });
+  server.Post("/api/sessions",
+              [this](const httplib::Request& req, httplib::Response& res) { create(req, res); });
+  const std::string session = "/api/sessions/([0-9a-f]{1,32})";
+  server.Get(session + "/stream", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = find(req.matches[1]);
+    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    stream(s, res);
+  });
+  server.Post(session + "/control", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = find(req.matches[1]);
+    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    control(*s, req, res);
+  });
+  server.Get(session + "/files/([A-Za-z0-9_.-]{1,64})", [this](const httplib::Request& req,
+                                                               httplib::Response& res) {
+    const auto s = find(req.matches[1]);
+    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    const std::string name = req.matches[2];
+    const std::optional<std::string> text = s->file(name);
+    if (!text)
+      return send_json(res, 404,
+                       error_json("no file \"" + name +
+                                  "\": the run writes its files when it ends, and only those its "
+                                  "scene's output part names"));
+    res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
+    res.set_content(*text, content_type(name));
+  });
+  server.Delete(session, [this](const httplib::Request& req, httplib::Response& res) {
+    const std::lock_guard lock(mutex);
+    const bool ended = sessions.erase(req.matches[1]) > 0;
+    send_json(res, ended ? 200 : 404,
+              ended ? json{{"ended", true}} : error_json("no such session"));
+  });
+}
+
+void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
+  end_idle();
+  const std::optional<json> body = body_of(req, res);
+  if (!body) return;
+  SessionRequest request;
+  const auto scene = body->find("scene");
+  if (scene == body->end() || !scene->is_string())
+    return send_json(res, 400,
+                     error_json("expected \"scene\": the name of a scene /api/lab offers"));
+  request.scene = scene->get<std::string>();
+  if (const auto set = body->find("set"); set != body->end()) {
+    if (!set->is_array() || set->size() > kMostSetEntries)
+      return send_json(res, 400,
+                       error_json(fmt::format("expected \"set\" as a list of at most {} texts "
+                                              "\"key.path=value\"",
+                                              kMostSetEntries)));
+    for (const json& entry : *set) {
+      if (!entry.is_string())
+        return send_json(res, 400,
+                         error_json("expected each \"set\" entry as a text \"key.path=value\", "
+                                    "found " +
+                                    entry.dump()));
+      request.set.push_back(entry.get<std::string>());
+    }
+  }
+  try {
+    PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
+    auto s = std::make_shared<LabSession>(request.scene, std::move(prepared));
+    const std::string id = fmt::format("{:016x}", ids());
+    json out{{"id", id},
+             {"rig", rig_json(request.scene, s->rig(), paper_table_in(options.asset_dir))}};
+    {
+      const std::lock_guard lock(mutex);
+      sessions.emplace(id, std::move(s));
+    }
+    send_json(res, 201, out);
+  } catch (const InputError& e) {
+    send_json(res, 400, problems_json(e));
+  } catch (const std::invalid_argument& e) {
+    // UnitError, DomainError: a value the lab refused.
+    send_json(res, 400, problems_json(e));
+  }
+}
+
+void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib::Response& res) {
+  res.set_header("Cache-Control", "no-cache");
+  struct StreamState {
+    std::optional<int> generation;
+    Clock::time_point next = Clock::now();
+  };
+  auto state = std::make_shared<StreamState>();
+  res.set_chunked_content_provider(
+      "text/event-stream", [this, session, state](std::size_t, httplib::DataSink& sink) {
+        if (stopping) return false;
+        std::this_thread::sleep_until(state->next);
+        state->next = std::max(state->next + kFrameInterval, Clock::now());
+        const LabSession::Tick tick = session->tick(Clock::now());
+        std::string out;
+        if (state->generation && *state->generation != tick.generation)
+          out += event("reset", json::object());
+        state->generation = tick.generation;
+        out += event("state", tick.state);
+        if (tick.done) {
+          if (const auto failure = tick.done->find("failure");
+              failure != tick.done->end() && !failure->is_null())
+            out += event("failed", {{"message", *failure}});
+          out += event("done", *tick.done);
+        }
+        // A client that has gone: the write fails and the stream ends; the session stays for
+        // its idle time (the page may come back).
+        return sink.write(out.data(), out.size());
+      });
+}
+
+void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
+                              httplib::Response& res) {
+  const std::optional<json> body = body_of(req, res);
+  if (!body) return;
+  try {
+    if (const auto speed = body->find("speed"); speed != body->end()) {
+      if (!speed->is_number())
+        throw std::invalid_argument("expected \"speed\" as a number: 1, 0.25 or 0.0625");
+      return send_json(res, 200, session.set_speed(speed->get<double>()));
+    }
+    const auto action = body->find("action");
+    const std::string name =
+        action != body->end() && action->is_string() ? action->get<std::string>() : "";
+    if (name == "play") return send_json(res, 200, session.play(Clock::now()));
+    if (name == "pause") return send_json(res, 200, session.pause());
+    if (name == "step") return send_json(res, 200, session.step());
+    if (name == "reset") return send_json(res, 200, session.reset());
+    throw std::invalid_argument(
+        "expected {\"action\": \"play\", \"pause\", \"step\" or \"reset\"} or {\"speed\": 1, 0.25 "
+        "or 0.0625}, found " +
+        body->dump());
+  } catch (const std::invalid_argument& e) {
+    send_json(res, 400, error_json(e.what()));
+  }
+}
+
+LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
+  impl_->options = std::move(options);
+  httplib::Server& s = impl_->server;
+  s.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+  s.set_payload_max_length(kMostBody);
+  s.set_exception_handler(
+      [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
+        std::string what = "an internal error";
+        try {
+          std::rethrow_exception(ep);
+        } catch (const std::exception& e) {
+          what = std::string("internal error: ") + e.what();
+        } catch (...) {
+        }
+        send_json(res, 500, error_json(what));
+      });
+  impl_->routes();
+  if (!impl_->options.web_dir.empty() && !s.set_mount_point("/", impl_->options.web_dir))
+    throw std::runtime_error("the page's folder " + impl_->options.web_dir +
+                             " is missing: build the page (cmake --build) or give --web DIR");
+  const std::string parts = (std::filesystem::path(impl_->options.asset_dir) / "lego").string();
+  s.set_mount_point("/parts", parts);
+  s.set_file_extension_and_mimetype_mapping("glb", "model/gltf-binary");
+  s.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
+}
+
+LabServer::~LabServer() {
+  stop();
+}
+
+int LabServer::bind() {
+  const ServeOptions& o = impl_->options;
+  if (o.port == 0) {
+    const int port = impl_->server.bind_to_any_port(o.host);
+    if (port < 0) throw std::runtime_error("could not listen on " + o.host);
+    return port;
+  }
+  if (!impl_->server.bind_to_port(o.host, o.port))
+    throw std::runtime_error(fmt::format(
+        "could not listen on {}:{} (is another server on that port? give --port another, or 0 "
+        "for any free one)",
+        o.host, o.port));
+  return o.port;
+}
+
+void LabServer::listen() {
+  impl_->server.listen_after_bind();
+}
+
+void LabServer::stop() {
+  impl_->stopping = true;
+  impl_->server.stop();
+}
+
+int LabServer::sessions() const {
+  const std::lock_guard lock(impl_->mutex);
+  return static_cast<int>(impl_->sessions.size());
+}
+
+}  // namespace fl::serve

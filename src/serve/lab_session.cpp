@@ -1,0 +1,102 @@
+#include "serve/lab_session.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "lab/run/summary_fields.hpp"
+#include "serve/api_json.hpp"
+
+namespace fl::serve {
+namespace {
+
+constexpr double kFrame = 1.0 / 30;   // s of simulated time a single step advances
+constexpr double kMostPerTick = 0.1;  // s of simulated time, whatever the wall clock did
+
+}  // namespace
+
+bool is_speed(double speed) {
+  return speed == 1.0 || speed == 0.25 || speed == 0.0625;
+}
+
+LabSession::LabSession(std::string scene, PreparedSession prepared)
+    : scene_(std::move(scene)),
+      prepared_(std::move(prepared)),
+      run_(std::make_unique<LiveRun>(prepared_.rig, prepared_.output)) {}
+
+LabSession::Tick LabSession::tick(Clock::time_point now) {
+  const std::lock_guard lock(mutex_);
+  last_seen_ = now;
+  if (playing_ && last_tick_) {
+    const double wall = std::chrono::duration<double>(now - *last_tick_).count();
+    target_ += std::clamp(wall * speed_, 0.0, kMostPerTick);
+  }
+  last_tick_ = now;
+  Tick out;
+  out.generation = generation_;
+  const LiveFrame frame = run_->advance_to(target_);
+  if (run_->ended()) playing_ = false;
+  out.state = frame_json(frame, playing_, speed_);
+  if (run_->ended() && !done_sent_) {
+    out.done = summary_json(run_->summary());
+    done_sent_ = true;
+  }
+  return out;
+}
+
+nlohmann::json LabSession::controls_json() const {
+  return {{"t", run_->time()}, {"playing", playing_}, {"speed", speed_}};
+}
+
+nlohmann::json LabSession::play(Clock::time_point now) {
+  const std::lock_guard lock(mutex_);
+  last_seen_ = now;
+  if (!run_->ended()) playing_ = true;
+  last_tick_ = now;
+  return controls_json();
+}
+
+nlohmann::json LabSession::pause() {
+  const std::lock_guard lock(mutex_);
+  playing_ = false;
+  return controls_json();
+}
+
+nlohmann::json LabSession::step() {
+  const std::lock_guard lock(mutex_);
+  playing_ = false;
+  target_ = std::max(target_, run_->time()) + kFrame;
+  return controls_json();
+}
+
+nlohmann::json LabSession::reset() {
+  const std::lock_guard lock(mutex_);
+  run_ = std::make_unique<LiveRun>(prepared_.rig, prepared_.output);
+  playing_ = false;
+  target_ = 0.0;
+  last_tick_.reset();
+  done_sent_ = false;
+  ++generation_;
+  return controls_json();
+}
+
+nlohmann::json LabSession::set_speed(double speed) {
+  if (!is_speed(speed))
+    throw std::invalid_argument("expected a speed of 1, 0.25 or 0.0625, found " +
+                                nlohmann::json(speed).dump());
+  const std::lock_guard lock(mutex_);
+  speed_ = speed;
+  return controls_json();
+}
+
+std::optional<std::string> LabSession::file(const std::string& name) {
+  const std::lock_guard lock(mutex_);
+  if (!run_->ended()) return std::nullopt;
+  return run_->file(name);
+}
+
+Clock::time_point LabSession::last_seen() const {
+  const std::lock_guard lock(mutex_);
+  return last_seen_;
+}
+
+}  // namespace fl::serve

@@ -1,0 +1,68 @@
+// One page's session: a live run of its set-up (lab/live/live_run.hpp) on the wall clock, played,
+// paused, stepped, slowed or started again by the page. Safe to call from several threads (a
+// stream and the page's controls).
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/live/live_run.hpp"
+#include "lab/request/session_request.hpp"
+
+namespace fl::serve {
+
+using Clock = std::chrono::steady_clock;
+
+// The slow-motion factors the page offers.
+bool is_speed(double speed);
+
+class LabSession {
+ public:
+  LabSession(std::string scene, PreparedSession prepared);
+
+  // What a stream sends now: `state` with what changed since the last tick (the run advanced by
+  // the wall time since then times the speed while playing, at most 0.1 s of simulated time a
+  // tick), then, once, `done` with the run's summary. `generation` is bumped by reset.
+  struct Tick {
+    nlohmann::json state;
+    std::optional<nlohmann::json> done;  // the summary, on the tick the run ended
+    int generation = 0;
+  };
+  Tick tick(Clock::time_point now);
+
+  // The page's controls; each answers {t, playing, speed}. Throws std::invalid_argument for an
+  // action or speed it does not know.
+  nlohmann::json play(Clock::time_point now);
+  nlohmann::json pause();
+  nlohmann::json step();
+  nlohmann::json reset();
+  nlohmann::json set_speed(double speed);
+
+  // The run's file by name once it has ended; nullopt before or for a file it does not keep.
+  std::optional<std::string> file(const std::string& name);
+  const CompiledRig& rig() const { return *prepared_.rig; }
+  const std::string& scene() const { return scene_; }
+  Clock::time_point last_seen() const;
+
+ private:
+  nlohmann::json controls_json() const;
+
+  const std::string scene_;
+  const PreparedSession prepared_;
+  mutable std::mutex mutex_;
+  std::unique_ptr<LiveRun> run_;
+  bool playing_ = false;
+  double speed_ = 1.0;
+  double target_ = 0.0;  // s of simulated time the run is to reach
+  std::optional<Clock::time_point> last_tick_;
+  Clock::time_point last_seen_ = Clock::now();
+  bool done_sent_ = false;
+  int generation_ = 0;
+};
+
+}  // namespace fl::serve

@@ -1,0 +1,273 @@
+// The server in-process on an ephemeral port, through a real HTTP client: what the page is
+// offered, sessions whose run is `run`'s (the same summary and files, byte for byte), refusals by
+// field, controls, and bad input that costs only the client who sent it.
+#include "serve/lab_server.hpp"
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/run/run_outputs.hpp"
+#include "support/scene_fixture.hpp"
+#include "support/temp_folder.hpp"
+
+namespace fl::serve {
+namespace {
+
+using nlohmann::json;
+
+class LabServerTest : public test::TempFolderTest {
+ protected:
+  LabServerTest() : TempFolderTest("lab-server") {}
+
+  void SetUp() override {
+    TempFolderTest::SetUp();
+    const std::filesystem::path scenes =
+        std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes";
+    std::filesystem::create_directories(dir_ / "scenes");
+    for (const char* name : {"minimal.yaml", "paper-rig.yaml"})
+      std::filesystem::copy_file(scenes / name, dir_ / "scenes" / name);
+    write("web/index.html", "<!doctype html><title>frictionlab</title>");
+    ServeOptions options;
+    options.host = "127.0.0.1";
+    options.port = 0;
+    options.scenes_dir = (dir_ / "scenes").string();
+    options.web_dir = (dir_ / "web").string();
+    options.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
+    options.version = "frictionlab test";
+    server_ = std::make_unique<LabServer>(options);
+    port_ = server_->bind();
+    thread_ = std::thread([this] { server_->listen(); });
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
+    client_->set_read_timeout(30, 0);
+  }
+  void TearDown() override {
+    server_->stop();
+    thread_.join();
+    TempFolderTest::TearDown();
+  }
+
+  httplib::Result post(const std::string& path, const json& body) {
+    return client_->Post(path.c_str(), body.dump(), "application/json");
+  }
+  // A session's id, or fails the test.
+  std::string start(const json& request) {
+    const auto res = post("/api/sessions", request);
+    EXPECT_TRUE(res);
+    if (!res) return "";
+    EXPECT_EQ(res->status, 201) << res->body;
+    return json::parse(res->body).value("id", "");
+  }
+  // Reads the stream until `done`: every event's name and data.
+  std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
+    std::vector<std::pair<std::string, json>> events;
+    std::string buffer;
+    httplib::Client reader("127.0.0.1", port_);
+    reader.set_read_timeout(60, 0);
+    reader.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data,
+                                                                std::size_t length) {
+      buffer.append(data, length);
+      for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
+        const std::string block = buffer.substr(0, end);
+        buffer.erase(0, end + 2);
+        const auto name_end = block.find('\n');
+        events.emplace_back(block.substr(7, name_end - 7), json::parse(block.substr(name_end + 7)));
+        if (events.back().first == "done") return false;
+      }
+      return true;
+    });
+    return events;
+  }
+
+  std::unique_ptr<LabServer> server_;
+  std::thread thread_;
+  int port_ = 0;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+TEST_F(LabServerTest, OffersTheFoldersScenesByNameAndThePapersMaterials) {
+  const auto res = client_->Get("/api/lab");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200);
+  const json lab = json::parse(res->body);
+  ASSERT_EQ(lab["scenes"].size(), 2u);
+  EXPECT_EQ(lab["scenes"][0]["name"], "minimal");
+  EXPECT_EQ(lab["scenes"][1]["name"], "paper-rig");
+  EXPECT_FALSE(lab["scenes"][1]["title"].get<std::string>().empty());
+  // Table I: LEGO blocks at 300 K and 77 K, iron at 300 K only.
+  bool lego = false, iron = false;
+  for (const json& m : lab["materials"]) {
+    if (m["key"] == "lego") lego = m["temperatures_K"] == json::array({300.0, 77.0});
+    if (m["key"] == "iron") iron = m["temperatures_K"] == json::array({300.0});
+  }
+  EXPECT_TRUE(lego);
+  EXPECT_TRUE(iron);
+  // The page, and the LEGO parts the 3D view loads.
+  const auto page = client_->Get("/");
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  const auto part = client_->Get("/parts/brick-2x4.glb");
+  ASSERT_TRUE(part);
+  EXPECT_EQ(part->status, 200);
+  EXPECT_EQ(part->body.substr(0, 4), "glTF");
+}
+
+TEST_F(LabServerTest, ASessionsRunIsTheRunsSummaryAndFilesByteForByte) {
+  const std::vector<std::string> set{"world.duration=1.5s", "rollers.spacing=70mm"};
+  const std::string id = start({{"scene", "minimal"}, {"set", set}});
+  ASSERT_FALSE(id.empty());
+  ASSERT_EQ(post("/api/sessions/" + id + "/control", {{"action", "play"}})->status, 200);
+  const auto events = stream_to_done(id);
+  ASSERT_FALSE(events.empty());
+  ASSERT_EQ(events.back().first, "done");
+
+  // The same set-up run as `frictionlab run minimal.yaml --set ...` runs it.
+  const Scene scene = test::scene_file(
+      "minimal.yaml",
+      std::vector<SceneOverride>{{"world.duration", "1.5s"}, {"rollers.spacing", "70mm"}});
+  const CompiledRig rig = compile_rig(scene);
+  RunOptions options;
+  options.record_trajectory = scene.output.trajectory;
+  options.record_hall = scene.output.hall;
+  options.record_cycles = scene.output.cycles;
+  RunRecording recording;
+  const RunSummary summary = run_experiment(rig, options, &recording);
+  EXPECT_EQ(events.back().second, summary_json(summary));
+  for (const auto& [name, text] : run_output_files(scene.output, rig, summary, recording)) {
+    if (name == "timing.json") continue;
+    const auto file = client_->Get(("/api/sessions/" + id + "/files/" + name).c_str());
+    ASSERT_TRUE(file);
+    EXPECT_EQ(file->status, 200) << name;
+    EXPECT_TRUE(file->body == text) << name << " differs from run's";
+  }
+  // The states came in order, the Hall samples each once: 1 kHz over 1.5 s.
+  std::size_t samples = 0;
+  double previous = -1.0;
+  for (const auto& [name, data] : events) {
+    if (name != "state") continue;
+    EXPECT_GE(data["t"].get<double>(), previous);
+    previous = data["t"].get<double>();
+    samples += data["hall"].size();
+  }
+  EXPECT_NEAR(static_cast<double>(samples), 1500.0, 2.0);
+}
+
+TEST_F(LabServerTest, ABadSetEntryIsRefusedByFieldWithTheEntry) {
+  const auto res = post("/api/sessions", {{"scene", "minimal"}, {"set", {"rollers.spacing=-5mm"}}});
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400);
+  const json body = json::parse(res->body);
+  ASSERT_EQ(body["problems"].size(), 1u);
+  EXPECT_EQ(body["problems"][0]["field"], "set");
+  EXPECT_EQ(body["problems"][0]["value"], "rollers.spacing=-5mm");
+  EXPECT_NE(body["problems"][0]["message"].get<std::string>().find("positive"), std::string::npos);
+  // An unknown key says the one it was near.
+  const auto typo = post("/api/sessions", {{"scene", "minimal"}, {"set", {"rollers.spacng=5mm"}}});
+  ASSERT_TRUE(typo);
+  EXPECT_EQ(typo->status, 400);
+  EXPECT_NE(typo->body.find("did you mean 'spacing'"), std::string::npos);
+}
+
+TEST_F(LabServerTest, AScenesNameIsNeverAPath) {
+  for (const std::string scene : {"../scenes/minimal", "/etc/passwd", "minimal.yaml", ""}) {
+    const auto res = post("/api/sessions", {{"scene", scene}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << scene;
+    const json body = json::parse(res->body);
+    EXPECT_EQ(body["problems"][0]["field"], "scene") << scene;
+  }
+  // Nor does a file's path reach outside the page's folder.
+  for (const char* path :
+       {"/../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/parts/../parts.yaml"}) {
+    const auto res = client_->Get(path);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 404) << path;
+  }
+}
+
+TEST_F(LabServerTest, BadRequestsCostTheirClientAnErrorAndTheServerGoesOn) {
+  for (const std::string body : {"", "garbage", "[1,2]", R"({"set": []})", R"({"scene": 3})",
+                                 R"({"scene": "minimal", "set": "rollers.spacing=70mm"})",
+                                 R"({"scene": "minimal", "set": [1]})"}) {
+    const auto res = client_->Post("/api/sessions", body, "application/json");
+    ASSERT_TRUE(res) << body;
+    EXPECT_EQ(res->status, 400) << body;
+    EXPECT_TRUE(json::parse(res->body).contains("error")) << body;
+  }
+  // Garbage bytes on a raw connection, and a client that vanishes mid-stream.
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(port_));
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+  std::mt19937 bytes(7);
+  std::string noise(100000, '\0');
+  for (char& c : noise) c = static_cast<char>(bytes());
+  (void)::send(fd, noise.data(), noise.size(), MSG_NOSIGNAL);
+  ::close(fd);
+  const std::string id = start({{"scene", "minimal"}});
+  {
+    httplib::Client leaver("127.0.0.1", port_);
+    int chunks = 0;
+    leaver.Get(("/api/sessions/" + id + "/stream").c_str(),
+               [&](const char*, std::size_t) { return ++chunks < 3; });
+  }
+  const auto res = client_->Get("/api/lab");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(server_->sessions(), 1);
+}
+
+TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
+  const std::string id = start({{"scene", "minimal"}});
+  const std::string control = "/api/sessions/" + id + "/control";
+  // A step while paused advances one frame's worth of simulated time, 1/30 s.
+  ASSERT_EQ(post(control, {{"action", "step"}})->status, 200);
+  std::string buffer;
+  httplib::Client reader("127.0.0.1", port_);
+  json first;
+  reader.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data, std::size_t n) {
+    buffer.append(data, n);
+    const auto end = buffer.find("\n\n");
+    if (end == std::string::npos) return true;
+    first = json::parse(buffer.substr(buffer.find("data: ") + 6, end - buffer.find("data: ") - 6));
+    return false;
+  });
+  EXPECT_NEAR(first["t"].get<double>(), 1.0 / 30, 1e-3 + 1e-12);
+  EXPECT_FALSE(first["playing"].get<bool>());
+  const json slow = json::parse(post(control, {{"speed", 0.0625}})->body);
+  EXPECT_EQ(slow["speed"], 0.0625);
+  const json reset = json::parse(post(control, {{"action", "reset"}})->body);
+  EXPECT_EQ(reset["t"], 0.0);
+  EXPECT_FALSE(reset["playing"].get<bool>());
+  // What it does not know: 400, saying what it takes.
+  for (const json& bad :
+       {json{{"speed", 4}}, json{{"speed", "fast"}}, json{{"action", "jump"}}, json::object()}) {
+    const auto res = post(control, bad);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << bad.dump();
+  }
+  // A session that is not there.
+  const auto gone = post("/api/sessions/0123456789abcdef/control", {{"action", "play"}});
+  ASSERT_TRUE(gone);
+  EXPECT_EQ(gone->status, 404);
+  // No files before the run's end.
+  const auto early = client_->Get(("/api/sessions/" + id + "/files/summary.json").c_str());
+  ASSERT_TRUE(early);
+  EXPECT_EQ(early->status, 404);
+  ASSERT_EQ(client_->Delete(("/api/sessions/" + id).c_str())->status, 200);
+  EXPECT_EQ(server_->sessions(), 0);
+}
+
+}  // namespace
+}  // namespace fl::serve

@@ -2,6 +2,7 @@
 // or SIGTERM (the server is serve/lab_server.hpp; its API docs/web-api.md).
 #include <chrono>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -52,7 +53,12 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
                      "--preset release builds web/ when Node.js and npm are installed) or give "
                      "--web DIR");
   serve::LabServer server(options);
-  const int port = server.bind();
+  int port = 0;
+  try {
+    port = server.bind();
+  } catch (const std::runtime_error& e) {
+    throw InputError(SourceLocation::of_field("port", std::to_string(o.port)), e.what());
+  }
   const std::string shown = o.host == "0.0.0.0" ? "127.0.0.1" : o.host;
   fmt::print("frictionlab serve: the lab at http://{}:{}/ (Ctrl-C ends it)\n", shown, port);
   std::fflush(stdout);

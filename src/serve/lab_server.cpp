@@ -259,10 +259,10 @@ int LabServer::bind() {
     return port;
   }
   if (!impl_->server.bind_to_port(o.host, o.port))
-    throw std::runtime_error(fmt::format(
-        "could not listen on {}:{} (is another server on that port? give --port another, or 0 "
-        "for any free one)",
-        o.host, o.port));
+    throw std::runtime_error(
+        fmt::format("could not listen on {}:{} (another server on that port?); give another "
+                    "port, or 0 for any free one",
+                    o.host, o.port));
   return o.port;
 }
 

@@ -115,16 +115,22 @@ json frame_json(const LiveFrame& f, bool playing, double speed) {
   for (const EstimatedPeriod& p : f.periods)
     periods.push_back(json::array({p.start, p.end, p.period, p.status == fl_estimator::kAccepted}));
   json estimate = nullptr;
-  if (f.estimate)
-    estimate = {{"periods_used", f.estimate->periods_used},
-                {"periods_discarded", f.estimate->periods_discarded},
-                {"pulses", f.estimate->pulses},
-                {"period", f.estimate->period},
-                {"period_sd", f.estimate->period_std},
-                {"period_se", f.estimate->period_std_error},
-                {"mu_k", f.estimate->mu_k},
-                {"mu_k_err", f.estimate->mu_k_err_quadrature},
-                {"mu_k_err_worst", f.estimate->mu_k_err_worst}};
+  if (f.estimate) {
+    // The spreads and mu_k's uncertainty from two periods on, as the summary gives them: one
+    // period has none (null, never 0).
+    const EstimatorReport& e = *f.estimate;
+    const bool spread = e.periods_used >= 2;
+    const auto measured = [spread](double v) { return spread ? json(v) : json(nullptr); };
+    estimate = {{"periods_used", e.periods_used},
+                {"periods_discarded", e.periods_discarded},
+                {"pulses", e.pulses},
+                {"period", e.period},
+                {"period_sd", measured(e.period_std)},
+                {"period_se", measured(e.period_std_error)},
+                {"mu_k", e.mu_k},
+                {"mu_k_err", measured(e.mu_k_err_quadrature)},
+                {"mu_k_err_worst", measured(e.mu_k_err_worst)}};
+  }
   return {
       {"t", f.t},
       {"x", f.plate.x},

@@ -1,0 +1,206 @@
+// The page: wires the lab's session to the 3D view, the plots, the readouts and the controls.
+import { SetupControls } from "./controls";
+import { byId, setText } from "./dom";
+import { ExportPanel } from "./export_panel";
+import { getLab, SetupError } from "./lab_client";
+import type { Lab, LabState, PlaybackSpeed, Rig, Summary } from "./lab_types";
+import { PeriodsTable } from "./periods_table";
+import { Playback } from "./playback";
+import { HallPlot, PositionPlot } from "./plots";
+import { Readouts } from "./readouts";
+import { SessionKeeper, Superseded } from "./session";
+import { Stopwatch } from "./stopwatch";
+import { headlineOf } from "./summary";
+import { RigView } from "./view3d";
+
+const DEFAULT_SCENE = "paper-rig";
+
+let lab: Lab | null = null;
+let lastState: LabState | null = null;
+let playing = false;
+let done = false;
+
+const view = new RigView(byId("view"));
+const positionPlot = new PositionPlot(byId("plot-x"));
+const hallPlot = new HallPlot(byId("plot-hall"));
+const hallNote = byId("hall-note");
+const periods = new PeriodsTable(
+  byId<HTMLTableSectionElement>("periods-body"),
+  byId("periods-scroll"),
+  byId("periods-tally"),
+);
+const readouts = new Readouts();
+const exportPanel = new ExportPanel(() => view.toPng());
+const pageProblem = byId("page-problem");
+const stopwatch = new Stopwatch(
+  () => lastState?.t ?? null,
+  () => readouts.currentPeriod,
+);
+
+function showPageProblem(error: unknown): void {
+  const message = error instanceof Error ? error.message : String(error);
+  setText(pageProblem, message ? `The lab did not answer as expected: ${message}` : "");
+}
+
+function showRun(): void {
+  playback.show({ playing, done, ready: keeper.current !== null });
+}
+
+/** Back to t = 0 of the same rig: empty plots, periods and estimate. */
+function clearRun(): void {
+  lastState = null;
+  done = false;
+  positionPlot.clear();
+  hallPlot.clear();
+  periods.clear();
+  readouts.reset();
+  exportPanel.disableFiles();
+}
+
+function showRig(rig: Rig): void {
+  view.setRig(rig);
+  positionPlot.setRig(rig);
+  if (lab) readouts.setRig(rig, lab);
+  hallNote.hidden = rig.sensor !== null;
+  clearRun();
+  playing = false;
+  readouts.setStatus("paused");
+  showRun();
+}
+
+const keeper = new SessionKeeper({
+  state(state) {
+    if (lastState && state.t < lastState.t - 1e-9) clearRun();
+    lastState = state;
+    view.setState(state);
+    positionPlot.push(state);
+    hallPlot.push(state);
+    periods.add(state.periods);
+    readouts.setState(state);
+    stopwatch.showEstimator();
+    playback.showSpeed(state.speed);
+    if (state.playing !== playing) {
+      playing = state.playing;
+      showRun();
+    }
+  },
+  done(summary: Summary) {
+    if (done) return;
+    done = true;
+    playing = false;
+    readouts.setDone(headlineOf(summary));
+    stopwatch.showEstimator();
+    const session = keeper.current;
+    if (session) exportPanel.enableFiles(session.id);
+    showRun();
+  },
+  failed(failure) {
+    readouts.setFailure(failure.message);
+  },
+  reset() {
+    clearRun();
+    readouts.setStatus("paused");
+    showRun();
+  },
+});
+
+async function command(action: Parameters<SessionKeeper["command"]>[0]): Promise<void> {
+  try {
+    const reply = await keeper.command(action);
+    if (!reply) return;
+    playing = reply.playing;
+    if (!done) readouts.setStatus(playing ? "playing" : "paused");
+    showRun();
+  } catch (error) {
+    showPageProblem(error);
+  }
+}
+
+async function reset(): Promise<void> {
+  await command("reset");
+  clearRun();
+  readouts.setStatus("paused");
+  showRun();
+}
+
+const playback = new Playback({
+  toggle: () => {
+    if (done) void reset().then(() => command("play"));
+    else void command(playing ? "pause" : "play");
+  },
+  step: () => void command("step"),
+  reset: () => void reset(),
+  speed: (speed: PlaybackSpeed) => void command({ speed }),
+});
+
+/** Starts the set-up's session (ending the one before); false where it was refused. */
+async function openSetup(scene: string, entries: string[], play: boolean): Promise<boolean> {
+  controls.busy = true;
+  try {
+    const session = await keeper.open(scene, entries);
+    showPageProblem("");
+    controls.clearProblems();
+    controls.scene = scene;
+    controls.adoptRig(session.rig);
+    showRig(session.rig);
+    exportPanel.showLink(scene, entries);
+    if (playback.speed !== 1) await command({ speed: playback.speed });
+    if (play) await command("play");
+    return true;
+  } catch (error) {
+    if (error instanceof Superseded) return false;
+    if (error instanceof SetupError) controls.showProblems(error.problems, error.message);
+    else showPageProblem(error);
+    return false;
+  } finally {
+    controls.busy = false;
+  }
+}
+
+const controls = new SetupControls({
+  setupChanged: () => void openSetup(controls.scene, controls.entries(), playing),
+  sceneChanged: (scene) => {
+    controls.forgetChanges();
+    void openSetup(scene, [], playing);
+  },
+});
+
+async function boot(): Promise<void> {
+  try {
+    lab = await getLab();
+  } catch (error) {
+    showPageProblem(error);
+    return;
+  }
+  setText(byId("version"), lab.version);
+  controls.populate(lab);
+  const names = lab.scenes.map((s) => s.name);
+  const fallback = names.includes(DEFAULT_SCENE) ? DEFAULT_SCENE : names[0];
+  const params = new URLSearchParams(location.search);
+  const linked = params.get("scene");
+  if (linked) {
+    // A link plays its set-up at once; a refused one keeps its problems shown beside the
+    // controls and opens the scene as it is (or the default scene), paused.
+    if (names.includes(linked)) controls.scene = linked;
+    controls.takeLinkEntries(params.getAll("set"));
+    if (await openSetup(linked, controls.entries(), true)) return;
+    const problems = snapshotProblems();
+    controls.forgetChanges();
+    const scene = names.includes(linked) ? linked : fallback;
+    if (scene && (await openSetup(scene, [], false))) problems();
+    return;
+  }
+  if (fallback) await openSetup(fallback, [], false);
+}
+
+/** Keeps the messages beside the controls to show them again after another session opens. */
+function snapshotProblems(): () => void {
+  const shown = Array.from(document.querySelectorAll<HTMLElement>(".problem")).map(
+    (element) => [element, element.textContent ?? ""] as const,
+  );
+  return () => {
+    for (const [element, text] of shown) if (text) element.textContent = text;
+  };
+}
+
+void boot();

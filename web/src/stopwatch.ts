@@ -1,0 +1,103 @@
+// The student's stopwatch: started and stopped by hand (the button, or Space when the focus is
+// not in a control) to time ten periods. It shows the wall time and the simulated time between
+// the presses, so it measures the plate's period in slow motion too.
+import { byId, setText } from "./dom";
+import { fixed } from "./format";
+
+const PERIODS_TIMED = 10;
+
+/** Space toggles the stopwatch unless it would also type, pick or press something. */
+function spaceIsFree(target: EventTarget | null): boolean {
+  if (!(target instanceof HTMLElement)) return true;
+  if (target.isContentEditable) return false;
+  return !target.closest("input, select, textarea, button, a[href], summary, [role='button']");
+}
+
+export class Stopwatch {
+  private readonly toggleButton = byId<HTMLButtonElement>("stopwatch-toggle");
+  private readonly clearButton = byId<HTMLButtonElement>("stopwatch-clear");
+  private readonly wall = byId("stopwatch-wall");
+  private readonly simulated = byId("stopwatch-sim");
+  private readonly estimator = byId("stopwatch-estimator");
+  private wallStart = 0;
+  private wallEnd = 0;
+  private simStart: number | null = null;
+  private simEnd: number | null = null;
+  private running = false;
+  private frame = 0;
+
+  constructor(
+    private readonly simTime: () => number | null,
+    private readonly estimatorPeriod: () => number | null,
+  ) {
+    this.toggleButton.addEventListener("click", () => this.toggle());
+    this.clearButton.addEventListener("click", () => this.clear());
+    document.addEventListener("keydown", (event) => {
+      if (event.code !== "Space" && event.key !== " ") return;
+      if (event.repeat || event.ctrlKey || event.altKey || event.metaKey) return;
+      if (!spaceIsFree(event.target)) return;
+      event.preventDefault();
+      this.toggle();
+    });
+    this.clear();
+  }
+
+  toggle(): void {
+    if (this.running) this.stop();
+    else this.start();
+  }
+
+  private start(): void {
+    this.running = true;
+    this.wallStart = performance.now();
+    this.simStart = this.simTime();
+    this.toggleButton.textContent = "Stop";
+    this.toggleButton.setAttribute("aria-pressed", "true");
+    const tick = () => {
+      this.show(performance.now(), this.simTime());
+      this.frame = requestAnimationFrame(tick);
+    };
+    tick();
+  }
+
+  private stop(): void {
+    cancelAnimationFrame(this.frame);
+    this.running = false;
+    this.wallEnd = performance.now();
+    this.simEnd = this.simTime();
+    this.toggleButton.textContent = "Start";
+    this.toggleButton.setAttribute("aria-pressed", "false");
+    this.show(this.wallEnd, this.simEnd);
+  }
+
+  clear(): void {
+    if (this.running) this.stop();
+    this.wallStart = this.wallEnd = 0;
+    this.simStart = this.simEnd = null;
+    setText(this.wall, "—");
+    setText(this.simulated, "—");
+    this.showEstimator();
+  }
+
+  private show(wallNow: number, simNow: number | null): void {
+    const wallS = (wallNow - this.wallStart) / 1000;
+    setText(
+      this.wall,
+      `${wallS.toFixed(2)} s, ÷ ${PERIODS_TIMED} = ${(wallS / PERIODS_TIMED).toFixed(3)} s`,
+    );
+    const simS = simNow !== null && this.simStart !== null ? simNow - this.simStart : null;
+    setText(
+      this.simulated,
+      simS === null || simS < 0
+        ? "—"
+        : `${simS.toFixed(3)} s, ÷ ${PERIODS_TIMED} = ${(simS / PERIODS_TIMED).toFixed(4)} s`,
+    );
+    this.showEstimator();
+  }
+
+  /** Shows the estimator's period beside the hand-timed one. */
+  showEstimator(): void {
+    const period = this.estimatorPeriod();
+    setText(this.estimator, period === null ? "—" : `${fixed(period, 4)} s`);
+  }
+}

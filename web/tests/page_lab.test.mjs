@@ -1,0 +1,170 @@
+// The page against the real `frictionlab serve`, in Debian's chromium, headless (software
+// WebGL): it loads without console errors, a set-up from a link runs and its period is the one
+// `frictionlab run` gives for it (the same number, to the last bit), changing the spacing and
+// the material changes the period as the thick-plate theory says, an invalid value shows its
+// message beside its control, and a screenshot is written.
+//
+//   node tests/page_lab.test.mjs --exe build/release/src/cli/frictionlab
+//                                --web build/release/src/cli/web [--shot FILE]
+// Exit status: 0 all passed, 1 a check failed, 77 no chromium (the test is skipped).
+import { execFileSync, spawn } from "node:child_process";
+import { existsSync } from "node:fs";
+import { dirname, resolve } from "node:path";
+import { createInterface } from "node:readline";
+import { fileURLToPath } from "node:url";
+import { parseArgs } from "node:util";
+import { chromium } from "playwright-core";
+
+const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
+const { values: options } = parseArgs({
+  options: {
+    exe: { type: "string" },
+    web: { type: "string" },
+    shot: { type: "string", default: "/tmp/frictionlab-page.png" },
+  },
+});
+if (!options.exe || !options.web) {
+  console.error("usage: node tests/page_lab.test.mjs --exe FRICTIONLAB --web DIR [--shot FILE]");
+  process.exit(2);
+}
+const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
+if (!existsSync(executablePath)) {
+  console.error(`skipped: no chromium at ${executablePath} (apt-get install chromium)`);
+  process.exit(77);
+}
+
+// The server on any free port; its first line names the address.
+const server = spawn(
+  options.exe,
+  ["serve", "--port", "0", "--web", options.web, "--scenes", `${repository}/scenes`],
+  { stdio: ["ignore", "pipe", "inherit"] },
+);
+const base = await new Promise((done, fail) => {
+  const lines = createInterface({ input: server.stdout });
+  lines.on("line", (line) => {
+    const found = /http:\/\/[\d.]+:\d+/.exec(line);
+    if (found) done(found[0]);
+  });
+  server.on("exit", (code) => fail(new Error(`frictionlab serve exited with ${code}`)));
+});
+const browser = await chromium.launch({
+  executablePath,
+  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
+});
+
+let failed = 0;
+async function check(name, body) {
+  const started = Date.now();
+  try {
+    await body();
+    console.log(`ok   ${name} (${Date.now() - started} ms)`);
+  } catch (error) {
+    failed += 1;
+    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
+  }
+}
+function expect(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+/** A page at `path` that records console errors and warnings. */
+async function openPage(path) {
+  const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  const page = await context.newPage();
+  const complaints = [];
+  page.on("console", (m) => {
+    if (m.type() === "error" || m.type() === "warning") complaints.push(m.text());
+  });
+  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  await page.goto(`${base}${path}`);
+  return { page, context, complaints };
+}
+
+/** The set-up a link names, run in the page to its end: the period it shows, full precision. */
+async function pagePeriod(set) {
+  const query = ["scene=minimal", ...set.map((s) => `set=${encodeURIComponent(s)}`)].join("&");
+  const { page, context, complaints } = await openPage(`/?${query}`);
+  await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  const period = Number(await page.getByTestId("period").getAttribute("data-period-s"));
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+  return period;
+}
+
+/** The same set-up as `frictionlab run` runs it. */
+function runPeriod(set) {
+  const args = ["run", `${repository}/scenes/minimal.yaml`, "--json"];
+  for (const s of set) args.push("--set", s);
+  return JSON.parse(execFileSync(options.exe, args, { encoding: "utf8" })).period_s;
+}
+
+/** The thick plate's period, 2 pi sqrt((l - 2 mu h_c) / (2 mu g)) (the paper's eq. with h_c). */
+function thickPeriod(l, mu, h_c, g) {
+  return 2 * Math.PI * Math.sqrt((l - 2 * mu * h_c) / (2 * mu * g));
+}
+
+// The minimal scene's plate, from the API (h_c is the plate's geometry, an input of the theory).
+const rig = await (
+  await fetch(`${base}/api/sessions`, {
+    method: "POST",
+    body: JSON.stringify({ scene: "minimal" }),
+  })
+).json();
+const { h_c } = rig.rig.plate;
+const g = rig.rig.gravity;
+const duration = "world.duration=6s";
+
+const periods = {};
+await check("a link's set-up runs in the page and its period is run's", async () => {
+  const set = [duration, "rollers.spacing=70mm"];
+  periods.l70 = await pagePeriod(set);
+  const expected = runPeriod(set);
+  expect(periods.l70 === expected, `page ${periods.l70} s, run ${expected} s`);
+});
+
+await check("the spacing and the material change the period as theory says", async () => {
+  periods.l89 = await pagePeriod([duration]);
+  periods.iron = await pagePeriod([duration, "plate.material=iron"]);
+  const lego = 0.29; // Table I at 300 K
+  const iron = 0.42;
+  const near = (a, b, tolerance) => Math.abs(a / b - 1) <= tolerance;
+  // Each period within 0.2 % of the thick plate's, and the ratios within 0.2 % of theory's.
+  expect(near(periods.l89, thickPeriod(0.089, lego, h_c, g), 2e-3), `89 mm: ${periods.l89}`);
+  expect(near(periods.l70, thickPeriod(0.07, lego, h_c, g), 2e-3), `70 mm: ${periods.l70}`);
+  expect(near(periods.iron, thickPeriod(0.089, iron, h_c, g), 2e-3), `iron: ${periods.iron}`);
+  const spacing = thickPeriod(0.07, lego, h_c, g) / thickPeriod(0.089, lego, h_c, g);
+  expect(near(periods.l70 / periods.l89, spacing, 2e-3), `T70/T89 ${periods.l70 / periods.l89}`);
+  const material = thickPeriod(0.089, iron, h_c, g) / thickPeriod(0.089, lego, h_c, g);
+  expect(
+    near(periods.iron / periods.l89, material, 2e-3),
+    `iron/lego ${periods.iron / periods.l89}`,
+  );
+});
+
+await check("an invalid spacing shows the lab's message beside the spacing control", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  await page.fill("#spacing-mm", "-5");
+  await page.press("#spacing-mm", "Enter");
+  const field = page.locator(".field", { has: page.locator("#spacing-mm") });
+  await field.getByTestId("problem-spacing").filter({ hasText: "positive" }).waitFor();
+  // The browser logs the refusal's 400 itself; nothing else may complain.
+  const others = complaints.filter((c) => !c.includes("status of 400"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
+  await context.close();
+});
+
+await check("the paper's rig loads without console errors; a screenshot is written", async () => {
+  const { page, context, complaints } = await openPage("/?scene=paper-rig");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.getByTestId("period").filter({ hasText: "±" }).waitFor({ timeout: 60000 });
+  await page.screenshot({ path: options.shot });
+  expect(existsSync(options.shot), "no screenshot");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await browser.close();
+server.kill("SIGTERM");
+console.log(failed === 0 ? "all passed" : `${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);

@@ -1,0 +1,256 @@
+// Drives the built page against tests/mock_server.mjs in headless Chromium (software WebGL):
+// no console errors, the period readout fills, a refused spacing shows its problem beside the
+// spacing control, links open their set-up and play, the stopwatch runs; a screenshot at
+// 1366x768 goes to $SHOT (default /tmp/web-shot.png).
+//
+//   node tests/page_mock.test.mjs        (builds the page into a temporary folder first)
+import { execFileSync } from "node:child_process";
+import { existsSync, mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+import { startMockServer } from "./mock_server.mjs";
+
+const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
+const shot = process.env.SHOT ?? "/tmp/web-shot.png";
+const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
+if (!existsSync(executablePath)) {
+  console.error(
+    `skipped: no chromium at ${executablePath} (apt-get install chromium, or set CHROMIUM)`,
+  );
+  process.exit(77);
+}
+
+const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
+execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
+const server = await startMockServer({ dist });
+const base = `http://127.0.0.1:${server.port}`;
+const browser = await chromium.launch({
+  executablePath,
+  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
+});
+
+let passed = 0;
+let failed = 0;
+async function check(name, body) {
+  const started = Date.now();
+  try {
+    await body();
+    passed += 1;
+    console.log(`ok   ${name} (${Date.now() - started} ms)`);
+  } catch (error) {
+    failed += 1;
+    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
+  }
+}
+function expect(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+/** A page that records console errors and warnings, and failed requests. */
+async function openPage(path, viewport = { width: 1366, height: 768 }) {
+  const context = await browser.newContext({ viewport, acceptDownloads: true });
+  const page = await context.newPage();
+  const complaints = [];
+  page.on("console", (message) => {
+    if (message.type() === "error" || message.type() === "warning") {
+      complaints.push(`${message.type()}: ${message.text()}`);
+    }
+  });
+  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  await page.goto(`${base}${path}`);
+  return { page, context, complaints };
+}
+
+const periodText = /^T = \d+\.\d{4} ± \d+\.\d{4} s$/;
+
+await check("the default scene loads paused, plays, fills the period and ends done", async () => {
+  const { page, context, complaints } = await openPage("/");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  expect((await page.locator("#scene").inputValue()) === "paper-rig", "paper-rig is not chosen");
+  expect((await page.getByTestId("status").textContent()) === "paused", "not paused at first");
+  expect((await page.getByTestId("play").textContent()) === "Play", "play button label");
+  // the LEGO parts arrive
+  await page.waitForFunction(() =>
+    performance
+      .getEntriesByType("resource")
+      .some((entry) => entry.name.endsWith("/parts/technic-brick-1x16.glb")),
+  );
+  await page.getByTestId("play").click();
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.waitForFunction(
+    () => /T = \d.* ± /.test(document.querySelector('[data-testid="period"]').textContent),
+    null,
+    { timeout: 10000 },
+  );
+  const running = await page.getByTestId("period").textContent();
+  expect(periodText.test(running), `period readout reads "${running}"`);
+  await page
+    .getByTestId("status")
+    .filter({ hasText: /^done$/ })
+    .waitFor({ timeout: 15000 });
+  await page.getByTestId("period-detail").filter({ hasText: "the run's result" }).waitFor();
+  const final = await page.getByTestId("period").textContent();
+  expect(periodText.test(final), `done period readout reads "${final}"`);
+  expect(/μₖ = \d/.test(await page.getByTestId("mu-k").textContent()), "mu_k readout empty");
+  const rows = await page.locator("#periods-body tr").count();
+  expect(rows >= 2, `${rows} period rows`);
+  const href = await page.getByTestId("file-summary").getAttribute("href");
+  expect(/\/api\/sessions\/\d+\/files\/summary\.json$/.test(href ?? ""), `summary link ${href}`);
+  expect((await page.getByTestId("play").textContent()) === "Play again", "play after done");
+  await page.screenshot({ path: shot });
+  const [download] = await Promise.all([page.waitForEvent("download"), page.click("#png")]);
+  expect(download.suggestedFilename() === "frictionlab-view.png", "PNG name");
+  // "Play again" runs the same set-up from t = 0
+  await page.getByTestId("play").click();
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.getByTestId("period").filter({ hasText: "T = — s" }).waitFor();
+  expect(
+    await page.getByTestId("file-summary").getAttribute("aria-disabled"),
+    "files stay enabled",
+  );
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a refused spacing shows its message beside the spacing control", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.fill("#spacing-mm", "-5");
+  await page.press("#spacing-mm", "Enter");
+  const problem = page.getByTestId("problem-spacing");
+  await problem.filter({ hasText: "expected a positive length" }).waitFor();
+  expect((await problem.getAttribute("role")) === "alert", "problem is not an alert");
+  const field = page.locator(".field", { has: page.locator("#spacing-mm") });
+  expect((await field.getByTestId("problem-spacing").count()) === 1, "problem not beside spacing");
+  expect(
+    (await page.locator("#spacing-mm").getAttribute("aria-invalid")) === "true",
+    "not invalid",
+  );
+  // the page stays usable: the running session goes on, a good value starts a new one
+  await page.fill("#spacing-mm", "70");
+  await page.press("#spacing-mm", "Enter");
+  await page.getByTestId("spacing").filter({ hasText: "70 mm" }).waitFor();
+  expect((await problem.textContent()) === "", "problem stays after a good value");
+  const link = await page.getByTestId("setup-link").inputValue();
+  expect(link.endsWith("/?scene=minimal&set=rollers.spacing%3D70mm"), `link ${link}`);
+  const keeps = complaints.filter((c) => !c.includes("400 (Bad Request)"));
+  expect(keeps.length === 0, `console: ${keeps.join("\n")}`);
+  await context.close();
+});
+
+await check("a link opens its set-up and plays it; unchanged controls send nothing", async () => {
+  const { page, context, complaints } = await openPage(
+    "/?scene=minimal&set=rollers.spacing%3D60mm&set=plate.material%3Diron&set=world.duration%3D5s",
+  );
+  await page.getByTestId("spacing").filter({ hasText: "60 mm" }).waitFor();
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  expect((await page.locator("#spacing-mm").inputValue()) === "60", "spacing control");
+  expect((await page.locator("#material").inputValue()) === "iron@300", "material control");
+  const log = await (await fetch(`${base}/__mock/log`)).json();
+  const creates = log.filter((e) => e.create).map((e) => e.create);
+  const last = creates.at(-1);
+  expect(
+    JSON.stringify(last) ===
+      JSON.stringify({
+        scene: "minimal",
+        set: ["world.duration=5s", "plate.material=iron", "rollers.spacing=60mm"],
+      }),
+    `created ${JSON.stringify(last)}`,
+  );
+  const first = creates.find((c) => c.scene === "paper-rig");
+  expect(first && first.set.length === 0, "the default scene was sent with set entries");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a new scene or material starts a new session with only what changed", async () => {
+  const { page, context, complaints } = await openPage("/");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  await page.selectOption("#material", "lego@77");
+  await page.getByTestId("theory").filter({ hasText: "μₖ = 0.200" }).waitFor();
+  let log = await (await fetch(`${base}/__mock/log`)).json();
+  let last = log.filter((e) => e.create).at(-1).create;
+  expect(
+    JSON.stringify(last) ===
+      JSON.stringify({ scene: "paper-rig", set: ["friction.temperature=77K"] }),
+    `created ${JSON.stringify(last)}`,
+  );
+  await page.selectOption("#scene", "stribeck-drop");
+  await page.getByTestId("speed").filter({ hasText: "200 rpm" }).waitFor();
+  expect(await page.locator("#hall-note").isVisible(), "no note for a rig without sensor");
+  expect(await page.locator("#speed-rpm").isVisible(), "no speed control for a rig without drive");
+  expect(!(await page.locator("#duty-pct").isVisible()), "duty control for a rig without drive");
+  log = await (await fetch(`${base}/__mock/log`)).json();
+  last = log.filter((e) => e.create).at(-1).create;
+  expect(
+    last.scene === "stribeck-drop" && last.set.length === 0,
+    `created ${JSON.stringify(last)}`,
+  );
+  expect(
+    log.some((e) => e.end),
+    "the old session was not ended",
+  );
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("slow motion, step, reset and the stopwatch with Space", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.selectOption("#slow-motion", "0.25");
+  await page.locator("body").click({ position: { x: 5, y: 760 } });
+  await page.keyboard.press("Space");
+  await page.waitForTimeout(1200);
+  await page.keyboard.press("Space");
+  const wall = await page.getByTestId("stopwatch-wall").textContent();
+  const sim = await page.getByTestId("stopwatch-sim").textContent();
+  const wallS = Number(/^([\d.]+) s/.exec(wall)?.[1]);
+  const simS = Number(/^([\d.]+) s/.exec(sim)?.[1]);
+  expect(wallS > 1 && wallS < 2.5, `wall ${wall}`);
+  expect(simS > 0.15 && simS < 0.6, `simulated ${sim} at 1/4 speed over ${wall}`);
+  await page.getByTestId("play").click(); // pause
+  await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
+  const before = Number(/t = ([\d.]+)/.exec(await page.getByTestId("time").textContent())[1]);
+  await page.click("#step");
+  await page.waitForFunction(
+    (t0) =>
+      Number(/t = ([\d.]+)/.exec(document.querySelector('[data-testid="time"]').textContent)[1]) >
+      t0,
+    before,
+  );
+  await page.click("#reset");
+  await page.getByTestId("time").filter({ hasText: "t = 0.000 s" }).waitFor();
+  expect((await page.getByTestId("period").textContent()) === "T = — s", "reset keeps T");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("the layout fits 1920x1080 and every control has a label", async () => {
+  const { page, context, complaints } = await openPage("/", { width: 1920, height: 1080 });
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  const unlabelled = await page.evaluate(() =>
+    Array.from(document.querySelectorAll("input, select, button"))
+      .filter((el) => {
+        if (el.closest("[hidden]")) return false;
+        const labelled =
+          el.getAttribute("aria-label") ||
+          (el.labels && el.labels.length > 0) ||
+          (el.tagName === "BUTTON" && el.textContent.trim());
+        return !labelled;
+      })
+      .map((el) => el.outerHTML.slice(0, 80)),
+  );
+  expect(unlabelled.length === 0, `unlabelled: ${unlabelled.join(", ")}`);
+  const overflow = await page.evaluate(() => document.documentElement.scrollWidth > innerWidth);
+  expect(!overflow, "the page scrolls sideways");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await browser.close();
+await server.close();
+rmSync(dist, { recursive: true, force: true });
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);

@@ -237,6 +237,28 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
         }
         send_json(res, 500, error_json(what));
       });
+  // cpp-httplib compresses with brotli when a browser accepts it, at brotli's highest quality:
+  // 3 s for the page's 730 kB script on this machine. Its gzip takes milliseconds for the same
+  // 200 kB: the page gets gzip. (The request is the library's own object, not a const one; the
+  // handler only sees it through a const reference.)
+  s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+    auto& headers = const_cast<httplib::Request&>(req).headers;
+    for (auto it = headers.begin(); it != headers.end(); ++it) {
+      if (it->first == "Accept-Encoding" && it->second.find("br") != std::string::npos) {
+        std::string accepted;
+        for (std::size_t start = 0; start < it->second.size();) {
+          std::size_t end = it->second.find(',', start);
+          if (end == std::string::npos) end = it->second.size();
+          std::string token = it->second.substr(start, end - start);
+          token.erase(0, token.find_first_not_of(' '));
+          if (!token.starts_with("br")) accepted += (accepted.empty() ? "" : ", ") + token;
+          start = end + 1;
+        }
+        it->second = accepted;
+      }
+    }
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   impl_->routes();
   if (!impl_->options.web_dir.empty() && !s.set_mount_point("/", impl_->options.web_dir))
     throw std::runtime_error("the page's folder " + impl_->options.web_dir +

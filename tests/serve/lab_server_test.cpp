@@ -115,6 +115,11 @@ TEST_F(LabServerTest, OffersTheFoldersScenesByNameAndThePapersMaterials) {
   const auto page = client_->Get("/");
   ASSERT_TRUE(page);
   EXPECT_EQ(page->status, 200);
+  // A browser that accepts brotli gets gzip: the library's brotli runs at its slowest quality.
+  const auto zipped = client_->Get("/", {{"Accept-Encoding", "gzip, deflate, br"}});
+  ASSERT_TRUE(zipped);
+  EXPECT_EQ(zipped->get_header_value("Content-Encoding"), "gzip");
+  EXPECT_NE(zipped->body.find("<title>frictionlab</title>"), std::string::npos);
   const auto part = client_->Get("/parts/brick-2x4.glb");
   ASSERT_TRUE(part);
   EXPECT_EQ(part->status, 200);

@@ -27,12 +27,14 @@ struct ServeCommandOptions {
   std::string web;
 };
 
+#if FRICTIONLAB_WITH_SERVE
 // The built page: beside the executable (web/), where the build puts it.
 std::string default_web_dir() {
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
   return ec ? std::string("web") : (exe.parent_path() / "web").string();
 }
+#endif
 
 int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
 #if FRICTIONLAB_WITH_SERVE

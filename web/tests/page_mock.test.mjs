@@ -208,8 +208,10 @@ await check("slow motion, step, reset and the stopwatch with Space", async () =>
   const sim = await page.getByTestId("stopwatch-sim").textContent();
   const wallS = Number(/^([\d.]+) s/.exec(wall)?.[1]);
   const simS = Number(/^([\d.]+) s/.exec(sim)?.[1]);
-  expect(wallS > 1 && wallS < 2.5, `wall ${wall}`);
-  expect(simS > 0.15 && simS < 0.6, `simulated ${sim} at 1/4 speed over ${wall}`);
+  // A busy machine may stretch the wall time; the simulated time is a quarter of it, to within
+  // the stream's 1/30 s on each end.
+  expect(wallS > 1 && wallS < 6, `wall ${wall}`);
+  expect(Math.abs(simS - wallS / 4) < 0.1, `simulated ${sim} at 1/4 speed over ${wall}`);
   await page.getByTestId("play").click(); // pause
   await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
   const before = Number(/t = ([\d.]+)/.exec(await page.getByTestId("time").textContent())[1]);

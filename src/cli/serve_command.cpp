@@ -1,5 +1,6 @@
 // frictionlab serve: the lab in a browser. Prints the page's address and serves it until Ctrl-C
 // or SIGTERM (the server is serve/lab_server.hpp; its API docs/web-api.md).
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
@@ -25,6 +26,8 @@ struct ServeCommandOptions {
   int port = 8080;
   std::string scenes = FRICTIONLAB_DEFAULT_SCENES_DIR;
   std::string web;
+  int max_sessions = 30;
+  std::string token;
 };
 
 #if FRICTIONLAB_WITH_SERVE
@@ -49,6 +52,8 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   options.web_dir = o.web.empty() ? default_web_dir() : o.web;
   options.asset_dir = asset_dir(global.asset_dir);
   options.version = std::string("frictionlab ") + FRICTIONLAB_VERSION;
+  options.max_sessions = o.max_sessions;
+  options.token = o.token;
   if (!std::filesystem::exists(std::filesystem::path(options.web_dir) / "index.html", ec))
     throw InputError(SourceLocation{options.web_dir},
                      "expected the built page (index.html), found none: build it (cmake --build "
@@ -62,7 +67,8 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
     throw InputError(SourceLocation::of_field("port", std::to_string(o.port)), e.what());
   }
   const std::string shown = o.host == "0.0.0.0" ? "127.0.0.1" : o.host;
-  fmt::print("frictionlab serve: the lab at http://{}:{}/ (Ctrl-C ends it)\n", shown, port);
+  fmt::print("frictionlab serve: the lab at http://{}:{}/{} (Ctrl-C ends it)\n", shown, port,
+             o.token.empty() ? "" : "?token=" + o.token);
   std::fflush(stdout);
   StopSignals signals;
   std::thread watcher([&server] {
@@ -102,6 +108,19 @@ Command add_serve_command(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   sub->add_option("--scenes", options->scenes, "Folder of the scenes the page offers, by name")
       ->capture_default_str();
+  sub->add_option("--max-sessions", options->max_sessions,
+                  "Sessions open at once; a page beyond them is told the lab is full")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10000));
+  sub->add_option("--token", options->token,
+                  "A shared secret the page's address carries (?token=...); the API answers "
+                  "only to it")
+      ->check([](const std::string& t) {
+        for (const char c : t)
+          if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_')
+            return std::string("expected letters, digits, '-' and '_' only (it goes in a URL)");
+        return t.empty() ? std::string("expected a token, found none") : std::string();
+      });
   sub->add_option("--web", options->web,
                   "Folder of the built page (default: web/ beside the executable)");
   return {sub, [options, &global] { return run_serve(*options, global); }};

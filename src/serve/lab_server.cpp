@@ -24,7 +24,18 @@ using nlohmann::json;
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
 constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
 constexpr std::size_t kMostSetEntries = 64;
-constexpr int kThreads = 64;  // each stream holds one while the page listens
+// Each stream holds a thread while its page listens: two streams a session (a page reloading)
+// and some for the other requests.
+std::size_t thread_count(int max_sessions) {
+  return static_cast<std::size_t>(2 * max_sessions + 8);
+}
+
+// Whether a request carries the server's token (none set: every request does).
+bool carries_token(const httplib::Request& req, const std::string& token) {
+  if (token.empty()) return true;
+  return req.get_param_value("token") == token ||
+         req.get_header_value("X-Frictionlab-Token") == token;
+}
 
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
@@ -73,6 +84,19 @@ struct LabServer::Impl {
     const auto idle = std::chrono::minutes(options.idle_minutes);
     const std::lock_guard lock(mutex);
     std::erase_if(sessions, [&](const auto& s) { return now - s.second->last_seen() > idle; });
+  }
+  bool full() const {
+    const std::lock_guard lock(mutex);
+    return static_cast<int>(sessions.size()) >= options.max_sessions;
+  }
+  // 503: a page beyond the limit is told so plainly, never left hanging.
+  void refuse_full(httplib::Response& res) const {
+    json body = error_json(
+        fmt::format("the lab is full: it runs {} sessions at once, its limit; try again when one "
+                    "ends",
+                    options.max_sessions));
+    body["refused"] = true;
+    send_json(res, 503, body);
   }
   void routes();
   void create(const httplib::Request& req, httplib::Response& res);
@@ -146,6 +170,7 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
       request.set.push_back(entry.get<std::string>());
     }
   }
+  if (full()) return refuse_full(res);
   try {
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
     auto s = std::make_shared<LabSession>(request.scene, std::move(prepared));
@@ -153,7 +178,9 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
     json out{{"id", id},
              {"rig", rig_json(request.scene, s->rig(), paper_table_in(options.asset_dir))}};
     {
+      // Counted again where the session is added: two pages may have asked at once.
       const std::lock_guard lock(mutex);
+      if (static_cast<int>(sessions.size()) >= options.max_sessions) return refuse_full(res);
       sessions.emplace(id, std::move(s));
     }
     send_json(res, 201, out);
@@ -224,7 +251,8 @@ void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
 LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
   impl_->options = std::move(options);
   httplib::Server& s = impl_->server;
-  s.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+  const std::size_t threads = thread_count(impl_->options.max_sessions);
+  s.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   s.set_payload_max_length(kMostBody);
   s.set_exception_handler(
       [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
@@ -241,7 +269,14 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
   // 3 s for the page's 730 kB script on this machine. Its gzip takes milliseconds for the same
   // 200 kB: the page gets gzip. (The request is the library's own object, not a const one; the
   // handler only sees it through a const reference.)
-  s.set_pre_routing_handler([](const httplib::Request& req, httplib::Response&) {
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    // A shared server's API answers only to its token; the page and the parts need none.
+    if (req.path.starts_with("/api/") && !carries_token(req, impl_->options.token)) {
+      send_json(res, 403,
+                error_json("this server needs its token: open the address its owner gave, "
+                           "the one ending in ?token=..."));
+      return httplib::Server::HandlerResponse::Handled;
+    }
     auto& headers = const_cast<httplib::Request&>(req).headers;
     for (auto it = headers.begin(); it != headers.end(); ++it) {
       if (it->first == "Accept-Encoding" && it->second.find("br") != std::string::npos) {

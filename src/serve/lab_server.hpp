@@ -17,6 +17,12 @@ struct ServeOptions {
   std::string asset_dir;   // the lab's data (the paper's table, the LEGO parts)
   std::string version;     // what /api/lab reports
   int idle_minutes = 10;   // a session nobody streams from or controls for this long ends
+  // Sessions open at once; a page beyond them is refused, saying so (503). Each session costs
+  // about 1 % of a core at real time (bench_serve): 30 leave the 2-core machine room.
+  int max_sessions = 30;
+  // A shared secret: when set, every /api/ request carries it (?token=, or the header
+  // X-Frictionlab-Token), else 403. The page and the parts are served without it.
+  std::string token;
 };
 
 class LabServer {

@@ -44,6 +44,8 @@ class LabServerTest : public test::TempFolderTest {
     options.web_dir = (dir_ / "web").string();
     options.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
     options.version = "frictionlab test";
+    options.max_sessions = max_sessions_;
+    options.token = token_;
     server_ = std::make_unique<LabServer>(options);
     port_ = server_->bind();
     thread_ = std::thread([this] { server_->listen(); });
@@ -88,6 +90,8 @@ class LabServerTest : public test::TempFolderTest {
     return events;
   }
 
+  int max_sessions_ = 30;
+  std::string token_;
   std::unique_ptr<LabServer> server_;
   std::thread thread_;
   int port_ = 0;
@@ -272,6 +276,53 @@ TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
   EXPECT_EQ(early->status, 404);
   ASSERT_EQ(client_->Delete(("/api/sessions/" + id).c_str())->status, 200);
   EXPECT_EQ(server_->sessions(), 0);
+}
+
+// A small shared server: two sessions at most, and a token.
+class SharedServerTest : public LabServerTest {
+ protected:
+  SharedServerTest() {
+    max_sessions_ = 2;
+    token_ = "s3cret";
+  }
+};
+
+TEST_F(SharedServerTest, TheApiAnswersOnlyToTheToken) {
+  const auto without = client_->Get("/api/lab");
+  ASSERT_TRUE(without);
+  EXPECT_EQ(without->status, 403);
+  EXPECT_NE(without->body.find("token"), std::string::npos);
+  const auto wrong = client_->Get("/api/lab?token=guess");
+  ASSERT_TRUE(wrong);
+  EXPECT_EQ(wrong->status, 403);
+  EXPECT_EQ(client_->Get("/api/lab?token=s3cret")->status, 200);
+  EXPECT_EQ(client_->Get("/api/lab", {{"X-Frictionlab-Token", "s3cret"}})->status, 200);
+  // The page and the parts need none: they tell nothing, and the page reads the token from its
+  // own address.
+  EXPECT_EQ(client_->Get("/")->status, 200);
+  EXPECT_EQ(client_->Get("/parts/brick-2x4.glb")->status, 200);
+  EXPECT_EQ(post("/api/sessions", {{"scene", "minimal"}})->status, 403);
+}
+
+TEST_F(SharedServerTest, APageBeyondTheLimitIsToldTheLabIsFull) {
+  const std::string create = "/api/sessions?token=s3cret";
+  std::vector<std::string> ids;
+  for (int i = 0; i < 2; ++i) {
+    const auto res = post(create, {{"scene", "minimal"}});
+    ASSERT_TRUE(res);
+    ASSERT_EQ(res->status, 201) << res->body;
+    ids.push_back(json::parse(res->body)["id"]);
+  }
+  const auto full = post(create, {{"scene", "minimal"}});
+  ASSERT_TRUE(full);
+  EXPECT_EQ(full->status, 503);
+  const json body = json::parse(full->body);
+  EXPECT_EQ(body["refused"], true);
+  EXPECT_NE(body["error"].get<std::string>().find("2 sessions"), std::string::npos);
+  // One ends: the next page gets its session.
+  ASSERT_EQ(client_->Delete(("/api/sessions/" + ids[0] + "?token=s3cret").c_str())->status, 200);
+  EXPECT_EQ(post(create, {{"scene", "minimal"}})->status, 201);
+  EXPECT_EQ(server_->sessions(), 2);
 }
 
 }  // namespace

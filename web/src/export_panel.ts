@@ -7,6 +7,9 @@ const FILES = ["summary.json", "trajectory.csv", "hall.csv", "periods.csv"];
 /** `/?scene=NAME&set=KEY%3DVALUE&set=...`: the page opens that set-up and plays it. */
 export function setupLink(scene: string, entries: string[]): string {
   const params = new URLSearchParams([["scene", scene], ...entries.map((e) => ["set", e])]);
+  // A shared server's token goes with the link, so that it opens for whoever is sent it.
+  const token = new URLSearchParams(location.search).get("token");
+  if (token !== null) params.append("token", token);
   return `${location.origin}/?${params.toString()}`;
 }
 

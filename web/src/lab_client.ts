@@ -22,6 +22,14 @@ export class SetupError extends Error {
   }
 }
 
+/** The lab is full (503): it runs as many sessions as it may; `message` says so. */
+export class LabFullError extends Error {
+  constructor(message: string) {
+    super(message);
+    this.name = "LabFullError";
+  }
+}
+
 /** The lab answered something other than what the API promises. */
 export class LabError extends Error {
   readonly status: number;
@@ -44,6 +52,14 @@ export interface StreamHandlers {
 
 export interface StreamHandle {
   close: () => void;
+}
+
+/** A shared server's token, from the page's own address (`?token=...`), sent with every call. */
+const token = new URLSearchParams(location.search).get("token");
+
+/** An API address, with the token when the page has one. */
+function api(path: string): string {
+  return token === null ? path : `${path}?token=${encodeURIComponent(token)}`;
 }
 
 function sessionPath(id: string): string {
@@ -74,12 +90,12 @@ async function expectOk<T>(response: Response): Promise<T> {
 }
 
 export async function getLab(): Promise<Lab> {
-  return expectOk<Lab>(await fetch("/api/lab"));
+  return expectOk<Lab>(await fetch(api("/api/lab")));
 }
 
 /** Starts a session paused at t = 0; a refused set-up throws SetupError with its problems. */
 export async function createSession(scene: string, set: string[]): Promise<Session> {
-  const response = await fetch("/api/sessions", {
+  const response = await fetch(api("/api/sessions"), {
     method: "POST",
     headers: { "Content-Type": "application/json" },
     body: JSON.stringify({ scene, set }),
@@ -87,6 +103,10 @@ export async function createSession(scene: string, set: string[]): Promise<Sessi
   if (response.status === 400) {
     const body = await readJson<{ error?: string; problems?: Problem[] }>(response);
     throw new SetupError(body.error ?? "the set-up has problems", body.problems ?? []);
+  }
+  if (response.status === 503) {
+    const body = await readJson<{ error?: string }>(response);
+    throw new LabFullError(body.error ?? "the lab is full: try again when a session ends");
   }
   return expectOk<Session>(response);
 }
@@ -102,7 +122,7 @@ function parseEvent<T>(event: Event): T | null {
 
 /** Listens to a session's events until close(). */
 export function stream(id: string, handlers: StreamHandlers): StreamHandle {
-  const source = new EventSource(`${sessionPath(id)}/stream`);
+  const source = new EventSource(api(`${sessionPath(id)}/stream`));
   source.addEventListener("state", (event) => {
     const state = parseEvent<LabState>(event);
     if (state) handlers.state(state);
@@ -125,7 +145,7 @@ export async function control(
   command: ControlAction | { speed: PlaybackSpeed },
 ): Promise<ControlReply> {
   const body = typeof command === "string" ? { action: command } : command;
-  const response = await fetch(`${sessionPath(id)}/control`, {
+  const response = await fetch(api(`${sessionPath(id)}/control`), {
     method: "POST",
     headers: { "Content-Type": "application/json" },
     body: JSON.stringify(body),
@@ -135,12 +155,12 @@ export async function control(
 
 /** Where a finished run's file is served (summary.json, trajectory.csv, hall.csv, ...). */
 export function fileUrl(id: string, name: string): string {
-  return `${sessionPath(id)}/files/${encodeURIComponent(name)}`;
+  return api(`${sessionPath(id)}/files/${encodeURIComponent(name)}`);
 }
 
 export async function endSession(id: string): Promise<void> {
   try {
-    await fetch(sessionPath(id), { method: "DELETE", keepalive: true });
+    await fetch(api(sessionPath(id)), { method: "DELETE", keepalive: true });
   } catch {
     // the session ends by itself when nobody streams from it
   }

@@ -2,7 +2,7 @@
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
-import { getLab, SetupError } from "./lab_client";
+import { getLab, LabFullError, SetupError } from "./lab_client";
 import type { Lab, LabState, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
@@ -32,6 +32,7 @@ const periods = new PeriodsTable(
 const readouts = new Readouts();
 const exportPanel = new ExportPanel(() => view.toPng());
 const pageProblem = byId("page-problem");
+const refused = byId("refused");
 const stopwatch = new Stopwatch(
   () => lastState?.t ?? null,
   () => readouts.currentPeriod,
@@ -139,6 +140,7 @@ async function openSetup(scene: string, entries: string[], play: boolean): Promi
   try {
     const session = await keeper.open(scene, entries);
     showPageProblem("");
+    setText(refused, "");
     controls.clearProblems();
     controls.scene = scene;
     controls.adoptRig(session.rig);
@@ -150,6 +152,7 @@ async function openSetup(scene: string, entries: string[], play: boolean): Promi
   } catch (error) {
     if (error instanceof Superseded) return false;
     if (error instanceof SetupError) controls.showProblems(error.problems, error.message);
+    else if (error instanceof LabFullError) setText(refused, error.message);
     else showPageProblem(error);
     return false;
   } finally {

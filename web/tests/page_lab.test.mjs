@@ -33,20 +33,24 @@ if (!existsSync(executablePath)) {
   process.exit(77);
 }
 
-// The server on any free port; its first line names the address.
-const server = spawn(
-  options.exe,
-  ["serve", "--port", "0", "--web", options.web, "--scenes", `${repository}/scenes`],
-  { stdio: ["ignore", "pipe", "inherit"] },
-);
-const base = await new Promise((done, fail) => {
-  const lines = createInterface({ input: server.stdout });
-  lines.on("line", (line) => {
-    const found = /http:\/\/[\d.]+:\d+/.exec(line);
-    if (found) done(found[0]);
+/** A server on any free port, with `more` options; its first line names the address. */
+async function startServer(more = []) {
+  const child = spawn(
+    options.exe,
+    ["serve", "--port", "0", "--web", options.web, "--scenes", `${repository}/scenes`, ...more],
+    { stdio: ["ignore", "pipe", "inherit"] },
+  );
+  const address = await new Promise((done, fail) => {
+    const lines = createInterface({ input: child.stdout });
+    lines.on("line", (line) => {
+      const found = /http:\/\/[\d.]+:\d+/.exec(line);
+      if (found) done(found[0]);
+    });
+    child.on("exit", (code) => fail(new Error(`frictionlab serve exited with ${code}`)));
   });
-  server.on("exit", (code) => fail(new Error(`frictionlab serve exited with ${code}`)));
-});
+  return { child, address };
+}
+const { child: server, address: base } = await startServer();
 const browser = await chromium.launch({
   executablePath,
   args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
@@ -68,7 +72,7 @@ function expect(condition, message) {
 }
 
 /** A page at `path` that records console errors and warnings. */
-async function openPage(path) {
+async function openPage(path, at = base) {
   const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
   const page = await context.newPage();
   const complaints = [];
@@ -76,7 +80,7 @@ async function openPage(path) {
     if (m.type() === "error" || m.type() === "warning") complaints.push(m.text());
   });
   page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
-  await page.goto(`${base}${path}`);
+  await page.goto(`${at}${path}`);
   return { page, context, complaints };
 }
 
@@ -162,6 +166,28 @@ await check("the paper's rig loads without console errors; a screenshot is writt
   expect(existsSync(options.shot), "no screenshot");
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
   await context.close();
+});
+
+await check("a shared server answers only its token's pages and refuses one too many", async () => {
+  const shared = await startServer(["--max-sessions", "1", "--token", "s3cret"]);
+  try {
+    const first = await openPage("/?token=s3cret&scene=minimal", shared.address);
+    await first.page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+    // A second page: the lab is full, and the page says so plainly.
+    const second = await openPage("/?token=s3cret&scene=minimal", shared.address);
+    await second.page.getByTestId("refused").filter({ hasText: "the lab is full" }).waitFor();
+    // A page without the token is told what it lacks.
+    const stranger = await openPage("/?scene=minimal", shared.address);
+    await stranger.page.locator("#page-problem").filter({ hasText: "token" }).waitFor();
+    // The browser logs the refusals' 503 and 403 itself; nothing else may complain.
+    for (const { complaints } of [first, second, stranger]) {
+      const others = complaints.filter((c) => !/status of (503|403)/.test(c));
+      expect(others.length === 0, `console: ${others.join("\n")}`);
+    }
+    for (const { context } of [first, second, stranger]) await context.close();
+  } finally {
+    shared.child.kill("SIGTERM");
+  }
 });
 
 await browser.close();

@@ -15,6 +15,8 @@
 #include "lab/request/lab_data.hpp"
 
 #if FRICTIONLAB_WITH_SERVE
+#include <malloc.h>
+
 #include "serve/lab_server.hpp"
 #endif
 
@@ -59,6 +61,10 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
                      "expected the built page (index.html), found none: build it (cmake --build "
                      "--preset release builds web/ when Node.js and npm are installed) or give "
                      "--web DIR");
+  // Each stream runs on its own thread, and glibc gives threads their own malloc arenas, which
+  // keep what a closed session freed: opening and closing sessions for a minute grew the
+  // resident size 6-fold. Two arenas return it (web/tests/load_bench.mjs; README's table).
+  mallopt(M_ARENA_MAX, 2);
   serve::LabServer server(options);
   int port = 0;
   try {

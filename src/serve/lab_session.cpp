@@ -1,5 +1,7 @@
 #include "serve/lab_session.hpp"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -22,6 +24,11 @@ LabSession::LabSession(std::string scene, PreparedSession prepared)
     : scene_(std::move(scene)),
       prepared_(std::move(prepared)),
       run_(std::make_unique<LiveRun>(prepared_.rig, prepared_.output)) {}
+
+LabSession::~LabSession() {
+  run_.reset();
+  malloc_trim(0);
+}
 
 LabSession::Tick LabSession::tick(Clock::time_point now) {
   const std::lock_guard lock(mutex_);

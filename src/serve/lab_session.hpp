@@ -24,6 +24,11 @@ bool is_speed(double speed);
 class LabSession {
  public:
   LabSession(std::string scene, PreparedSession prepared);
+  LabSession(const LabSession&) = delete;
+  LabSession& operator=(const LabSession&) = delete;
+  // Hands what the run recorded back to the system (malloc_trim): a class opening and closing
+  // sessions all day must not grow the server (web/tests/load_bench.mjs).
+  ~LabSession();
 
   // What a stream sends now: `state` with what changed since the last tick (the run advanced by
   // the wall time since then times the speed while playing, at most 0.1 s of simulated time a

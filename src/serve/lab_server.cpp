@@ -14,6 +14,7 @@
 #include "io/input_error.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
+#include "serve/api_requests.hpp"
 #include "serve/lab_session.hpp"
 
 namespace fl::serve {
@@ -23,7 +24,6 @@ using nlohmann::json;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
 constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
-constexpr std::size_t kMostSetEntries = 64;
 // Each stream holds a thread while its page listens: two streams a session (a page reloading)
 // and some for the other requests.
 std::size_t thread_count(int max_sessions) {
@@ -44,18 +44,6 @@ void send_json(httplib::Response& res, int status, const json& body) {
 
 std::string event(const char* name, const json& data) {
   return fmt::format("event: {}\ndata: {}\n\n", name, data.dump());
-}
-
-// A request's JSON body, or a 400 said and nullopt.
-std::optional<json> body_of(const httplib::Request& req, httplib::Response& res) {
-  json body = json::parse(req.body, nullptr, /*allow_exceptions=*/false);
-  if (body.is_discarded() || !body.is_object()) {
-    send_json(res, 400,
-              error_json("expected a JSON object as the request's body, found " +
-                         (req.body.empty() ? std::string("none") : "text that is not one")));
-    return std::nullopt;
-  }
-  return body;
 }
 
 std::string content_type(const std::string& name) {
@@ -147,29 +135,10 @@ void LabServer::Impl::routes() {
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
   end_idle();
-  const std::optional<json> body = body_of(req, res);
-  if (!body) return;
-  SessionRequest request;
-  const auto scene = body->find("scene");
-  if (scene == body->end() || !scene->is_string())
-    return send_json(res, 400,
-                     error_json("expected \"scene\": the name of a scene /api/lab offers"));
-  request.scene = scene->get<std::string>();
-  if (const auto set = body->find("set"); set != body->end()) {
-    if (!set->is_array() || set->size() > kMostSetEntries)
-      return send_json(res, 400,
-                       error_json(fmt::format("expected \"set\" as a list of at most {} texts "
-                                              "\"key.path=value\"",
-                                              kMostSetEntries)));
-    for (const json& entry : *set) {
-      if (!entry.is_string())
-        return send_json(res, 400,
-                         error_json("expected each \"set\" entry as a text \"key.path=value\", "
-                                    "found " +
-                                    entry.dump()));
-      request.set.push_back(entry.get<std::string>());
-    }
-  }
+  auto read = read_session_body(req.body);
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read))
+    return send_json(res, 400, error_json(refusal->message));
+  const SessionRequest& request = std::get<SessionRequest>(read);
   if (full()) return refuse_full(res);
   try {
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
@@ -224,27 +193,21 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
 
 void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
                               httplib::Response& res) {
-  const std::optional<json> body = body_of(req, res);
-  if (!body) return;
-  try {
-    if (const auto speed = body->find("speed"); speed != body->end()) {
-      if (!speed->is_number())
-        throw std::invalid_argument("expected \"speed\" as a number: 1, 0.25 or 0.0625");
-      return send_json(res, 200, session.set_speed(speed->get<double>()));
-    }
-    const auto action = body->find("action");
-    const std::string name =
-        action != body->end() && action->is_string() ? action->get<std::string>() : "";
-    if (name == "play") return send_json(res, 200, session.play(Clock::now()));
-    if (name == "pause") return send_json(res, 200, session.pause());
-    if (name == "step") return send_json(res, 200, session.step());
-    if (name == "reset") return send_json(res, 200, session.reset());
-    throw std::invalid_argument(
-        "expected {\"action\": \"play\", \"pause\", \"step\" or \"reset\"} or {\"speed\": 1, 0.25 "
-        "or 0.0625}, found " +
-        body->dump());
-  } catch (const std::invalid_argument& e) {
-    send_json(res, 400, error_json(e.what()));
+  const auto read = read_control_body(req.body);
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read))
+    return send_json(res, 400, error_json(refusal->message));
+  const ControlCommand& command = std::get<ControlCommand>(read);
+  switch (command.action) {
+    case ControlCommand::Action::kPlay:
+      return send_json(res, 200, session.play(Clock::now()));
+    case ControlCommand::Action::kPause:
+      return send_json(res, 200, session.pause());
+    case ControlCommand::Action::kStep:
+      return send_json(res, 200, session.step());
+    case ControlCommand::Action::kReset:
+      return send_json(res, 200, session.reset());
+    case ControlCommand::Action::kSpeed:
+      return send_json(res, 200, session.set_speed(command.speed));
   }
 }
 

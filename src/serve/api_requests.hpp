@@ -1,0 +1,34 @@
+// The API's request bodies read (docs/web-api.md): what a page asks, or what is wrong with the
+// body, before anything runs. Any bytes give one or the other and never throw (a libFuzzer target
+// holds it: tests/fuzz/api_body_fuzzer.cpp).
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <variant>
+
+#include "lab/request/session_request.hpp"
+
+namespace fl::serve {
+
+// A body the API cannot take: what was expected, what was found.
+struct BodyRefusal {
+  std::string message;
+};
+
+// The most `set` entries a session's body may carry.
+inline constexpr std::size_t kMostSetEntries = 64;
+
+// POST /api/sessions: {"scene": NAME, "set": ["key.path=value", ...]}.
+std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view body);
+
+// POST /api/sessions/ID/control: {"action": "play" | "pause" | "step" | "reset"} or
+// {"speed": 1 | 0.25 | 0.0625}.
+struct ControlCommand {
+  enum class Action { kPlay, kPause, kStep, kReset, kSpeed };
+  Action action = Action::kPause;
+  double speed = 1.0;  // with kSpeed
+};
+std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view body);
+
+}  // namespace fl::serve

@@ -1,0 +1,28 @@
+// libFuzzer target for the web API's request bodies (serve/api_requests.hpp): any bytes are read
+// as a request or refused with a message, within the API's bounds; anything else (a crash, a
+// sanitizer report, an exception, a hang) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+#include <variant>
+
+#include "serve/api_requests.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  const auto session = fl::serve::read_session_body(text);
+  if (const auto* request = std::get_if<fl::SessionRequest>(&session)) {
+    if (request->set.size() > fl::serve::kMostSetEntries) std::abort();
+  } else if (std::get<fl::serve::BodyRefusal>(session).message.empty()) {
+    std::abort();
+  }
+  const auto control = fl::serve::read_control_body(text);
+  if (const auto* command = std::get_if<fl::serve::ControlCommand>(&control)) {
+    const double s = command->speed;
+    if (s != 1.0 && s != 0.25 && s != 0.0625) std::abort();
+  } else if (std::get<fl::serve::BodyRefusal>(control).message.empty()) {
+    std::abort();
+  }
+  return 0;
+}

@@ -21,6 +21,8 @@ let playing = false;
 let done = false;
 
 const view = new RigView(byId("view"));
+const nearSide = byId<HTMLInputElement>("near-side");
+nearSide.addEventListener("change", () => view.showNearSide(nearSide.checked));
 const positionPlot = new PositionPlot(byId("plot-x"));
 const hallPlot = new HallPlot(byId("plot-hall"));
 const hallNote = byId("hall-note");

@@ -30,6 +30,12 @@ export interface RigModel {
   plateBlob: THREE.Object3D | null;
   /** Settles once every LEGO part is placed (or failed to load). */
   parts: Promise<void>;
+  /**
+   * The frame's parts wholly on the near side (y below the plate's near edge), where the camera
+   * looks from: hidden unless asked for, as the video's front view cuts them away, so that the
+   * rollers and the contacts show.
+   */
+  nearSide: THREE.Group;
   dispose: () => void;
 }
 
@@ -224,6 +230,10 @@ export function buildRig(rig: Rig, quality: RenderQuality): RigModel {
       ).then((part) => void plate.add(part)),
     );
   }
+  const nearSide = new THREE.Group();
+  nearSide.visible = false;
+  root.add(nearSide);
+  const nearEdge = -0.5 * p.width;
   for (const piece of rig.frame) {
     placing.push(
       placePart(
@@ -235,10 +245,22 @@ export function buildRig(rig: Rig, quality: RenderQuality): RigModel {
           ...shadows.partFlags,
         },
         owned.materials,
-      ).then((part) => void root.add(part)),
+      ).then((part) => {
+        const far = new THREE.Box3().setFromObject(part).max.y;
+        (far < nearEdge ? nearSide : root).add(part);
+      }),
     );
   }
   const parts = Promise.allSettled(placing).then(() => undefined);
 
-  return { root, plate, rollers, groundZ, plateBlob, parts, dispose: () => owned.dispose() };
+  return {
+    root,
+    plate,
+    rollers,
+    groundZ,
+    plateBlob,
+    parts,
+    nearSide,
+    dispose: () => owned.dispose(),
+  };
 }

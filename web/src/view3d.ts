@@ -16,6 +16,7 @@ export class RigView {
   private arrows: ForceArrows | null = null;
   private needsRender = true;
   private frame = 0;
+  private nearSideShown = false;
   private readonly resize: ResizeObserver;
   private readonly quality: RenderQuality = chooseRenderQuality();
 
@@ -60,6 +61,13 @@ export class RigView {
     this.frame = requestAnimationFrame(loop);
   }
 
+  /** Shows or cuts away the frame's near side (the wall between the camera and the rollers). */
+  showNearSide(visible: boolean): void {
+    this.nearSideShown = visible;
+    if (this.model) this.model.nearSide.visible = visible;
+    this.invalidate();
+  }
+
   /** Builds the rig's bodies anew and frames them. */
   setRig(rig: Rig): void {
     if (this.model) {
@@ -71,6 +79,7 @@ export class RigView {
       this.arrows.dispose();
     }
     this.model = buildRig(rig, this.quality);
+    this.model.nearSide.visible = this.nearSideShown;
     this.arrows = new ForceArrows(rig);
     this.scene.add(this.model.root, this.arrows.group);
     void this.model.parts.then(() => this.invalidate());

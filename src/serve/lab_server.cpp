@@ -61,6 +61,7 @@ struct LabServer::Impl {
   std::map<std::string, std::shared_ptr<LabSession>> sessions;
   std::mt19937_64 ids{std::random_device{}()};
   std::atomic<bool> stopping{false};
+  std::atomic<bool> listening{false};
 
   std::shared_ptr<LabSession> find(const std::string& id) const {
     const std::lock_guard lock(mutex);
@@ -119,9 +120,12 @@ void LabServer::Impl::routes() {
     const std::optional<std::string> text = s->file(name);
     if (!text)
       return send_json(res, 404,
-                       error_json("no file \"" + name +
-                                  "\": the run writes its files when it ends, and only those its "
-                                  "scene's output part names"));
+                       error_json(fmt::format(
+                           "no file \"{}\": the run writes its files when it ends, only those its "
+                           "scene's output part names, and, for a run longer than {:g} s, "
+                           "neither trajectory.csv nor hall.csv nor periods.csv (run it with "
+                           "frictionlab run to have them)",
+                           name, options.most_recorded_seconds)));
     res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
     res.set_content(*text, content_type(name));
   });
@@ -142,6 +146,13 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
   if (full()) return refuse_full(res);
   try {
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
+    // A session keeps every step and Hall sample for its files (about 0.6 MB a simulated second):
+    // a longer run keeps its summary, cycles and nothing step by step, so that no set-up grows
+    // the server without bound.
+    if (prepared.rig->world.duration > options.most_recorded_seconds) {
+      prepared.output.trajectory = false;
+      prepared.output.hall = false;
+    }
     auto s = std::make_shared<LabSession>(request.scene, std::move(prepared));
     const std::string id = fmt::format("{:016x}", ids());
     json out{{"id", id},
@@ -286,13 +297,22 @@ int LabServer::bind() {
   return o.port;
 }
 
+// cpp-httplib's stop() does nothing to a server that has not begun to listen, which would then
+// listen forever: listen() says it is about to before it looks whether it was stopped, and stop()
+// says so before it looks whether it listens, so one of them sees the other (both sequentially
+// consistent), and stop() repeats until listen() has returned.
 void LabServer::listen() {
-  impl_->server.listen_after_bind();
+  impl_->listening = true;
+  if (!impl_->stopping) impl_->server.listen_after_bind();
+  impl_->listening = false;
 }
 
 void LabServer::stop() {
   impl_->stopping = true;
-  impl_->server.stop();
+  while (impl_->listening) {
+    impl_->server.stop();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
 }
 
 int LabServer::sessions() const {

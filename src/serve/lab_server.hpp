@@ -23,6 +23,9 @@ struct ServeOptions {
   // A shared secret: when set, every /api/ request carries it (?token=, or the header
   // X-Frictionlab-Token), else 403. The page and the parts are served without it.
   std::string token;
+  // A session keeps its run's steps and Hall samples for its files (about 0.6 MB a simulated
+  // second) only for runs up to this long [s]; a longer one offers its summary and cycles.
+  double most_recorded_seconds = 120.0;
 };
 
 class LabServer {

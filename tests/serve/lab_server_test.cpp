@@ -278,6 +278,52 @@ TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
   EXPECT_EQ(server_->sessions(), 0);
 }
 
+TEST_F(LabServerTest, ALongRunKeepsItsSummaryButNotItsStepsSoNoSetUpGrowsTheServer) {
+  // A server beside the fixture's that records runs up to 1 s: a 1.5 s run keeps its summary and
+  // cycles only.
+  ServeOptions options;
+  options.port = 0;
+  options.scenes_dir = (dir_ / "scenes").string();
+  options.web_dir = (dir_ / "web").string();
+  options.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
+  options.most_recorded_seconds = 1.0;
+  LabServer brief(options);
+  const int port = brief.bind();
+  std::thread serving([&brief] { brief.listen(); });
+  port_ = port;
+  client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
+  const std::string id = start({{"scene", "minimal"}, {"set", {"world.duration=1.5s"}}});
+  ASSERT_EQ(post("/api/sessions/" + id + "/control", {{"action", "play"}})->status, 200);
+  const auto events = stream_to_done(id);
+  ASSERT_EQ(events.back().first, "done");
+  // The summary is the run's, recorded or not.
+  const Scene scene =
+      test::scene_file("minimal.yaml", std::vector<SceneOverride>{{"world.duration", "1.5s"}});
+  EXPECT_EQ(events.back().second, summary_json(run_experiment(compile_rig(scene), RunOptions{})));
+  EXPECT_EQ(client_->Get(("/api/sessions/" + id + "/files/summary.json").c_str())->status, 200);
+  for (const char* name : {"trajectory.csv", "hall.csv", "periods.csv"}) {
+    const auto res = client_->Get(("/api/sessions/" + id + "/files/" + name).c_str());
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 404) << name;
+    EXPECT_NE(res->body.find("longer than 1 s"), std::string::npos) << res->body;
+  }
+  brief.stop();
+  serving.join();
+}
+
+TEST(LabServerStop, StopsAServerThatHasNotBegunToListen) {
+  ServeOptions options;
+  options.port = 0;
+  options.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
+  for (int i = 0; i < 20; ++i) {
+    LabServer server(options);
+    server.bind();
+    std::thread serving([&server] { server.listen(); });
+    server.stop();  // at once: before, during or after listen() begins
+    serving.join();
+  }
+}
+
 // A small shared server: two sessions at most, and a token.
 class SharedServerTest : public LabServerTest {
  protected:

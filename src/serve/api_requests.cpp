@@ -23,10 +23,6 @@ std::variant<json, BodyRefusal> object_of(std::string_view body) {
   return parsed;
 }
 
-bool is_speed(double speed) {
-  return speed == 1.0 || speed == 0.25 || speed == 0.0625;
-}
-
 }  // namespace
 
 std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view text) {

@@ -22,6 +22,11 @@ inline constexpr std::size_t kMostSetEntries = 64;
 // POST /api/sessions: {"scene": NAME, "set": ["key.path=value", ...]}.
 std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view body);
 
+// The slow-motion factors the page offers: 1, 0.25 and 0.0625.
+inline bool is_speed(double speed) {
+  return speed == 1.0 || speed == 0.25 || speed == 0.0625;
+}
+
 // POST /api/sessions/ID/control: {"action": "play" | "pause" | "step" | "reset"} or
 // {"speed": 1 | 0.25 | 0.0625}.
 struct ControlCommand {

@@ -2,11 +2,13 @@
 
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <random>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 #include <httplib.h>
@@ -63,16 +65,37 @@ struct LabServer::Impl {
   std::atomic<bool> stopping{false};
   std::atomic<bool> listening{false};
 
-  std::shared_ptr<LabSession> find(const std::string& id) const {
+  // The session a request names, or a 404 said and null.
+  std::shared_ptr<LabSession> find(const httplib::Request& req, httplib::Response& res) const {
+    std::shared_ptr<LabSession> found;
+    {
+      const std::lock_guard lock(mutex);
+      const auto it = sessions.find(req.matches[1]);
+      if (it != sessions.end()) found = it->second;
+    }
+    if (!found) send_json(res, 404, error_json("no such session (it ended or never began)"));
+    return found;
+  }
+  // Takes the sessions out of the table under the lock, and lets them go after it: a session's
+  // end gives its memory back (~LabSession), which must not hold up the other pages.
+  std::vector<std::shared_ptr<LabSession>> take_out(
+      const std::function<bool(const std::string&, const LabSession&)>& which) {
+    std::vector<std::shared_ptr<LabSession>> out;
     const std::lock_guard lock(mutex);
-    const auto it = sessions.find(id);
-    return it == sessions.end() ? nullptr : it->second;
+    for (auto it = sessions.begin(); it != sessions.end();) {
+      if (which(it->first, *it->second)) {
+        out.push_back(std::move(it->second));
+        it = sessions.erase(it);
+      } else {
+        ++it;
+      }
+    }
+    return out;
   }
   void end_idle() {
     const auto now = Clock::now();
     const auto idle = std::chrono::minutes(options.idle_minutes);
-    const std::lock_guard lock(mutex);
-    std::erase_if(sessions, [&](const auto& s) { return now - s.second->last_seen() > idle; });
+    take_out([&](const std::string&, const LabSession& s) { return now - s.last_seen() > idle; });
   }
   bool full() const {
     const std::lock_guard lock(mutex);
@@ -103,19 +126,19 @@ void LabServer::Impl::routes() {
               [this](const httplib::Request& req, httplib::Response& res) { create(req, res); });
   const std::string session = "/api/sessions/([0-9a-f]{1,32})";
   server.Get(session + "/stream", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = find(req.matches[1]);
-    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    const auto s = find(req, res);
+    if (!s) return;
     stream(s, res);
   });
   server.Post(session + "/control", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = find(req.matches[1]);
-    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    const auto s = find(req, res);
+    if (!s) return;
     control(*s, req, res);
   });
   server.Get(session + "/files/([A-Za-z0-9_.-]{1,64})", [this](const httplib::Request& req,
                                                                httplib::Response& res) {
-    const auto s = find(req.matches[1]);
-    if (!s) return send_json(res, 404, error_json("no such session (it ended or never began)"));
+    const auto s = find(req, res);
+    if (!s) return;
     const std::string name = req.matches[2];
     const std::optional<std::string> text = s->file(name);
     if (!text)
@@ -130,8 +153,9 @@ void LabServer::Impl::routes() {
     res.set_content(*text, content_type(name));
   });
   server.Delete(session, [this](const httplib::Request& req, httplib::Response& res) {
-    const std::lock_guard lock(mutex);
-    const bool ended = sessions.erase(req.matches[1]) > 0;
+    const std::string id = req.matches[1];
+    const bool ended =
+        !take_out([&](const std::string& key, const LabSession&) { return key == id; }).empty();
     send_json(res, ended ? 200 : 404,
               ended ? json{{"ended", true}} : error_json("no such session"));
   });

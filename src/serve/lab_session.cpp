@@ -7,6 +7,7 @@
 
 #include "lab/run/summary_fields.hpp"
 #include "serve/api_json.hpp"
+#include "serve/api_requests.hpp"
 
 namespace fl::serve {
 namespace {
@@ -15,10 +16,6 @@ constexpr double kFrame = 1.0 / 30;   // s of simulated time a single step advan
 constexpr double kMostPerTick = 0.1;  // s of simulated time, whatever the wall clock did
 
 }  // namespace
-
-bool is_speed(double speed) {
-  return speed == 1.0 || speed == 0.25 || speed == 0.0625;
-}
 
 LabSession::LabSession(std::string scene, PreparedSession prepared)
     : scene_(std::move(scene)),

@@ -18,9 +18,6 @@ namespace fl::serve {
 
 using Clock = std::chrono::steady_clock;
 
-// The slow-motion factors the page offers.
-bool is_speed(double speed);
-
 class LabSession {
  public:
   LabSession(std::string scene, PreparedSession prepared);

@@ -19,8 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const auto control = fl::serve::read_control_body(text);
   if (const auto* command = std::get_if<fl::serve::ControlCommand>(&control)) {
-    const double s = command->speed;
-    if (s != 1.0 && s != 0.25 && s != 0.0625) std::abort();
+    if (!fl::serve::is_speed(command->speed)) std::abort();
   } else if (std::get<fl::serve::BodyRefusal>(control).message.empty()) {
     std::abort();
   }

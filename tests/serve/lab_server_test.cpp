@@ -144,10 +144,7 @@ TEST_F(LabServerTest, ASessionsRunIsTheRunsSummaryAndFilesByteForByte) {
       "minimal.yaml",
       std::vector<SceneOverride>{{"world.duration", "1.5s"}, {"rollers.spacing", "70mm"}});
   const CompiledRig rig = compile_rig(scene);
-  RunOptions options;
-  options.record_trajectory = scene.output.trajectory;
-  options.record_hall = scene.output.hall;
-  options.record_cycles = scene.output.cycles;
+  const RunOptions options = recording_for(scene.output);
   RunRecording recording;
   const RunSummary summary = run_experiment(rig, options, &recording);
   EXPECT_EQ(events.back().second, summary_json(summary));
@@ -252,6 +249,7 @@ TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
     first = json::parse(buffer.substr(buffer.find("data: ") + 6, end - buffer.find("data: ") - 6));
     return false;
   });
+  // The run stops at the first 1 ms step at or past it.
   EXPECT_NEAR(first["t"].get<double>(), 1.0 / 30, 1e-3 + 1e-12);
   EXPECT_FALSE(first["playing"].get<bool>());
   const json slow = json::parse(post(control, {{"speed", 0.0625}})->body);

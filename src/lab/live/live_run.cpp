@@ -69,9 +69,7 @@ LiveRun::LiveRun(std::shared_ptr<const CompiledRig> rig, const OutputDesc& outpu
   r.rig = std::move(rig);
   r.output = output;
   // What `run --out` records, so the files are its files.
-  r.options.record_trajectory = output.trajectory;
-  r.options.record_hall = output.hall;
-  r.options.record_cycles = output.cycles;
+  r.options = recording_for(output);
   r.options.observer = [&r](const StepView& view) { r.observe(view); };
   r.loop.emplace(*r.rig, r.options, &r.recording);
 }

@@ -167,10 +167,12 @@ Outcome RunResult::outcome() const {
 }
 
 RunResult execute_run(const PreparedRun& run, const RunControl& control) {
+  // `record` keeps everything; `out` what its files need.
   RunOptions options;
-  options.record_trajectory = run.record || (!run.out.empty() && run.output.trajectory);
-  options.record_hall = run.record || (!run.out.empty() && run.output.hall);
-  options.record_cycles = run.record || (!run.out.empty() && run.output.cycles);
+  if (run.record)
+    options.record_trajectory = options.record_hall = options.record_cycles = true;
+  else if (!run.out.empty())
+    options = recording_for(run.output);
   // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.
   std::unique_ptr<VideoRecorder> recorder;
   if (run.frames) {

@@ -46,11 +46,17 @@ std::vector<SceneEntry> list_scenes(const std::string& folder) {
 
 PreparedSession prepare_session(const SessionRequest& request, const std::string& folder,
                                 const std::string& asset_dir) {
-  // The scene by name only: nothing a client sends names a path on the server.
-  const std::vector<SceneEntry> scenes = list_scenes(folder);
-  std::vector<std::string> names;
-  for (const SceneEntry& s : scenes) names.push_back(s.name);
-  if (std::find(names.begin(), names.end(), request.scene) == names.end()) {
+  // The scene by name only: nothing a client sends names a path on the server. A name is a
+  // file's stem in the folder itself (no separator, no leading dot); the folder is listed only
+  // to say which names there are.
+  const std::string& name = request.scene;
+  std::error_code error;
+  const bool offered =
+      !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
+      std::filesystem::is_regular_file(std::filesystem::path(folder) / (name + ".yaml"), error);
+  if (!offered) {
+    std::vector<std::string> names;
+    for (const SceneEntry& s : list_scenes(folder)) names.push_back(s.name);
     FieldChecks checks;
     const std::vector<std::string_view> views(names.begin(), names.end());
     const std::string near = closest_match(request.scene, views);

@@ -239,6 +239,14 @@ std::string jumps_csv(const RunRecording& r) {
   return out;
 }
 
+RunOptions recording_for(const OutputDesc& output) {
+  RunOptions options;
+  options.record_trajectory = output.trajectory;
+  options.record_hall = output.hall;
+  options.record_cycles = output.cycles;
+  return options;
+}
+
 std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
                                                                   const CompiledRig& rig,
                                                                   const RunSummary& summary,

@@ -25,6 +25,10 @@ std::string periods_csv(const RunRecording& recording);
 // Each jump of the plate: the roller it left, when, how high, at which roller angle.
 std::string jumps_csv(const RunRecording& recording);
 
+// What a run records so that its files can be written: the steps, the Hall samples and the
+// cycles the scene's output part names (`run --out` and a live session ask the same).
+RunOptions recording_for(const OutputDesc& output);
+
 // The files of a run, by name, as the scene's output part asks: what write_run_outputs writes.
 std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
                                                                   const CompiledRig& rig,

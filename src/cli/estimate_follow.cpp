@@ -17,7 +17,7 @@
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
 #include "lab/logs/geometry_check.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "lab/logs/live_log_estimate.hpp"
 
 namespace fl::cli {
 namespace {
@@ -61,23 +61,15 @@ class LiveEstimate {
   LiveEstimate(const LogSetUp& set_up, bool quiet) : set_up_(set_up), quiet_(quiet) { reset(); }
 
   void reset() {
-    host_ = std::make_unique<HostEstimator>(set_up_.config());
+    live_ = std::make_unique<LiveLogEstimate>(set_up_);
     periods_shown_ = 0;
-    t0_.reset();
-    samples_ = HallLog{};
     doubt_.clear();
   }
 
   void add(const LogSample& s) {
-    if (!t0_) t0_ = s.t_s;
-    const auto us = static_cast<uint64_t>(std::llround((s.t_s - *t0_) * 1e6));
-    samples_.t_s.push_back(s.t_s);
-    samples_.adc.push_back(s.adc);
-    samples_.line.push_back(s.line);
-    samples_.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
-    const uint8_t events = host_->add(samples_.t_us.back(), s.adc);
+    const uint8_t events = live_->add(s);
     if (quiet_ || events == fl_estimator::kNoEvent) return;
-    const fl_estimator::PeriodEstimator& e = host_->estimator();
+    const fl_estimator::PeriodEstimator& e = live_->host().estimator();
     if (events & fl_estimator::kSignalLearned)
       say(fmt::format("  {:<20}  polarity {:+d}, baseline {:.1f} counts (line {})",
                       "signal learned", e.polarity(), e.baseline(), s.line));
@@ -85,7 +77,7 @@ class LiveEstimate {
     if (events & fl_estimator::kRestart)
       say(fmt::format("  {:<20}  learning it again", "signal lost"));
     // The periods judged in this sample; the running statistics after the last of them.
-    const std::vector<EstimatedPeriod>& periods = host_->periods();
+    const std::vector<EstimatedPeriod>& periods = live_->host().periods();
     for (; periods_shown_ < periods.size(); ++periods_shown_) {
       const EstimatedPeriod& p = periods[periods_shown_];
       const fl_estimator::Stats st = e.stats();
@@ -108,10 +100,11 @@ class LiveEstimate {
   // Evenly spaced pulses read as one per period: are they shaped like a turn? (The periods'
   // alternation needs more of them than there are yet: the summary checks it.)
   void geometry_found() {
-    const bool pair = host_->estimator().geometry() == fl_estimator::kPulsePair;
+    const bool pair = live_->host().estimator().geometry() == fl_estimator::kPulsePair;
     doubt_.clear();
     if (!pair && set_up_.geometry == fl_estimator::kAutoGeometry) {
-      const GeometryCheck check = check_geometry(samples_, estimate_log(samples_, set_up_, false));
+      const HallLog& samples = live_->samples();
+      const GeometryCheck check = check_geometry(samples, estimate_log(samples, set_up_, false));
       if (check.verdict != "turn") doubt_ = check.reason;
     }
     if (doubt_.empty()) {
@@ -127,10 +120,8 @@ class LiveEstimate {
 
   LogSetUp set_up_;
   bool quiet_ = false;
-  std::unique_ptr<HostEstimator> host_;
+  std::unique_ptr<LiveLogEstimate> live_;
   std::size_t periods_shown_ = 0;
-  std::optional<double> t0_;
-  HallLog samples_;    // so far, for the geometry's check
   std::string doubt_;  // why evenly spaced pulses may be two per period ("" : no doubt)
 };
 

@@ -2,6 +2,7 @@
 // or SIGTERM (the server is serve/lab_server.hpp; its API docs/web-api.md).
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,10 @@ struct ServeCommandOptions {
   std::string web;
   int max_sessions = 30;
   std::string token;
+  std::string serial;
+  double baud = 250000.0;
+  std::string record;
+  double rate = 20.0;
 };
 
 #if FRICTIONLAB_WITH_SERVE
@@ -56,6 +61,21 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   options.version = std::string("frictionlab ") + FRICTIONLAB_VERSION;
   options.max_sessions = o.max_sessions;
   options.token = o.token;
+  if (o.baud != std::floor(o.baud))
+    throw InputError(SourceLocation::of_field("baud", fmt::format("{:g}", o.baud)),
+                     "expected a whole baud rate, such as 250000 (the firmware's)");
+  options.requests_per_second = o.rate;
+  options.serial_port = o.serial;
+  options.serial_baud = static_cast<int>(o.baud);
+  if (!o.record.empty()) {
+    std::filesystem::create_directories(o.record, ec);
+    if (ec || !std::filesystem::is_directory(o.record))
+      throw InputError(SourceLocation::of_field("record", o.record),
+                       "expected a folder the rig's log can be written into, and could not make "
+                       "one there" +
+                           (ec ? ": " + ec.message() : std::string()) + "; give another --record");
+    options.record_dir = o.record;
+  }
   if (!std::filesystem::exists(std::filesystem::path(options.web_dir) / "index.html", ec))
     throw InputError(SourceLocation{options.web_dir},
                      "expected the built page (index.html), found none: build it (cmake --build "
@@ -75,6 +95,11 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   const std::string shown = o.host == "0.0.0.0" ? "127.0.0.1" : o.host;
   fmt::print("frictionlab serve: the lab at http://{}:{}/{} (Ctrl-C ends it)\n", shown, port,
              o.token.empty() ? "" : "?token=" + o.token);
+  fmt::print("  the class's table at http://{}:{}/class.html{}\n", shown, port,
+             o.token.empty() ? "" : "?token=" + o.token);
+  if (!o.serial.empty())
+    fmt::print("  the rig live from {} at {:.0f} baud{}\n", o.serial, o.baud,
+               o.record.empty() ? "" : ", its log written into " + o.record);
   std::fflush(stdout);
   StopSignals signals;
   std::thread watcher([&server] {
@@ -91,6 +116,7 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   watcher.join();
   fmt::print("frictionlab serve: stopped ({} session{} open)\n", server.sessions(),
              server.sessions() == 1 ? "" : "s");
+  if (const auto log = server.rig_record_path()) fmt::print("  the rig's log: {}\n", *log);
   return 0;
 #else
   (void)o;
@@ -127,6 +153,18 @@ Command add_serve_command(CLI::App& app, const GlobalOptions& global) {
             return std::string("expected letters, digits, '-' and '_' only (it goes in a URL)");
         return t.empty() ? std::string("expected a token, found none") : std::string();
       });
+  sub->add_option("--serial", options->serial,
+                  "The rig's serial port (/dev/ttyACM0): its Hall signal and periods live in "
+                  "every page, beside the simulation");
+  sub->add_option("--baud", options->baud, "With --serial: the port's baud rate (the firmware's)")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 4e6));
+  sub->add_option("--record", options->record,
+                  "Folder the rig's raw log is written into, line by line as it comes");
+  sub->add_option("--rate", options->rate,
+                  "API requests a second each client may make (three times as many at once)")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0, 10000.0));
   sub->add_option("--web", options->web,
                   "Folder of the built page (default: web/ beside the executable)");
   return {sub, [options, &global] { return run_serve(*options, global); }};

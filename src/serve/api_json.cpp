@@ -107,30 +107,37 @@ json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable
   };
 }
 
+json estimate_json(const std::optional<EstimatorReport>& report) {
+  if (!report || report->periods_used == 0) return nullptr;
+  // The spreads and mu_k's uncertainty from two periods on, as the summary gives them: one
+  // period has none (null, never 0).
+  const EstimatorReport& e = *report;
+  const bool spread = e.periods_used >= 2;
+  const auto measured = [spread](double v) { return spread ? json(v) : json(nullptr); };
+  return {{"periods_used", e.periods_used},
+          {"periods_discarded", e.periods_discarded},
+          {"pulses", e.pulses},
+          {"period", e.period},
+          {"period_sd", measured(e.period_std)},
+          {"period_se", measured(e.period_std_error)},
+          {"mu_k", e.mu_k},
+          {"mu_k_err", measured(e.mu_k_err_quadrature)},
+          {"mu_k_err_worst", measured(e.mu_k_err_worst)}};
+}
+
+json periods_json(const std::vector<EstimatedPeriod>& periods, std::size_t from) {
+  json out = json::array();
+  for (std::size_t i = from; i < periods.size(); ++i) {
+    const EstimatedPeriod& p = periods[i];
+    out.push_back(json::array({p.start, p.end, p.period, p.status == fl_estimator::kAccepted}));
+  }
+  return out;
+}
+
 json frame_json(const LiveFrame& f, bool playing, double speed) {
   json hall = json::array();
   for (const HallSample& s : f.hall)
     hall.push_back(json::array({static_cast<double>(s.t_us) * 1e-6, s.adc}));
-  json periods = json::array();
-  for (const EstimatedPeriod& p : f.periods)
-    periods.push_back(json::array({p.start, p.end, p.period, p.status == fl_estimator::kAccepted}));
-  json estimate = nullptr;
-  if (f.estimate) {
-    // The spreads and mu_k's uncertainty from two periods on, as the summary gives them: one
-    // period has none (null, never 0).
-    const EstimatorReport& e = *f.estimate;
-    const bool spread = e.periods_used >= 2;
-    const auto measured = [spread](double v) { return spread ? json(v) : json(nullptr); };
-    estimate = {{"periods_used", e.periods_used},
-                {"periods_discarded", e.periods_discarded},
-                {"pulses", e.pulses},
-                {"period", e.period},
-                {"period_sd", measured(e.period_std)},
-                {"period_se", measured(e.period_std_error)},
-                {"mu_k", e.mu_k},
-                {"mu_k_err", measured(e.mu_k_err_quadrature)},
-                {"mu_k_err_worst", measured(e.mu_k_err_worst)}};
-  }
   return {
       {"t", f.t},
       {"x", f.plate.x},
@@ -146,8 +153,8 @@ json frame_json(const LiveFrame& f, bool playing, double speed) {
             {{"normal", f.contacts[1].normal_force}, {"friction", f.contacts[1].friction_force}}})},
       {"hall", hall},
       {"pulses", f.pulses},
-      {"periods", periods},
-      {"estimate", estimate},
+      {"periods", periods_json(f.periods, 0)},
+      {"estimate", estimate_json(f.estimate)},
       {"regime", f.regime},
       {"playing", playing},
       {"speed", speed}};

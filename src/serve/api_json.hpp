@@ -3,6 +3,7 @@
 #pragma once
 
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,12 @@ nlohmann::json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable&
 
 // A session's rig: its geometry, start, the analytic model's numbers, the paper's values.
 nlohmann::json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable& table);
+
+// The estimator's statistics as `state` and `rig` events carry them: null before a period was
+// accepted; the spreads null with one period.
+nlohmann::json estimate_json(const std::optional<EstimatorReport>& report);
+// Periods as events carry them, [start, end, period, accepted], from index `from` on.
+nlohmann::json periods_json(const std::vector<EstimatedPeriod>& periods, std::size_t from);
 
 // One `state` event of the stream.
 nlohmann::json frame_json(const LiveFrame& frame, bool playing, double speed);

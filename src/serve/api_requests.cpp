@@ -1,5 +1,7 @@
 #include "serve/api_requests.hpp"
 
+#include <cctype>
+
 #include <nlohmann/json.hpp>
 
 namespace fl::serve {
@@ -23,13 +25,33 @@ std::variant<json, BodyRefusal> object_of(std::string_view body) {
   return parsed;
 }
 
+// A name for the class's table: letters (ASCII, and the UTF-8 characters of U+00C0 to U+07FF and
+// U+0800 to U+DFFF but U+2000 to U+2FFF: Latin, Greek, Cyrillic, Arabic, Indic and CJK letters, no
+// punctuation, symbols, direction marks or emoji; the JSON reader has checked the sequences),
+// digits, spaces and . - _ ', beginning with a letter or digit (so that no spreadsheet reads the
+// class's CSV cell as a formula).
+bool is_name(const std::string& name) {
+  std::size_t characters = 0;
+  for (std::size_t i = 0; i < name.size(); ++i) {
+    const auto c = static_cast<unsigned char>(name[i]);
+    if ((c & 0xC0) == 0x80) continue;  // a continuation byte: part of the character before
+    ++characters;
+    const bool letter_or_digit =
+        (c >= 0xC3 && c <= 0xED && c != 0xE2) || (c < 0x80 && std::isalnum(c) != 0);
+    if (characters == 1 && !letter_or_digit) return false;
+    if (!letter_or_digit && c != ' ' && c != '.' && c != '-' && c != '_' && c != '\'') return false;
+  }
+  return characters >= 1 && characters <= kMostNameCharacters;
+}
+
 }  // namespace
 
-std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view text) {
+std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) {
   auto parsed = object_of(text);
   if (auto* refusal = std::get_if<BodyRefusal>(&parsed)) return *refusal;
   const json& body = std::get<json>(parsed);
-  SessionRequest request;
+  SessionBody out;
+  SessionRequest& request = out.request;
   const auto scene = body.find("scene");
   if (scene == body.end() || !scene->is_string())
     return BodyRefusal{"expected \"scene\": the name of a scene /api/lab offers"};
@@ -45,7 +67,15 @@ std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view tex
       request.set.push_back(entry.get<std::string>());
     }
   }
-  return request;
+  if (const auto name = body.find("name"); name != body.end() && !name->is_null()) {
+    if (!name->is_string() || !is_name(name->get<std::string>()))
+      return BodyRefusal{
+          "expected \"name\" as up to " + std::to_string(kMostNameCharacters) +
+          " letters, digits, spaces and . - _ ', beginning with a letter or digit, found " +
+          quoted(*name)};
+    out.name = name->get<std::string>();
+  }
+  return out;
 }
 
 std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view text) {
@@ -77,6 +107,25 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
         "0.25 or 0.0625}, found " +
         quoted(body)};
   return command;
+}
+
+std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view text) {
+  auto parsed = object_of(text);
+  if (auto* refusal = std::get_if<BodyRefusal>(&parsed)) return *refusal;
+  const json& body = std::get<json>(parsed);
+  RigCommand command;
+  const auto port = body.find("port");
+  if (port != body.end() && port->is_string() && body.size() == 1) {
+    command.action = RigCommand::Action::kOpen;
+    command.port = port->get<std::string>();
+    return command;
+  }
+  const auto action = body.find("action");
+  if (action != body.end() && *action == "close" && body.size() == 1) return command;
+  return BodyRefusal{
+      "expected {\"port\": one of the ports GET /api/rig lists} or {\"action\": \"close\"}, "
+      "found " +
+      quoted(body)};
 }
 
 }  // namespace fl::serve

@@ -19,8 +19,15 @@ struct BodyRefusal {
 // The most `set` entries a session's body may carry.
 inline constexpr std::size_t kMostSetEntries = 64;
 
-// POST /api/sessions: {"scene": NAME, "set": ["key.path=value", ...]}.
-std::variant<SessionRequest, BodyRefusal> read_session_body(std::string_view body);
+// POST /api/sessions: {"scene": NAME, "set": ["key.path=value", ...], "name": WHO}: the run's
+// request, and who runs it for the class's table ("" : not given).
+struct SessionBody {
+  SessionRequest request;
+  std::string name;
+};
+// The most characters of a name; letters (any script), digits, spaces and . - _ '.
+inline constexpr std::size_t kMostNameCharacters = 40;
+std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view body);
 
 // The slow-motion factors the page offers: 1, 0.25 and 0.0625.
 inline bool is_speed(double speed) {
@@ -35,5 +42,14 @@ struct ControlCommand {
   double speed = 1.0;  // with kSpeed
 };
 std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view body);
+
+// POST /api/rig: {"port": NAME} (a name GET /api/rig listed; checked by the server) or
+// {"action": "close"}.
+struct RigCommand {
+  enum class Action { kOpen, kClose };
+  Action action = Action::kClose;
+  std::string port;  // with kOpen
+};
+std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view body);
 
 }  // namespace fl::serve

@@ -1,6 +1,8 @@
 #include "serve/lab_server.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -14,10 +16,15 @@
 #include <httplib.h>
 
 #include "io/input_error.hpp"
+#include "io/serial_ports.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
+#include "serve/class_table.hpp"
 #include "serve/lab_session.hpp"
+#include "serve/rate_limit.hpp"
+#include "serve/rig_feed.hpp"
+#include "serve/rig_watch.hpp"
 
 namespace fl::serve {
 namespace {
@@ -48,6 +55,10 @@ std::string event(const char* name, const json& data) {
   return fmt::format("event: {}\ndata: {}\n\n", name, data.dump());
 }
 
+bool is_loopback(const std::string& host) {
+  return host == "127.0.0.1" || host == "::1" || host == "localhost";
+}
+
 std::string content_type(const std::string& name) {
   if (name.ends_with(".json")) return "application/json";
   if (name.ends_with(".csv")) return "text/csv";
@@ -57,13 +68,50 @@ std::string content_type(const std::string& name) {
 }  // namespace
 
 struct LabServer::Impl {
+  explicit Impl(ServeOptions o)
+      : options(std::move(o)),
+        may_choose_port(options.pages_choose_port.value_or(is_loopback(options.host) ||
+                                                           !options.serial_port.empty())),
+        rate(options.requests_per_second, 3.0 * options.requests_per_second) {}
+
   ServeOptions options;
+  const bool may_choose_port;
+  RateLimit rate;
   httplib::Server server;
   mutable std::mutex mutex;
   std::map<std::string, std::shared_ptr<LabSession>> sessions;
   std::mt19937_64 ids{std::random_device{}()};
   std::atomic<bool> stopping{false};
   std::atomic<bool> listening{false};
+  std::atomic<int> streams{0};
+  // The live rig: the port open or last open (replaced when a page opens another).
+  mutable std::mutex rig_mutex;
+  std::shared_ptr<RigFeed> rig;
+
+  std::shared_ptr<RigFeed> current_rig() const {
+    const std::lock_guard lock(rig_mutex);
+    return rig;
+  }
+  // Opens `port`, closing the one open (outside the lock: its reader stops within 0.1 s).
+  void open_rig(const std::string& port) {
+    auto feed = std::make_shared<RigFeed>(port, options.serial_baud, options.record_dir,
+                                          options.most_rig_log_bytes);
+    std::shared_ptr<RigFeed> old;
+    {
+      const std::lock_guard lock(rig_mutex);
+      old = std::exchange(rig, std::move(feed));
+    }
+    if (old) old->close();
+  }
+  std::vector<std::string> ports() const {
+    std::vector<std::string> out = list_serial_ports(options.device_dir);
+    if (!options.serial_port.empty() &&
+        std::find(out.begin(), out.end(), options.serial_port) == out.end())
+      out.insert(out.begin(), options.serial_port);
+    return out;
+  }
+  json rig_status_json() const;
+  std::vector<ClassRow> class_rows() const;
 
   // The session a request names, or a 404 said and null.
   std::shared_ptr<LabSession> find(const httplib::Request& req, httplib::Response& res) const {
@@ -116,6 +164,43 @@ struct LabServer::Impl {
   void control(LabSession& session, const httplib::Request& req, httplib::Response& res);
 };
 
+json LabServer::Impl::rig_status_json() const {
+  const std::shared_ptr<RigFeed> feed = current_rig();
+  json out{{"ports", may_choose_port ? json(ports()) : json::array()},
+           {"may_choose", may_choose_port},
+           {"port", nullptr},
+           {"baud", options.serial_baud},
+           {"state", "closed"},
+           {"message", nullptr},
+           {"lines", 0},
+           {"log_name", nullptr}};
+  if (feed) {
+    const RigFeedStatus s = feed->status();
+    out["port"] = s.port;
+    out["state"] = s.state;
+    out["message"] = s.message ? json(*s.message) : json(nullptr);
+    out["lines"] = s.lines;
+    out["log_name"] = s.log_name.empty() ? json(nullptr) : json(s.log_name);
+  }
+  return out;
+}
+
+std::vector<ClassRow> LabServer::Impl::class_rows() const {
+  std::vector<std::pair<std::string, std::shared_ptr<LabSession>>> open;
+  {
+    const std::lock_guard lock(mutex);
+    open.reserve(sessions.size());
+    for (const auto& [id, session] : sessions) open.emplace_back(id, session);
+  }
+  std::sort(open.begin(), open.end(),
+            [](const auto& a, const auto& b) { return a.second->created() < b.second->created(); });
+  std::vector<ClassRow> rows;
+  for (const auto& [id, session] : open)
+    rows.push_back(
+        {id, session->name(), session->scene(), session->rig_shared(), session->standing()});
+  return rows;
+}
+
 void LabServer::Impl::routes() {
   server.Get("/api/lab", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200,
@@ -152,6 +237,52 @@ void LabServer::Impl::routes() {
     res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
     res.set_content(*text, content_type(name));
   });
+  server.Get("/api/rig", [this](const httplib::Request&, httplib::Response& res) {
+    send_json(res, 200, rig_status_json());
+  });
+  server.Post("/api/rig", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto read = read_rig_body(req.body);
+    if (const auto* refusal = std::get_if<BodyRefusal>(&read))
+      return send_json(res, 400, error_json(refusal->message));
+    const RigCommand& command = std::get<RigCommand>(read);
+    if (command.action == RigCommand::Action::kClose) {
+      if (const auto feed = current_rig()) feed->close();
+      return send_json(res, 200, rig_status_json());
+    }
+    if (!may_choose_port)
+      return send_json(res, 403,
+                       error_json("this server is shared: a page may not open its serial ports; "
+                                  "start it with --serial PORT on the machine the rig is on"));
+    const std::vector<std::string> known = ports();
+    if (std::find(known.begin(), known.end(), command.port) == known.end())
+      return send_json(
+          res, 400,
+          error_json(fmt::format("no serial port {} here: expected one of GET /api/rig's ports "
+                                 "({}); is the board plugged in?",
+                                 json(command.port).dump(),
+                                 known.empty() ? std::string("none now")
+                                               : fmt::format("{}", fmt::join(known, ", ")))));
+    open_rig(command.port);
+    send_json(res, 200, rig_status_json());
+  });
+  server.Get("/api/rig/log", [this](const httplib::Request&, httplib::Response& res) {
+    const std::shared_ptr<RigFeed> feed = current_rig();
+    const RigFeedStatus status = feed ? feed->status() : RigFeedStatus{};
+    if (!feed || status.lines == 0)
+      return send_json(res, 404, error_json("no rig log yet: no line has come from a serial port"));
+    res.set_header("Content-Disposition", "attachment; filename=\"" + status.log_name + "\"");
+    res.set_content(feed->raw_log(), "text/plain; charset=utf-8");
+  });
+  server.Get("/api/class", [this](const httplib::Request&, httplib::Response& res) {
+    const std::shared_ptr<RigFeed> feed = current_rig();
+    send_json(res, 200,
+              class_json(class_rows(), paper_table_in(options.asset_dir),
+                         feed ? std::optional<RigFeedStatus>(feed->status()) : std::nullopt));
+  });
+  server.Get("/api/class.csv", [this](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Content-Disposition", "attachment; filename=\"class.csv\"");
+    res.set_content(class_csv(class_rows(), paper_table_in(options.asset_dir)), "text/csv");
+  });
   server.Delete(session, [this](const httplib::Request& req, httplib::Response& res) {
     const std::string id = req.matches[1];
     const bool ended =
@@ -166,7 +297,7 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
   auto read = read_session_body(req.body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read))
     return send_json(res, 400, error_json(refusal->message));
-  const SessionRequest& request = std::get<SessionRequest>(read);
+  const SessionRequest& request = std::get<SessionBody>(read).request;
   if (full()) return refuse_full(res);
   try {
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
@@ -177,7 +308,8 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
       prepared.output.trajectory = false;
       prepared.output.hall = false;
     }
-    auto s = std::make_shared<LabSession>(request.scene, std::move(prepared));
+    auto s = std::make_shared<LabSession>(request.scene, std::move(prepared),
+                                          std::get<SessionBody>(read).name);
     const std::string id = fmt::format("{:016x}", ids());
     json out{{"id", id},
              {"rig", rig_json(request.scene, s->rig(), paper_table_in(options.asset_dir))}};
@@ -199,15 +331,30 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
 void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib::Response& res) {
   res.set_header("Cache-Control", "no-cache");
   struct StreamState {
+    explicit StreamState(const CompiledRig& rig)
+        : rig_watch(LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
+                             fl_estimator::kAutoGeometry}) {}
     std::optional<int> generation;
     Clock::time_point next = Clock::now();
+    RigWatch rig_watch;  // the live rig with this session's spacing
   };
-  auto state = std::make_shared<StreamState>();
+  auto state = std::make_shared<StreamState>(session->rig());
+  ++streams;
   res.set_chunked_content_provider(
-      "text/event-stream", [this, session, state](std::size_t, httplib::DataSink& sink) {
-        if (stopping) return false;
-        std::this_thread::sleep_until(state->next);
-        state->next = std::max(state->next + kFrameInterval, Clock::now());
+      "text/event-stream",
+      [this, session, state](std::size_t, httplib::DataSink& sink) {
+        if (!stopping) {
+          std::this_thread::sleep_until(state->next);
+          state->next = std::max(state->next + kFrameInterval, Clock::now());
+        }
+        if (stopping) {
+          const std::string bye =
+              event("closed", {{"message",
+                                "the lab's server was stopped: its sessions ended; "
+                                "download what you need before it stops next time"}});
+          sink.write(bye.data(), bye.size());
+          return false;
+        }
         const LabSession::Tick tick = session->tick(Clock::now());
         std::string out;
         if (state->generation && *state->generation != tick.generation)
@@ -220,10 +367,14 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
             out += event("failed", {{"message", *failure}});
           out += event("done", *tick.done);
         }
+        if (const std::shared_ptr<RigFeed> feed = current_rig())
+          if (const std::optional<json> watched = state->rig_watch.next(feed))
+            out += event("rig", *watched);
         // A client that has gone: the write fails and the stream ends; the session stays for
         // its idle time (the page may come back).
         return sink.write(out.data(), out.size());
-      });
+      },
+      [this](bool) { --streams; });
 }
 
 void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
@@ -246,8 +397,7 @@ void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
   }
 }
 
-LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
-  impl_->options = std::move(options);
+LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
   httplib::Server& s = impl_->server;
   const std::size_t threads = thread_count(impl_->options.max_sessions);
   s.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
@@ -275,6 +425,17 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
                            "the one ending in ?token=..."));
       return httplib::Server::HandlerResponse::Handled;
     }
+    // Each client's share: a page that asks too fast waits, and the others do not.
+    double wait_s = 0.0;
+    if (req.path.starts_with("/api/") &&
+        !impl_->rate.allow(req.remote_addr, Clock::now(), &wait_s)) {
+      res.set_header("Retry-After", std::to_string(static_cast<int>(std::ceil(wait_s))));
+      send_json(res, 429,
+                error_json(fmt::format("too many requests from {}: at most {:g} a second; "
+                                       "wait {:.1f} s",
+                                       req.remote_addr, impl_->rate.per_second(), wait_s)));
+      return httplib::Server::HandlerResponse::Handled;
+    }
     auto& headers = const_cast<httplib::Request&>(req).headers;
     for (auto it = headers.begin(); it != headers.end(); ++it) {
       if (it->first == "Accept-Encoding" && it->second.find("br") != std::string::npos) {
@@ -300,6 +461,7 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>()) {
   s.set_mount_point("/parts", parts);
   s.set_file_extension_and_mimetype_mapping("glb", "model/gltf-binary");
   s.set_file_extension_and_mimetype_mapping("mjs", "text/javascript");
+  if (!impl_->options.serial_port.empty()) impl_->open_rig(impl_->options.serial_port);
 }
 
 LabServer::~LabServer() {
@@ -332,11 +494,22 @@ void LabServer::listen() {
 }
 
 void LabServer::stop() {
-  impl_->stopping = true;
+  const bool first = !impl_->stopping.exchange(true);
+  // The streams say goodbye (each within a frame), the rig's log is written whole.
+  const auto deadline = Clock::now() + 4 * kFrameInterval;
+  while (first && impl_->streams > 0 && Clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (const std::shared_ptr<RigFeed> feed = impl_->current_rig()) feed->close();
   while (impl_->listening) {
     impl_->server.stop();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+}
+
+std::optional<std::string> LabServer::rig_record_path() const {
+  const std::shared_ptr<RigFeed> feed = impl_->current_rig();
+  if (!feed || feed->record_path().empty()) return std::nullopt;
+  return feed->record_path();
 }
 
 int LabServer::sessions() const {

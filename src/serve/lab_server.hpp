@@ -4,7 +4,9 @@
 // a 4xx and a JSON body naming the problem, and the server goes on serving the others.
 #pragma once
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace fl::serve {
@@ -26,6 +28,21 @@ struct ServeOptions {
   // A session keeps its run's steps and Hall samples for its files (about 0.6 MB a simulated
   // second) only for runs up to this long [s]; a longer one offers its summary and cycles.
   double most_recorded_seconds = 120.0;
+  // API requests a client (by address) may make a second, on average; three times as many at
+  // once. A stream counts once, when it opens.
+  double requests_per_second = 20.0;
+  // The rig live (docs/web-api.md): a serial port read from the start ("" : none), its baud
+  // rate, and a folder the rig's raw log is written into as it comes ("" : kept in memory only).
+  std::string serial_port;
+  int serial_baud = 250000;
+  std::string record_dir;
+  // Whether a page may open a serial port itself: on a server for this machine only, or one
+  // started with a port. Set by the server from `host` and `serial_port` unless given.
+  std::optional<bool> pages_choose_port;
+  // The most bytes of the rig's raw log kept (and read) before its port is closed.
+  std::size_t most_rig_log_bytes = std::size_t{64} << 20;
+  // The serial devices' folder (/dev; another for a test).
+  std::string device_dir = "/dev";
 };
 
 class LabServer {
@@ -40,7 +57,11 @@ class LabServer {
   int bind();
   // Serves until stop() (from another thread or a signal's watcher).
   void listen();
+  // Ends the streams (each told so by `event: closed`), closes the rig's port, its log written
+  // whole, and stops serving.
   void stop();
+  // Where the rig's raw log was written (--record), when a line came.
+  std::optional<std::string> rig_record_path() const;
   // How many sessions are open.
   int sessions() const;
 

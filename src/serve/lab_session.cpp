@@ -17,9 +17,10 @@ constexpr double kMostPerTick = 0.1;  // s of simulated time, whatever the wall 
 
 }  // namespace
 
-LabSession::LabSession(std::string scene, PreparedSession prepared)
+LabSession::LabSession(std::string scene, PreparedSession prepared, std::string name)
     : scene_(std::move(scene)),
       prepared_(std::move(prepared)),
+      name_(std::move(name)),
       run_(std::make_unique<LiveRun>(prepared_.rig, prepared_.output)) {}
 
 LabSession::~LabSession() {
@@ -38,6 +39,7 @@ LabSession::Tick LabSession::tick(Clock::time_point now) {
   Tick out;
   out.generation = generation_;
   const LiveFrame frame = run_->advance_to(target_);
+  if (frame.estimate) estimate_ = frame.estimate;
   if (run_->ended()) playing_ = false;
   out.state = frame_json(frame, playing_, speed_);
   if (run_->ended() && !done_sent_) {
@@ -79,6 +81,7 @@ nlohmann::json LabSession::reset() {
   target_ = 0.0;
   last_tick_.reset();
   done_sent_ = false;
+  estimate_.reset();
   ++generation_;
   return controls_json();
 }
@@ -96,6 +99,34 @@ std::optional<std::string> LabSession::file(const std::string& name) {
   const std::lock_guard lock(mutex_);
   if (!run_->ended()) return std::nullopt;
   return run_->file(name);
+}
+
+SessionStanding LabSession::standing() const {
+  const std::lock_guard lock(mutex_);
+  SessionStanding out;
+  out.t = run_->time();
+  const bool spread = estimate_ && estimate_->periods_used >= 2;
+  if (run_->ended() && done_sent_) {
+    // The summary the page was sent: the run's headline values.
+    const RunSummary& s = run_->summary();
+    out.state = "done";
+    out.period = s.period;
+    if (s.estimator && s.estimator->periods_used >= 2)
+      out.period_err = s.estimator->period_std_error;
+    out.mu_k = s.mu_k_recovered;
+    out.mu_k_err = s.mu_k_err_quadrature;
+    return out;
+  }
+  out.state = playing_ ? "playing" : "paused";
+  if (estimate_) {
+    out.period = estimate_->period;
+    out.mu_k = estimate_->mu_k;
+    if (spread) {
+      out.period_err = estimate_->period_std_error;
+      out.mu_k_err = estimate_->mu_k_err_quadrature;
+    }
+  }
+  return out;
 }
 
 Clock::time_point LabSession::last_seen() const {

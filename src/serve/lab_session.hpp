@@ -13,6 +13,7 @@
 
 #include "lab/live/live_run.hpp"
 #include "lab/request/session_request.hpp"
+#include "serve/class_table.hpp"
 
 namespace fl::serve {
 
@@ -20,7 +21,8 @@ using Clock = std::chrono::steady_clock;
 
 class LabSession {
  public:
-  LabSession(std::string scene, PreparedSession prepared);
+  // `name`: who runs it, for the class's table ("" : not given).
+  LabSession(std::string scene, PreparedSession prepared, std::string name = "");
   LabSession(const LabSession&) = delete;
   LabSession& operator=(const LabSession&) = delete;
   // Hands what the run recorded back to the system (malloc_trim): a class opening and closing
@@ -48,14 +50,21 @@ class LabSession {
   // The run's file by name once it has ended; nullopt before or for a file it does not keep.
   std::optional<std::string> file(const std::string& name);
   const CompiledRig& rig() const { return *prepared_.rig; }
+  const std::shared_ptr<const CompiledRig>& rig_shared() const { return prepared_.rig; }
   const std::string& scene() const { return scene_; }
+  const std::string& name() const { return name_; }
+  // Where its run stands, for the class's table.
+  SessionStanding standing() const;
   Clock::time_point last_seen() const;
+  Clock::time_point created() const { return created_; }
 
  private:
   nlohmann::json controls_json() const;
 
   const std::string scene_;
   const PreparedSession prepared_;
+  const std::string name_;
+  const Clock::time_point created_ = Clock::now();
   mutable std::mutex mutex_;
   std::unique_ptr<LiveRun> run_;
   bool playing_ = false;
@@ -64,6 +73,7 @@ class LabSession {
   std::optional<Clock::time_point> last_tick_;
   Clock::time_point last_seen_ = Clock::now();
   bool done_sent_ = false;
+  std::optional<EstimatorReport> estimate_;  // the run's estimate at the last tick
   int generation_ = 0;
 };
 

@@ -1,6 +1,6 @@
-// libFuzzer target for the web API's request bodies (serve/api_requests.hpp): any bytes are read
-// as a request or refused with a message, within the API's bounds; anything else (a crash, a
-// sanitizer report, an exception, a hang) is a bug.
+// libFuzzer target for the web API's request bodies (serve/api_requests.hpp: a session's, a
+// control's, the live rig's): any bytes are read as a request or refused with a message, within
+// the API's bounds; anything else (a crash, a sanitizer report, an exception, a hang) is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -12,8 +12,9 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   const auto session = fl::serve::read_session_body(text);
-  if (const auto* request = std::get_if<fl::SessionRequest>(&session)) {
-    if (request->set.size() > fl::serve::kMostSetEntries) std::abort();
+  if (const auto* body = std::get_if<fl::serve::SessionBody>(&session)) {
+    if (body->request.set.size() > fl::serve::kMostSetEntries) std::abort();
+    if (body->name.size() > 4 * fl::serve::kMostNameCharacters) std::abort();
   } else if (std::get<fl::serve::BodyRefusal>(session).message.empty()) {
     std::abort();
   }
@@ -21,6 +22,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (const auto* command = std::get_if<fl::serve::ControlCommand>(&control)) {
     if (!fl::serve::is_speed(command->speed)) std::abort();
   } else if (std::get<fl::serve::BodyRefusal>(control).message.empty()) {
+    std::abort();
+  }
+  const auto rig = fl::serve::read_rig_body(text);
+  if (const auto* refusal = std::get_if<fl::serve::BodyRefusal>(&rig);
+      refusal != nullptr && refusal->message.empty()) {
     std::abort();
   }
   return 0;

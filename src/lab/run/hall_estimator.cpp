@@ -128,7 +128,10 @@ std::vector<double> HallEstimator::provisional_periods() const {
 
 EstimatorReport HallEstimator::report() const {
   // The data ends here: a turning point still open is completed, on a copy.
-  const fl_estimator::Stats s = impl_->estimator.stats_if_finished();
+  return estimator_report(impl_->estimator.stats_if_finished());
+}
+
+EstimatorReport estimator_report(const fl_estimator::Stats& s) {
   EstimatorReport r;
   r.periods_used = static_cast<int>(s.periods_used);
   r.periods_discarded = static_cast<int>(s.periods_discarded);

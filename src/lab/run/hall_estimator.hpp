@@ -11,6 +11,9 @@
 
 namespace fl {
 
+// The estimator's statistics as the lab reports them (the summary's, a live frame's).
+EstimatorReport estimator_report(const fl_estimator::Stats& stats);
+
 class HallEstimator {
  public:
   // l [m] and g [m/s^2] for mu_k; the paper's dl = 2 mm for its uncertainty.

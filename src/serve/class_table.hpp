@@ -1,0 +1,42 @@
+// The class's table (docs/web-api.md, "The class's table"): every open session's set-up and
+// result, like the paper's Table I filled by a class, as JSON for the teacher's page and as CSV.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/paper_table.hpp"
+#include "scene/compiled_rig.hpp"
+#include "serve/rig_feed.hpp"
+
+namespace fl::serve {
+
+// Where a session's run stands: the estimate so far, or the summary's once it is done.
+struct SessionStanding {
+  std::string state;                 // "paused", "playing" or "done"
+  double t = 0.0;                    // s, simulated
+  std::optional<double> period;      // s, mean of the accepted periods
+  std::optional<double> period_err;  // s, the standard error of that mean (two periods on)
+  std::optional<double> mu_k;        // the paper's (thin) formula
+  std::optional<double> mu_k_err;    // in quadrature (two periods on)
+};
+
+struct ClassRow {
+  std::string session;
+  std::string name;  // "" : not given
+  std::string scene;
+  std::shared_ptr<const CompiledRig> rig;
+  SessionStanding standing;
+};
+
+nlohmann::json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
+                          const std::optional<RigFeedStatus>& rig);
+
+// The columns docs/web-api.md lists; an empty cell for a value that is null in the JSON.
+std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table);
+
+}  // namespace fl::serve

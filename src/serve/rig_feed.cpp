@@ -1,0 +1,199 @@
+#include "serve/rig_feed.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+
+namespace fl::serve {
+namespace {
+
+// rig-YYYYMMDD-HHMMSS.log, local time: the name a class finds its capture by.
+std::string log_name_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  ::localtime_r(&now, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "rig-%Y%m%d-%H%M%S.log", &local);
+  return text;
+}
+
+std::string clock_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  ::localtime_r(&now, &local);
+  char text[16];
+  std::strftime(text, sizeof text, "%H:%M:%S", &local);
+  return text;
+}
+
+}  // namespace
+
+RigFeed::RigFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes)
+    : most_log_bytes_(most_log_bytes),
+      record_dir_(std::move(record_dir)),
+      reader_(port, HallLogOptions{}) {
+  status_.port = port;
+  status_.baud = baud;
+  status_.state = "waiting";
+  try {
+    port_ = std::make_unique<SerialPort>(port, baud);
+  } catch (const InputError& e) {
+    status_.state = "failed";
+    status_.message = std::string(e.what());
+    return;
+  }
+  thread_ = std::thread([this] { read_port(); });
+}
+
+RigFeed::~RigFeed() {
+  close();
+}
+
+void RigFeed::close() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+  const std::lock_guard lock(mutex_);
+  if (status_.state == "waiting" || status_.state == "receiving") {
+    status_.state = "closed";
+    status_.message = std::nullopt;
+  }
+  if (record_fd_ >= 0) {
+    ::fsync(record_fd_);
+    ::close(record_fd_);
+    record_fd_ = -1;
+  }
+}
+
+void RigFeed::read_port() {
+  std::string pending;
+  while (!stop_) {
+    const bool open = port_->read_some(&pending, 100);
+    if (!lines_in(&pending, !open)) {
+      const std::lock_guard lock(mutex_);
+      end("full", fmt::format("the log reached its {} MB (about {} minutes at the firmware's "
+                              "1 kHz): the port is closed and the log kept; connect again to "
+                              "start a new one",
+                              most_log_bytes_ >> 20, most_log_bytes_ / (20 * 1000 * 60)));
+      break;
+    }
+    if (!open) {
+      const std::lock_guard lock(mutex_);
+      end("unplugged",
+          fmt::format("{} went away at {} (the board unplugged?): the {} lines received are "
+                      "kept, download them below; plug the board in and connect again",
+                      status_.port, clock_now(), status_.lines));
+      break;
+    }
+  }
+  port_.reset();
+}
+
+bool RigFeed::lines_in(std::string* pending, bool ended) {
+  const std::lock_guard lock(mutex_);
+  std::size_t done = 0;
+  const auto line = [&](std::string_view text, bool unfinished) {
+    if (log_.size() + text.size() > most_log_bytes_) return false;
+    if (status_.log_name.empty()) status_.log_name = log_name_now();
+    log_.append(text);
+    record(text);
+    ++status_.lines;
+    status_.state = reading_lines_ ? "receiving" : "failed";
+    if (!reading_lines_) return true;
+    std::string_view content = text;
+    if (content.ends_with('\n')) content.remove_suffix(1);
+    try {
+      reader_.add_line(content, status_.lines, unfinished);
+      for (LogSample& s : reader_.take()) {
+        if (s.segment != run_) {
+          run_ = s.segment;
+          samples_.clear();
+        }
+        samples_.push_back(s);
+      }
+    } catch (const InputError& e) {
+      // The lines are kept; the page says why they give no samples.
+      reading_lines_ = false;
+      status_.state = "failed";
+      status_.message = std::string(e.what());
+    }
+    return true;
+  };
+  for (std::size_t end; (end = pending->find('\n', done)) != std::string::npos; done = end + 1)
+    if (!line(std::string_view(*pending).substr(done, end + 1 - done), false)) return false;
+  pending->erase(0, done);
+  if (ended && !pending->empty()) {
+    if (!line(*pending, true)) return false;
+    pending->clear();
+  }
+  return true;
+}
+
+// The record file is opened with the first line; each line is written whole with write(2), no
+// buffer, so the file holds everything received up to any moment the server ends, however.
+void RigFeed::record(std::string_view bytes) {
+  if (record_dir_.empty()) return;
+  if (record_fd_ < 0 && record_path_.empty()) {
+    record_path_ = (std::filesystem::path(record_dir_) / status_.log_name).string();
+    record_fd_ = ::open(record_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (record_fd_ < 0)
+      status_.message = fmt::format(
+          "cannot write the log into {}: {}; the page's download "
+          "still has it",
+          record_path_, std::strerror(errno));
+  }
+  while (record_fd_ >= 0 && !bytes.empty()) {
+    const ssize_t n = ::write(record_fd_, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      status_.message = fmt::format(
+          "writing the log into {} failed: {}; the page's download "
+          "still has it",
+          record_path_, std::strerror(errno));
+      ::close(record_fd_);
+      record_fd_ = -1;
+      return;
+    }
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+}
+
+// Under the lock.
+void RigFeed::end(const std::string& state, std::optional<std::string> message) {
+  status_.state = state;
+  status_.message = std::move(message);
+}
+
+RigFeedStatus RigFeed::status() const {
+  const std::lock_guard lock(mutex_);
+  return status_;
+}
+
+std::string RigFeed::raw_log() const {
+  const std::lock_guard lock(mutex_);
+  return log_;
+}
+
+std::string RigFeed::record_path() const {
+  const std::lock_guard lock(mutex_);
+  return record_path_;
+}
+
+RigFeed::Slice RigFeed::samples_from(int run, std::size_t from) const {
+  const std::lock_guard lock(mutex_);
+  Slice out;
+  out.run = run_;
+  out.first = run == run_ ? std::min(from, samples_.size()) : 0;
+  out.samples.assign(samples_.begin() + static_cast<std::ptrdiff_t>(out.first), samples_.end());
+  return out;
+}
+
+}  // namespace fl::serve

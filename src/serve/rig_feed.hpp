@@ -1,0 +1,87 @@
+// The rig live (docs/web-api.md, "The rig live"): one serial port read on its own thread as
+// `frictionlab estimate --follow` reads it. Every line received is kept as received (the raw log
+// the page downloads, and written line by line into a record folder when the server has one),
+// and read as a Hall log; the samples of the board's current run are kept for the pages, each of
+// which runs the rig's estimator on them with its own spacing (serve/rig_watch.hpp).
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "io/hall_log_reader.hpp"
+#include "io/serial_port.hpp"
+
+namespace fl::serve {
+
+struct RigFeedStatus {
+  std::string port;
+  int baud = 0;
+  // "waiting" (open, nothing yet), "receiving", "unplugged" (the port went away), "failed" (it
+  // could not be opened, or its lines are not a Hall log), "closed" (closed by a page or the
+  // server's end), "full" (the log reached its size limit).
+  std::string state;
+  std::optional<std::string> message;  // what happened and what to do; none while all is well
+  int lines = 0;
+  std::string log_name;  // the raw log's name for its download ("" before a line came)
+};
+
+class RigFeed {
+ public:
+  // Opens `port` at `baud` and reads it until close() or the port going away. `record_dir`: a
+  // folder the raw log is also written into, line by line as it comes ("" : none). A port that
+  // cannot be opened gives a feed in state "failed" saying why. `most_log_bytes` bounds the log
+  // kept (and so the samples): past it the feed closes the port, saying so.
+  RigFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes);
+  ~RigFeed();
+  RigFeed(const RigFeed&) = delete;
+  RigFeed& operator=(const RigFeed&) = delete;
+
+  // Stops reading and closes the port and the record file; the log and samples stay.
+  void close();
+
+  RigFeedStatus status() const;
+  // Every line received, as received.
+  std::string raw_log() const;
+  // Where the raw log is being written ("" : nowhere).
+  std::string record_path() const;
+
+  // The current run's samples from index `from` on (from 0 when `run` is not the current run:
+  // the board restarted), with the run's number and its sample count.
+  struct Slice {
+    int run = 0;
+    std::size_t first = 0;  // the index of samples[0] in the run
+    std::vector<LogSample> samples;
+  };
+  Slice samples_from(int run, std::size_t from) const;
+
+ private:
+  void read_port();
+  // The complete lines of `pending` (all of it when the port `ended`) into the log, the record
+  // and the reader; false when the log is full.
+  bool lines_in(std::string* pending, bool ended);
+  void record(std::string_view bytes);
+  void end(const std::string& state, std::optional<std::string> message);
+
+  mutable std::mutex mutex_;
+  RigFeedStatus status_;
+  std::string log_;
+  std::size_t most_log_bytes_;
+  std::string record_dir_;
+  std::string record_path_;
+  int record_fd_ = -1;
+  HallLogReader reader_;
+  bool reading_lines_ = true;  // false once the lines proved not to be a Hall log
+  int run_ = 0;
+  std::vector<LogSample> samples_;  // of the current run
+  std::unique_ptr<SerialPort> port_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace fl::serve

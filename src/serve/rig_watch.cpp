@@ -1,0 +1,62 @@
+#include "serve/rig_watch.hpp"
+
+#include "lab/run/hall_estimator.hpp"
+#include "serve/api_json.hpp"
+
+namespace fl::serve {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kShownSeconds = 10.0;  // of samples an event carries at most
+
+}  // namespace
+
+RigWatch::RigWatch(const LogSetUp& set_up) : set_up_(set_up) {}
+
+std::optional<json> RigWatch::next(const std::shared_ptr<const RigFeed>& feed) {
+  const RigFeedStatus status = feed->status();
+  RigFeed::Slice slice = feed->samples_from(feed_run_, next_sample_);
+  if (feed != feed_ || slice.run != feed_run_ || !live_) {
+    feed_ = feed;
+    feed_run_ = slice.run;
+    ++run_;
+    live_ = std::make_unique<LiveLogEstimate>(set_up_, /*keep_samples=*/false);
+    periods_sent_ = 0;
+    if (slice.first != 0) slice = feed->samples_from(feed_run_, 0);
+  }
+  next_sample_ = slice.first + slice.samples.size();
+  json hall = json::array();
+  if (!slice.samples.empty()) {
+    // Every sample goes through the estimator; the event carries the last 10 s of them.
+    std::size_t shown = 0;
+    const double last = slice.samples.back().t_s;
+    while (slice.samples[shown].t_s < last - kShownSeconds) ++shown;
+    for (std::size_t i = 0; i < slice.samples.size(); ++i) {
+      live_->add(slice.samples[i]);
+      if (i >= shown)
+        hall.push_back(
+            json::array({static_cast<double>(live_->last_t_us()) * 1e-6, slice.samples[i].adc}));
+    }
+  }
+  const std::string sent = status.state + '\n' + status.message.value_or("") + '\n' +
+                           std::to_string(status.lines) + '\n' + std::to_string(run_);
+  const std::vector<EstimatedPeriod>& periods = live_->host().periods();
+  if (hall.empty() && periods.size() == periods_sent_ && sent == status_sent_) return std::nullopt;
+  status_sent_ = sent;
+  const fl_estimator::PeriodEstimator& estimator = live_->host().estimator();
+  json out{{"port", status.port},
+           {"state", status.state},
+           {"message", status.message ? json(*status.message) : json(nullptr)},
+           {"lines", status.lines},
+           {"run", run_},
+           {"hall", std::move(hall)},
+           {"periods", periods_json(periods, periods_sent_)},
+           {"estimate", estimate_json(estimator_report(estimator.stats()))},
+           {"geometry", geometry_name(estimator.geometry())},
+           {"spacing", set_up_.spacing}};
+  periods_sent_ = periods.size();
+  return out;
+}
+
+}  // namespace fl::serve

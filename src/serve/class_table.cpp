@@ -44,6 +44,7 @@ json row_json(const ClassRow& row, const PaperTable& table) {
           {"t", s.t},
           {"period", or_null(s.period)},
           {"period_err", or_null(s.period_err)},
+          {"period_from", s.period_from.empty() ? json(nullptr) : json(s.period_from)},
           {"mu_k", or_null(s.mu_k)},
           {"mu_k_err", or_null(s.mu_k_err)},
           {"paper_period", or_null(paper_value(rig.friction_source.paper_period))},
@@ -63,9 +64,10 @@ json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
 
 std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table) {
   static const char* const kColumns[] = {
-      "session",  "name",           "scene",     "material", "temperature_K", "spacing_mm",
-      "h_c_mm",   "state",          "t_s",       "period_s", "period_err_s",  "mu_k",
-      "mu_k_err", "paper_period_s", "paper_mu_k"};
+      "session",       "name",       "scene",          "material",
+      "temperature_K", "spacing_mm", "h_c_mm",         "state",
+      "t_s",           "period_s",   "period_err_s",   "period_from",
+      "mu_k",          "mu_k_err",   "paper_period_s", "paper_mu_k"};
   std::string out;
   for (const char* column : kColumns) out += std::string(out.empty() ? "" : ",") + column;
   out += '\n';
@@ -76,12 +78,12 @@ std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table
   };
   for (const ClassRow& row : rows) {
     const json r = row_json(row, table);
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(r["session"]),
+    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(r["session"]),
                        cell(r["name"]), cell(r["scene"]), cell(r["material"]),
                        cell(r["temperature_K"]), cell(r["spacing"], 1e3), cell(r["h_c"], 1e3),
                        cell(r["state"]), cell(r["t"]), cell(r["period"]), cell(r["period_err"]),
-                       cell(r["mu_k"]), cell(r["mu_k_err"]), cell(r["paper_period"]),
-                       cell(r["paper_mu_k"]));
+                       cell(r["period_from"]), cell(r["mu_k"]), cell(r["mu_k_err"]),
+                       cell(r["paper_period"]), cell(r["paper_mu_k"]));
   }
   return out;
 }

@@ -21,8 +21,11 @@ struct SessionStanding {
   double t = 0.0;                    // s, simulated
   std::optional<double> period;      // s, mean of the accepted periods
   std::optional<double> period_err;  // s, the standard error of that mean (two periods on)
-  std::optional<double> mu_k;        // the paper's (thin) formula
-  std::optional<double> mu_k_err;    // in quadrature (two periods on)
+  // "sensor" (the Hall sensor's estimator) or "trajectory" (fitted to the plate's motion, for a
+  // rig without a sensor, once done); "" : no period yet.
+  std::string period_from;
+  std::optional<double> mu_k;      // the paper's (thin) formula
+  std::optional<double> mu_k_err;  // in quadrature (two periods on)
 };
 
 struct ClassRow {

@@ -110,9 +110,17 @@ SessionStanding LabSession::standing() const {
     // The summary the page was sent: the run's headline values.
     const RunSummary& s = run_->summary();
     out.state = "done";
-    out.period = s.period;
-    if (s.estimator && s.estimator->periods_used >= 2)
-      out.period_err = s.estimator->period_std_error;
+    if (s.period) {
+      out.period = s.period;
+      out.period_from = "sensor";
+      if (s.estimator && s.estimator->periods_used >= 2)
+        out.period_err = s.estimator->period_std_error;
+    } else if (s.period_trajectory) {
+      // A rig without a Hall sensor: the period fitted to the plate's trajectory.
+      out.period = s.period_trajectory;
+      out.period_err = s.period_trajectory_err;
+      out.period_from = "trajectory";
+    }
     out.mu_k = s.mu_k_recovered;
     out.mu_k_err = s.mu_k_err_quadrature;
     return out;
@@ -120,6 +128,7 @@ SessionStanding LabSession::standing() const {
   out.state = playing_ ? "playing" : "paused";
   if (estimate_) {
     out.period = estimate_->period;
+    out.period_from = "sensor";
     out.mu_k = estimate_->mu_k;
     if (spread) {
       out.period_err = estimate_->period_std_error;

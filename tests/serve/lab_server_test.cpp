@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "io/csv_table.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "support/scene_fixture.hpp"
 #include "support/temp_folder.hpp"
@@ -46,6 +47,7 @@ class LabServerTest : public test::TempFolderTest {
     options.version = "frictionlab test";
     options.max_sessions = max_sessions_;
     options.token = token_;
+    options.requests_per_second = requests_per_second_;
     server_ = std::make_unique<LabServer>(options);
     port_ = server_->bind();
     thread_ = std::thread([this] { server_->listen(); });
@@ -67,7 +69,9 @@ class LabServerTest : public test::TempFolderTest {
     EXPECT_TRUE(res);
     if (!res) return "";
     EXPECT_EQ(res->status, 201) << res->body;
-    return json::parse(res->body).value("id", "");
+    const json body = json::parse(res->body);
+    const auto id = body.find("id");
+    return id != body.end() && id->is_string() ? id->get_ref<const std::string&>() : "";
   }
   // Reads the stream until `done`: every event's name and data.
   std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
@@ -92,6 +96,7 @@ class LabServerTest : public test::TempFolderTest {
 
   int max_sessions_ = 30;
   std::string token_;
+  double requests_per_second_ = 1000.0;
   std::unique_ptr<LabServer> server_;
   std::thread thread_;
   int port_ = 0;
@@ -367,6 +372,162 @@ TEST_F(SharedServerTest, APageBeyondTheLimitIsToldTheLabIsFull) {
   ASSERT_EQ(client_->Delete(("/api/sessions/" + ids[0] + "?token=s3cret").c_str())->status, 200);
   EXPECT_EQ(post(create, {{"scene", "minimal"}})->status, 201);
   EXPECT_EQ(server_->sessions(), 2);
+}
+
+TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
+  const std::string ada = start({{"scene", "minimal"},
+                                 {"set", {"plate.material=iron", "world.duration=3s"}},
+                                 {"name", "Ada Lovelace"}});
+  const std::string bob = start({{"scene", "minimal"}, {"set", {"rollers.spacing=70mm"}}});
+  // Names that are not names are refused, saying what a name is.
+  for (const json& name : {json("=1+1"), json("a,b"), json(std::string(41, 'a')), json(3)}) {
+    const auto res = post("/api/sessions", {{"scene", "minimal"}, {"name", name}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << name;
+    EXPECT_NE(res->body.find("letters, digits"), std::string::npos) << res->body;
+  }
+  ASSERT_EQ(post("/api/sessions/" + ada + "/control", {{"action", "play"}})->status, 200);
+  const auto events = stream_to_done(ada);
+  const json& summary = events.back().second;
+  const json table = json::parse(client_->Get("/api/class")->body);
+  ASSERT_EQ(table["sessions"].size(), 2u);
+  const json& first = table["sessions"][0];
+  EXPECT_EQ(first["session"], ada);
+  EXPECT_EQ(first["name"], "Ada Lovelace");
+  EXPECT_EQ(first["material"], "Iron");
+  EXPECT_EQ(first["state"], "done");
+  EXPECT_EQ(first["spacing"], 0.089);
+  // The done run's row is its summary's headline, and the paper's value beside it.
+  // (The minimal rig has no Hall sensor: its period is the trajectory's, with no spread.)
+  const auto headline = [&](const char* key) {
+    const auto it = summary.find(key);
+    return it == summary.end() ? json(nullptr) : *it;
+  };
+  EXPECT_EQ(first["period_from"], "trajectory");
+  EXPECT_FALSE(first["period"].is_null());
+  EXPECT_EQ(first["period"], headline("period_trajectory_s"));
+  EXPECT_EQ(first["period_err"], headline("period_trajectory_err_s"));
+  EXPECT_EQ(first["mu_k"], headline("mu_k_recovered"));
+  EXPECT_EQ(first["mu_k_err"], headline("mu_k_err_quadrature"));
+  EXPECT_EQ(first["paper_mu_k"], 0.42);
+  const json& second = table["sessions"][1];
+  EXPECT_EQ(second["session"], bob);
+  EXPECT_EQ(second["name"], nullptr);
+  EXPECT_EQ(second["state"], "paused");
+  EXPECT_EQ(second["spacing"], 0.07);
+  // Not measured: null, never 0.
+  EXPECT_EQ(second["period"], nullptr);
+  EXPECT_EQ(second["mu_k"], nullptr);
+  EXPECT_EQ(table["rig"], nullptr);
+
+  // The CSV: the columns docs/web-api.md lists, the same values, empty where JSON has null.
+  const auto csv = client_->Get("/api/class.csv");
+  ASSERT_TRUE(csv);
+  EXPECT_EQ(csv->get_header_value("Content-Type"), "text/csv");
+  const CsvTable rows = parse_csv_table(csv->body, "class.csv");
+  std::vector<std::string> header;
+  for (const CsvCell& c : rows.header) header.push_back(c.text);
+  EXPECT_EQ(header, (std::vector<std::string>{"session", "name", "scene", "material",
+                                              "temperature_K", "spacing_mm", "h_c_mm", "state",
+                                              "t_s", "period_s", "period_err_s", "period_from",
+                                              "mu_k", "mu_k_err", "paper_period_s", "paper_mu_k"}));
+  ASSERT_EQ(rows.rows.size(), 2u);
+  EXPECT_EQ(rows.rows[0][1].text, "Ada Lovelace");
+  EXPECT_EQ(std::stod(rows.rows[0][5].text), 89.0);
+  EXPECT_NEAR(std::stod(rows.rows[0][9].text), headline("period_trajectory_s").get<double>(), 1e-9);
+  EXPECT_EQ(rows.rows[0][11].text, "trajectory");
+  EXPECT_EQ(rows.rows[1][9].text, "");
+}
+
+TEST_F(LabServerTest, StreamsAreToldWhenTheServerStops) {
+  const std::string id = start({{"scene", "minimal"}});
+  std::vector<std::string> names;
+  std::thread reader([&] {
+    httplib::Client c("127.0.0.1", port_);
+    c.set_read_timeout(20, 0);
+    std::string buffer;
+    c.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data, std::size_t n) {
+      buffer.append(data, n);
+      for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
+        names.push_back(buffer.substr(7, buffer.find('\n') - 7));
+        buffer.erase(0, end + 2);
+      }
+      return true;
+    });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  server_->stop();
+  reader.join();
+  ASSERT_FALSE(names.empty());
+  EXPECT_EQ(names.front(), "state");
+  EXPECT_EQ(names.back(), "closed");
+}
+
+// A client that asks too fast is told to wait; the server goes on serving.
+class RateLimitedServerTest : public LabServerTest {
+ protected:
+  RateLimitedServerTest() { requests_per_second_ = 2.0; }
+};
+
+TEST_F(RateLimitedServerTest, AClientAskingTooFastIsToldToWait) {
+  int answered = 0;
+  int refused = 0;
+  for (int i = 0; i < 12; ++i) {
+    const auto res = client_->Get("/api/lab");
+    ASSERT_TRUE(res);
+    if (res->status == 200) ++answered;
+    if (res->status == 429) {
+      ++refused;
+      EXPECT_GE(std::stoi(res->get_header_value("Retry-After")), 1);
+      EXPECT_NE(res->body.find("at most 2 a second"), std::string::npos) << res->body;
+    }
+  }
+  // A burst of three seconds' worth, then one every half second.
+  EXPECT_GE(answered, 6);
+  EXPECT_LE(answered, 7);
+  EXPECT_EQ(answered + refused, 12);
+  // The page itself is not rationed.
+  EXPECT_EQ(client_->Get("/")->status, 200);
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  EXPECT_EQ(client_->Get("/api/lab")->status, 200);
+}
+
+TEST_F(LabServerTest, OversizedHeadersAndBrokenBodiesCostTheirClientOnly) {
+  const auto raw = [this](const std::string& request) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port_));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    (void)::send(fd, request.data(), request.size(), MSG_NOSIGNAL);
+    ::shutdown(fd, SHUT_WR);
+    std::string answer;
+    char buffer[4096];
+    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
+      answer.append(buffer, static_cast<std::size_t>(n));
+    ::close(fd);
+    return answer;
+  };
+  // A header of 100 kB: refused, never read whole.
+  const std::string big =
+      raw("GET /api/lab HTTP/1.1\r\nHost: x\r\nX-Big: " + std::string(100000, 'a') + "\r\n\r\n");
+  EXPECT_EQ(big.find("HTTP/1.1 200"), std::string::npos) << big.substr(0, 200);
+  // A body larger than 64 kB, and a chunked body whose chunk sizes lie.
+  const std::string large =
+      raw("POST /api/sessions HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+          "Content-Length: 200000\r\n\r\n" +
+          std::string(200000, '{'));
+  EXPECT_EQ(large.find("HTTP/1.1 20"), std::string::npos) << large.substr(0, 200);
+  const std::string chunked =
+      raw("POST /api/sessions HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n"
+          "ffffffff\r\n{\"scene\"\r\nzz\r\n\r\n");
+  EXPECT_EQ(chunked.find("HTTP/1.1 20"), std::string::npos) << chunked.substr(0, 200);
+  // The server goes on.
+  const auto res = client_->Get("/api/lab");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_NE(start({{"scene", "minimal"}}), "");
 }
 
 }  // namespace

@@ -142,7 +142,7 @@ struct LabServer::Impl {
   }
   void end_idle() {
     const auto now = Clock::now();
-    const auto idle = std::chrono::minutes(options.idle_minutes);
+    const auto idle = std::chrono::duration<double>(options.idle_seconds);
     take_out([&](const std::string&, const LabSession& s) { return now - s.last_seen() > idle; });
   }
   bool full() const {
@@ -293,7 +293,6 @@ void LabServer::Impl::routes() {
 }
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
-  end_idle();
   auto read = read_session_body(req.body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read))
     return send_json(res, 400, error_json(refusal->message));
@@ -425,6 +424,7 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
                            "the one ending in ?token=..."));
       return httplib::Server::HandlerResponse::Handled;
     }
+    if (req.path.starts_with("/api/")) impl_->end_idle();
     // Each client's share: a page that asks too fast waits, and the others do not.
     double wait_s = 0.0;
     if (req.path.starts_with("/api/") &&

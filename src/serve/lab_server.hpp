@@ -18,7 +18,9 @@ struct ServeOptions {
   std::string web_dir;     // the built page (index.html, app.js, ...)
   std::string asset_dir;   // the lab's data (the paper's table, the LEGO parts)
   std::string version;     // what /api/lab reports
-  int idle_minutes = 10;   // a session nobody streams from or controls for this long ends
+  // A session nobody streams from or controls for this long [s] ends (looked at with each API
+  // request).
+  double idle_seconds = 600.0;
   // Sessions open at once; a page beyond them is refused, saying so (503). Each session costs
   // about 1 % of a core at real time (bench_serve): 30 leave the 2-core machine room.
   int max_sessions = 30;

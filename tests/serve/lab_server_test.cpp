@@ -9,6 +9,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -48,6 +49,7 @@ class LabServerTest : public test::TempFolderTest {
     options.max_sessions = max_sessions_;
     options.token = token_;
     options.requests_per_second = requests_per_second_;
+    options.idle_seconds = idle_seconds_;
     server_ = std::make_unique<LabServer>(options);
     port_ = server_->bind();
     thread_ = std::thread([this] { server_->listen(); });
@@ -97,6 +99,7 @@ class LabServerTest : public test::TempFolderTest {
   int max_sessions_ = 30;
   std::string token_;
   double requests_per_second_ = 1000.0;
+  double idle_seconds_ = 600.0;
   std::unique_ptr<LabServer> server_;
   std::thread thread_;
   int port_ = 0;
@@ -528,6 +531,31 @@ TEST_F(LabServerTest, OversizedHeadersAndBrokenBodiesCostTheirClientOnly) {
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200);
   EXPECT_NE(start({{"scene", "minimal"}}), "");
+}
+
+// Sessions nobody watches end after half a second.
+class ForgetfulServerTest : public LabServerTest {
+ protected:
+  ForgetfulServerTest() { idle_seconds_ = 0.5; }
+};
+
+TEST_F(ForgetfulServerTest, ASessionNobodyWatchesEndsAndOneWatchedStays) {
+  const std::string left = start({{"scene", "minimal"}});
+  const std::string watched = start({{"scene", "minimal"}});
+  std::atomic<bool> leave{false};
+  std::thread viewer([&] {
+    httplib::Client c("127.0.0.1", port_);
+    c.Get(("/api/sessions/" + watched + "/stream").c_str(),
+          [&](const char*, std::size_t) { return !leave; });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(1200));
+  // Any API request looks; the one left alone has ended, the one streamed goes on.
+  EXPECT_EQ(client_->Get("/api/lab")->status, 200);
+  EXPECT_EQ(server_->sessions(), 1);
+  EXPECT_EQ(post("/api/sessions/" + left + "/control", {{"action", "play"}})->status, 404);
+  EXPECT_EQ(post("/api/sessions/" + watched + "/control", {{"action", "play"}})->status, 200);
+  leave = true;
+  viewer.join();
 }
 
 }  // namespace

@@ -26,13 +26,18 @@ if(FRICTIONLAB_WITH_WEB)
     COMMENT "web: npm ci (the packages package-lock.json pins)"
     VERBATIM)
   file(GLOB_RECURSE web_inputs CONFIGURE_DEPENDS ${web_source}/src/*.ts)
-  list(APPEND web_inputs ${web_source}/index.html ${web_source}/app.css ${web_source}/build.mjs)
+  list(APPEND web_inputs ${web_source}/index.html ${web_source}/class.html ${web_source}/app.css
+       ${web_source}/build.mjs)
+  # The lab's page (index.html, app.js) and the teacher's class table (class.html, class.js).
   add_custom_command(
     OUTPUT ${FRICTIONLAB_WEB_DIR}/app.js ${FRICTIONLAB_WEB_DIR}/index.html
+           ${FRICTIONLAB_WEB_DIR}/class.js ${FRICTIONLAB_WEB_DIR}/class.html
+           ${FRICTIONLAB_WEB_DIR}/app.css
     COMMAND ${FRICTIONLAB_NODE} build.mjs ${FRICTIONLAB_WEB_DIR}
     DEPENDS ${web_installed} ${web_inputs}
     WORKING_DIRECTORY ${web_source}
     COMMENT "web: the page bundled into ${FRICTIONLAB_WEB_DIR}"
     VERBATIM)
-  add_custom_target(frictionlab-web ALL DEPENDS ${FRICTIONLAB_WEB_DIR}/app.js)
+  add_custom_target(frictionlab-web ALL DEPENDS ${FRICTIONLAB_WEB_DIR}/app.js
+                                                ${FRICTIONLAB_WEB_DIR}/class.js)
 endif()

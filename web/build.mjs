@@ -1,5 +1,6 @@
-// Builds the page into a folder: app.js (src/main.ts bundled and minified), app.css (uPlot's
-// stylesheet, then the page's) and index.html. The folder: `node build.mjs OUTDIR`, else
+// Builds the pages into a folder: app.js (src/main.ts, the lab) and class.js (src/class_page.ts,
+// the teacher's class table), each bundled and minified; app.css (uPlot's stylesheet, then the
+// pages'); index.html and class.html. The folder: `node build.mjs OUTDIR`, else
 // $FRICTIONLAB_WEB_OUT, else dist/ beside this file.
 import { build } from "esbuild";
 import { copyFile, mkdir, readFile, writeFile } from "node:fs/promises";
@@ -11,8 +12,11 @@ const outdir = resolve(process.argv[2] ?? process.env.FRICTIONLAB_WEB_OUT ?? joi
 
 await mkdir(outdir, { recursive: true });
 await build({
-  entryPoints: [join(here, "src/main.ts")],
-  outfile: join(outdir, "app.js"),
+  entryPoints: {
+    app: join(here, "src/main.ts"),
+    class: join(here, "src/class_page.ts"),
+  },
+  outdir,
   bundle: true,
   minify: true,
   format: "esm",
@@ -26,5 +30,7 @@ const css = await Promise.all([
   readFile(join(here, "app.css"), "utf8"),
 ]);
 await writeFile(join(outdir, "app.css"), css.join("\n"));
-await copyFile(join(here, "index.html"), join(outdir, "index.html"));
+for (const page of ["index.html", "class.html"]) {
+  await copyFile(join(here, page), join(outdir, page));
+}
 console.log(`built the page into ${outdir}`);

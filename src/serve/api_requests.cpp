@@ -69,10 +69,11 @@ std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) 
   }
   if (const auto name = body.find("name"); name != body.end() && !name->is_null()) {
     if (!name->is_string() || !is_name(name->get<std::string>()))
-      return BodyRefusal{
-          "expected \"name\" as up to " + std::to_string(kMostNameCharacters) +
-          " letters, digits, spaces and . - _ ', beginning with a letter or digit, found " +
-          quoted(*name)};
+      return BodyRefusal{"expected a name of up to " + std::to_string(kMostNameCharacters) +
+                             " letters, digits, spaces and . - _ ', beginning with a letter or "
+                             "digit, found " +
+                             quoted(*name),
+                         "name"};
     out.name = name->get<std::string>();
   }
   return out;

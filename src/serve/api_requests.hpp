@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 
 #include "lab/request/session_request.hpp"
@@ -13,7 +14,10 @@ namespace fl::serve {
 
 // A body the API cannot take: what was expected, what was found.
 struct BodyRefusal {
+  explicit BodyRefusal(std::string what, std::string at = "")
+      : message(std::move(what)), field(std::move(at)) {}
   std::string message;
+  std::string field;  // the one field at fault ("" : the body as a whole)
 };
 
 // The most `set` entries a session's body may carry.

@@ -70,8 +70,7 @@ std::string content_type(const std::string& name) {
 struct LabServer::Impl {
   explicit Impl(ServeOptions o)
       : options(std::move(o)),
-        may_choose_port(options.pages_choose_port.value_or(is_loopback(options.host) ||
-                                                           !options.serial_port.empty())),
+        may_choose_port(options.pages_choose_port.value_or(is_loopback(options.host))),
         rate(options.requests_per_second, 3.0 * options.requests_per_second) {}
 
   ServeOptions options;
@@ -250,9 +249,10 @@ void LabServer::Impl::routes() {
       return send_json(res, 200, rig_status_json());
     }
     if (!may_choose_port)
-      return send_json(res, 403,
-                       error_json("this server is shared: a page may not open its serial ports; "
-                                  "start it with --serial PORT on the machine the rig is on"));
+      return send_json(
+          res, 403,
+          error_json("this server is shared: a page may not open its serial ports; the "
+                     "rig's port is the one its --serial names"));
     const std::vector<std::string> known = ports();
     if (std::find(known.begin(), known.end(), command.port) == known.end())
       return send_json(
@@ -294,8 +294,14 @@ void LabServer::Impl::routes() {
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
   auto read = read_session_body(req.body);
-  if (const auto* refusal = std::get_if<BodyRefusal>(&read))
-    return send_json(res, 400, error_json(refusal->message));
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) {
+    json body = error_json(refusal->message);
+    // A field at fault is a problem by field, shown beside its control.
+    if (!refusal->field.empty())
+      body["problems"].push_back(
+          {{"field", refusal->field}, {"value", nullptr}, {"message", refusal->message}});
+    return send_json(res, 400, body);
+  }
   const SessionRequest& request = std::get<SessionBody>(read).request;
   if (full()) return refuse_full(res);
   try {

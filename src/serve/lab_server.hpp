@@ -38,8 +38,8 @@ struct ServeOptions {
   std::string serial_port;
   int serial_baud = 250000;
   std::string record_dir;
-  // Whether a page may open a serial port itself: on a server for this machine only, or one
-  // started with a port. Set by the server from `host` and `serial_port` unless given.
+  // Whether a page may open a serial port itself (one the server lists): on a server for this
+  // machine only. Set by the server from `host` unless given.
   std::optional<bool> pages_choose_port;
   // The most bytes of the rig's raw log kept (and read) before its port is closed.
   std::size_t most_rig_log_bytes = std::size_t{64} << 20;

@@ -387,6 +387,9 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
     const auto res = post("/api/sessions", {{"scene", "minimal"}, {"name", name}});
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 400) << name;
+    const json refusal = json::parse(res->body);
+    ASSERT_EQ(refusal["problems"].size(), 1u) << res->body;
+    EXPECT_EQ(refusal["problems"][0]["field"], "name");
     EXPECT_NE(res->body.find("letters, digits"), std::string::npos) << res->body;
   }
   ASSERT_EQ(post("/api/sessions/" + ada + "/control", {{"action", "play"}})->status, 200);

@@ -1,13 +1,17 @@
 // The one module that speaks to the lab (docs/web-api.md): nothing else in the page calls fetch
 // or EventSource, so a build of the core for the browser can take the server's place here.
 import type {
+  ClassTable,
+  Closed,
   ControlAction,
   ControlReply,
   Failure,
   Lab,
   LabState,
+  LiveRig,
   PlaybackSpeed,
   Problem,
+  RigEvent,
   Session,
   Summary,
 } from "./lab_types";
@@ -30,6 +34,17 @@ export class LabFullError extends Error {
   }
 }
 
+/** The lab asks this page to slow down (429: more requests a second than it takes from one
+ * address); `message` is the lab's, `retryAfterS` its Retry-After where it gave one. */
+export class RateLimitedError extends Error {
+  readonly retryAfterS: number | null;
+  constructor(message: string, retryAfterS: number | null) {
+    super(message);
+    this.name = "RateLimitedError";
+    this.retryAfterS = retryAfterS;
+  }
+}
+
 /** The lab answered something other than what the API promises. */
 export class LabError extends Error {
   readonly status: number;
@@ -46,6 +61,10 @@ export interface StreamHandlers {
   failed: (failure: Failure) => void;
   /** The session was started again from t = 0 (the page clears its plots). */
   reset: () => void;
+  /** The live rig's samples, periods and estimate since the last event (`event: rig`). */
+  rig?: (event: RigEvent) => void;
+  /** The server is stopping (`event: closed`): the stream is closed, nothing more comes. */
+  closed?: (message: string) => void;
   /** The connection dropped (EventSource retries by itself until closed). */
   error?: () => void;
 }
@@ -75,15 +94,28 @@ async function readJson<T>(response: Response): Promise<T> {
   }
 }
 
+/** The lab's message in a refusal's body ({"error": "..."}), else `fallback`. */
+async function refusalMessage(response: Response, fallback: string): Promise<string> {
+  try {
+    const body = await readJson<{ error?: unknown }>(response);
+    if (typeof body.error === "string" && body.error) return body.error;
+  } catch {
+    // keep the fallback
+  }
+  return fallback;
+}
+
+async function rateLimited(response: Response): Promise<RateLimitedError> {
+  const retry = Number(response.headers.get("Retry-After"));
+  const retryAfterS = Number.isFinite(retry) && retry > 0 ? retry : null;
+  const fallback = `the lab is busy: too many requests from this computer; try again in ${retryAfterS ?? "a few"} s`;
+  return new RateLimitedError(await refusalMessage(response, fallback), retryAfterS);
+}
+
 async function expectOk<T>(response: Response): Promise<T> {
+  if (response.status === 429) throw await rateLimited(response);
   if (!response.ok) {
-    let message = `the lab answered ${response.status}`;
-    try {
-      const body = await readJson<{ error?: string }>(response);
-      if (body.error) message = body.error;
-    } catch {
-      // keep the status line
-    }
+    const message = await refusalMessage(response, `the lab answered ${response.status}`);
     throw new LabError(message, response.status);
   }
   return readJson<T>(response);
@@ -93,12 +125,13 @@ export async function getLab(): Promise<Lab> {
   return expectOk<Lab>(await fetch(api("/api/lab")));
 }
 
-/** Starts a session paused at t = 0; a refused set-up throws SetupError with its problems. */
-export async function createSession(scene: string, set: string[]): Promise<Session> {
+/** Starts a session paused at t = 0; a refused set-up throws SetupError with its problems.
+ * `name`: who runs it, for the class's table (left out when not given). */
+export async function createSession(scene: string, set: string[], name?: string): Promise<Session> {
   const response = await fetch(api("/api/sessions"), {
     method: "POST",
     headers: { "Content-Type": "application/json" },
-    body: JSON.stringify({ scene, set }),
+    body: JSON.stringify(name ? { scene, set, name } : { scene, set }),
   });
   if (response.status === 400) {
     const body = await readJson<{ error?: string; problems?: Problem[] }>(response);
@@ -120,24 +153,60 @@ function parseEvent<T>(event: Event): T | null {
   }
 }
 
+/** How often, and how long after, a stream the browser gave up on (an answer other than 200: the
+ * lab asking the page to slow down, 429) is opened again. EventSource retries a dropped
+ * connection by itself, but not a refused one. */
+const STREAM_RETRIES = 5;
+const STREAM_RETRY_MS = 2000;
+
 /** Listens to a session's events until close(). */
 export function stream(id: string, handlers: StreamHandlers): StreamHandle {
-  const source = new EventSource(api(`${sessionPath(id)}/stream`));
-  source.addEventListener("state", (event) => {
-    const state = parseEvent<LabState>(event);
-    if (state) handlers.state(state);
-  });
-  source.addEventListener("done", (event) => {
-    const summary = parseEvent<Summary>(event);
-    if (summary) handlers.done(summary);
-  });
-  source.addEventListener("failed", (event) => {
-    const failure = parseEvent<Failure>(event);
-    if (failure) handlers.failed(failure);
-  });
-  source.addEventListener("reset", () => handlers.reset());
-  source.addEventListener("error", () => handlers.error?.());
-  return { close: () => source.close() };
+  let source: EventSource;
+  let retries = 0;
+  let retryTimer = 0;
+  let ended = false;
+  const end = () => {
+    ended = true;
+    window.clearTimeout(retryTimer);
+    source.close();
+  };
+  const open = () => {
+    source = new EventSource(api(`${sessionPath(id)}/stream`));
+    source.addEventListener("open", () => (retries = 0));
+    source.addEventListener("state", (event) => {
+      const state = parseEvent<LabState>(event);
+      if (state) handlers.state(state);
+    });
+    source.addEventListener("done", (event) => {
+      const summary = parseEvent<Summary>(event);
+      if (summary) handlers.done(summary);
+    });
+    source.addEventListener("failed", (event) => {
+      const failure = parseEvent<Failure>(event);
+      if (failure) handlers.failed(failure);
+    });
+    source.addEventListener("reset", () => handlers.reset());
+    source.addEventListener("rig", (event) => {
+      const rig = parseEvent<RigEvent>(event);
+      if (rig) handlers.rig?.(rig);
+    });
+    source.addEventListener("closed", (event) => {
+      // The server is going away: EventSource would otherwise try it again and again.
+      end();
+      const closed = parseEvent<Closed>(event);
+      handlers.closed?.(closed?.message || "the lab stopped");
+    });
+    source.addEventListener("error", () => {
+      handlers.error?.();
+      if (ended || source.readyState !== EventSource.CLOSED || retries >= STREAM_RETRIES) return;
+      retries += 1;
+      retryTimer = window.setTimeout(() => {
+        if (!ended) open();
+      }, STREAM_RETRY_MS);
+    });
+  };
+  open();
+  return { close: end };
 }
 
 export async function control(
@@ -169,4 +238,47 @@ export async function endSession(id: string): Promise<void> {
 /** Where a LEGO part's mesh is served (glTF binary, y up). */
 export function partUrl(name: string): string {
   return `/parts/${encodeURIComponent(name)}.glb`;
+}
+
+/** The live rig: the serial ports the server sees and the one open. */
+export async function getRig(): Promise<LiveRig> {
+  return expectOk<LiveRig>(await fetch(api("/api/rig")));
+}
+
+async function postRig(body: { port: string } | { action: "close" }): Promise<LiveRig> {
+  const response = await fetch(api("/api/rig"), {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(body),
+  });
+  return expectOk<LiveRig>(response);
+}
+
+/** Opens one of `getRig()`'s ports (closing the one open, starting a new log). */
+export async function openRig(port: string): Promise<LiveRig> {
+  return postRig({ port });
+}
+
+export async function closeRig(): Promise<LiveRig> {
+  return postRig({ action: "close" });
+}
+
+/** Where the rig's raw log downloads (every line as received; 404 before a line came). */
+export function rigLogUrl(): string {
+  return api("/api/rig/log");
+}
+
+/** Every open session's set-up and result, and the live rig: the class's table. */
+export async function getClass(): Promise<ClassTable> {
+  return expectOk<ClassTable>(await fetch(api("/api/class")));
+}
+
+/** The class's table as CSV (class.csv). */
+export function classCsvUrl(): string {
+  return api("/api/class.csv");
+}
+
+/** One of the lab's pages (`/`, `/class.html`), with the token when this page has one. */
+export function pageUrl(path: string): string {
+  return api(path);
 }

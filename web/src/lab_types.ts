@@ -153,3 +153,80 @@ export interface ControlReply {
   playing: boolean;
   speed: PlaybackSpeed;
 }
+
+/** `event: closed`: the server is stopping (Ctrl-C, SIGTERM); the stream ends after it. */
+export interface Closed {
+  message: string;
+}
+
+/** The live rig's serial port: none open, open with nothing yet, lines coming, gone, or failed. */
+export type RigPortState = "closed" | "waiting" | "receiving" | "unplugged" | "failed";
+
+/** `GET /api/rig`: the serial ports the server sees and the one open (or last open). */
+export interface LiveRig {
+  ports: string[];
+  /** Whether this page may open or close a port (false on a shared server). */
+  may_choose: boolean;
+  port: string | null;
+  baud: number | null;
+  state: RigPortState;
+  /** What happened and what to do; null while all is well. */
+  message: string | null;
+  /** The lines received. */
+  lines: number;
+  /** The name the raw log downloads under; null before a line came. */
+  log_name: string | null;
+}
+
+/** How many Hall pulses the magnet gives per period, as the rig's estimator recognised it. */
+export type PulseGeometry = "one-pulse" | "pair" | "unknown";
+
+/** `event: rig`: what the live rig sent since the last event, through the rig's estimator with
+ * the session's spacing. */
+export interface RigEvent {
+  port: string | null;
+  state: RigPortState;
+  message: string | null;
+  lines: number;
+  /** The board's restarts: a new value starts the rig's plot and periods again. */
+  run: number;
+  /** [t, adc]: t in seconds from the run's first sample. */
+  hall: [number, number][];
+  periods: PeriodRow[];
+  estimate: Estimate | null;
+  geometry: PulseGeometry;
+  /** The l [m] mu_k is computed with: the session's rig's. */
+  spacing: number;
+}
+
+/** One session's row of `GET /api/class`: its set-up and its result so far. */
+export interface ClassRow {
+  session: string;
+  name: string | null;
+  scene: string;
+  /** The plate's material in the paper's Table I; null for a mu_k given as a number. */
+  material: string | null;
+  temperature_K: number | null;
+  spacing: number;
+  h_c: number | null;
+  state: "paused" | "playing" | "done";
+  /** The simulated time reached. */
+  t: number;
+  period: number | null;
+  /** The standard error of the mean of the accepted periods (or of the fit). */
+  period_err: number | null;
+  /** Where the period comes from: the Hall sensor's estimator, or (a rig without a sensor, its
+   * run done) the fit to the plate's motion; null before a period. */
+  period_from: "sensor" | "trajectory" | null;
+  mu_k: number | null;
+  /** In quadrature. */
+  mu_k_err: number | null;
+  paper_period: number | null;
+  paper_mu_k: number | null;
+}
+
+/** `GET /api/class`: every open session, and the live rig (null when none was open). */
+export interface ClassTable {
+  sessions: ClassRow[];
+  rig: { port: string | null; state: RigPortState; lines: number } | null;
+}

@@ -2,14 +2,16 @@
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
-import { getLab, LabFullError, SetupError } from "./lab_client";
+import { getLab, LabFullError, pageUrl, RateLimitedError, SetupError } from "./lab_client";
 import type { Lab, LabState, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
 import { HallPlot, PositionPlot } from "./plots";
 import { Readouts } from "./readouts";
+import { RigPanel } from "./rig_panel";
 import { SessionKeeper, Superseded } from "./session";
 import { Stopwatch } from "./stopwatch";
+import { StudentName } from "./student_name";
 import { headlineOf } from "./summary";
 import { RigView } from "./view3d";
 
@@ -39,8 +41,15 @@ const stopwatch = new Stopwatch(
   () => lastState?.t ?? null,
   () => readouts.currentPeriod,
 );
+const studentName = new StudentName();
+byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
+const rigPanel = new RigPanel({ connected: () => void runBesideRig() });
 
 function showPageProblem(error: unknown): void {
+  if (error instanceof RateLimitedError) {
+    setText(pageProblem, error.message); // the lab's own words: too many requests, wait
+    return;
+  }
   const message = error instanceof Error ? error.message : String(error);
   setText(pageProblem, message ? `The lab did not answer as expected: ${message}` : "");
 }
@@ -105,6 +114,18 @@ const keeper = new SessionKeeper({
     readouts.setStatus("paused");
     showRun();
   },
+  rig(event) {
+    rigPanel.showEvent(event);
+  },
+  closed(message) {
+    // The server is stopping: its message in the page's problem line, nothing more asked.
+    keeper.drop();
+    rigPanel.stop();
+    playing = false;
+    readouts.setStatus("no session");
+    setText(pageProblem, message);
+    showRun();
+  },
 });
 
 async function command(action: Parameters<SessionKeeper["command"]>[0]): Promise<void> {
@@ -136,23 +157,39 @@ const playback = new Playback({
   speed: (speed: PlaybackSpeed) => void command({ speed }),
 });
 
+/** A port was connected: the simulation of the same set-up from t = 0 at 1x, beside the rig. */
+async function runBesideRig(): Promise<void> {
+  if (!keeper.current) return;
+  playback.showSpeed(1);
+  await command({ speed: 1 });
+  await reset();
+  await command("play");
+}
+
 /** Starts the set-up's session (ending the one before); false where it was refused. */
 async function openSetup(scene: string, entries: string[], play: boolean): Promise<boolean> {
   controls.busy = true;
+  const name = studentName.name;
   try {
-    const session = await keeper.open(scene, entries);
+    const session = await keeper.open(scene, entries, name);
     showPageProblem("");
     setText(refused, "");
     controls.clearProblems();
     controls.scene = scene;
     controls.adoptRig(session.rig);
     showRig(session.rig);
+    rigPanel.clearRun(); // the rig's estimate is made again with this session's spacing
     exportPanel.showLink(scene, entries);
     if (playback.speed !== 1) await command({ speed: playback.speed });
     if (play) await command("play");
     return true;
   } catch (error) {
     if (error instanceof Superseded) return false;
+    if (error instanceof SetupError && name !== undefined && isNameRefusal(error)) {
+      // The name alone was refused: say so beside it and run the set-up without it.
+      studentName.refuse(error.problems.find((p) => p.field === "name")?.message ?? error.message);
+      return openSetup(scene, entries, play);
+    }
     if (error instanceof SetupError) controls.showProblems(error.problems, error.message);
     else if (error instanceof LabFullError) setText(refused, error.message);
     else showPageProblem(error);
@@ -160,6 +197,11 @@ async function openSetup(scene: string, entries: string[], play: boolean): Promi
   } finally {
     controls.busy = false;
   }
+}
+
+/** The lab refused the session for its name only: its problems are all of the field "name". */
+function isNameRefusal(error: SetupError): boolean {
+  return error.problems.length > 0 && error.problems.every((p) => p.field === "name");
 }
 
 const controls = new SetupControls({
@@ -178,6 +220,7 @@ async function boot(): Promise<void> {
     return;
   }
   setText(byId("version"), lab.version);
+  rigPanel.start();
   controls.populate(lab);
   const names = lab.scenes.map((s) => s.name);
   const fallback = names.includes(DEFAULT_SCENE) ? DEFAULT_SCENE : names[0];

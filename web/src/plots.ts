@@ -24,12 +24,12 @@ function windowRange(last: number | null): [number, number] {
   return [end - WINDOW_S, end];
 }
 
-function axis(label: string): uPlot.Axis {
+export function axis(label: string): uPlot.Axis {
   return { label, labelSize: 18, size: 44, stroke: "#333", grid: { stroke: "#e3e3e3", width: 1 } };
 }
 
 /** A chart that follows its box's size and redraws at most every REDRAW_MS. */
-class LiveChart {
+export class LiveChart {
   readonly chart: uPlot;
   private scheduled = 0;
   private lastDraw = 0;

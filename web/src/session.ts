@@ -31,10 +31,11 @@ export class SessionKeeper {
     return this.session;
   }
 
-  /** Makes the set-up's session (throws SetupError when refused) and listens to it. */
-  async open(scene: string, set: string[]): Promise<Session> {
+  /** Makes the set-up's session (throws SetupError when refused) and listens to it; `name`
+   * is who runs it, for the class's table. */
+  async open(scene: string, set: string[], name?: string): Promise<Session> {
     const ticket = ++this.asked;
-    const made = await createSession(scene, set);
+    const made = await createSession(scene, set, name);
     if (ticket !== this.asked) {
       void endSession(made.id);
       throw new Superseded();
@@ -57,6 +58,14 @@ export class SessionKeeper {
     this.listening?.close();
     this.listening = null;
     if (this.session) void endSession(this.session.id);
+    this.session = null;
+  }
+
+  /** The server stopped (its stream said `closed`): forget the session, ask it nothing more. */
+  drop(): void {
+    this.asked += 1;
+    this.listening?.close();
+    this.listening = null;
     this.session = null;
   }
 

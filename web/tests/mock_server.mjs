@@ -1,7 +1,14 @@
 // A stand-in for `frictionlab serve` for testing the page only (docs/web-api.md): serves a built
-// page, the LEGO parts, and fakes the lab's API with a harmonic plate. Not the lab's physics.
+// page, the LEGO parts, and fakes the lab's API with a harmonic plate, a fake rig on a fake
+// serial port and the class's table. Not the lab's physics, not its estimator, not its rules.
 //
 //   node tests/mock_server.mjs [--port 8765] [--dist DIR]
+//
+// For the tests, beside the API: GET /__mock/log (the requests it was sent), /__mock/rig (the
+// fake rig's periods so far), /__mock/rig-unplug (the fake board goes away), /__mock/rig-shared
+// (may_choose false from now on, until /__mock/rig-shared?off), /__mock/refuse?path=P&count=N
+// (the next N requests to a path ending in P answer 429) and /__mock/close-streams (every stream gets
+// `event: closed`, as when the server stops).
 import { createServer } from "node:http";
 import { readFile } from "node:fs/promises";
 import { dirname, extname, join, normalize, resolve } from "node:path";
@@ -30,6 +37,183 @@ const MATERIALS = [
   ["rigid-foam", "Polyurethane rigid foam", 1.7, null],
   ["flexible-foam", "Polyurethane flexible foam", 10, 0.34],
 ];
+
+/** A name for the class's table (docs/web-api.md): up to 40 letters, digits, spaces and . - _ ',
+ * beginning with a letter or digit. */
+const NAME = /^[\p{L}\p{Nd}][\p{L}\p{Nd} .\-_']{0,39}$/u;
+
+// The fake rig: a stand-in for the rig's Arduino on a serial port, for testing the page only.
+// Once its port is opened it "samples" a Hall sensor at 1 kHz as wall-clock time passes, a pulse
+// at the end of each period; its periods are known numbers (FAKE_RIG_PERIOD and a small
+// deterministic wobble, whole microseconds), the first one rejected, and its estimate their mean.
+// No estimator runs here: the periods are told, not measured from the samples.
+export const FAKE_RIG_PORT = "/dev/ttyFAKE0";
+export const FAKE_RIG_PERIOD = 0.792134;
+const FAKE_RIG_RATE = 1000; // samples a second
+const FAKE_RIG_FIRST_PULSE = 0.25; // s after the run's first sample
+const FAKE_RIG_BOOT_S = 0.3; // an Uno resets when its port opens: nothing comes for this long
+const FAKE_RIG_KEEP_S = 12; // samples older than this are dropped (a stream sends the last 10 s)
+
+/** The fake rig's n-th period (n from 0), in seconds, a whole number of microseconds. */
+export function fakeRigPeriod(n) {
+  return Math.round((FAKE_RIG_PERIOD + 0.0004 * Math.sin(1.7 * n + 0.4)) * 1e6) / 1e6;
+}
+
+/** What the rig's estimator reports for accepted periods, as the lab's `estimate` object. */
+function estimateOf(periods, spacing) {
+  const n = periods.length;
+  if (n === 0) return null;
+  const mean = periods.reduce((s, v) => s + v, 0) / n;
+  const sd = n > 1 ? Math.sqrt(periods.reduce((s, v) => s + (v - mean) ** 2, 0) / (n - 1)) : null;
+  const mu = (2 * Math.PI ** 2 * spacing) / (G * mean ** 2);
+  return {
+    periods_used: n,
+    period: mean,
+    period_sd: sd,
+    period_se: sd === null ? null : sd / Math.sqrt(n),
+    mu_k: mu,
+    mu_k_err: sd === null ? null : mu * Math.hypot(0.002 / spacing, (2 * sd) / mean),
+    mu_k_err_worst: sd === null ? null : mu * (0.002 / spacing + (2 * sd) / mean),
+  };
+}
+
+class FakeRig {
+  constructor() {
+    this.ports = [FAKE_RIG_PORT];
+    this.mayChoose = true;
+    this.port = null;
+    this.state = "closed";
+    this.message = null;
+    this.run = 0;
+    this.logLines = [];
+    this.logName = null;
+    this.openedAt = 0;
+    this.pulses = [FAKE_RIG_FIRST_PULSE];
+    this.samples = []; // [t, adc] of the last FAKE_RIG_KEEP_S
+    this.sampleCount = 0; // every sample made since the port opened
+    this.periods = []; // [start, end, period, accepted], every one judged
+  }
+  open(port) {
+    this.port = port;
+    this.state = "waiting";
+    this.message = null;
+    this.run = 0;
+    this.logLines = [];
+    this.logName = null;
+    this.openedAt = Date.now();
+    this.samples = [];
+    this.sampleCount = 0;
+    this.periods = [];
+  }
+  close() {
+    this.advance();
+    if (this.state !== "waiting" && this.state !== "receiving") return; // as the server does
+    this.state = "closed";
+    this.message = null;
+  }
+  unplug() {
+    this.advance();
+    this.state = "unplugged";
+    this.message =
+      "the port went away: the board was unplugged or reset its USB; the log so far is kept " +
+      "(download it below); plug it in again and connect";
+  }
+  /** The n-th pulse's time (n from 0). */
+  pulse(n) {
+    while (this.pulses.length <= n) {
+      this.pulses.push(this.pulses.at(-1) + fakeRigPeriod(this.pulses.length - 1));
+    }
+    return this.pulses[n];
+  }
+  /** Makes the samples and judges the periods up to now. */
+  advance() {
+    if (this.state !== "waiting" && this.state !== "receiving") return;
+    const now = (Date.now() - this.openedAt) / 1000 - FAKE_RIG_BOOT_S;
+    if (now < 0) return;
+    if (this.logLines.length === 0) {
+      this.logName = `rig-fake-${new Date(this.openedAt).toISOString().replace(/[-:]|\..*/g, "")}.log`;
+      this.logLines.push(
+        `# frictionlab rig firmware 1: sample_hz=${FAKE_RIG_RATE} (the mock's fake board)`,
+        "t_us,adc",
+      );
+      this.state = "receiving";
+    }
+    for (; this.sampleCount / FAKE_RIG_RATE <= now; this.sampleCount++) {
+      const t = this.sampleCount / FAKE_RIG_RATE;
+      let adc = 512 + 3 * Math.sin(t * 977);
+      // the pulses within 0.1 s of t
+      let n = Math.max(0, Math.floor((t - FAKE_RIG_FIRST_PULSE) / FAKE_RIG_PERIOD) - 1);
+      for (; this.pulse(n) < t + 0.1; n++) {
+        adc += 300 * Math.exp(-(((t - this.pulse(n)) / 0.012) ** 2) / 2);
+      }
+      const sample = [Number(t.toFixed(3)), Math.round(adc)];
+      this.samples.push(sample);
+      this.logLines.push(`${this.sampleCount * (1e6 / FAKE_RIG_RATE)},${sample[1]}`);
+    }
+    const keepFrom = now - FAKE_RIG_KEEP_S;
+    let drop = 0;
+    while (drop < this.samples.length && this.samples[drop][0] < keepFrom) drop++;
+    if (drop > 0) this.samples.splice(0, drop);
+    // A period is judged once its closing pulse is 50 ms past.
+    for (let n = this.periods.length; this.pulse(n + 1) + 0.05 <= now; n++) {
+      const start = this.pulse(n);
+      this.periods.push([start, start + fakeRigPeriod(n), fakeRigPeriod(n), n > 0]);
+    }
+  }
+  get lines() {
+    return this.logLines.length;
+  }
+  status() {
+    this.advance();
+    return {
+      ports: this.mayChoose ? this.ports : [], // a shared server lists none
+      may_choose: this.mayChoose,
+      port: this.port,
+      baud: this.port === null ? null : 250000,
+      state: this.state,
+      message: this.message,
+      lines: this.lines,
+      log_name: this.logName,
+    };
+  }
+  /** A stream's next rig event from its cursor (null: nothing changed), with its spacing. */
+  eventFor(cursor, spacing) {
+    if (this.port === null) return null;
+    this.advance();
+    if (cursor.run !== this.run || cursor.opened !== this.openedAt) {
+      // A new stream, or a new port or board run: the last 10 s and every period of the run.
+      Object.assign(cursor, { run: this.run, opened: this.openedAt, sample: 0, period: 0 });
+      cursor.sample = Math.max(0, this.sampleCount - 10 * FAKE_RIG_RATE);
+    }
+    const first = this.sampleCount - this.samples.length;
+    const hall = this.samples.slice(Math.max(0, cursor.sample - first));
+    const periods = this.periods.slice(cursor.period);
+    const key = `${this.state}|${this.message}|${this.lines}`;
+    if (hall.length === 0 && periods.length === 0 && key === cursor.key) return null;
+    cursor.sample = this.sampleCount;
+    cursor.period = this.periods.length;
+    cursor.key = key;
+    const accepted = this.periods.filter((p) => p[3]).map((p) => p[2]);
+    return {
+      port: this.port,
+      state: this.state,
+      message: this.message,
+      lines: this.lines,
+      run: this.run,
+      hall,
+      periods,
+      estimate: estimateOf(accepted, spacing),
+      geometry: accepted.length > 0 ? "one-pulse" : "unknown",
+      spacing,
+    };
+  }
+}
+
+function csvCell(value) {
+  if (value === null || value === undefined) return "";
+  const text = String(value);
+  return /[",\n]/.test(text) ? `"${text.replaceAll('"', '""')}"` : text;
+}
 
 const TYPES = {
   ".html": "text/html; charset=utf-8",
@@ -173,12 +357,16 @@ function makeRig(scene, set) {
   rig.omega = Math.sqrt((2 * rig.mu_k * G) / rig.spacing);
   rig.period_thin = (2 * Math.PI) / rig.omega;
   rig.period_thick = rig.period_thin * 1.01;
-  return { rig, problems };
+  const paperMuK = temperature === 77 ? material[3] : material[2];
+  const table = { material: material[1], temperature, paperMuK: paperMuK ?? null };
+  return { rig, problems, table };
 }
 
 class FakeRun {
-  constructor(rig) {
+  constructor(rig, table = null, name = null) {
     this.rig = rig;
+    this.table = table; // the material's name in Table I, the temperature, the paper's mu_k
+    this.name = name;
     this.speed = 1;
     this.resets = 0;
     this.reset();
@@ -279,6 +467,30 @@ class FakeRun {
     this.periods = [];
     return state;
   }
+  /** The session's row of the class's table (GET /api/class). */
+  classRow(id) {
+    const e = this.estimate();
+    const paperPeriod =
+      this.table?.material === "LEGO blocks" && this.table.temperature === 300 ? 0.79 : null;
+    return {
+      session: id,
+      name: this.name,
+      scene: this.rig.scene,
+      material: this.table?.material ?? null,
+      temperature_K: this.table?.temperature ?? null,
+      spacing: this.rig.spacing,
+      h_c: this.rig.plate.h_c,
+      state: this.done ? "done" : this.playing ? "playing" : "paused",
+      t: this.t,
+      period: e?.period ?? null,
+      period_err: e?.period_se ?? null,
+      period_from: e ? "sensor" : null,
+      mu_k: e?.mu_k ?? null,
+      mu_k_err: e?.mu_k_err ?? null,
+      paper_period: paperPeriod,
+      paper_mu_k: this.table?.paperMuK ?? null,
+    };
+  }
   summary() {
     const e = this.estimate();
     return {
@@ -294,9 +506,62 @@ class FakeRun {
   }
 }
 
+const CLASS_COLUMNS = [
+  "session",
+  "name",
+  "scene",
+  "material",
+  "temperature_K",
+  "spacing_mm",
+  "h_c_mm",
+  "state",
+  "t_s",
+  "period_s",
+  "period_err_s",
+  "period_from",
+  "mu_k",
+  "mu_k_err",
+  "paper_period_s",
+  "paper_mu_k",
+];
+
+function classCsv(rows) {
+  const lines = [CLASS_COLUMNS.join(",")];
+  for (const row of rows) {
+    const mm = (metres) => (metres === null ? null : Number((metres * 1000).toFixed(6)));
+    lines.push(
+      [
+        row.session,
+        row.name,
+        row.scene,
+        row.material,
+        row.temperature_K,
+        mm(row.spacing),
+        mm(row.h_c),
+        row.state,
+        row.t,
+        row.period,
+        row.period_err,
+        row.period_from,
+        row.mu_k,
+        row.mu_k_err,
+        row.paper_period,
+        row.paper_mu_k,
+      ]
+        .map(csvCell)
+        .join(","),
+    );
+  }
+  return `${lines.join("\n")}\n`;
+}
+
 export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = {}) {
   const sessions = new Map();
   const log = [];
+  const rig = new FakeRig();
+  const streams = new Set(); // every open stream's response, for /__mock/close-streams
+  const refusals = new Map(); // path -> how many more requests answer 429
+  let rigOpened = false; // /api/class's rig: null until a port was opened
   let nextId = 1;
 
   const server = createServer(async (req, res) => {
@@ -304,6 +569,79 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
     const path = url.pathname;
     try {
       if (path === "/__mock/log") return json(res, 200, log);
+      if (path === "/__mock/rig") return json(res, 200, { periods: rig.periods, run: rig.run });
+      if (path === "/__mock/rig-unplug") {
+        rig.unplug();
+        return json(res, 200, rig.status());
+      }
+      if (path === "/__mock/rig-shared") {
+        rig.mayChoose = url.searchParams.has("off");
+        return json(res, 200, rig.status());
+      }
+      if (path === "/__mock/refuse") {
+        refusals.set(url.searchParams.get("path"), Number(url.searchParams.get("count") ?? 1));
+        return json(res, 200, {});
+      }
+      if (path === "/__mock/close-streams") {
+        const message = "the lab stopped (the mock was told to): reload the page when it is back";
+        for (const stream of streams) {
+          stream.write(`event: closed\ndata: ${JSON.stringify({ message })}\n\n`);
+          stream.end();
+        }
+        return json(res, 200, { closed: streams.size });
+      }
+      const refusing = [...refusals.keys()].find((p) => path.endsWith(p));
+      const refused = refusals.get(refusing) ?? 0;
+      if (refused > 0) {
+        refusals.set(refusing, refused - 1);
+        res.writeHead(429, { "Content-Type": "application/json", "Retry-After": "1" });
+        res.end(
+          JSON.stringify({
+            error: "too many requests from 127.0.0.1 (at most 20 a second): try again in 1 s",
+          }),
+        );
+        return;
+      }
+      if (path === "/api/rig" && req.method === "GET") return json(res, 200, rig.status());
+      if (path === "/api/rig" && req.method === "POST") {
+        const body = JSON.parse(await readBody(req));
+        log.push({ rig: body });
+        if (!rig.mayChoose) {
+          return json(res, 403, { error: "this lab is shared: only its own computer chooses" });
+        }
+        if (typeof body.port === "string") {
+          if (!rig.ports.includes(body.port)) {
+            return json(res, 400, { error: `no port ${body.port}: GET /api/rig lists the ports` });
+          }
+          rig.open(body.port);
+          rigOpened = true;
+        } else if (body.action === "close") rig.close();
+        else return json(res, 400, { error: 'expected {"port": ...} or {"action": "close"}' });
+        return json(res, 200, rig.status());
+      }
+      if (path === "/api/rig/log" && req.method === "GET") {
+        rig.advance();
+        if (rig.lines === 0) return json(res, 404, { error: "no line came from the rig yet" });
+        res.writeHead(200, {
+          "Content-Type": "text/plain; charset=utf-8",
+          "Content-Disposition": `attachment; filename="${rig.logName}"`,
+        });
+        res.end(`${rig.logLines.join("\n")}\n`);
+        return;
+      }
+      if ((path === "/api/class" || path === "/api/class.csv") && req.method === "GET") {
+        const rows = [...sessions].map(([id, run]) => run.classRow(id));
+        if (path === "/api/class.csv") {
+          res.writeHead(200, {
+            "Content-Type": "text/csv; charset=utf-8",
+            "Content-Disposition": 'attachment; filename="class.csv"',
+          });
+          res.end(classCsv(rows));
+          return;
+        }
+        const { port, state, lines } = rig.status();
+        return json(res, 200, { sessions: rows, rig: rigOpened ? { port, state, lines } : null });
+      }
       if (path === "/api/lab" && req.method === "GET") {
         return json(res, 200, {
           scenes: SCENES,
@@ -324,13 +662,21 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
             problems: [{ field: "scene", value: body.scene, message: `no scene "${body.scene}"` }],
           });
         }
-        const { rig, problems } = makeRig(body.scene, body.set ?? []);
+        const { rig: made, problems, table } = makeRig(body.scene, body.set ?? []);
+        const name = body.name ?? null;
+        if (name !== null && (typeof name !== "string" || !NAME.test(name))) {
+          problems.push({
+            field: "name",
+            value: String(name),
+            message: "expected up to 40 letters, digits, spaces and . - _ '",
+          });
+        }
         if (problems.length > 0) {
           return json(res, 400, { error: `the set-up has ${problems.length} problem`, problems });
         }
         const id = String(nextId++);
-        sessions.set(id, new FakeRun(rig));
-        return json(res, 201, { id, rig });
+        sessions.set(id, new FakeRun(made, table, name));
+        return json(res, 201, { id, rig: made });
       }
       const match = /^\/api\/sessions\/([^/]+)(\/.*)?$/.exec(path);
       if (match) {
@@ -364,6 +710,8 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
             Connection: "keep-alive",
           });
           let resetsSeen = run.resets;
+          const rigCursor = {};
+          streams.add(res);
           const tick = setInterval(() => {
             if (run.resets !== resetsSeen) {
               resetsSeen = run.resets;
@@ -375,8 +723,13 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
               run.doneSent = true;
               res.write(`event: done\ndata: ${JSON.stringify(run.summary())}\n\n`);
             }
+            const rigEvent = rig.eventFor(rigCursor, run.rig.spacing);
+            if (rigEvent) res.write(`event: rig\ndata: ${JSON.stringify(rigEvent)}\n\n`);
           }, 1000 / 30);
-          req.on("close", () => clearInterval(tick));
+          req.on("close", () => {
+            clearInterval(tick);
+            streams.delete(res);
+          });
           return;
         }
         const file = /^\/files\/(.+)$/.exec(rest);

@@ -2,14 +2,16 @@
 // WebGL): it loads without console errors, a set-up from a link runs and its period is the one
 // `frictionlab run` gives for it (the same number, to the last bit), changing the spacing and
 // the material changes the period as the thick-plate theory says, an invalid value shows its
-// message beside its control, and a screenshot is written.
+// message beside its control, a screenshot is written, a shared server's limits, and the rig live
+// on a pseudo-terminal (its periods in the page are `estimate`'s on the log it downloads).
 //
 //   node tests/page_lab.test.mjs --exe build/release/src/cli/frictionlab
 //                                --web build/release/src/cli/web [--shot FILE]
 // Exit status: 0 all passed, 1 a check failed, 77 no chromium (the test is skipped).
 import { execFileSync, spawn } from "node:child_process";
-import { existsSync } from "node:fs";
-import { dirname, resolve } from "node:path";
+import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join, resolve } from "node:path";
 import { createInterface } from "node:readline";
 import { fileURLToPath } from "node:url";
 import { parseArgs } from "node:util";
@@ -189,6 +191,74 @@ await check("a shared server answers only its token's pages and refuses one too 
     for (const { context } of [first, second, stranger]) await context.close();
   } finally {
     shared.child.kill("SIGTERM");
+  }
+});
+
+await check("the rig live: the page's periods are estimate's on the log it downloads", async () => {
+  // A simulated run of the paper's rig with a rigid-foam plate (T = 0.30 s: enough periods in a
+  // few seconds), sent in the firmware's format at real speed on a pseudo-terminal.
+  const folder = mkdtempSync(join(tmpdir(), "fl-rig-page-"));
+  execFileSync(options.exe, [
+    "run",
+    `${repository}/scenes/paper-rig.yaml`,
+    "--set",
+    "friction.mu_k=rigid-foam",
+    "--duration",
+    "4s",
+    "--out",
+    `${folder}/run`,
+  ]);
+  const feeder = spawn(
+    "python3",
+    [`${repository}/web/tests/feed_rig.py`, `${folder}/run/hall.csv`],
+    {
+      stdio: ["pipe", "pipe", "inherit"],
+    },
+  );
+  const said = createInterface({ input: feeder.stdout });
+  const lines = [];
+  let heard = () => {};
+  said.on("line", (line) => {
+    lines.push(line);
+    heard();
+  });
+  const line = (index) =>
+    new Promise((done) => {
+      const look = () => (lines.length > index ? done(lines[index]) : (heard = look));
+      look();
+    });
+  const port = await line(0);
+  const live = await startServer(["--serial", port]);
+  try {
+    const { page, context, complaints } = await openPage("/?scene=paper-rig", live.address);
+    await page.getByTestId("rig-state").filter({ hasText: "waiting" }).waitFor();
+    feeder.stdin.write("go\n");
+    expect((await line(1)) === "sent", `the feeder said ${lines[1]}`);
+    await page.getByTestId("rig-state").filter({ hasText: "4003 lines" }).waitFor();
+    const shown = (await page.getByTestId("rig-period").allTextContents()).reverse(); // oldest first
+    expect(shown.length >= 8, `${shown.length} periods shown`);
+    // The raw log as the page offers it, through `frictionlab estimate` (the same spacing).
+    const href = await page.getByTestId("rig-log").getAttribute("href");
+    const log = await (await fetch(new URL(href, live.address))).text();
+    writeFileSync(`${folder}/rig.log`, log);
+    const estimate = JSON.parse(
+      execFileSync(options.exe, ["estimate", `${folder}/rig.log`, "--spacing", "89mm", "--json"], {
+        encoding: "utf8",
+      }),
+    );
+    const periods = estimate.periods.map((p) => p.period_s.toFixed(6));
+    expect(
+      periods.length === shown.length || periods.length === shown.length + 1,
+      `estimate ${periods.length} periods, page ${shown.length}`,
+    );
+    for (let i = 0; i < shown.length; ++i)
+      expect(shown[i] === periods[i], `period ${i + 1}: page ${shown[i]}, estimate ${periods[i]}`);
+    expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+    await context.close();
+  } finally {
+    feeder.stdin.end();
+    live.child.kill("SIGTERM");
+    rmSync(folder, { recursive: true, force: true });
   }
 });
 

@@ -1,16 +1,18 @@
 // Drives the built page against tests/mock_server.mjs in headless Chromium (software WebGL):
 // no console errors, the period readout fills, a refused spacing shows its problem beside the
-// spacing control, links open their set-up and play, the stopwatch runs; a screenshot at
-// 1366x768 goes to $SHOT (default /tmp/web-shot.png).
+// spacing control, links open their set-up and play, the stopwatch runs, the live rig's panel
+// connects the mock's fake port and shows its periods, estimate and log, the student's name
+// reaches the class's table (class.html and class.csv), a 429 and the server's `closed` are
+// shown as the lab's words; a screenshot at 1366x768 goes to $SHOT (default /tmp/web-shot.png).
 //
 //   node tests/page_mock.test.mjs        (builds the page into a temporary folder first)
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdtempSync, rmSync } from "node:fs";
+import { existsSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
-import { startMockServer } from "./mock_server.mjs";
+import { FAKE_RIG_PORT, fakeRigPeriod, startMockServer } from "./mock_server.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const shot = process.env.SHOT ?? "/tmp/web-shot.png";
@@ -247,6 +249,234 @@ await check("the layout fits 1920x1080 and every control has a label", async () 
   expect(unlabelled.length === 0, `unlabelled: ${unlabelled.join(", ")}`);
   const overflow = await page.evaluate(() => document.documentElement.scrollWidth > innerWidth);
   expect(!overflow, "the page scrolls sideways");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+/** The requests the mock was sent. */
+async function mockLog() {
+  return (await fetch(`${base}/__mock/log`)).json();
+}
+
+await check(
+  "the live rig: its port, its periods and estimate, its log, beside the simulation",
+  async () => {
+    const { page, context, complaints } = await openPage("/?scene=minimal");
+    await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+    const port = page.getByTestId("rig-port");
+    await port.locator("option", { hasText: FAKE_RIG_PORT }).waitFor({ state: "attached" });
+    expect((await port.inputValue()) === FAKE_RIG_PORT, "the fake port is not chosen");
+    expect(await port.isVisible(), "the panel did not open for a port");
+    expect(await page.getByTestId("rig-log").isHidden(), "a log link before any line");
+    expect((await page.getByTestId("rig-estimate").textContent()) === "—", "estimate before any");
+    await page.getByTestId("rig-connect").click();
+    await page
+      .getByTestId("rig-state")
+      .filter({ hasText: `receiving from ${FAKE_RIG_PORT}, ` })
+      .waitFor({ timeout: 5000 });
+    // Connecting runs the simulation of the same set-up from t = 0 at 1x beside the rig.
+    await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+    const log = await mockLog();
+    const opened = log.findLastIndex((e) => e.rig?.port === FAKE_RIG_PORT);
+    const after = log.slice(opened + 1).map((e) => JSON.stringify(e.body ?? e));
+    const asked = ['{"speed":1}', '{"action":"reset"}', '{"action":"play"}'];
+    expect(
+      asked.every(
+        (a, i) =>
+          after.indexOf(a) >= 0 && (i === 0 || after.indexOf(a) > after.indexOf(asked[i - 1])),
+      ),
+      `after connecting: ${after.join(" ")}`,
+    );
+    expect((await page.locator("#slow-motion").inputValue()) === "1", "not at 1x");
+    // Three periods judged (0.3 s boot, 0.25 s to the first pulse, 0.79 s each).
+    await page.waitForFunction(
+      () => document.querySelectorAll('[data-testid="rig-period"]').length >= 3,
+      null,
+      { timeout: 10000 },
+    );
+    const { rows, estimate } = await page.evaluate(() => ({
+      rows: Array.from(document.querySelectorAll('[data-testid="rig-periods"] tr'), (tr) =>
+        Array.from(tr.cells, (td) => td.textContent),
+      ),
+      estimate: document.querySelector('[data-testid="rig-estimate"]').textContent,
+    }));
+    // Newest first; each period the mock's to 6 decimals; the first one rejected.
+    const numbers = rows.map((r) => Number(r[0]));
+    expect(
+      numbers.every((n, i) => i === 0 || n === numbers[i - 1] - 1),
+      `rows ${numbers}`,
+    );
+    for (const [n, , period, status] of rows) {
+      const expected = fakeRigPeriod(Number(n) - 1).toFixed(6);
+      expect(period === expected, `period #${n} reads "${period}", the mock's is ${expected}`);
+      expect(status === (n === "1" ? "rejected" : "accepted"), `period #${n} is ${status}`);
+    }
+    const accepted = rows.filter((r) => r[3] === "accepted").map((r) => Number(r[2]));
+    const mean = accepted.reduce((a, b) => a + b, 0) / accepted.length;
+    const shown = /T = (\d\.\d+) ± \d\.\d+ s/.exec(estimate);
+    expect(
+      shown && Math.abs(Number(shown[1]) - mean) < 1e-4,
+      `estimate "${estimate}", mean ${mean}`,
+    );
+    expect(/μₖ = \d\.\d+ ± \d\.\d+/.test(estimate), `estimate "${estimate}" has no μₖ`);
+    expect(estimate.includes(`N = ${accepted.length} periods`), `estimate "${estimate}": N`);
+    expect(estimate.includes("l = 89 mm"), `estimate "${estimate}": the spacing`);
+    expect((await page.locator('[data-testid="rig-plot"] canvas').count()) > 0, "no rig plot");
+    // The raw log downloads under its name, as the fake board sent it.
+    const logLink = page.getByTestId("rig-log");
+    await logLink.waitFor();
+    const [download] = await Promise.all([page.waitForEvent("download"), logLink.click()]);
+    expect(/^rig-fake-.*\.log$/.test(download.suggestedFilename()), download.suggestedFilename());
+    const lines = readFileSync(await download.path(), "utf8")
+      .trim()
+      .split("\n");
+    expect(lines[0].startsWith("# frictionlab rig firmware"), `log starts "${lines[0]}"`);
+    expect(lines[1] === "t_us,adc" && lines.length > 1000, `log: ${lines.length} lines`);
+    await page.getByTestId("rig-close").click();
+    await page
+      .getByTestId("rig-state")
+      .filter({ hasText: /^closed/ })
+      .waitFor();
+    expect(await page.getByTestId("rig-close").isDisabled(), "close stays enabled when closed");
+    // Connected again, then unplugged: the server's message says the log is kept; the link stays.
+    await page.getByTestId("rig-connect").click();
+    await page.getByTestId("rig-state").filter({ hasText: "receiving from" }).waitFor();
+    await fetch(`${base}/__mock/rig-unplug`);
+    await page.getByTestId("rig-state").filter({ hasText: "the log so far is kept" }).waitFor();
+    expect(await logLink.isVisible(), "the log link went with the board");
+    expect(await page.getByTestId("rig-close").isDisabled(), "close enabled for a port gone");
+    expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+    await context.close();
+  },
+);
+
+await check("a shared lab's port is not the page's to choose", async () => {
+  await fetch(`${base}/__mock/rig-shared`);
+  try {
+    const { page, context, complaints } = await openPage("/");
+    await page.locator("#rig-choose-note").waitFor();
+    expect(await page.getByTestId("rig-port").isDisabled(), "the port list is enabled");
+    expect(await page.getByTestId("rig-connect").isDisabled(), "connect is enabled");
+    expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+    await context.close();
+  } finally {
+    await fetch(`${base}/__mock/rig-shared?off`);
+  }
+});
+
+await check("the student's name reaches the class's table, class.html and class.csv", async () => {
+  const name = "Ada O'Neil-2";
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.getByTestId("student-name").fill(name);
+  // The name goes with the next session: a new spacing starts one.
+  await page.fill("#spacing-mm", "70");
+  await page.press("#spacing-mm", "Enter");
+  await page.getByTestId("spacing").filter({ hasText: "70 mm" }).waitFor();
+  const created = (await mockLog()).filter((e) => e.create).at(-1).create;
+  expect(created.name === name, `created ${JSON.stringify(created)}`);
+  const table = await (await fetch(`${base}/api/class`)).json();
+  const row = table.sessions.find((s) => s.name === name);
+  expect(row && row.spacing === 0.07 && row.scene === "minimal", JSON.stringify(table));
+  // Kept in this browser: a reload finds it again, and sends it with its session (89 mm).
+  await page.reload();
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  expect((await page.getByTestId("student-name").inputValue()) === name, "the name was lost");
+  const again = (await mockLog()).filter((e) => e.create).at(-1).create;
+  expect(again.name === name && again.set.length === 0, `created ${JSON.stringify(again)}`);
+  // A name the lab would refuse is not sent, and the page says so beside it.
+  await page.getByTestId("student-name").fill("=SUM(A1)");
+  await page.locator("#student-name-problem").filter({ hasText: "Not sent" }).waitFor();
+  await page.getByTestId("student-name").fill(name);
+
+  const teacher = await context.newPage();
+  teacher.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  await teacher.goto(`${base}/class.html`);
+  const mine = teacher.getByTestId("class-table").locator("tbody tr", { hasText: name });
+  await mine.first().waitFor();
+  // The row fills as the session runs (the mock's runs last 4 s; the table asks every 2 s).
+  await teacher.waitForFunction(
+    (who) =>
+      Array.from(document.querySelectorAll('[data-testid="class-table"] tbody tr')).some(
+        (tr) => tr.cells[0].textContent === who && / ± /.test(tr.cells[7].textContent),
+      ),
+    name,
+    { timeout: 20000 },
+  );
+  const cells = await mine.first().locator("td").allTextContents();
+  expect(cells.length === 10, `${cells.length} cells`);
+  const [, scene, material, kelvin, spacing, , , period, muK, paperMuK] = cells;
+  expect(scene === "minimal" && material === "LEGO blocks" && kelvin === "300", cells.join("|"));
+  expect(spacing === "89" && paperMuK === "0.29", cells.join("|"));
+  expect(/^\d\.\d+ ± \d\.\d+$/.test(period) && / ± /.test(muK), cells.join("|"));
+  await teacher.getByTestId("class-rig").filter({ hasText: FAKE_RIG_PORT }).waitFor();
+  expect(
+    (await teacher.getByTestId("lab-link").getAttribute("href")) === "/",
+    "no link back to the lab",
+  );
+  expect(
+    (await page.getByTestId("class-link").getAttribute("href")) === "/class.html",
+    "no link to the class's table",
+  );
+  const [download] = await Promise.all([
+    teacher.waitForEvent("download"),
+    teacher.getByTestId("class-csv").click(),
+  ]);
+  expect(download.suggestedFilename() === "class.csv", download.suggestedFilename());
+  const csv = readFileSync(await download.path(), "utf8")
+    .trim()
+    .split("\n");
+  const api = readFileSync(join(web, "../docs/web-api.md"), "utf8");
+  const columns = /a download named `class\.csv`\):\s*`([^`]+)`/.exec(api)[1].split(/,\s*/);
+  expect(csv[0] === columns.join(","), `class.csv's header "${csv[0]}", the API's ${columns}`);
+  expect(
+    csv.some((line) => line.includes(`,${name},minimal,`)),
+    `no row of ${name}: ${csv.join(" / ")}`,
+  );
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a 429 shows the lab's message, and the page and its stream go on", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await fetch(`${base}/__mock/refuse?path=/api/sessions&count=1`);
+  await page.fill("#spacing-mm", "75");
+  await page.press("#spacing-mm", "Enter");
+  await page
+    .locator("#page-problem")
+    .filter({ hasText: /^too many requests/ })
+    .waitFor();
+  await page.fill("#spacing-mm", "76");
+  await page.press("#spacing-mm", "Enter");
+  await page.getByTestId("spacing").filter({ hasText: "76 mm" }).waitFor();
+  expect((await page.locator("#page-problem").textContent()) === "", "the message stays");
+  // A stream refused once (EventSource does not retry a 429 by itself) is opened again.
+  await fetch(`${base}/__mock/refuse?path=/stream&count=1`);
+  await page.fill("#spacing-mm", "77");
+  await page.press("#spacing-mm", "Enter");
+  await page.getByTestId("spacing").filter({ hasText: "77 mm" }).waitFor();
+  await page.waitForFunction(
+    () => /t = [1-9]/.test(document.querySelector('[data-testid="time"]').textContent),
+    null,
+    { timeout: 8000 },
+  );
+  const others = complaints.filter((c) => !c.includes("429 (Too Many Requests)"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
+  await context.close();
+});
+
+await check("the server's `closed` is shown and the page stops streaming", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await fetch(`${base}/__mock/close-streams`);
+  await page.locator("#page-problem").filter({ hasText: "the lab stopped" }).waitFor();
+  await page.getByTestId("status").filter({ hasText: "no session" }).waitFor();
+  expect(await page.getByTestId("play").isDisabled(), "play stays enabled");
+  // EventSource would reconnect after about 3 s; the page has closed it.
+  await page.waitForTimeout(3500);
+  const { closed } = await (await fetch(`${base}/__mock/close-streams`)).json();
+  expect(closed === 0, `${closed} stream(s) opened again`);
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
   await context.close();
 });

@@ -1,0 +1,298 @@
+// The rig live (docs/web-api.md, "The rig live"): the real rig's Arduino on a serial port of the
+// lab's computer, its Hall signal, its periods and its T and mu_k by the rig's estimator with
+// this session's spacing, beside the simulation of the same set-up. GET /api/rig gives the
+// ports and the port's state, asked every 2 s while no rig events come; the rig events on the
+// session's stream bring the samples, the periods and the estimate. A lab without the rig live
+// (404) hides the panel.
+import { byId, byTestId, setText } from "./dom";
+import { fixed, trimmed, withError } from "./format";
+import { closeRig, getRig, LabError, openRig, rigLogUrl } from "./lab_client";
+import type { Estimate, LiveRig, PulseGeometry, RigEvent, RigPortState } from "./lab_types";
+import { RigPeriods } from "./rig_periods";
+import { RigPlot } from "./rig_plot";
+
+const POLL_MS = 2000;
+
+export interface RigPanelActions {
+  /** This page opened a port: run the simulation from t = 0 at 1x beside the rig. */
+  connected: () => void;
+}
+
+/** The port's state, from GET /api/rig or a rig event, whichever came last. */
+interface PortStatus {
+  port: string | null;
+  state: RigPortState;
+  message: string | null;
+  lines: number;
+}
+
+function linesOf(count: number): string {
+  return `${count} line${count === 1 ? "" : "s"}`;
+}
+
+/** The state in plain words, e.g. "receiving from /dev/ttyACM0, 5123 lines". */
+function stateWords(status: PortStatus): string {
+  const port = status.port ?? "the port";
+  switch (status.state) {
+    case "closed":
+      return status.port === null
+        ? "no port open"
+        : `closed (${status.port} was open, ${linesOf(status.lines)} received)`;
+    case "waiting":
+      return `waiting for ${port}: nothing received yet`;
+    case "receiving":
+      return `receiving from ${port}, ${linesOf(status.lines)}`;
+    case "unplugged":
+      return `unplugged: ${port} went away after ${linesOf(status.lines)}`;
+    case "failed":
+      return `failed: ${port}`;
+    default:
+      return `${String(status.state)}: ${port}`;
+  }
+}
+
+function geometryWords(geometry: PulseGeometry): string {
+  switch (geometry) {
+    case "one-pulse":
+      return "one pulse per period";
+    case "pair":
+      return "a pair of pulses per period";
+    default:
+      return "pulses not yet recognised";
+  }
+}
+
+function paragraph(text: string, className: string): HTMLParagraphElement {
+  const p = document.createElement("p");
+  p.className = className;
+  p.textContent = text;
+  return p;
+}
+
+export class RigPanel {
+  private readonly section = byTestId("rig-panel");
+  private readonly details = byId<HTMLDetailsElement>("rig-details");
+  private readonly summary = byId("rig-summary");
+  private readonly portSelect = byTestId<HTMLSelectElement>("rig-port");
+  private readonly connectButton = byTestId<HTMLButtonElement>("rig-connect");
+  private readonly closeButton = byTestId<HTMLButtonElement>("rig-close");
+  private readonly chooseNote = byId("rig-choose-note");
+  private readonly stateLine = byTestId("rig-state");
+  private readonly problem = byId("rig-problem");
+  private readonly estimate = byTestId("rig-estimate");
+  private readonly logLink = byTestId<HTMLAnchorElement>("rig-log");
+  private readonly plot = new RigPlot(byTestId("rig-plot"));
+  private readonly periods = new RigPeriods(
+    byTestId<HTMLTableSectionElement>("rig-periods"),
+    byId("rig-periods-tally"),
+  );
+  private rig: LiveRig | null = null;
+  private status: PortStatus = { port: null, state: "closed", message: null, lines: 0 };
+  /** The board's run the plot and periods show; null before a rig event. */
+  private run: number | null = null;
+  private lastEventAt = -Infinity;
+  private timer = 0;
+  private polling = false;
+  private asking = false;
+  /** The panel opens by itself once, when a port or a rig shows; after that it is the user's. */
+  private openedItself = false;
+  private estimateKey = "";
+
+  constructor(private readonly actions: RigPanelActions) {
+    this.connectButton.addEventListener("click", () => void this.connect());
+    this.closeButton.addEventListener("click", () => void this.close());
+    this.portSelect.addEventListener("change", () => this.showButtons());
+    this.logLink.href = rigLogUrl();
+    this.clearRun();
+    this.showStatus();
+  }
+
+  /** Asks GET /api/rig now and every 2 s while no rig events come. */
+  start(): void {
+    if (this.timer) return;
+    void this.poll();
+    this.timer = window.setInterval(() => {
+      if (document.hidden || performance.now() - this.lastEventAt < POLL_MS) return;
+      void this.poll();
+    }, POLL_MS);
+  }
+
+  /** Asks nothing more (the lab stopped). */
+  stop(): void {
+    window.clearInterval(this.timer);
+    this.timer = 0;
+  }
+
+  /** Empty plot, periods and estimate: a new session (another spacing), or a new board run. */
+  clearRun(): void {
+    this.run = null;
+    this.plot.clear();
+    this.periods.clear();
+    this.showEstimate(null, 0, "unknown");
+  }
+
+  /** A rig event from the session's stream. */
+  showEvent(event: RigEvent): void {
+    this.lastEventAt = performance.now();
+    if (this.run !== null && event.run !== this.run) this.clearRun();
+    this.run = event.run;
+    this.status = {
+      port: event.port,
+      state: event.state,
+      message: event.message,
+      lines: event.lines,
+    };
+    this.plot.push(event.hall, event.periods);
+    this.periods.add(event.periods);
+    this.showEstimate(event.estimate, event.spacing, event.geometry);
+    this.showStatus();
+    // What only GET /api/rig says (the log's name, the ports) may have changed with the port.
+    const known = this.rig;
+    if (known && (event.port !== known.port || (event.lines > 0 && known.log_name === null))) {
+      void this.poll();
+    }
+  }
+
+  private async poll(): Promise<void> {
+    if (this.polling) return;
+    this.polling = true;
+    try {
+      this.showRig(await getRig());
+      setText(this.problem, "");
+    } catch (error) {
+      if (error instanceof LabError && error.status === 404) {
+        // A lab without the rig live: nothing to show, nothing to ask again.
+        this.stop();
+        this.section.hidden = true;
+        return;
+      }
+      this.showProblem(error);
+    } finally {
+      this.polling = false;
+    }
+  }
+
+  private async connect(): Promise<void> {
+    const port = this.portSelect.value;
+    if (!port) return;
+    if (await this.ask(() => openRig(port))) {
+      this.clearRun();
+      this.actions.connected();
+    }
+  }
+
+  private async close(): Promise<void> {
+    await this.ask(() => closeRig());
+  }
+
+  private async ask(request: () => Promise<LiveRig>): Promise<boolean> {
+    this.asking = true;
+    this.showButtons();
+    try {
+      this.showRig(await request());
+      setText(this.problem, "");
+      return true;
+    } catch (error) {
+      this.showProblem(error);
+      return false;
+    } finally {
+      this.asking = false;
+      this.showButtons();
+    }
+  }
+
+  private showProblem(error: unknown): void {
+    const message = error instanceof Error ? error.message : String(error);
+    setText(this.problem, `The rig: ${message}`);
+  }
+
+  private showRig(rig: LiveRig): void {
+    this.rig = rig;
+    this.showPorts(rig);
+    this.status = { port: rig.port, state: rig.state, message: rig.message, lines: rig.lines };
+    const name = rig.log_name ?? "rig.log";
+    this.logLink.download = name;
+    setText(this.logLink, `The rig's raw log (${name})`);
+    this.chooseNote.hidden = rig.may_choose;
+    this.showStatus();
+  }
+
+  /** The port list, keeping the one chosen while it is listed; a page that may not choose is
+   * shown the port open (a shared server lists no ports). */
+  private showPorts(rig: LiveRig): void {
+    const ports = rig.ports.length > 0 || rig.port === null ? rig.ports : [rig.port];
+    const listed = Array.from(this.portSelect.options, (o) => o.value);
+    const chosen = this.portSelect.value;
+    if (listed.join("\n") !== (ports.length > 0 ? ports : [""]).join("\n")) {
+      this.portSelect.replaceChildren();
+      for (const port of ports) this.portSelect.append(new Option(port, port));
+      if (ports.length === 0) this.portSelect.append(new Option("no serial port found", ""));
+    }
+    const keep = ports.includes(chosen) ? chosen : null;
+    const open = rig.port !== null && ports.includes(rig.port) ? rig.port : null;
+    this.portSelect.value = keep ?? open ?? ports[0] ?? "";
+  }
+
+  private showStatus(): void {
+    const status = this.status;
+    setText(this.stateLine, stateWords(status) + (status.message ? `. ${status.message}` : ""));
+    this.stateLine.dataset["state"] = status.state;
+    this.logLink.hidden = status.lines <= 0;
+    const ports = this.rig?.ports.length ?? 0;
+    const rigShown = status.state !== "closed" || status.lines > 0;
+    setText(
+      this.summary,
+      rigShown
+        ? `${status.state}${status.lines > 0 ? `, ${linesOf(status.lines)}` : ""}`
+        : ports > 0
+          ? `${ports} serial port${ports === 1 ? "" : "s"} found`
+          : "no serial port found",
+    );
+    this.section.classList.toggle("quiet", !rigShown && ports === 0);
+    if (!this.openedItself && (rigShown || ports > 0)) {
+      this.openedItself = true;
+      this.details.open = true;
+    }
+    this.showButtons();
+  }
+
+  private showButtons(): void {
+    const mayChoose = this.rig?.may_choose ?? false;
+    this.portSelect.disabled = !mayChoose || (this.rig?.ports.length ?? 0) === 0;
+    this.connectButton.disabled = this.asking || !mayChoose || this.portSelect.value === "";
+    // Only an open port closes: an unplugged or failed one has closed already.
+    const open = this.status.state === "waiting" || this.status.state === "receiving";
+    this.closeButton.disabled = this.asking || !mayChoose || !open;
+  }
+
+  private showEstimate(estimate: Estimate | null, spacing: number, geometry: PulseGeometry): void {
+    const key = estimate === null ? "" : JSON.stringify([estimate, spacing, geometry]);
+    if (key === this.estimateKey && this.estimate.textContent !== "") return;
+    this.estimateKey = key;
+    if (estimate === null) {
+      this.estimate.replaceChildren("—");
+      return;
+    }
+    const n = estimate.periods_used;
+    const detail = [
+      `N = ${n} period${n === 1 ? "" : "s"}`,
+      estimate.period_se === null ? null : `standard error ${fixed(estimate.period_se, 6)} s`,
+      `l = ${trimmed(spacing * 1000, 1)} mm (this set-up's spacing)`,
+      geometryWords(geometry),
+    ];
+    this.estimate.replaceChildren(
+      paragraph(`T = ${withError(estimate.period, estimate.period_sd, 4)} s`, "big"),
+      paragraph(
+        estimate.mu_k === null
+          ? "μₖ = —"
+          : `μₖ = ${withError(estimate.mu_k, estimate.mu_k_err, 3)}`,
+        "big",
+      ),
+      paragraph(
+        `${detail.filter((d) => d !== null).join("; ")}; ± is the periods' standard deviation, ` +
+          "dμₖ in quadrature",
+        "detail",
+      ),
+    );
+  }
+}

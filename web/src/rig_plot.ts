@@ -1,0 +1,83 @@
+// The live rig's Hall signal (uPlot): its ADC counts over the last 10 s, with the end of each
+// period the rig's estimator judged drawn as a line: green where it accepted it, grey dashed
+// where it rejected it.
+import uPlot from "uplot";
+import type { PeriodRow } from "./lab_types";
+import { axis, LiveChart } from "./plots";
+import { SlidingWindow } from "./sliding_window";
+
+const WINDOW_S = 10;
+const COLORS = { hall: "#6a1b9a", accepted: "#2e7d32", rejected: "#9aa3ad" };
+
+interface PeriodEnd {
+  t: number;
+  accepted: boolean;
+}
+
+export class RigPlot {
+  private readonly data = new SlidingWindow(2, WINDOW_S);
+  private readonly live: LiveChart;
+  private ends: PeriodEnd[] = [];
+
+  constructor(box: HTMLElement) {
+    this.live = new LiveChart(
+      box,
+      {
+        scales: { x: { time: false, range: () => this.range() } },
+        series: [
+          { label: "t (s)" },
+          { label: "rig's Hall (ADC)", stroke: COLORS.hall, width: 1, points: { show: false } },
+        ],
+        axes: [axis("t (s)"), axis("ADC counts")],
+        legend: { live: false },
+        cursor: { drag: { x: false, y: false } },
+        hooks: { draw: [(u) => this.drawEnds(u)] },
+      },
+      this.data,
+    );
+  }
+
+  clear(): void {
+    this.data.clear();
+    this.ends = [];
+    this.live.scheduleRedraw();
+  }
+
+  push(hall: [number, number][], periods: PeriodRow[]): void {
+    const last = this.data.lastTime;
+    if (last !== null && hall.length > 0 && hall[0]![0] < last) this.clear();
+    for (const [t, adc] of hall) this.data.push([t, adc]);
+    for (const [, end, , accepted] of periods) this.ends.push({ t: end, accepted });
+    if (periods.length > 0) {
+      const [from] = this.range();
+      this.ends = this.ends.filter((end) => end.t >= from - 1);
+    }
+    if (hall.length > 0 || periods.length > 0) this.live.scheduleRedraw();
+  }
+
+  private range(): [number, number] {
+    const end = Math.max(WINDOW_S, this.data.lastTime ?? 0);
+    return [end - WINDOW_S, end];
+  }
+
+  private drawEnds(u: uPlot): void {
+    const ctx = u.ctx;
+    const { left, top, width, height } = u.bbox;
+    ctx.save();
+    ctx.lineWidth = Math.max(1, devicePixelRatio);
+    for (const accepted of [false, true]) {
+      ctx.strokeStyle = accepted ? COLORS.accepted : COLORS.rejected;
+      ctx.setLineDash(accepted ? [] : [4 * devicePixelRatio, 3 * devicePixelRatio]);
+      ctx.beginPath();
+      for (const end of this.ends) {
+        if (end.accepted !== accepted) continue;
+        const x = u.valToPos(end.t, "x", true);
+        if (x < left || x > left + width) continue;
+        ctx.moveTo(x, top);
+        ctx.lineTo(x, top + height);
+      }
+      ctx.stroke();
+    }
+    ctx.restore();
+  }
+}

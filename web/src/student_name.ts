@@ -1,0 +1,84 @@
+// Who runs the page's sessions, for the class's table: a name kept in this browser
+// (localStorage) and sent with the next session the page starts (docs/web-api.md: up to 40
+// letters, digits, spaces and . - _ '). A name the page or the lab refuses is shown beside the
+// field and left out: the lab runs without it.
+import { byId, byTestId, setText } from "./dom";
+
+const STORED = "frictionlab.student-name";
+const MOST_CHARACTERS = 40;
+/** Letters of any script and digits, spaces and . - _ ', beginning with a letter or digit (the
+ * server's rule, so that no spreadsheet reads the class's CSV cell as a formula). */
+const ALLOWED = /^[\p{L}\p{Nd}][\p{L}\p{Nd} .\-_']*$/u;
+
+function stored(): string {
+  try {
+    return localStorage.getItem(STORED) ?? "";
+  } catch {
+    return ""; // storage refused (a private window): the field starts empty
+  }
+}
+
+function store(name: string): void {
+  try {
+    if (name) localStorage.setItem(STORED, name);
+    else localStorage.removeItem(STORED);
+  } catch {
+    // kept for this page only
+  }
+}
+
+/** Why the name cannot be sent, or null when it can (or is empty). */
+function problemOf(name: string): string | null {
+  if (name === "") return null;
+  if ([...name].length > MOST_CHARACTERS) return `at most ${MOST_CHARACTERS} characters`;
+  if (!ALLOWED.test(name)) {
+    return "only letters, digits, spaces and . - _ ', beginning with a letter or digit";
+  }
+  return null;
+}
+
+export class StudentName {
+  private readonly input = byTestId<HTMLInputElement>("student-name");
+  private readonly problem = byId("student-name-problem");
+  /** The name the lab refused, left out until the field changes. */
+  private refused: string | null = null;
+
+  constructor() {
+    this.input.maxLength = MOST_CHARACTERS;
+    this.input.value = stored();
+    this.input.addEventListener("input", () => {
+      this.refused = null;
+      store(this.value);
+      this.check();
+    });
+    this.check();
+  }
+
+  /** The name to send with the next session: undefined when empty or refused. */
+  get name(): string | undefined {
+    const name = this.value;
+    if (name === "" || name === this.refused || problemOf(name) !== null) return undefined;
+    return name;
+  }
+
+  /** The lab refused the name (`message` says why): the next sessions go without it. */
+  refuse(message: string): void {
+    this.refused = this.value;
+    this.show(message);
+  }
+
+  private get value(): string {
+    return this.input.value.normalize("NFC").trim();
+  }
+
+  private check(): void {
+    const problem = problemOf(this.value);
+    this.show(problem === null ? "" : `Not sent: ${problem}.`);
+  }
+
+  private show(message: string): void {
+    setText(this.problem, message);
+    if (message) this.input.setAttribute("aria-invalid", "true");
+    else this.input.removeAttribute("aria-invalid");
+  }
+}

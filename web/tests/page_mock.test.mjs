@@ -469,6 +469,13 @@ await check("a 429 shows the lab's message, and the page and its stream go on", 
 await check("the server's `closed` is shown and the page stops streaming", async () => {
   const { page, context, complaints } = await openPage("/?scene=minimal");
   await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  // A state event has come: the page's stream is open (on a loaded machine it may open after the
+  // play button shows "playing").
+  await page.waitForFunction(
+    () => document.querySelector('[data-testid="time"]').textContent !== "t = 0.000 s",
+    null,
+    { timeout: 10000 },
+  );
   await fetch(`${base}/__mock/close-streams`);
   await page.locator("#page-problem").filter({ hasText: "the lab stopped" }).waitFor();
   await page.getByTestId("status").filter({ hasText: "no session" }).waitFor();

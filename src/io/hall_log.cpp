@@ -190,13 +190,8 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
 }
 
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
-  if (path == "-") {
-    std::string text;
-    char buffer[1 << 16];
-    while (std::cin.read(buffer, sizeof buffer) || std::cin.gcount() > 0)
-      text.append(buffer, static_cast<std::size_t>(std::cin.gcount()));
-    return parse_hall_log(text, "<stdin>", options);
-  }
+  if (path == "-")
+    return parse_hall_log(read_text_stream(std::cin, "<stdin>", "the log"), "<stdin>", options);
   std::error_code ec;
   const std::string file = std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
   HallLog log = parse_hall_log(read_text_file(file, "the log"), file, options);

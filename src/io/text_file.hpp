@@ -1,14 +1,27 @@
 // Reading a whole file into memory (scenes, sweep files, plans, point files, Hall logs).
 #pragma once
 
+#include <cstddef>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 
 namespace fl {
 
+// The most bytes a file is read to (a Hall log of a day at 1 kHz is about 1.5 GB; an hour's, the
+// longest a rig is run, about 60 MB).
+inline constexpr std::size_t kMostTextFileBytes = std::size_t{512} << 20;
+
 // The file's bytes. Throws InputError located at `path` when it cannot be read:
 // "PATH: error: cannot open WHAT: No such file or directory" (`what` names it for the reader:
-// "the log", "the scene"; by default "the file").
-std::string read_text_file(const std::string& path, std::string_view what = "the file");
+// "the log", "the scene"; by default "the file"). Only a regular file or a pipe is read (a
+// device such as /dev/urandom or a terminal never ends, and is refused, saying so), and at most
+// `most_bytes` of it: a larger one is refused, saying how large it may be.
+std::string read_text_file(const std::string& path, std::string_view what = "the file",
+                           std::size_t most_bytes = kMostTextFileBytes);
+
+// Reads a stream (standard input) the same way, to at most `most_bytes`; `name` locates it.
+std::string read_text_stream(std::istream& in, const std::string& name, std::string_view what,
+                             std::size_t most_bytes = kMostTextFileBytes);
 
 }  // namespace fl

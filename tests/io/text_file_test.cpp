@@ -1,10 +1,15 @@
 // Reading a whole file: every byte (binary, empty), and an error located at the path, saying
-// why, for a file that is missing or a folder.
+// why, for a file that is missing or a folder, a device that never ends, or one too large; a pipe
+// is read like a file.
 #include "io/text_file.hpp"
+
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -49,6 +54,42 @@ TEST(TextFile, AFileThatCannotBeReadIsALocatedError) {
   EXPECT_EQ(error_of(missing, "the log"),
             missing + ": error: cannot open the log: No such file or directory");
   EXPECT_EQ(error_of(dir.string()), dir.string() + ": error: cannot read the file: Is a directory");
+}
+
+TEST(TextFile, ADeviceThatNeverEndsIsRefusedSayingWhatItIs) {
+  for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+    const std::string error = error_of(device, "the log");
+    EXPECT_EQ(error.rfind(std::string(device) + ": error: expected the log as a file, found a "
+                                                "character device",
+                          0),
+              0u)
+        << error;
+  }
+}
+
+TEST(TextFile, AFileLargerThanTheMostIsRefusedSayingHowLargeItMayBe) {
+  const fs::path dir = folder();
+  std::ofstream(dir / "big.csv", std::ios::binary) << std::string(3u << 20, 'x');
+  try {
+    read_text_file((dir / "big.csv").string(), "the log", std::size_t{2} << 20);
+    ADD_FAILURE() << "read a file over the limit";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the log is larger than 2 MiB"), std::string::npos)
+        << e.what();
+  }
+  std::istringstream stream(std::string(3u << 20, 'x'));
+  EXPECT_THROW(read_text_stream(stream, "<stdin>", "the log", std::size_t{2} << 20), InputError);
+  std::istringstream small("t_us,adc\n0,512\n");
+  EXPECT_EQ(read_text_stream(small, "<stdin>", "the log"), "t_us,adc\n0,512\n");
+}
+
+TEST(TextFile, APipeIsReadLikeAFile) {
+  const fs::path dir = folder();
+  const std::string fifo = (dir / "log.fifo").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << "t_us,adc\n0,512\n"; });
+  EXPECT_EQ(read_text_file(fifo, "the log"), "t_us,adc\n0,512\n");
+  writer.join();
 }
 
 }  // namespace

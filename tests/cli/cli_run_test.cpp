@@ -136,6 +136,17 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
            Case{"estimate " + std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
                     "/tests/data/logs/clean.csv --plot " + file + "/x.png",
                 "--plot " + file + "/x.png: error: expected a place this command can write"},
+           // A folder nothing can be written into, for root as well (/proc): refused before the
+           // work, not after it.
+           Case{"run " + kMinimal + " --still /proc/x.png",
+                "--still /proc/x.png: error: expected a place this command can write, found a "
+                "folder nothing can be written into"},
+           Case{"run " + kMinimal + " --video /proc/x.mp4", "--video /proc/x.mp4: error:"},
+           Case{"analytic --material lego --mc 1000 --plot /proc/x.png",
+                "--plot /proc/x.png: error:"},
+           // The still is a PNG, and its name says so.
+           Case{"run " + kMinimal + " --still " + file + ".jpg",
+                "--still: error: expected a .png file (the still is a PNG image), found \".jpg\""},
            Case{"compare --set friction.mu_k=0.3",
                 "--set friction.mu_k=0.3: error: expected a key compare leaves to the scene"},
            Case{"compare --set world.duration=2s", "use --duration instead"},

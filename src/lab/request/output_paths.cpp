@@ -1,7 +1,11 @@
 #include "lab/request/output_paths.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 
@@ -19,6 +23,19 @@ namespace fs = std::filesystem;
       "expected a place this command can write, found " + found + "; give another path");
 }
 
+// Whether a file can be made in `folder`: a probe made and removed at once. (access() is not
+// enough: root passes it for /proc and read-only mounts, where nothing can be written.)
+std::string cannot_write_into(const fs::path& folder) {
+  static std::atomic<int> count{0};
+  const fs::path probe =
+      folder / (".frictionlab-probe-" + std::to_string(::getpid()) + "-" + std::to_string(++count));
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) return std::strerror(errno);
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return "";
+}
+
 }  // namespace
 
 void prepare_output_folder(const std::string& folder, const std::string& field) {
@@ -27,8 +44,8 @@ void prepare_output_folder(const std::string& folder, const std::string& field) 
   if (fs::exists(path, ec) && !fs::is_directory(path, ec)) refuse(field, folder, "a file");
   fs::create_directories(path, ec);
   if (ec) refuse(field, folder, "a folder that cannot be created (" + ec.message() + ")");
-  if (::access(path.c_str(), W_OK | X_OK) != 0)
-    refuse(field, folder, "a folder this user cannot write into");
+  if (const std::string why = cannot_write_into(path); !why.empty())
+    refuse(field, folder, "a folder nothing can be written into (" + why + ")");
 }
 
 void prepare_output_file(const std::string& file, const std::string& field) {
@@ -41,8 +58,8 @@ void prepare_output_file(const std::string& file, const std::string& field) {
     refuse(field, file, "a path whose folder " + parent.string() + " is a file");
   fs::create_directories(parent, ec);
   if (ec) refuse(field, file, "a folder that cannot be created (" + ec.message() + ")");
-  if (::access(parent.c_str(), W_OK | X_OK) != 0)
-    refuse(field, file, "a folder this user cannot write into");
+  if (const std::string why = cannot_write_into(parent); !why.empty())
+    refuse(field, file, "a folder nothing can be written into (" + why + ")");
   if (fs::exists(path, ec) && ::access(path.c_str(), W_OK) != 0)
     refuse(field, file, "a file this user cannot overwrite");
 }

@@ -1,5 +1,6 @@
 #include "lab/request/run_request.hpp"
 
+#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <utility>
@@ -92,6 +93,18 @@ PreparedRun prepare_run(const RunRequest& r) {
   if (!r.video.empty() && !std::filesystem::is_directory(r.video, folder_error)) {
     const std::string problem = video_file_problem(r.video);
     if (!problem.empty()) checks.problem("video", problem);
+  }
+  // The still is a PNG: a name that says otherwise (x.jpg) would be a file its viewer misreads.
+  if (!r.still.empty() && !std::filesystem::is_directory(r.still, folder_error)) {
+    std::string extension = std::filesystem::path(r.still).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png")
+      checks.problem("still",
+                     "expected a .png file (the still is a PNG image), found " +
+                         (extension.empty() ? std::string("a name without an extension")
+                                            : "\"" + extension + "\"") +
+                         "; name it " +
+                         std::filesystem::path(r.still).replace_extension(".png").string());
   }
   VideoRequest frames;
   if (r.draws_frames()) frames = frames_request(r, checks);

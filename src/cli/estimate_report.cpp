@@ -63,7 +63,10 @@ std::vector<std::string> left_out_text(const HallLog& log) {
 
 std::string format_text(const HallLog& log) {
   std::vector<std::string> parts;
-  parts.push_back(log.reading.format == "firmware" ? "the rig firmware's serial output" : "CSV");
+  parts.push_back(log.reading.format == "firmware" ? "the rig firmware's serial output"
+                  : log.reading.format == "serial-plotter"
+                      ? "the Serial Plotter's label:value lines"
+                      : "CSV");
   if (log.encoding != "utf-8") parts.push_back(log.encoding);
   if (log.reading.ide_timestamps) parts.push_back("the Arduino IDE's timestamps taken off");
   if (log.reading.decimal_comma) parts.push_back("decimal commas");

@@ -88,6 +88,25 @@ std::string decode_log_text(std::string_view bytes, std::string* encoding) {
     *encoding = "utf-16be";
     return from_utf16(bytes.substr(2), false);
   }
+  // UTF-16 without a byte-order mark (a Windows tool's "Unicode" text): the ASCII of a log puts a
+  // zero in every other byte, the high one (the second in little-endian order).
+  if (bytes.size() >= 4) {
+    const std::size_t pairs = std::min<std::size_t>(bytes.size() / 2, 512);
+    std::size_t zero_high = 0;
+    std::size_t zero_low = 0;
+    for (std::size_t i = 0; i < pairs; ++i) {
+      zero_high += bytes[2 * i + 1] == '\0' && bytes[2 * i] != '\0' ? 1 : 0;
+      zero_low += bytes[2 * i] == '\0' && bytes[2 * i + 1] != '\0' ? 1 : 0;
+    }
+    if (10 * zero_high >= 9 * pairs) {
+      *encoding = "utf-16le (no BOM)";
+      return from_utf16(bytes, true);
+    }
+    if (10 * zero_low >= 9 * pairs) {
+      *encoding = "utf-16be (no BOM)";
+      return from_utf16(bytes, false);
+    }
+  }
   *encoding = "utf-8";
   return std::string(bytes);
 }

@@ -113,6 +113,22 @@ void HallLogReader::add_line(std::string_view line, int number, bool unfinished)
     }
     return;
   }
+  if (!started_ || plotter_) {
+    if (const std::optional<PlotterLine> plotter = plotter_line(content)) {
+      if (!started_) {
+        start(plotter->header, 0, number);
+        if (!started_) return;
+        plotter_ = true;
+        reading_.format = "serial-plotter";
+      }
+      if (plotter->header != header_text_) {
+        data_line(text, offset, number, unfinished);  // other labels: not a sample of this log
+        return;
+      }
+      data_line(plotter->values, 0, number, unfinished);
+      return;
+    }
+  }
   if (!started_) {
     start(text, offset, number);
     return;
@@ -166,6 +182,9 @@ bool HallLogReader::start(std::string_view text, std::size_t offset, int number)
     skip(text);
     return false;
   }
+  // Lines of the doubtful header's shape: it was the log's header after all, and cannot be used.
+  if (doubtful_ && fields.size() == doubtful_->fields && delimiter == doubtful_->delimiter)
+    throw InputError(SourceLocation{name_, doubtful_->number, 0}, doubtful_->message);
   candidates_.push_back({std::string(text), offset, number, fields.size(), delimiter});
   if (candidates_.size() >= kConfirmingLines) start_by_position();
   return true;
@@ -204,12 +223,17 @@ bool HallLogReader::try_header(std::string_view text, int number) {
                            " (for example " + field_ref("columns", "t_us,adc") + ")");
     return false;
   }
-  if (!time && options_.rate_hz == 0.0)
-    throw InputError(SourceLocation{name_, number, 0},
-                     "the header " + quoted(trim(text)) +
-                         " names no time column: expected one called " + std::string(kTimeNames) +
-                         "; for a log of values only, give the sample rate with " +
-                         field_ref("rate") + " (for example " + field_ref("rate", "1kHz") + ")");
+  if (!time && options_.rate_hz == 0.0) {
+    // Held, not thrown: a banner that mentions the sensor ("Hall rig ready") reads like this.
+    if (!doubtful_)
+      doubtful_ = DoubtfulHeader{
+          "the header " + quoted(trim(text)) + " names no time column: expected one called " +
+              std::string(kTimeNames) + "; for a log of values only, give the sample rate with " +
+              field_ref("rate") + " (for example " + field_ref("rate", "1kHz") + ")",
+          number, fields.size(), delimiter};
+    skip(text);
+    return true;
+  }
   layout_ = ColumnLayout{};
   layout_.value = *value;
   layout_.value_name = std::string(fields[*value].text);
@@ -488,12 +512,40 @@ void HallLogReader::new_segment() {
   segment_samples_ = 0;
 }
 
+std::optional<HallLogReader::PlotterLine> HallLogReader::plotter_line(std::string_view content) {
+  PlotterLine out;
+  std::size_t pos = 0;
+  int pairs = 0;
+  while (pos < content.size()) {
+    const std::size_t end = content.find_first_of("\t ,", pos);
+    const std::string_view token =
+        content.substr(pos, end == std::string_view::npos ? std::string_view::npos : end - pos);
+    pos = end == std::string_view::npos ? content.size() : end + 1;
+    if (token.empty()) continue;
+    const std::size_t colon = token.find(':');
+    if (colon == 0 || colon == std::string_view::npos) return std::nullopt;
+    const std::string_view label = token.substr(0, colon);
+    const std::string_view value = token.substr(colon + 1);
+    for (const char c : label)
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') return std::nullopt;
+    double v = 0.0;
+    if (!parse_log_number(value, ',', &v, nullptr)) return std::nullopt;
+    out.header += (pairs == 0 ? "" : ",") + std::string(label);
+    out.values += (pairs == 0 ? "" : ",") + std::string(value);
+    ++pairs;
+  }
+  if (pairs < 1) return std::nullopt;
+  return out;
+}
+
 void HallLogReader::finish() {
   if (!started_ && !candidates_.empty()) start_by_position();
   if (pending_) confirm(*pending_);
   pending_.reset();
   if (scale_ == 0.0) infer_unit();
   reading_.segments = segment_ + 1;
+  if (!started_ && doubtful_)
+    throw InputError(SourceLocation{name_, doubtful_->number, 0}, doubtful_->message);
   if (!started_) {
     const SourceLocation top{name_, 1, 0};
     if (reading_.lines_skipped == 0 && reading_.comment_lines == 0)

@@ -115,6 +115,13 @@ class HallLogReader {
   };
 
   bool start(std::string_view text, std::size_t offset, int number);
+  // The Arduino IDE's Serial Plotter format, "t:0<TAB>Hall:693": the labels as a header and the
+  // values as a line of the log; nothing for a line of another format.
+  struct PlotterLine {
+    std::string header;
+    std::string values;
+  };
+  static std::optional<PlotterLine> plotter_line(std::string_view content);
   bool try_header(std::string_view text, int number);
   void start_by_position();
   void set_unit();
@@ -132,6 +139,17 @@ class HallLogReader {
   HallLogOptions options_;
   HallLogReading reading_;
   bool started_ = false;
+  bool plotter_ = false;  // the log is in the Serial Plotter's label:value format
+  // A line before the log that reads like a header but names no time column: a banner when a
+  // header or samples of another shape follow it ("Hall rig ready"), else the log's header, and
+  // its message the log's error.
+  struct DoubtfulHeader {
+    std::string message;
+    int number = 0;
+    std::size_t fields = 0;
+    char delimiter = 0;
+  };
+  std::optional<DoubtfulHeader> doubtful_;
   char delimiter_ = 0;
   ColumnLayout layout_;
   std::string header_text_;    // the header as written, to recognise it again

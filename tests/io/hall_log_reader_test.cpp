@@ -1,6 +1,7 @@
 // Reading the logs people have: a serial monitor's banner and a board's reset garbage before the
-// log, byte-order marks, the Arduino IDE's timestamps, Arduino-style headers, no header, no time
-// column, decimal commas, corrupted lines and times out of order (left out, counted, located;
+// log, a banner that mentions the sensor, byte-order marks and UTF-16 without one, the Serial
+// Plotter's label:value lines, the Arduino IDE's timestamps, Arduino-style headers, no header, no
+// time column, decimal commas, corrupted lines and times out of order (left out, counted, located;
 // refused beyond 10 %), and a board that restarted in the middle.
 #include <cmath>
 #include <string>
@@ -76,6 +77,73 @@ TEST(HallLogReader, ByteOrderMarksAndUtf16) {
   EXPECT_EQ(wide.encoding, "utf-16le");
   EXPECT_EQ(wide.adc, utf8.adc);
   EXPECT_EQ(wide.t_s, utf8.t_s);
+}
+
+TEST(HallLogReader, Utf16WithoutAByteOrderMark) {
+  const std::string plain = "t_ms,adc\n" + lines(50, 0, 1);
+  std::string little;
+  std::string big;
+  for (char c : plain) {
+    little += std::string{c, '\0'};
+    big += std::string{'\0', c};
+  }
+  const HallLog utf8 = parse_hall_log(plain, "x");
+  const HallLog le = parse_hall_log(little, "x");
+  EXPECT_EQ(le.encoding, "utf-16le (no BOM)");
+  EXPECT_EQ(le.adc, utf8.adc);
+  EXPECT_EQ(le.t_s, utf8.t_s);
+  const HallLog be = parse_hall_log(big, "x");
+  EXPECT_EQ(be.encoding, "utf-16be (no BOM)");
+  EXPECT_EQ(be.adc, utf8.adc);
+}
+
+// A banner that mentions the sensor reads like a header naming no time: it is a banner when the
+// real header, or samples of another shape, follow it; the header of a log of values only when
+// lines of its own shape follow (and then its message, with its advice, is the log's).
+TEST(HallLogReader, ABannerThatMentionsTheSensorIsNotTakenForTheHeader) {
+  for (const std::string banner :
+       {"Hall rig ready", "Hall sensor test", "hall effect logger v1.0", "Hall sensor: ready"}) {
+    const HallLog with_header = parse_hall_log(banner + "\nt_ms,hall\n" + lines(100, 0, 1), "x");
+    EXPECT_EQ(with_header.reading.header_line, 2) << banner;
+    EXPECT_EQ(with_header.reading.lines_skipped, 1) << banner;
+    EXPECT_EQ(with_header.reading.time_unit, "ms") << banner;
+    ASSERT_EQ(with_header.adc.size(), 100u) << banner;
+    const HallLog without = parse_hall_log(banner + "\n" + lines(100, 0, 1), "x");
+    EXPECT_EQ(without.reading.columns_from, "position") << banner;
+    EXPECT_EQ(without.adc.size(), 100u) << banner;
+  }
+  // A real one-column header over values: the header's message, and --rate reads it.
+  std::string values = "hall\n";
+  for (int i = 0; i < 100; ++i) values += std::to_string(512 + i % 7) + "\n";
+  expect_starts(error_of(values), "log.csv:1: error: the header \"hall\" names no time column");
+  HallLogOptions rate;
+  rate.rate_hz = 1000.0;
+  EXPECT_EQ(parse_hall_log(values, "x", rate).adc.size(), 100u);
+}
+
+TEST(HallLogReader, TheSerialPlottersLabelValueLines) {
+  std::string text = "Hall sensor test\n";
+  for (int i = 0; i < 100; ++i)
+    text += "t:" + std::to_string(i) + "\tHall:" + std::to_string(512 + i % 7) + "\r\n";
+  const HallLog log = parse_hall_log(text, "x");
+  EXPECT_EQ(log.reading.format, "serial-plotter");
+  EXPECT_EQ(log.reading.time_column, "t");
+  EXPECT_EQ(log.reading.adc_column, "Hall");
+  EXPECT_EQ(log.reading.time_unit, "ms");  // inferred: a sample a millisecond
+  ASSERT_EQ(log.adc.size(), 100u);
+  EXPECT_EQ(log.adc[8], 513);
+  EXPECT_DOUBLE_EQ(log.t_s[99], 0.099);
+  // Commas or spaces between the pairs, as the IDE also takes them; a line of other labels is
+  // a corrupted line of this log.
+  std::string spaced;
+  for (int i = 0; i < 100; ++i)
+    spaced += "t:" + std::to_string(i) + (i % 2 ? ", " : " ") + "Hall:512\n";
+  spaced += "x:1 y:2\n";
+  for (int i = 100; i < 110; ++i) spaced += "t:" + std::to_string(i) + ",Hall:512\n";
+  const HallLog mixed = parse_hall_log(spaced, "x");
+  EXPECT_EQ(mixed.adc.size(), 110u);
+  EXPECT_EQ(mixed.reading.corrupted.count, 1);
+  EXPECT_EQ(mixed.reading.corrupted.first.front(), 101);
 }
 
 TEST(HallLogReader, TheArduinoIdesTimestampsAreTakenOff) {

@@ -96,7 +96,8 @@ void print_log_table(const std::vector<LogTableRow>& rows) {
 }
 
 // The options as the request's fields: what was given.
-EstimateRequest request_of(const EstimateOptions& o, const CLI::App& sub) {
+EstimateRequest request_of(const EstimateOptions& o, const CLI::App& sub,
+                           const GlobalOptions& global) {
   EstimateRequest r;
   r.logs = o.logs;
   r.spacing = o.spacing;
@@ -109,6 +110,7 @@ EstimateRequest request_of(const EstimateOptions& o, const CLI::App& sub) {
   r.plot = o.plot;
   r.out = o.out;
   if (!o.material.empty()) r.material = o.material;
+  r.assets = global.asset_dir;
   if (!o.temperature.empty()) r.temperature = o.temperature;
   r.follow_port = o.follow;
   if (sub.count("--baud") > 0) r.follow_baud = o.baud;
@@ -140,8 +142,8 @@ int run_log_table(const EstimateOptions& o, const PreparedEstimate& p) {
   return exit_status(result.outcome());
 }
 
-int run_estimate(const EstimateOptions& o, const CLI::App& sub) {
-  const PreparedEstimate p = prepare_estimate(request_of(o, sub));
+int run_estimate(const EstimateOptions& o, const CLI::App& sub, const GlobalOptions& global) {
+  const PreparedEstimate p = prepare_estimate(request_of(o, sub, global));
   for (const std::string& w : p.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
   if (p.job == EstimateJob::kLogTable) return run_log_table(o, p);
   if (p.job == EstimateJob::kFollow) {
@@ -170,7 +172,7 @@ int run_estimate(const EstimateOptions& o, const CLI::App& sub) {
 
 }  // namespace
 
-Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
+Command add_estimate_command(CLI::App& app, const GlobalOptions& global) {
   auto options = std::make_shared<EstimateOptions>();
   CLI::App* sub = app.add_subcommand(
       "estimate",
@@ -217,7 +219,7 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& /*global*/) {
   sub->add_option("--h-c-err", options->h_c_err, "With --mc: the uncertainty of --h-c");
   sub->add_option("--mc-plot", options->mc_plot,
                   "With --mc: draw the histogram of mu_k's draws to this PNG");
-  return Command{sub, [options, sub] { return run_estimate(*options, *sub); }};
+  return Command{sub, [options, sub, &global] { return run_estimate(*options, *sub, global); }};
 }
 
 }  // namespace fl::cli

@@ -8,6 +8,7 @@
 #include "cli/option_quantity.hpp"
 #include "core/paper_table.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "lab/request/field_checks.hpp"
 #include "lab/request/lab_data.hpp"
 
 namespace fl::cli {
@@ -20,8 +21,12 @@ struct TableOptions {
 };
 
 int run_table(const TableOptions& o, const GlobalOptions& global) {
-  const double gravity = option_quantity(o.gravity, Dimension::kAcceleration, "--gravity");
-  const double h_c = option_quantity(o.h_c, Dimension::kLength, "--h-c");
+  FieldChecks checks;
+  const double gravity = checks.positive(o.gravity, Dimension::kAcceleration, "gravity", "g");
+  const double h_c = checks.not_negative(o.h_c, Dimension::kLength, "h_c", "a height");
+  checks.plausible(gravity, kGravityRange, "gravity", o.gravity);
+  checks.plausible(h_c, kHcRange, "h_c", o.h_c);
+  checks.throw_if_any();
   const std::string file = paper_table_path(asset_dir(global.asset_dir));
   const PaperTable table = load_paper_table(file);
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/plausible_range.hpp"
 #include "io/yaml_node.hpp"
 
 namespace fl {
@@ -29,9 +30,18 @@ std::optional<LogSidecar> read_log_sidecar(const std::string& log) {
     return v;
   };
   if (auto n = root.find("label")) out.label = n->text();
-  if (auto n = root.find("spacing")) out.spacing = positive(*n, Dimension::kLength, false);
+  if (auto n = root.find("spacing")) {
+    out.spacing = positive(*n, Dimension::kLength, false);
+    // A plain 70 is 70 m: a slip of the unit, never computed with.
+    if (const std::optional<std::string> why = implausible(*out.spacing, kSpacingRange))
+      n->fail(*why + "; a plain number is SI: write the spacing with its unit, as 70 mm");
+  }
   if (auto n = root.find("spacing_err")) out.spacing_err = positive(*n, Dimension::kLength, true);
-  if (auto n = root.find("gravity")) out.gravity = positive(*n, Dimension::kAcceleration, false);
+  if (auto n = root.find("gravity")) {
+    out.gravity = positive(*n, Dimension::kAcceleration, false);
+    if (const std::optional<std::string> why = implausible(*out.gravity, kGravityRange))
+      n->fail(*why);
+  }
   if (auto n = root.find("material")) out.material = n->text();
   if (auto n = root.find("temperature"))
     out.temperature = positive(*n, Dimension::kTemperature, false);

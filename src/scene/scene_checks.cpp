@@ -5,6 +5,7 @@
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
+#include "core/plausible_range.hpp"
 #include "scene/drive_layout.hpp"
 
 namespace fl {
@@ -51,6 +52,18 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
                   " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
   positive(s.rollers.spacing, "rollers.spacing");
   positive(s.rollers.radius, "rollers.radius");
+  // Beyond any bench (core/plausible_range.hpp): a slip of the unit or the keyboard, refused
+  // before it is computed with (a plain 89 is 89 m; 1e300 rpm).
+  const auto plausible = [&](double v, const PlausibleRange& range, const char* key) {
+    if (!std::isfinite(v) || v <= 0.0) return;  // the checks above and below say those
+    if (const std::optional<std::string> why = implausible(v, range))
+      need(false, key, *why + "; check the value and its unit (a plain number is SI)");
+  };
+  plausible(s.rollers.spacing, kSpacingRange, "rollers.spacing");
+  plausible(s.rollers.radius, kRollerRadiusRange, "rollers.radius");
+  plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
+  plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
+  plausible(s.world.gravity, kGravityRange, "world.gravity");
   need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
            s.rollers.runout < 0.5 * s.rollers.radius,
        "rollers.runout",

@@ -156,11 +156,16 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << "\n" << r.err;
     EXPECT_EQ(r.out.find("frictionlab run:"), std::string::npos) << c.args;
   }
-  // A plain length of metres where millimetres were meant is said aloud.
+  // A plain length of metres where millimetres were meant: 1.5 m is a bench's and taken as
+  // given; 89 m is none, and refused, saying how it was read.
+  const auto warned = lab("analytic --spacing 1.5 --mu-k 0.3");
+  EXPECT_EQ(warned.status, 0) << warned.err;
   const auto spacing = lab("analytic --spacing 89 --mu-k 0.3");
-  EXPECT_NE(spacing.err.find("warning: --spacing 89 read as 89 m (a plain number is SI)"),
+  EXPECT_EQ(spacing.status, 2);
+  EXPECT_NE(spacing.err.find("so 89 was read as 89 m; write 89mm for millimetres"),
             std::string::npos)
       << spacing.err;
+  EXPECT_EQ(spacing.err.find("warning:"), std::string::npos) << spacing.err;
   std::filesystem::remove_all(test_dir());
 }
 

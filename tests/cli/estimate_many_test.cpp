@@ -131,6 +131,33 @@ TEST_F(EstimateMany, ABadSidecarIsLocatedInItsRow) {
   EXPECT_NE(error.find("spacing_err"), std::string::npos) << error;  // the suggestion
 }
 
+// A sidecar's plain "spacing: 70" is 70 m, and "material: brasss" names no material of the
+// paper's: each row says so, located, and the other logs go on; --material is checked too.
+TEST_F(EstimateMany, ASidecarsSlipOfTheUnitOrTheNameIsRefusedInItsRow) {
+  write_log("logs/a.csv", 0.79, 1);
+  write_log("logs/b.csv", 0.79, 2);
+  write_log("logs/c.csv", 0.79, 3);
+  write("logs/b.yaml", "spacing: 70\n");
+  write("logs/c.yaml", "material: brasss\n");
+  const std::string logs = (dir_ / "logs" / "a.csv").string() + " " +
+                           (dir_ / "logs" / "b.csv").string() + " " +
+                           (dir_ / "logs" / "c.csv").string();
+  const auto r = lab(logs + " --json");
+  EXPECT_EQ(r.status, 3);
+  const nlohmann::json rows = nlohmann::json::parse(r.out)["logs"];
+  EXPECT_EQ(rows[0]["status"], "ok");
+  const std::string spacing = rows[1]["error"];
+  EXPECT_NE(spacing.find("b.yaml:1:10"), std::string::npos) << spacing;
+  EXPECT_NE(spacing.find("found 70000 mm"), std::string::npos) << spacing;
+  const std::string material = rows[2]["error"];
+  EXPECT_NE(material.find("c.yaml"), std::string::npos) << material;
+  EXPECT_NE(material.find("did you mean 'brass'?"), std::string::npos) << material;
+  const auto option = lab(logs + " --material brasss");
+  EXPECT_EQ(option.status, 2);
+  EXPECT_NE(option.err.find("--material brasss: error: unknown material"), std::string::npos)
+      << option.err;
+}
+
 TEST_F(EstimateMany, OptionsThatGoWithOneLogOrTheTableAreRefusedWhereTheyDoNothing) {
   const std::string a = write_log("logs/a.csv", 0.79, 1);
   const std::string b = write_log("logs/b.csv", 0.79, 2);

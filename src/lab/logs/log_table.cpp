@@ -7,6 +7,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
+#include "io/unknown_material.hpp"
 #include "lab/logs/geometry_check.hpp"
 
 namespace fl {
@@ -62,6 +63,10 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
       row.sidecar = side->file;
       if (side->label) row.label = *side->label;
       apply_log_sidecar(*side, row.set_up);
+      if (side->material && defaults.paper != nullptr && !defaults.paper->find(*side->material))
+        throw InputError(SourceLocation{side->file, 0, 0},
+                         "material: unknown material \"" + *side->material + "\"; " +
+                             unknown_material_note(*defaults.paper, *side->material));
       if (side->material) row.material = side->material;
       if (side->temperature) row.temperature = side->temperature;
     }

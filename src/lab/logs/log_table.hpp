@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/paper_table.hpp"
 #include "io/hall_log.hpp"
 #include "io/log_sidecar.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -41,6 +42,8 @@ struct LogTableRow {
 struct LogTableDefaults {
   LogSetUp set_up;
   std::optional<std::string> material;
+  // The paper's Table I, which a sidecar's material must name (none: not checked).
+  const PaperTable* paper = nullptr;
   std::optional<double> temperature;  // K
   HallLogOptions reading;
 };

@@ -26,6 +26,11 @@ AnalyticSetUp set_up_of(const AnalyticRequest& r, FieldChecks& checks) {
   s.roller_radius = checks.quantity(r.roller_radius, Dimension::kLength, "roller_radius");
   s.roller_speed = checks.quantity(r.roller_speed, Dimension::kAngularSpeed, "roller_speed");
   s.amplitude = checks.quantity(r.amplitude, Dimension::kLength, "amplitude");
+  checks.plausible(s.spacing, kSpacingRange, "spacing", r.spacing);
+  checks.plausible(s.h_c, kHcRange, "h_c", r.h_c);
+  checks.plausible(s.gravity, kGravityRange, "gravity", r.gravity);
+  checks.plausible(s.roller_radius, kRollerRadiusRange, "roller_radius", r.roller_radius);
+  checks.plausible(s.roller_speed, kRollerSpeedRange, "roller_speed", r.roller_speed);
   if (const std::optional<FrictionLawKind> law = friction_law_kind_from_name(r.law))
     s.law = *law;
   else
@@ -89,6 +94,8 @@ AnalyticResult analyze(const AnalyticRequest& r) {
                                field_ref("monte_carlo.draws", "100000"));
   const std::optional<double> mu_k = checks.quantity(r.mu_k, Dimension::kDimensionless, "mu_k");
   const std::optional<double> period = checks.quantity(r.period, Dimension::kTime, "period");
+  checks.plausible(mu_k, kMuKRange, "mu_k", r.mu_k);
+  checks.plausible(period, kPeriodRange, "period", r.period);
   const double period_err =
       checks.quantity(r.period_err.value_or(std::string("0 s")), Dimension::kTime, "period_err");
   const double temperature = checks.quantity(r.temperature.value_or(std::string("300 K")),

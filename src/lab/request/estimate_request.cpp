@@ -1,4 +1,6 @@
 #include "lab/request/estimate_request.hpp"
+#include "io/unknown_material.hpp"
+#include "lab/request/lab_data.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,6 +42,8 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
   p.set_up.spacing_err =
       checks.not_negative(r.spacing_err, Dimension::kLength, "spacing_err", "the uncertainty");
   p.set_up.gravity = checks.positive(r.gravity, Dimension::kAcceleration, "gravity", "g");
+  checks.plausible(p.set_up.spacing, kSpacingRange, "spacing", r.spacing);
+  checks.plausible(p.set_up.gravity, kGravityRange, "gravity", r.gravity);
   if (const std::optional<fl_estimator::Geometry> g = geometry_from_option(r.geometry))
     p.set_up.geometry = *g;
   else
@@ -90,6 +94,13 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     p.table.set_up = p.set_up;
     p.table.reading = p.reading;
     p.table.material = r.material;
+    // A material must be one of the paper's (a sidecar's too, checked as each log is read).
+    const PaperTable& paper = paper_table_in(asset_dir(r.assets));
+    p.table.paper = &paper;
+    if (r.material && paper.find(*r.material) == nullptr)
+      checks.problem(
+          "material", *r.material,
+          "unknown material \"" + *r.material + "\"; " + unknown_material_note(paper, *r.material));
     if (r.temperature)
       p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
     checks.throw_if_any();
@@ -151,7 +162,10 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
                        " go with " + field_ref("monte_carlo.draws") +
                        " (the Monte Carlo of mu_k); add " +
                        field_ref("monte_carlo.draws", "100000") + ", or drop them");
-  if (r.h_c) p.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
+  if (r.h_c) {
+    p.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
+    checks.plausible(p.h_c, kHcRange, "h_c", *r.h_c);
+  }
   if (r.h_c_err)
     p.h_c_err = checks.not_negative(*r.h_c_err, Dimension::kLength, "h_c_err", "an uncertainty");
   checks.throw_if_any();

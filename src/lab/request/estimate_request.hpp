@@ -25,6 +25,7 @@
 namespace fl {
 
 struct EstimateRequest {
+  std::string assets;  // "assets": the lab's data folder (the paper's table; "" : the default)
   std::vector<std::string> logs;                      // "logs": files, folders, patterns, "-"
   std::optional<HallLog> samples;                     // instead of logs: a signal given as arrays
   QuantityInput spacing = std::string("89 mm");       // "spacing": l, the paper's rig

@@ -68,12 +68,45 @@ double FieldChecks::quantity(const QuantityInput& value, Dimension dimension,
     return kUnread;
   }
   // A plain number is SI: a length of metres where the rig measures millimetres is said aloud.
-  if (plain_number(text) && dimension == Dimension::kLength && std::fabs(parsed) >= 2.0)
+  if (plain_number(text) && dimension == Dimension::kLength && std::fabs(parsed) >= 2.0) {
     warnings_.push_back(
         fmt::format("{} read as {} m (a plain number is SI); write {}mm for "
                     "millimetres",
                     field_ref(field, text), text, text));
+    warning_fields_.emplace_back(field);
+  }
   return parsed;
+}
+
+void FieldChecks::plausible(double value, const PlausibleRange& range, std::string_view field,
+                            const QuantityInput& input) {
+  // Values no bench has in any unit (negative, zero where it cannot be, not finite) are the
+  // domain checks' to refuse, with their own words.
+  if (has(field) || !std::isfinite(value) || value < 0.0 || (value == 0.0 && range.least > 0.0))
+    return;
+  const std::optional<std::string> why = implausible(value, range);
+  if (!why) return;
+  std::string message = *why;
+  const std::string* text = std::get_if<std::string>(&input);
+  if (text != nullptr && plain_number(*text) && range.per_unit != 1.0) {
+    const bool length = range.unit == "mm";
+    message += fmt::format(": a plain number is SI, so {} was read as {} {}; write {}{} for {}",
+                           *text, *text, length ? "m" : "rad/s", *text, range.unit,
+                           length ? "millimetres" : "revolutions a minute");
+    for (std::size_t i = warnings_.size(); i-- > 0;)
+      if (warning_fields_[i] == field) {
+        warnings_.erase(warnings_.begin() + static_cast<std::ptrdiff_t>(i));
+        warning_fields_.erase(warning_fields_.begin() + static_cast<std::ptrdiff_t>(i));
+      }
+  } else {
+    message += "; check the value and its unit";
+  }
+  problem(field, quantity_input_text(input), std::move(message));
+}
+
+void FieldChecks::plausible(const std::optional<double>& value, const PlausibleRange& range,
+                            std::string_view field, const std::optional<QuantityInput>& input) {
+  if (value && input) plausible(*value, range, field, *input);
 }
 
 std::optional<double> FieldChecks::quantity(const std::optional<QuantityInput>& value,

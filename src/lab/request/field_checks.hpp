@@ -11,6 +11,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/plausible_range.hpp"
 #include "core/units.hpp"
 #include "io/input_error.hpp"
 
@@ -55,6 +56,14 @@ class FieldChecks {
   double not_negative(const QuantityInput& value, Dimension dimension, std::string_view field,
                       std::string_view what);
 
+  // Refuses a value beyond the quantity's range on any bench (core/plausible_range.hpp): a slip
+  // of the unit or the keyboard, never computed with. `input` is the field's value as given: a
+  // plain number read as SI is said to be one (and its warning is then this problem).
+  void plausible(double value, const PlausibleRange& range, std::string_view field,
+                 const QuantityInput& input);
+  void plausible(const std::optional<double>& value, const PlausibleRange& range,
+                 std::string_view field, const std::optional<QuantityInput>& input);
+
   void problem(std::string_view field, std::string message);
   void problem(std::string_view field, std::string value, std::string message);
   bool has(std::string_view field) const;
@@ -69,6 +78,7 @@ class FieldChecks {
  private:
   std::vector<FieldProblem> problems_;
   std::vector<std::string> warnings_;
+  std::vector<std::string> warning_fields_;  // the field each warning is about
 };
 
 }  // namespace fl

@@ -436,6 +436,8 @@ def estimate_file(
     columns: str = "",
     rate: Optional[Quantity] = None,
     time_unit: str = "",
+    material: Optional[str] = None,
+    temperature: Optional[Quantity] = None,
 ) -> Estimate: ...
 
 # ---- the analytic model ----

@@ -14,6 +14,15 @@ def run_with_log(tmp_path_factory):
     return fl.run(SCENES / "minimal.yaml", out=out), out / "hall.csv"
 
 
+def test_the_papers_value_for_the_material_as_the_command_gives_it(run_with_log):
+    _, log = run_with_log
+    expected = cli_json("estimate", log, "--material", "iron")
+    found = fl.estimate_file(log, material="iron").json()
+    assert found["paper"] == expected["paper"]
+    assert found["paper"]["mu_k"] == 0.42
+    assert fl.estimate_file(log).json()["paper"] is None
+
+
 def test_a_log_file_reads_as_the_command_reads_it(run_with_log):
     _, log = run_with_log
     expected = cli_json("estimate", log)

@@ -166,6 +166,16 @@ int run_estimate(const EstimateOptions& o, const CLI::App& sub, const GlobalOpti
     return plot_failure_status(result.plot_failure);
   }
   print_estimate(result.log, result.estimate, result.check, result.plot);
+  if (result.paper) {
+    const PaperComparison& c = *result.paper;
+    fmt::print("  {:<20} {} at {:.0f} K: mu_k {} +- {}, T {} +- {} s (Table I)\n", "paper", c.name,
+               c.temperature, c.mu_k.value, c.mu_k.uncertainty, c.period.value,
+               c.period.uncertainty);
+    if (c.standard_errors)
+      fmt::print("  {:<20} this log's mu_k is {:+.1f} combined standard errors from it ({})\n", "",
+                 *c.standard_errors,
+                 std::fabs(*c.standard_errors) <= 2.0 ? "they agree" : "they disagree");
+  }
   if (result.monte_carlo) print_mu_k_monte_carlo(*result.monte_carlo, 19, result.mc_plot);
   return plot_failure_status(result.plot_failure);
 }
@@ -207,10 +217,11 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--duration", options->duration,
                   "With --follow: stop after this long (30s) instead of at Ctrl-C");
   sub->add_option("--material", options->material,
-                  "With several logs: the plate's material, for logs whose sidecar names none");
+                  "The plate's material (the paper's Table I), for logs whose sidecar names none: "
+                  "one log's result prints the paper's value beside it");
   sub->add_option("--temperature", options->temperature,
-                  "With several logs: the rollers' temperature (300 K), for logs whose sidecar "
-                  "names none");
+                  "With --material: the rollers' temperature (300 K, or 77 K), for logs whose "
+                  "sidecar names none");
   sub->add_option("--out", options->out,
                   "With several logs: the folder for estimates.csv and estimates.json");
   add_monte_carlo_options(*sub, options->monte_carlo);

@@ -12,6 +12,7 @@
 #include "io/input_error.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
+#include "lab/logs/paper_comparison.hpp"
 #include "lab/request/estimate_request.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
@@ -26,6 +27,7 @@ namespace {
 struct Estimate {
   HallLog log;
   LogEstimate estimate;
+  std::optional<PaperComparison> paper;  // the paper's value for the log's material, when named
 };
 
 // The request's answer as the module's Estimate; the GIL released while the estimator runs.
@@ -38,7 +40,7 @@ Estimate estimate_of(const EstimateRequest& request) {
     const py::gil_scoped_release released;
     result = estimate_one_log(prepared);
   }
-  return Estimate{std::move(result.log), std::move(result.estimate)};
+  return Estimate{std::move(result.log), std::move(result.estimate), std::move(result.paper)};
 }
 
 // The arguments both functions share, as the request's fields.
@@ -129,8 +131,14 @@ in single precision, as the rig's Arduino does. json() is the object
           "structured array, shape (periods,): start_s, end_s, period_s and status (0 "
           "accepted,\n1 an outlier, 2 at a broken turning point)")
       .def(
-          "json", [](const E& e) { return python_value(log_estimate_json(e.log, e.estimate)); },
-          "The object `frictionlab estimate --json` prints, without \"plot\".")
+          "json",
+          [](const E& e) {
+            nlohmann::json j = log_estimate_json(e.log, e.estimate);
+            j["paper"] = e.paper ? paper_comparison_json(*e.paper) : nlohmann::json(nullptr);
+            return python_value(j);
+          },
+          "The object `frictionlab estimate --json` prints, without \"plot\" and "
+          "\"monte_carlo\".")
       .def("__repr__", [](const E& e) {
         const fl_estimator::Stats& s = e.estimate.stats;
         return "<frictionlab.Estimate T = " +
@@ -165,18 +173,22 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
       "estimate_file",
       [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
          const Quantity& gravity, const std::string& geometry, const std::string& columns,
-         const std::optional<Quantity>& rate, const std::string& time_unit) {
+         const std::optional<Quantity>& rate, const std::string& time_unit,
+         const std::optional<std::string>& material, const std::optional<Quantity>& temperature) {
         EstimateRequest r = request_of(spacing, spacing_err, gravity, geometry);
         r.logs = {path.string()};
         r.columns = columns;
         r.rate = rate;
         r.time_unit = time_unit;
+        r.material = material;
+        r.temperature = temperature;
         return estimate_of(r);
       },
       py::arg("path"), py::kw_only(), py::arg("spacing") = quantity_input_text(d.spacing),
       py::arg("spacing_err") = quantity_input_text(d.spacing_err),
       py::arg("gravity") = quantity_input_text(d.gravity), py::arg("geometry") = d.geometry,
       py::arg("columns") = "", py::arg("rate") = py::none(), py::arg("time_unit") = "",
+      py::arg("material") = py::none(), py::arg("temperature") = py::none(),
       R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
 
 The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",
@@ -184,7 +196,10 @@ The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_
 log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity, geometry) is read over
 them, as the command reads it. columns ("t_us,adc", "_,t_ms,adc"), rate ("1kHz") and
 time_unit ("us", "ms", "s") say how to read a log whose header does not, as the command's
---columns, --rate and --time-unit. Raises InputError located in the log (file:line:column).)");
+--columns, --rate and --time-unit. material ("lego", a key or name of the paper's Table I) and
+temperature ("77K"; 300 K by default), or the sidecar's, put the paper's value for it beside
+the result: json()["paper"], with the difference in combined standard errors. Raises InputError
+located in the log (file:line:column).)");
 }
 
 }  // namespace fl::python

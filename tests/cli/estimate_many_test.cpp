@@ -167,7 +167,7 @@ TEST_F(EstimateMany, OptionsThatGoWithOneLogOrTheTableAreRefusedWhereTheyDoNothi
   r = lab(a + " --out " + (dir_ / "t").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--out writes the table of several logs"), std::string::npos) << r.err;
-  r = lab(a + " --material lego");
+  r = lab(a + " --temperature 77K");  // a temperature without the material it is of
   EXPECT_EQ(r.status, 2);
   r = lab(a + " " + b + " --duration 5s");
   EXPECT_EQ(r.status, 2);

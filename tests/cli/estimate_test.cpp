@@ -122,6 +122,38 @@ TEST_F(Estimate, TheSpacingGivesMuK) {
   EXPECT_NEAR(b["mu_k"].get<double>() / a["mu_k"].get<double>(), 0.1 / 0.089, 1e-6);
 }
 
+// A student's one comparison: the paper's value for the plate's material, named by --material or
+// by the log's sidecar, and the difference in combined standard errors, computed here from the
+// two values and their uncertainties.
+TEST_F(Estimate, OneLogBesideThePapersValueForItsMaterial) {
+  test::HallSignal slow = rig();
+  slow.period_s = 0.94;  // LEGO at 77 K: T = 0.94 +- 0.02 s, mu_k = 0.20 +- 0.01
+  const std::string log = write_csv("hall.csv", test::generate(slow), "t_us,adc", false);
+  const nlohmann::json j = json(log + " --material lego --temperature 77K");
+  const nlohmann::json& paper = j["paper"];
+  EXPECT_EQ(paper["material"], "LEGO blocks");
+  EXPECT_EQ(paper["temperature_K"], 77.0);
+  EXPECT_EQ(paper["mu_k"], 0.20);
+  EXPECT_EQ(paper["mu_k_err"], 0.01);
+  const double mu = j["mu_k"];
+  const double err = j["mu_k_err_quadrature"];
+  EXPECT_NEAR(paper["difference_standard_errors"].get<double>(),
+              (mu - 0.20) / std::sqrt(err * err + 0.01 * 0.01), 1e-9);
+  const test::CommandResult text = lab(log + " --material lego --temperature 77K");
+  EXPECT_NE(text.out.find("LEGO blocks at 77 K: mu_k 0.2 +- 0.01, T 0.94 +- 0.02 s"),
+            std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("combined standard errors from it"), std::string::npos) << text.out;
+  // Without a material: no comparison (null, not a made-up one).
+  EXPECT_TRUE(json(log)["paper"].is_null());
+  // The sidecar's material, and a material the paper has not at that temperature.
+  write("hall.yaml", "material: plexiglas\n");
+  EXPECT_EQ(json(log)["paper"]["key"], "plexiglas");
+  const test::CommandResult cold = lab(log + " --material iron --temperature 77K");
+  EXPECT_EQ(cold.status, 2);
+  EXPECT_NE(cold.err.find("the paper measured Iron at 300 K only"), std::string::npos) << cold.err;
+}
+
 TEST_F(Estimate, PrintsAReadableSummary) {
   const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
   const test::CommandResult r = lab(log);

@@ -1,4 +1,5 @@
 #include "lab/request/estimate_request.hpp"
+#include "io/log_sidecar.hpp"
 #include "io/unknown_material.hpp"
 #include "lab/request/lab_data.hpp"
 
@@ -115,11 +116,32 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
                               "the estimate itself (or give " +
                               field_ref("follow.raw_log") + " with " + field_ref("follow.port") +
                               "), or name several logs");
-  if (r.material || r.temperature)
+  if (follow && (r.material || r.temperature))
     checks.problem(r.material ? "material" : "temperature",
                    field_ref("material") + " and " + field_ref("temperature") +
-                       " go into the table of several logs; one log's estimate does not use "
-                       "them");
+                       " go with a log or several; the rig live is estimated without them");
+  if (!follow) {
+    // One log's material: the paper's value is printed beside its result.
+    const PaperTable& paper = paper_table_in(asset_dir(r.assets));
+    p.paper = &paper;
+    if (r.temperature) {
+      p.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
+      if (!r.material)
+        checks.problem("temperature", field_ref("temperature") + " goes with " +
+                                          field_ref("material") + "; add the plate's material");
+    }
+    if (r.material) {
+      const PaperMaterial* row = paper.find(*r.material);
+      if (row == nullptr)
+        checks.problem("material", *r.material,
+                       "unknown material \"" + *r.material + "\"; " +
+                           unknown_material_note(paper, *r.material));
+      else if (p.temperature && PaperTable::at(*row, *p.temperature) == nullptr)
+        checks.problem("temperature",
+                       fmt::format("the paper measured {} at 300 K only", row->name));
+      p.material = r.material;
+    }
+  }
   if (follow) {
     p.job = EstimateJob::kFollow;
     if (!r.logs.empty() || r.samples)
@@ -188,6 +210,7 @@ nlohmann::json OneLogEstimate::json() const {
   j["plot"] = plot.empty() ? nlohmann::json(nullptr) : nlohmann::json(plot);
   j["monte_carlo"] =
       monte_carlo ? monte_carlo_json(*monte_carlo->monte_carlo) : nlohmann::json(nullptr);
+  j["paper"] = paper ? paper_comparison_json(*paper) : nlohmann::json(nullptr);
   return j;
 }
 
@@ -215,6 +238,26 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   require_periods(out.log, out.estimate, plot_note);
   out.check = check_geometry(out.log, out.estimate);
   require_geometry(out.log, out.estimate, out.check, plot_note);
+  // The paper's value for the material the request or the log's sidecar names.
+  std::optional<std::string> material = p.material;
+  std::optional<double> temperature = p.temperature;
+  if (!p.samples && (!material || !temperature)) {
+    if (const std::optional<LogSidecar> side = read_log_sidecar(out.log.file)) {
+      if (!material && side->material) {
+        if (p.paper != nullptr && p.paper->find(*side->material) == nullptr)
+          throw InputError(SourceLocation{side->file, 0, 0},
+                           "material: unknown material \"" + *side->material + "\"; " +
+                               unknown_material_note(*p.paper, *side->material));
+        material = side->material;
+      }
+      if (!temperature) temperature = side->temperature;
+    }
+  }
+  if (material && p.paper != nullptr) {
+    const fl_estimator::Stats& s = out.estimate.stats;
+    out.paper = compare_with_paper(*p.paper, *material, temperature.value_or(300.0), s.mu_k,
+                                   s.mu_k_err_quadrature);
+  }
   // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
   // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).
   if (p.monte_carlo) {

@@ -19,6 +19,7 @@
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/logs/log_table.hpp"
+#include "lab/logs/paper_comparison.hpp"
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 
@@ -67,6 +68,11 @@ struct PreparedEstimate {
   double h_c = 0.0;      // m, for the Monte Carlo
   double h_c_err = 0.0;  // m
   std::string mc_plot;
+  // One log's material (a key or name of the paper's Table I) and temperature [K], for the
+  // paper's value beside its result; the log's sidecar may name them instead.
+  std::optional<std::string> material;
+  std::optional<double> temperature;
+  const PaperTable* paper = nullptr;
   std::string follow_port;
   double follow_baud = 250000.0;
   std::string follow_raw_log;
@@ -85,6 +91,8 @@ struct OneLogEstimate {
   std::string plot;  // the PNGs drawn
   std::string mc_plot;
   std::string plot_failure;  // why a plot could not be drawn (the estimate stands)
+  // The paper's value for the log's material (the request's, or its sidecar's), when known.
+  std::optional<PaperComparison> paper;
 
   // `frictionlab estimate --json`'s object (docs/cli.md).
   nlohmann::json json() const;

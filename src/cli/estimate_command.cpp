@@ -161,6 +161,7 @@ int run_estimate(const EstimateOptions& o, const CLI::App& sub, const GlobalOpti
   }
   const OneLogEstimate result = estimate_one_log(p);
   if (!result.sidecar_note.empty()) fmt::print(stderr, "note: {}\n", result.sidecar_note);
+  for (const std::string& w : result.warnings) fmt::print(stderr, "warning: {}\n", spelled(w));
   if (o.json) {
     fmt::print("{}\n", result.json().dump(2));
     return plot_failure_status(result.plot_failure);

@@ -40,6 +40,8 @@ Estimate estimate_of(const EstimateRequest& request) {
     const py::gil_scoped_release released;
     result = estimate_one_log(prepared);
   }
+  for (const std::string& warning : result.warnings)
+    PyErr_WarnEx(PyExc_UserWarning, spelled(warning).c_str(), 1);
   return Estimate{std::move(result.log), std::move(result.estimate), std::move(result.paper)};
 }
 

@@ -154,6 +154,29 @@ TEST_F(Estimate, OneLogBesideThePapersValueForItsMaterial) {
   EXPECT_NE(cold.err.find("the paper measured Iron at 300 K only"), std::string::npos) << cold.err;
 }
 
+// A geometry given that the log contradicts is said before the result, with the numbers the log
+// gives read as it shows itself: a one-pulse log given as pairs would quarter mu_k unsaid.
+TEST_F(Estimate, AGeometryTheLogContradictsIsSaid) {
+  const std::string one = write_csv("one.csv", test::generate(rig()), "t_us,adc", false);
+  const test::CommandResult pair = lab(one + " --geometry pair");
+  ASSERT_EQ(pair.status, 0) << pair.err;
+  EXPECT_NE(pair.err.find("warning: --geometry pair: the log shows one pulse per period"),
+            std::string::npos)
+      << pair.err;
+  EXPECT_NE(pair.err.find("T = 0.79"), std::string::npos) << pair.err;
+  test::HallSignal passes = rig();
+  passes.sensor_offset_m = -0.012;  // the magnet passes the sensor and comes back: a pair
+  const std::string two = write_csv("two.csv", test::generate(passes), "t_us,adc", false);
+  // A pair given as one: the alternating intervals fit no period, and the error says which to
+  // give.
+  const test::CommandResult forced = lab(two + " --geometry one");
+  EXPECT_EQ(forced.status, 2);
+  EXPECT_NE(forced.err.find("give --geometry pair"), std::string::npos) << forced.err;
+  // Given as it is: nothing said.
+  EXPECT_EQ(lab(one + " --geometry one").err.find("warning"), std::string::npos);
+  EXPECT_EQ(lab(two + " --geometry pair").err.find("warning"), std::string::npos);
+}
+
 TEST_F(Estimate, PrintsAReadableSummary) {
   const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
   const test::CommandResult r = lab(log);

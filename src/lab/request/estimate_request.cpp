@@ -238,6 +238,29 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   require_periods(out.log, out.estimate, plot_note);
   out.check = check_geometry(out.log, out.estimate);
   require_geometry(out.log, out.estimate, out.check, plot_note);
+  // A geometry given that the log contradicts: the log looked at as if none had been given.
+  if (set_up.geometry != fl_estimator::kAutoGeometry) {
+    LogSetUp open = set_up;
+    open.geometry = fl_estimator::kAutoGeometry;
+    const LogEstimate seen = estimate_log(out.log, open, false);
+    const GeometryCheck look = check_geometry(out.log, seen);
+    const bool one_seen = seen.geometry == fl_estimator::kOnePulse && look.verdict == "turn";
+    const bool pair_seen =
+        seen.geometry == fl_estimator::kPulsePair ||
+        (seen.geometry == fl_estimator::kOnePulse && look.verdict == "alternating");
+    const bool given_pair = set_up.geometry == fl_estimator::kPulsePair;
+    if ((given_pair && one_seen) || (!given_pair && pair_seen))
+      out.warnings.push_back(fmt::format(
+          "{}: the log shows {}: T = {:.6f} s and mu_k = {:.4f} read so, against {:.6f} s and "
+          "{:.4f} as given; drop {} unless you know the rig gives {} a period",
+          field_ref("geometry", given_pair ? "pair" : "one"),
+          given_pair ? "one pulse per period (evenly spaced pulses shaped like a turn at the "
+                       "sensor)"
+                     : "a pair of pulses per period",
+          seen.stats.period_s, seen.stats.mu_k, out.estimate.stats.period_s,
+          out.estimate.stats.mu_k, field_ref("geometry", given_pair ? "pair" : "one"),
+          given_pair ? "two pulses" : "one pulse"));
+  }
   // The paper's value for the material the request or the log's sidecar names.
   std::optional<std::string> material = p.material;
   std::optional<double> temperature = p.temperature;

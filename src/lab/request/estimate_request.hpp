@@ -87,6 +87,9 @@ struct OneLogEstimate {
   LogEstimate estimate;
   GeometryCheck check;
   std::string sidecar_note;  // what the log's sidecar set, if it had one
+  // What the front end says before the result: a geometry given that the log contradicts
+  // (field_ref mentions, for the front end to spell).
+  std::vector<std::string> warnings;
   std::optional<AnalyticReport> monte_carlo;
   std::string plot;  // the PNGs drawn
   std::string mc_plot;

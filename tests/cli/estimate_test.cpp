@@ -177,6 +177,26 @@ TEST_F(Estimate, AGeometryTheLogContradictsIsSaid) {
   EXPECT_EQ(lab(two + " --geometry pair").err.find("warning"), std::string::npos);
 }
 
+// A time column read in the wrong unit: a log named in seconds whose times are milliseconds
+// shows no pulse (5999 s of one sample a second), one named in microseconds gives T = 0.79 ms and
+// mu_k 286944. Both are refused, saying the unit that makes the log a rig's, which then works.
+TEST_F(Estimate, ATimeReadInTheWrongUnitIsRefusedNamingTheUnitThatFits) {
+  const test::HallSamples samples = test::generate(rig());
+  std::string text;
+  for (std::size_t i = 0; i < samples.adc.size(); ++i)
+    text += std::to_string(samples.t_us[i] / 1000) + "," + std::to_string(samples.adc[i]) + "\n";
+  const std::string as_seconds = write("seconds.csv", "t_s,adc\n" + text);
+  const std::string as_micros = write("micros.csv", "t_us,adc\n" + text);
+  for (const std::string& log : {as_seconds, as_micros}) {
+    const test::CommandResult r = lab(log);
+    EXPECT_EQ(r.status, 2) << log;
+    EXPECT_NE(r.err.find("if its time is in ms, give --time-unit ms"), std::string::npos) << r.err;
+    const nlohmann::json fixed = json(log + " --time-unit ms");
+    EXPECT_NEAR(fixed["period_s"].get<double>(), 0.79, 2e-3) << log;
+  }
+  EXPECT_NE(lab(as_micros).err.find("mu_k = 2"), std::string::npos);
+}
+
 TEST_F(Estimate, PrintsAReadableSummary) {
   const std::string log = write_csv("hall.csv", test::generate(rig()), "t_us,adc", false);
   const test::CommandResult r = lab(log);

@@ -1,5 +1,7 @@
 #include "lab/logs/log_estimate.hpp"
 
+#include "core/plausible_range.hpp"
+
 #include <algorithm>
 #include <limits>
 
@@ -110,8 +112,46 @@ LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces
   return out;
 }
 
-void require_periods(const HallLog& log, const LogEstimate& est, const std::string& note) {
+std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
+  const HallLogReading& r = log.reading;
+  if (r.time_unit.empty() || r.time_unit_from == "inferred" || !(est.sample_rate > 0.0)) return "";
+  constexpr double kLeast = 20.0;  // Hz: the slowest a rig's Arduino samples a Hall sensor
+  constexpr double kMost = 2e4;    // Hz: the fastest an Uno's ADC goes
+  if (est.sample_rate >= kLeast && est.sample_rate <= kMost) return "";
+  const auto seconds = [](const std::string& unit) {
+    return unit == "us" ? 1e-6 : unit == "ms" ? 1e-3 : 1.0;
+  };
+  for (const char* unit : {"us", "ms", "s"}) {
+    if (unit == r.time_unit) continue;
+    const double rate = est.sample_rate * seconds(r.time_unit) / seconds(unit);
+    if (rate >= kLeast && rate <= kMost)
+      return fmt::format(
+          "; the samples come {:.4g} a second read in {} ({}), where a rig samples 20 to 20000 a "
+          "second: if its time is in {}, give {}",
+          est.sample_rate, r.time_unit,
+          r.time_unit_from == "header" ? "as the header names it" : "as given", unit,
+          field_ref("time_unit", unit));
+  }
+  return "";
+}
+
+void require_plausible(const HallLog& log, const LogEstimate& est, const std::string& note) {
   const fl_estimator::Stats& s = est.stats;
+  const std::optional<std::string> period = implausible(s.period_s, kPeriodRange);
+  const std::optional<std::string> mu_k = implausible(s.mu_k, kMuKRange);
+  if (!period && !mu_k) return;
+  throw InputError(
+      SourceLocation{log.path, log.line.front(), 0},
+      fmt::format("T = {:.6g} s and mu_k = {:.6g} are no rig's ({}){}; nothing is "
+                  "computed from them{}",
+                  s.period_s, s.mu_k, period ? *period : *mu_k, time_unit_hint(log, est), note));
+}
+
+void require_periods(const HallLog& log, const LogEstimate& est, const std::string& note_given) {
+  const fl_estimator::Stats& s = est.stats;
+  // A time read in the wrong unit makes pulses look absent or a period absurd: say which unit
+  // would make the log a rig's.
+  const std::string note = time_unit_hint(log, est) + note_given;
   const SourceLocation first{log.path, log.line.front(), 0};
   const double duration = est.duration;
   if (est.pulses.empty()) {

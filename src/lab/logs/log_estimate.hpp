@@ -56,6 +56,16 @@ LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces
 // message (e.g. where a plot shows the signal).
 void require_periods(const HallLog& log, const LogEstimate& estimate, const std::string& note);
 
+// Throws InputError when the estimate's T or mu_k is beyond any bench (core/plausible_range.hpp):
+// a time read in the wrong unit (the unit that would make it a rig's said), never a number to
+// print.
+void require_plausible(const HallLog& log, const LogEstimate& estimate, const std::string& note);
+
+// "; if its time is in ms, give ⟦time_unit=ms⟧" when the log's time, read in the unit its header
+// or the request names, makes its sample rate no rig's (20 Hz to 20 kHz) and another unit would
+// not; "" otherwise.
+std::string time_unit_hint(const HallLog& log, const LogEstimate& estimate);
+
 // "accepted", "outlier", "broken"; "one-pulse", "pair", "unknown".
 const char* period_status_name(std::uint8_t status);
 const char* geometry_name(fl_estimator::Geometry geometry);

@@ -74,6 +74,7 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
     const LogEstimate est = estimate_log(hall, row.set_up, false);
     require_periods(hall, est, "");
     require_geometry(hall, est, check_geometry(hall, est), "");
+    require_plausible(hall, est, "");
     const fl_estimator::Stats& s = est.stats;
     row.status = "ok";
     row.geometry = geometry_name(est.geometry);

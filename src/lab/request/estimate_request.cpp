@@ -238,6 +238,7 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   require_periods(out.log, out.estimate, plot_note);
   out.check = check_geometry(out.log, out.estimate);
   require_geometry(out.log, out.estimate, out.check, plot_note);
+  require_plausible(out.log, out.estimate, plot_note);
   // A geometry given that the log contradicts: the log looked at as if none had been given.
   if (set_up.geometry != fl_estimator::kAutoGeometry) {
     LogSetUp open = set_up;

@@ -235,6 +235,7 @@ int follow_rig(const FollowRequest& request) {
   require_periods(log, est, note);
   const GeometryCheck check = check_geometry(log, est);
   require_geometry(log, est, check, note);
+  require_plausible(log, est, note);
   if (request.json) {
     nlohmann::json out = estimate_json(log, est, request.plot);
     out["raw_log"] =

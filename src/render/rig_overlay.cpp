@@ -36,18 +36,6 @@ std::string measured_text(const Measured& m) {
 
 const Color kLearning{0.62f, 0.66f, 0.72f, 1.0f};  // a pulse the estimator learned from
 
-// "1st", "2nd", "3rd", "4th", ...
-std::string ordinal(int n) {
-  const int tens = n % 100;
-  const char* suffix = "th";
-  if (tens < 11 || tens > 13) {
-    if (n % 10 == 1) suffix = "st";
-    if (n % 10 == 2) suffix = "nd";
-    if (n % 10 == 3) suffix = "rd";
-  }
-  return std::to_string(n) + suffix;
-}
-
 std::string plural(int n, const char* word) {
   return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s");
 }
@@ -240,11 +228,11 @@ ResultsText results_text(const RigOverlayState& state) {
   if (!e.signal_learned)
     out.detail = "learning the signal from its first pulses";
   else if (!e.geometry_known)
-    out.detail = fmt::format("{} so far, waiting for the {} timed", plural(shown, "pulse"),
-                             ordinal(e.pulses + 1));
+    out.detail = fmt::format("{} seen, {} timed: 5 timed tell one pulse a period from two",
+                             plural(shown, "pulse"), e.pulses);
   else
-    out.detail = fmt::format("{} so far, waiting for a period that passes the checks",
-                             plural(shown, "pulse"));
+    out.detail =
+        fmt::format("{} seen; no period has passed the checks yet", plural(shown, "pulse"));
   return out;
 }
 
@@ -296,10 +284,10 @@ void draw_value_axis(Overlay& o, const Rect& area, float s, double bottom, doubl
 std::string format_plus_minus(double value, double uncertainty) {
   int decimals = 3;
   if (uncertainty > 0.0 && std::isfinite(uncertainty)) {
-    const double exponent = std::floor(std::log10(uncertainty));
-    const double leading = uncertainty / std::pow(10.0, exponent);
-    decimals = static_cast<int>(-exponent) + (leading < 2.95 ? 1 : 0);
-    decimals = std::clamp(decimals, 0, 6);
+    // One significant digit, after rounding (0.00096 is 0.001, not 0.0010).
+    double exponent = std::floor(std::log10(uncertainty));
+    if (std::round(uncertainty / std::pow(10.0, exponent)) >= 10.0) exponent += 1.0;
+    decimals = std::clamp(static_cast<int>(-exponent), 0, 6);
   }
   return fmt::format("{:.{}f} \xc2\xb1 {:.{}f}", value, decimals, uncertainty, decimals);
 }

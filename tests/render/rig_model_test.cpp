@@ -400,7 +400,7 @@ TEST(RigOverlay, TheEndCardGivesThePeriodMuKAndTheStop) {
   const TitleCard card = make_end_card(state, "theory: T = 0.7766 s", "");
   EXPECT_EQ(card.subtitle, "T = 0.7767 \xc2\xb1 0.0004 s  (N = 12)");
   ASSERT_GE(card.lines.size(), 3u);
-  EXPECT_EQ(card.lines[0], "\xce\xbc\xe2\x82\x96 = 0.290 \xc2\xb1 0.011");
+  EXPECT_EQ(card.lines[0], "\xce\xbc\xe2\x82\x96 = 0.29 \xc2\xb1 0.01");
   EXPECT_EQ(card.lines[1], "theory: T = 0.7766 s");
   const TitleCard stopped = make_end_card(state, "", "stopped at t = 1.200 s: the plate fell");
   EXPECT_EQ(stopped.lines.back(), "stopped at t = 1.200 s: the plate fell");
@@ -429,7 +429,9 @@ TEST(RigModel, PosesInterpolatePartByPart) {
 TEST(RigOverlay, ValuesCarryTheirUncertaintysDigits) {
   EXPECT_EQ(format_plus_minus(0.7941, 0.0062), "0.794 \xc2\xb1 0.006");
   EXPECT_EQ(format_plus_minus(0.2856, 0.031), "0.29 \xc2\xb1 0.03");
-  EXPECT_EQ(format_plus_minus(0.79412, 0.0012), "0.7941 \xc2\xb1 0.0012");
+  EXPECT_EQ(format_plus_minus(0.79412, 0.0012), "0.794 \xc2\xb1 0.001");
+  EXPECT_EQ(format_plus_minus(1.26449, 0.00018), "1.2645 \xc2\xb1 0.0002");
+  EXPECT_EQ(format_plus_minus(0.79412, 0.00096), "0.794 \xc2\xb1 0.001");  // rounded first
   EXPECT_EQ(format_plus_minus(12.3, 0.0), "12.300 \xc2\xb1 0.000");
 }
 
@@ -467,10 +469,10 @@ TEST(RigOverlay, TheResultsSayWhatIsMeasuredOrAwaited) {
   e.signal_learned = true;
   e.learning_pulses = 2;
   text = results_text(state);
-  EXPECT_EQ(text.detail, "2 pulses so far, waiting for the 1st timed");
+  EXPECT_EQ(text.detail, "2 pulses seen, 0 timed: 5 timed tell one pulse a period from two");
   e.pulses = 1;
   text = results_text(state);
-  EXPECT_EQ(text.detail, "3 pulses so far, waiting for the 2nd timed");
+  EXPECT_EQ(text.detail, "3 pulses seen, 1 timed: 5 timed tell one pulse a period from two");
   // Two timed pulses: one period, shown alone (no spread to show, never "± 0").
   e.pulses = 2;
   e.provisional_periods = 1;
@@ -503,7 +505,7 @@ TEST(RigOverlay, TheResultsSayWhatIsMeasuredOrAwaited) {
   e.period_std = 0.00017;
   e.periods_discarded = 1;
   text = results_text(state);
-  EXPECT_EQ(text.period, "T = 0.77670 \xc2\xb1 0.00017 s");
+  EXPECT_EQ(text.period, "T = 0.7767 \xc2\xb1 0.0002 s");  // to its uncertainty's digit
   EXPECT_EQ(text.note, "(N = 4, 1 discarded)");
   // Geometry known but every period refused so far.
   e.periods = 0;
@@ -512,7 +514,7 @@ TEST(RigOverlay, TheResultsSayWhatIsMeasuredOrAwaited) {
   e.provisional_periods = 0;
   text = results_text(state);
   EXPECT_EQ(text.period, "T: measuring\xe2\x80\xa6");
-  EXPECT_EQ(text.detail, "5 pulses so far, waiting for a period that passes the checks");
+  EXPECT_EQ(text.detail, "5 pulses seen; no period has passed the checks yet");
   state.has_sensor = false;
   EXPECT_EQ(results_text(state).period, "no sensor: no period measured");
 }

@@ -97,6 +97,29 @@ std::vector<std::string> wrap_text(std::string_view text, float max_width,
   return lines;
 }
 
+FittedText fit_text(Overlay& o, std::string_view text, float max_width, float largest,
+                    float smallest, float scale, std::size_t most_lines) {
+  FittedText out;
+  for (float size = largest;; size -= 1.0f) {
+    out.pixel_size = size * scale;
+    const auto width_of = [&](std::string_view t) {
+      return o.measure_text(t, out.pixel_size).width;
+    };
+    out.lines = wrap_text(text, max_width, width_of);
+    if (out.lines.size() <= most_lines || size <= smallest) {
+      if (out.lines.size() > most_lines) {
+        out.lines.resize(most_lines);
+        std::string_view last = out.lines.back();
+        while (!last.empty() && width_of(std::string(last) + std::string(kEllipsis)) > max_width)
+          last = drop_last(last);
+        while (!last.empty() && last.back() == ' ') last.remove_suffix(1);
+        out.lines.back() = std::string(last) + std::string(kEllipsis);
+      }
+      return out;
+    }
+  }
+}
+
 CaptionLayout layout_caption(Overlay& o, int width, int height, std::string_view text) {
   CaptionLayout layout;
   const float s = overlay_scale(width, height);
@@ -105,24 +128,9 @@ CaptionLayout layout_caption(Overlay& o, int width, int height, std::string_view
   const float h = static_cast<float>(height);
   const float max_width = std::min(kWidest * s, w - 2.0f * (kPadX + 8.0f) * s);
   // The largest size (in steps of a pixel at 640x360) that keeps the text to three lines.
-  for (float size = kLargest;; size -= 1.0f) {
-    layout.pixel_size = size * s;
-    const auto width_of = [&](std::string_view t) {
-      return o.measure_text(t, layout.pixel_size).width;
-    };
-    layout.lines = wrap_text(text, max_width, width_of);
-    if (layout.lines.size() <= kCaptionLines || size <= kSmallest) {
-      if (layout.lines.size() > kCaptionLines) {
-        layout.lines.resize(kCaptionLines);
-        std::string_view last = layout.lines.back();
-        while (!last.empty() && width_of(std::string(last) + std::string(kEllipsis)) > max_width)
-          last = drop_last(last);
-        while (!last.empty() && last.back() == ' ') last.remove_suffix(1);
-        layout.lines.back() = std::string(last) + std::string(kEllipsis);
-      }
-      break;
-    }
-  }
+  FittedText fitted = fit_text(o, text, max_width, kLargest, kSmallest, s, kCaptionLines);
+  layout.pixel_size = fitted.pixel_size;
+  layout.lines = std::move(fitted.lines);
   if (layout.lines.empty()) return layout;  // nothing but spaces
   float widest = 0.0f;
   for (const std::string& line : layout.lines)

@@ -29,6 +29,17 @@ std::optional<std::string> caption_at(std::span<const Caption> captions, double 
 std::vector<std::string> wrap_text(std::string_view text, float max_width,
                                    const std::function<float(std::string_view)>& width_of);
 
+// Text fitted to at most `most_lines` lines of `max_width`: the largest size, in steps of
+// `scale` pixels from `largest` x scale down to `smallest` x scale, that keeps it to that many
+// lines; at the smallest, the lines beyond cut and the last ended with "…". (Captions and the
+// title card's title.)
+struct FittedText {
+  float pixel_size = 0.0f;
+  std::vector<std::string> lines;
+};
+FittedText fit_text(Overlay& overlay, std::string_view text, float max_width, float largest,
+                    float smallest, float scale, std::size_t most_lines);
+
 // Where and how large a caption is drawn in a width x height frame.
 struct CaptionLayout {
   float pixel_size = 0.0f;         // the text's

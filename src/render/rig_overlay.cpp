@@ -1,5 +1,7 @@
 #include "render/rig_overlay.hpp"
 
+#include "render/caption_overlay.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -456,10 +458,14 @@ void draw_title_card(Overlay& o, int width, int height, const TitleCard& card, f
     return c;
   };
   float y = h * 0.16f;
-  // A long title (run --title) shrinks to the frame's width less a margin.
-  const float title_width = o.measure_text(card.title, 28 * s).width;
-  const float title_size = 28 * s * std::min(1.0f, (w - 32 * s) / std::max(1.0f, title_width));
-  o.text(card.title, Eigen::Vector2f(w / 2, y), title_size, faded(kWhite), TextAlign::kCenter);
+  // A long title (run --title) wraps to three lines at most, then shrinks to fit them (28 px
+  // to 10 px at 640x360).
+  const FittedText title = fit_text(o, card.title, w - 32 * s, 28.0f, 10.0f, s, 3);
+  for (std::size_t i = 0; i < title.lines.size(); ++i) {
+    if (i > 0) y += title.pixel_size * 1.25f;
+    o.text(title.lines[i], Eigen::Vector2f(w / 2, y), title.pixel_size, faded(kWhite),
+           TextAlign::kCenter);
+  }
   y += 40 * s;
   o.text(card.subtitle, Eigen::Vector2f(w / 2, y), 18 * s, faded(kTrace), TextAlign::kCenter);
   y += 34 * s;

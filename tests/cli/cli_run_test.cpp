@@ -144,6 +144,9 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
            Case{"run " + kMinimal + " --video /proc/x.mp4", "--video /proc/x.mp4: error:"},
            Case{"analytic --material lego --mc 1000 --plot /proc/x.png",
                 "--plot /proc/x.png: error:"},
+           // A title no card shows legibly.
+           Case{"run " + kMinimal + " --video " + file + ".gif --title " + std::string(201, 'a'),
+                "--title: error: expected a title of at most 200 characters"},
            // The still is a PNG, and its name says so.
            Case{"run " + kMinimal + " --still " + file + ".jpg",
                 "--still: error: expected a .png file (the still is a PNG image), found \".jpg\""},

@@ -113,5 +113,28 @@ TEST(LayoutCaption, LongTextShrinksToTwelvePixelsThenIsCutWithAnEllipsis) {
   }
 }
 
+// The title card's title (run --title, at most 200 characters): one line at 28 px when it fits,
+// else wrapped to three lines at most and shrunk until they fit a 640-pixel frame's 608 px.
+TEST(FitText, ATitleWrapsToThreeLinesThenShrinks) {
+  if (!kHasRender) GTEST_SKIP() << "a build without rendering has no font";
+  Overlay overlay;
+  const FittedText short_title = fit_text(overlay, "Friction, live", 608.0f, 28.0f, 10.0f, 1.0f, 3);
+  EXPECT_EQ(short_title.pixel_size, 28.0f);
+  EXPECT_EQ(short_title.lines, std::vector<std::string>{"Friction, live"});
+  std::string longest;
+  while (longest.size() + 10 <= 200) longest += "friction ";
+  const FittedText fitted = fit_text(overlay, longest, 608.0f, 28.0f, 10.0f, 1.0f, 3);
+  EXPECT_LE(fitted.lines.size(), 3u);
+  EXPECT_GE(fitted.lines.size(), 2u);
+  EXPECT_LT(fitted.pixel_size, 28.0f);
+  EXPECT_GE(fitted.pixel_size, 10.0f);
+  std::string joined;
+  for (const std::string& line : fitted.lines) {
+    EXPECT_LE(overlay.measure_text(line, fitted.pixel_size).width, 608.0f) << line;
+    joined += (joined.empty() ? "" : " ") + line;
+  }
+  EXPECT_EQ(joined + " ", longest);  // every word kept: no ellipsis at 200 characters
+}
+
 }  // namespace
 }  // namespace fl::render

@@ -12,6 +12,15 @@
 namespace fl {
 namespace {
 
+constexpr std::size_t kMostTitleCharacters = 200;
+
+// Characters, not bytes: UTF-8 continuation bytes are not counted.
+std::size_t characters(const std::string& text) {
+  std::size_t n = 0;
+  for (const char c : text) n += (static_cast<unsigned char>(c) & 0xC0) == 0x80 ? 0 : 1;
+  return n;
+}
+
 // A problem with a request's field (lab/request/run_request.hpp).
 void check(const std::string& field, const std::string& problem) {
   if (!problem.empty()) throw InputError(SourceLocation::of_field(field), problem);
@@ -46,6 +55,12 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
   if (request.title) {
     if (trim(*request.title).empty())
       check("title", "expected the title card's title, found an empty text");
+    // The card wraps a title to three lines and shrinks it to fit; beyond 200 characters no
+    // frame shows it legibly.
+    else if (characters(*request.title) > kMostTitleCharacters)
+      check("title", "expected a title of at most " + std::to_string(kMostTitleCharacters) +
+                         " characters (the card wraps it to three lines), found " +
+                         std::to_string(characters(*request.title)) + "; shorten it");
     v.title = true;
     v.title_text = *request.title;
   }

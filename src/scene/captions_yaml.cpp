@@ -72,6 +72,19 @@ std::vector<Caption> read_captions(const YamlNode& list) {
           fmt::format("a caption holds at most {} characters (three lines of subtitle), "
                       "found {}; split it into two captions",
                       kCaptionMaxCharacters, *characters));
+    for (std::size_t open = c.text.find('{'); open != std::string::npos;
+         open = c.text.find('{', open + 1)) {
+      const std::size_t close = c.text.find('}', open);
+      const std::string name =
+          close == std::string::npos ? c.text.substr(open) : c.text.substr(open, close - open + 1);
+      bool known = false;
+      for (const std::string_view p : kCaptionPlaceholders) known = known || name == p;
+      if (!known)
+        text.fail(
+            fmt::format("unknown placeholder \"{}\": a caption may name the run's {{mu_k}}, "
+                        "{{material}}, {{T}}, {{temperature}} and {{spacing}}",
+                        name));
+    }
     captions.push_back(std::move(c));
   }
   return captions;

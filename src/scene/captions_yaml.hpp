@@ -4,6 +4,9 @@
 // of the YAML list (the scene's `video.captions`, or a file given to `run --captions`).
 #pragma once
 
+#include <array>
+#include <string_view>
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -18,6 +21,11 @@ struct Caption {
   std::optional<double> until;  // s it goes; none: at the next caption's `at`, or the run's end
   std::string text;             // UTF-8; a line end starts a new line
 };
+
+// What a caption may name of the run, filled in before the frames are drawn
+// (lab/video/caption_values.hpp); any other {name} is refused.
+inline constexpr std::array<std::string_view, 5> kCaptionPlaceholders = {
+    "{mu_k}", "{material}", "{T}", "{temperature}", "{spacing}"};
 
 // The most characters (code points) a caption may hold: three lines of subtitle at 16:9.
 inline constexpr std::size_t kCaptionMaxCharacters = 200;

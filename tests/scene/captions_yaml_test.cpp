@@ -91,6 +91,21 @@ TEST(Captions, OutOfOrderOrOverlappingTimesAreRefusedAtTheirKey) {
   EXPECT_EQ(read("- {at: 1 s, until: 4 s, text: a}\n- {at: 4 s, text: b}\n").size(), 2u);
 }
 
+// A caption names the run's values by the placeholders the video fills in; any other {name} is
+// a typo, refused at its text.
+TEST(Captions, OnlyTheRunsPlaceholdersAreTaken) {
+  EXPECT_EQ(error_of("- {at: 0 s, text: \"{material}: mu_k {mu_k}, T {T}, {temperature}, "
+                     "{spacing}\"}\n"),
+            "");
+  const std::string typo = error_of("- {at: 0 s, text: \"mu_k {muk}\"}\n");
+  EXPECT_NE(typo.find("[0].text: unknown placeholder \"{muk}\": a caption may name the run's "
+                      "{mu_k}"),
+            std::string::npos)
+      << typo;
+  EXPECT_NE(error_of("- {at: 0 s, text: \"a { b\"}\n").find("unknown placeholder \"{ b\""),
+            std::string::npos);
+}
+
 TEST(Captions, NegativeTimesMissingUnitsAndEmptyTextAreRefused) {
   const std::string negative = error_of("- {at: -1 s, text: a}\n");
   EXPECT_NE(negative.find("c.yaml:1:8: error: [0].at: expected a simulated time of 0 s or later"),

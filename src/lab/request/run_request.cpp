@@ -1,4 +1,5 @@
 #include "lab/request/run_request.hpp"
+#include "lab/video/caption_values.hpp"
 
 #include <cctype>
 #include <filesystem>
@@ -159,8 +160,13 @@ PreparedRun prepare_run(const RunRequest& r) {
   if (!r.video.empty()) prepare_output_file(r.video, "video");
   if (!r.still.empty()) prepare_output_file(r.still, "still");
   if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
+  std::vector<std::string> caption_warnings;
   if (r.draws_frames()) {
     out.video = effective_video(scene, frames);  // the settings against the scene's, by field
+    // Narration that cannot lie: the run's own values in, and what contradicts them said.
+    const PaperTable& table = paper_table_in(asset_dir(loaded.source.asset_dir));
+    out.video.captions = filled_captions(std::move(out.video.captions), rig, table);
+    caption_warnings = caption_contradictions(out.video.captions, rig, table);
     frames.asset_dir = asset_dir(loaded.source.asset_dir);
     out.frames = std::move(frames);
   }
@@ -169,6 +175,7 @@ PreparedRun prepare_run(const RunRequest& r) {
   out.plot = r.plot;
   out.record = r.record;
   out.warnings = checks.warnings();
+  out.warnings.insert(out.warnings.end(), caption_warnings.begin(), caption_warnings.end());
   return out;
 }
 

@@ -14,6 +14,7 @@
 #include "io/field_ref.hpp"
 #include "io/missing_component.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "lab/video/caption_values.hpp"
 #include "lab/video/video_module.hpp"
 #include "render/caption_overlay.hpp"
 #include "render/components.hpp"
@@ -67,12 +68,10 @@ int shadow_map_size(int height) {
   return size;
 }
 
-// How the material is called in the paper's table ("LEGO blocks"), else its key.
+// How the material is called in the paper's table ("LEGO blocks"), its look told from its
+// friction where they differ (lab/video/caption_values.hpp).
 std::string material_name(const CompiledRig& rig, const std::string& asset_dir) {
-  if (!rig.friction_source.paper_material) return rig.plate_desc.material;
-  const PaperTable table = load_paper_table(paper_table_path(asset_dir));
-  const PaperMaterial* row = table.find(*rig.friction_source.paper_material);
-  return row != nullptr ? row->name : rig.plate_desc.material;
+  return run_material_name(rig, load_paper_table(paper_table_path(asset_dir)));
 }
 
 // The engine's state is this file's alone (the module hands out only VideoEngine).

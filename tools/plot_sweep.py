@@ -4,9 +4,9 @@
   period-vs-spacing.png  T +- dT against the roller spacing l, the analytic thin and thick curves
                          over it, and the error against the thick curve below (when l varies)
   mu-recovered.png       mu_k recovered (thin and thick formulas) against mu_k set (when mu_k varies)
-  roller-speed.png       amplitude and period against the rollers' speed, by regime, with the
-                         analytic slip threshold (when the roller speed varies across points by
-                         more than 1 %)
+  roller-speed.png       amplitude and period against the rollers' speed, coloured by regime, a
+                         marker for each series of the other axes, with the analytic slip
+                         threshold (when the roller speed varies across points by more than 1 %)
   runout.png             the highest jump, the share of the periods the rig's estimator discarded
                          and the period's error against the rollers' run-out, with theory's hop
                          threshold (when rollers.runout varies)
@@ -14,7 +14,8 @@
                          the ramp's way down and way up apart, with theory's slip threshold
                          (when the sweep recorded cycles: OUTDIR/cycles/*.csv)
   map.png                the error against the thick curve over the first two axes, regimes marked
-                         (when two axes have more than one value)
+                         and named in a legend, values spanning decades evenly spaced (when two
+                         axes have more than one value)
   axis.png               the period against the only axis (when none of the above applies)
 
 Usage: plot_sweep.py results.csv sweep.json OUTDIR"""
@@ -31,8 +32,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import atomic_png  # noqa: E402
 
-REGIME_COLOURS = {"oscillates": "tab:blue", "sticks": "tab:orange", "tips": "tab:red",
-                  "no restoring force": "tab:purple", "lost": "tab:brown"}
+# One colour for each regime a run can show (src/core/regime.cpp), so that no two share grey.
+REGIME_COLOURS = {"oscillates": "tab:blue", "clipped": "tab:cyan", "stick-slip": "tab:olive",
+                  "grows": "tab:pink", "decays": "tab:green", "sticks": "tab:orange",
+                  "tips": "tab:red", "no restoring force": "tab:purple", "lost": "tab:brown",
+                  "numerically failed": "black", "unknown": "grey"}
+# One marker for each series of points (the values of the axes a plot does not show).
+SERIES_MARKERS = ["o", "s", "^", "D", "v", "P", "X", "<", ">", "*"]
 
 
 def number(row, key):
@@ -132,24 +138,53 @@ def plot_mu(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "mu-recovered.png"))
 
 
+def series_of(rows, axes, shown):
+    """The rows split by the values of the axes a plot does not show: {label: rows}, and the
+    legend's handles for the series (markers) and the regimes (colours) drawn after."""
+    series = {}
+    for r in rows:
+        key = group_key(r, axes, shown)
+        label = ", ".join(f"{a['name']} {r[a['name']]}" for a in axes if a["name"] not in shown)
+        series.setdefault((key, label), []).append(r)
+    return {label: members for (_, label), members in sorted(series.items())}
+
+
+def legend_by_regime_and_series(ax, regimes, series_labels, extra=()):
+    """A legend with a colour for each regime and a marker for each series."""
+    handles = [plt.Line2D([], [], ls="", marker="o", color=REGIME_COLOURS.get(g, "grey"), label=g)
+               for g in regimes]
+    if len(series_labels) > 1:
+        handles += [plt.Line2D([], [], ls="", marker=SERIES_MARKERS[n % len(SERIES_MARKERS)],
+                               color="k", mfc="none", label=label)
+                    for n, label in enumerate(series_labels)]
+    ax.legend(handles=handles + list(extra), fontsize=7)
+
+
 def plot_roller_speed(rows, meta, out):
     rpm = 60 / (2 * math.pi)
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    for regime in sorted({r["regime"] for r in rows if r["regime"]}):
-        members = [r for r in rows if r["regime"] == regime]
-        colour = REGIME_COLOURS.get(regime, "grey")
-        top.plot([number(r, "roller_speed_rad_s") * rpm for r in members],
-                 [1e3 * (number(r, "amplitude_end_m") or float("nan")) for r in members], "o", ms=4,
-                 color=colour, label=regime)
-        with_period = [r for r in members if number(r, "period_s")]
-        bottom.plot([number(r, "roller_speed_rad_s") * rpm for r in with_period],
-                    [number(r, "period_s") for r in with_period], "o", ms=4, color=colour, label=regime)
+    speed_axes = [a["name"] for a in meta["axes"] if a.get("key") == "rollers.speed"]
+    series = series_of(rows, meta["axes"], speed_axes)
+    for n, members in enumerate(series.values()):
+        marker = SERIES_MARKERS[n % len(SERIES_MARKERS)]
+        for r in members:
+            colour = REGIME_COLOURS.get(r["regime"], "grey")
+            x = number(r, "roller_speed_rad_s") * rpm
+            top.plot([x], [1e3 * (number(r, "amplitude_end_m") or float("nan"))], marker, ms=5,
+                     color=colour)
+            if number(r, "period_s"):
+                bottom.plot([x], [number(r, "period_s")], marker, ms=5, color=colour)
+        # Each series' points joined, so a series reads as one line across the regimes.
+        ordered = sorted(members, key=lambda r: number(r, "roller_speed_rad_s"))
+        top.plot([number(r, "roller_speed_rad_s") * rpm for r in ordered],
+                 [1e3 * (number(r, "amplitude_end_m") or float("nan")) for r in ordered], "-",
+                 color="grey", lw=0.6, alpha=0.6)
+    regimes = sorted({r["regime"] for r in rows if r["regime"]})
     thresholds = sorted(t for t in (number(r, "slip_threshold_rad_s") for r in rows) if t)
     if thresholds:
         t = thresholds[len(thresholds) // 2] * rpm
         for ax in (top, bottom):
             ax.axvline(t, color="k", ls="--", lw=1)
-        top.plot([], [], "k--", lw=1, label=f"slip condition a ω_r = A ω: {t:.0f} rpm")
     thick = sorted(t for t in (number(r, "period_thick_s") for r in rows) if t)
     if thick:
         bottom.axhline(thick[len(thick) // 2], color="k", lw=0.8, alpha=0.6, label="thick-plate T")
@@ -157,13 +192,16 @@ def plot_roller_speed(rows, meta, out):
     if axis and axis.get("scale") == "log":
         top.set_xscale("log")
     top.set_ylabel("amplitude at the end [mm]")
-    top.set_title(f"{meta['sweep']}: the slip threshold")
+    top.set_title(f"{meta['sweep']}: the slip threshold (colour: regime; marker: series)")
     top.grid(True, which="both", alpha=0.3)
-    top.legend(fontsize=8)
+    slip = [plt.Line2D([], [], color="k", ls="--", lw=1, label=f"slip condition a ω_r = A ω: {t:.0f} rpm")] \
+        if thresholds else []
+    legend_by_regime_and_series(top, regimes, list(series), slip)
     bottom.set_xlabel("roller speed [rpm]")
     bottom.set_ylabel("period T [s] (oscillating runs)")
     bottom.grid(True, which="both", alpha=0.3)
-    bottom.legend(fontsize=8)
+    if thick:
+        bottom.legend(fontsize=8)
     fig.tight_layout()
     atomic_png.save(fig, os.path.join(out, "roller-speed.png"))
 
@@ -294,16 +332,24 @@ def plot_cycles(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "cycles.png"))
 
 
-def axis_positions(axis):
+def axis_positions(axis, even_over_decades=False):
+    """Each value's place on the plot's axis: its number, or (for texts, and with
+    even_over_decades for numbers spanning more than a factor 10 on a linear axis, which would
+    crowd all but the largest into a corner) its index, evenly spaced. Returns the places and
+    whether they are the numbers."""
     numbers = axis.get("numbers") or []
     if numbers and all(n is not None for n in numbers):
-        return {v: n for v, n in zip(axis["values"], numbers)}, True
+        positive = [n for n in numbers if n > 0]
+        spread = (len(positive) == len(numbers) and max(positive) > 10 * min(positive))
+        if not (even_over_decades and spread and axis.get("scale") != "log"):
+            return {v: n for v, n in zip(axis["values"], numbers)}, True
     return {v: i for i, v in enumerate(axis["values"])}, False
 
 
 def plot_map(rows, meta, out, a, b):
-    xa, xnum = axis_positions(a)
-    ya, ynum = axis_positions(b)
+    # A map is a grid of the axes' values: evenly spaced where the values span decades.
+    xa, xnum = axis_positions(a, even_over_decades=True)
+    ya, ynum = axis_positions(b, even_over_decades=True)
     fig, ax = plt.subplots(figsize=(9, 5.5))
     xs = [xa[r[a["name"]]] for r in rows]
     ys = [ya[r[b["name"]]] for r in rows]
@@ -316,21 +362,35 @@ def plot_map(rows, meta, out, a, b):
         fig.colorbar(sc, ax=ax, label="T / T_thick − 1 [%]")
     else:  # no point gave a period (all failed, invalid, or too short): the points alone
         ax.scatter(xs, ys, s=90, marker="s", color="lightgrey")
-    for x, y, r in zip(xs, ys, rows):
+    others = set()
+    for x, y, e, r in zip(xs, ys, errs, rows):
+        if math.isnan(e) and r["regime"] == "oscillates" and r["status"] == "ok":
+            # Oscillating, with no error to colour (no period, or no thick-plate theory).
+            ax.scatter([x], [y], s=90, marker="s", color="lightgrey")
+            ax.annotate("?", (x, y), ha="center", va="center", fontsize=7, color="k")
+            others.add("oscillates, no error measured")
+            continue
         if r["regime"] != "oscillates" or r["status"] != "ok":
             mark = r["regime"] or r["status"]
-            ax.scatter([x], [y], s=90, marker="s", color=REGIME_COLOURS.get(r["regime"], "lightgrey"))
+            others.add(mark)
+            ax.scatter([x], [y], s=90, marker="s", color=REGIME_COLOURS.get(mark, "lightgrey"))
             ax.annotate(mark[:1], (x, y), ha="center", va="center", fontsize=7, color="white")
+    if others:
+        ax.legend(handles=[plt.Line2D([], [], ls="", marker="s", color=REGIME_COLOURS.get(m, "lightgrey"),
+                                      label=("?" if m.startswith("oscillates") else m[:1]) + f": {m}")
+                           for m in sorted(others)],
+                  fontsize=7, loc="upper left", bbox_to_anchor=(1.18, 1.0))
     ax.set_xlabel(a["name"] + (f" [{a['unit']}]" if xnum and a.get("unit") else ""))
     ax.set_ylabel(b["name"] + (f" [{b['unit']}]" if ynum and b.get("unit") else ""))
     if not xnum:
         ax.set_xticks(list(xa.values()), list(xa.keys()), rotation=30, ha="right", fontsize=8)
     if not ynum:
         ax.set_yticks(list(ya.values()), list(ya.keys()), fontsize=8)
-    if a.get("scale") == "log":
+    if xnum and a.get("scale") == "log":
         ax.set_xscale("log")
-    if b.get("scale") == "log":
+    if ynum and b.get("scale") == "log":
         ax.set_yscale("log")
+    ax.margins(0.08)
     ax.set_title(f"{meta['sweep']}: error against the thick-plate formula "
                  "(letters: regimes other than oscillating)")
     fig.tight_layout()

@@ -1,19 +1,16 @@
 #include "cli/estimate_follow.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "cli/estimate_report.hpp"
 #include "cli/stop_signals.hpp"
+#include "io/appending_file.hpp"
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
 #include "lab/logs/geometry_check.hpp"
@@ -21,39 +18,6 @@
 
 namespace fl::cli {
 namespace {
-
-// The lines received, written as they come: each line whole, with write(2) and no buffer, so
-// the file holds everything received up to any moment the capture ends, however it ends.
-class RawLog {
- public:
-  explicit RawLog(const std::string& path) : path_(path) {
-    if (path.empty()) return;
-    fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd_ < 0)
-      throw InputError(SourceLocation{path, 0, 0},
-                       std::string("--log: cannot write the raw log: ") + std::strerror(errno));
-  }
-  ~RawLog() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  RawLog(const RawLog&) = delete;
-  RawLog& operator=(const RawLog&) = delete;
-
-  void write(std::string_view bytes) {
-    while (fd_ >= 0 && !bytes.empty()) {
-      const ssize_t n = ::write(fd_, bytes.data(), bytes.size());
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0)
-        throw InputError(SourceLocation{path_, 0, 0},
-                         std::string("--log: cannot write the raw log: ") + std::strerror(errno));
-      bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-  }
-
- private:
-  std::string path_;
-  int fd_ = -1;
-};
 
 // The estimator run live on the samples as they come, with what it says printed at once.
 class LiveEstimate {
@@ -133,7 +97,9 @@ int follow_rig(const FollowRequest& request) {
   if (request.duration_s && !(*request.duration_s > 0.0))
     throw InputError({}, "--duration: expected a positive time, such as 30s");
   SerialPort port(request.port, static_cast<int>(request.baud));
-  RawLog raw(request.raw_log);
+  // The lines received, each written whole as it comes (io/appending_file.hpp).
+  std::optional<AppendingFile> raw;
+  if (!request.raw_log.empty()) raw.emplace(request.raw_log, "the raw log (--log)");
   // Messages locate lines in the raw log, which holds them as received.
   HallLogReader reader(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
   LiveEstimate live(request.set_up, request.json);
@@ -178,14 +144,14 @@ int follow_rig(const FollowRequest& request) {
     received += pending.size() - before;
     std::size_t done = 0;
     for (std::size_t end; (end = pending.find('\n', done)) != std::string::npos; done = end + 1) {
-      raw.write(std::string_view(pending).substr(done, end + 1 - done));
+      if (raw) raw->write(std::string_view(pending).substr(done, end + 1 - done));
       reader.add_line(std::string_view(pending).substr(done, end - done), ++number);
       take();
     }
     pending.erase(0, done);
   }
   if (!pending.empty()) {
-    raw.write(pending);
+    if (raw) raw->write(pending);
     reader.add_line(pending, ++number, true);
   }
   if (received == 0)

@@ -26,4 +26,8 @@ struct CsvTable {
 // or fewer fields than the header, a header with an empty or repeated name, no header at all.
 CsvTable parse_csv_table(std::string_view text, const std::string& file);
 
+// A text written as one CSV cell: quoted (its quotes doubled) when it holds a comma, a quote or a
+// line break, as itself otherwise.
+std::string csv_cell(std::string_view text);
+
 }  // namespace fl

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/plausible_range.hpp"
+#include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
 
 namespace fl {
@@ -12,7 +13,7 @@ std::string log_sidecar_path(const std::string& log) {
   return std::filesystem::path(log).replace_extension(".yaml").string();
 }
 
-std::optional<LogSidecar> read_log_sidecar(const std::string& log) {
+std::optional<LogSidecar> read_log_sidecar(const std::string& log, const PaperTable* materials) {
   const std::string path = log_sidecar_path(log);
   std::error_code ec;
   if (log == "-" || path == log || !std::filesystem::is_regular_file(path, ec)) return std::nullopt;
@@ -42,7 +43,11 @@ std::optional<LogSidecar> read_log_sidecar(const std::string& log) {
     if (const std::optional<std::string> why = implausible(*out.gravity, kGravityRange))
       n->fail(*why);
   }
-  if (auto n = root.find("material")) out.material = n->text();
+  if (auto n = root.find("material")) {
+    out.material = n->text();
+    if (materials != nullptr && materials->find(*out.material) == nullptr)
+      n->fail(unknown_material_message(*materials, *out.material));
+  }
   if (auto n = root.find("temperature"))
     out.temperature = positive(*n, Dimension::kTemperature, false);
   if (auto n = root.find("geometry")) {

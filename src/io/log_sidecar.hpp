@@ -14,6 +14,8 @@
 #include <optional>
 #include <string>
 
+#include "core/paper_table.hpp"
+
 namespace fl {
 
 struct LogSidecar {
@@ -31,7 +33,9 @@ struct LogSidecar {
 std::string log_sidecar_path(const std::string& log);
 
 // The log's sidecar, or nothing when the log has none. Throws InputError located in the sidecar
-// for an unknown key or a value of the wrong kind.
-std::optional<LogSidecar> read_log_sidecar(const std::string& log);
+// for an unknown key, a value of the wrong kind or beyond any bench, or (with `materials`) a
+// material the paper's table does not have.
+std::optional<LogSidecar> read_log_sidecar(const std::string& log,
+                                           const PaperTable* materials = nullptr);
 
 }  // namespace fl

@@ -18,4 +18,8 @@ std::string unknown_material_note(const PaperTable& table, std::string_view name
   return note;
 }
 
+std::string unknown_material_message(const PaperTable& table, std::string_view name) {
+  return "unknown material \"" + std::string(name) + "\"; " + unknown_material_note(table, name);
+}
+
 }  // namespace fl

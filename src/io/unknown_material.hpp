@@ -13,4 +13,8 @@ namespace fl {
 // question only when one key is close to `name`). Callers say first what was wrong.
 std::string unknown_material_note(const PaperTable& table, std::string_view name);
 
+// The whole message: "unknown material \"brasss\"; the paper's materials are ...; did you mean
+// 'brass'?".
+std::string unknown_material_message(const PaperTable& table, std::string_view name);
+
 }  // namespace fl

@@ -2,18 +2,12 @@
 
 #include <fmt/format.h>
 
+#include "io/csv_table.hpp"
+
 namespace fl::serve {
 namespace {
 
 using nlohmann::json;
-
-// A text cell, quoted when it holds a comma, a quote or a line break.
-std::string csv_text(const std::string& text) {
-  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
-  std::string out = "\"";
-  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + '"';
-}
 
 json or_null(const std::optional<double>& v) {
   return v ? json(*v) : json(nullptr);
@@ -74,7 +68,7 @@ std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table
   const auto cell = [](const json& v, double scale = 1.0) -> std::string {
     if (v.is_null()) return "";
     if (v.is_number()) return fmt::format("{:.10g}", v.get<double>() * scale);
-    return csv_text(v.get<std::string>());
+    return csv_cell(v.get<std::string>());
   };
   for (const ClassRow& row : rows) {
     const json r = row_json(row, table);

@@ -1,38 +1,24 @@
 #include "serve/rig_feed.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <ctime>
 #include <filesystem>
 
+#include <fmt/chrono.h>
 #include <fmt/format.h>
 
+#include "io/appending_file.hpp"
 #include "io/input_error.hpp"
 
 namespace fl::serve {
 namespace {
 
-// rig-YYYYMMDD-HHMMSS.log, local time: the name a class finds its capture by.
-std::string log_name_now() {
+// The local time now, for the log's name (the one a class finds its capture by) and messages.
+std::tm local_now() {
   const std::time_t now = std::time(nullptr);
   std::tm local{};
   ::localtime_r(&now, &local);
-  char text[32];
-  std::strftime(text, sizeof text, "rig-%Y%m%d-%H%M%S.log", &local);
-  return text;
-}
-
-std::string clock_now() {
-  const std::time_t now = std::time(nullptr);
-  std::tm local{};
-  ::localtime_r(&now, &local);
-  char text[16];
-  std::strftime(text, sizeof text, "%H:%M:%S", &local);
-  return text;
+  return local;
 }
 
 }  // namespace
@@ -66,10 +52,9 @@ void RigFeed::close() {
     status_.state = "closed";
     status_.message = std::nullopt;
   }
-  if (record_fd_ >= 0) {
-    ::fsync(record_fd_);
-    ::close(record_fd_);
-    record_fd_ = -1;
+  if (record_) {
+    record_->sync();
+    record_.reset();
   }
 }
 
@@ -90,7 +75,7 @@ void RigFeed::read_port() {
       end("unplugged",
           fmt::format("{} went away at {} (the board unplugged?): the {} lines received are "
                       "kept, download them below; plug the board in and connect again",
-                      status_.port, clock_now(), status_.lines));
+                      status_.port, fmt::format("{:%H:%M:%S}", local_now()), status_.lines));
       break;
     }
   }
@@ -102,7 +87,8 @@ bool RigFeed::lines_in(std::string* pending, bool ended) {
   std::size_t done = 0;
   const auto line = [&](std::string_view text, bool unfinished) {
     if (log_.size() + text.size() > most_log_bytes_) return false;
-    if (status_.log_name.empty()) status_.log_name = log_name_now();
+    if (status_.log_name.empty())
+      status_.log_name = fmt::format("rig-{:%Y%m%d-%H%M%S}.log", local_now());
     log_.append(text);
     record(text);
     ++status_.lines;
@@ -137,32 +123,21 @@ bool RigFeed::lines_in(std::string* pending, bool ended) {
   return true;
 }
 
-// The record file is opened with the first line; each line is written whole with write(2), no
-// buffer, so the file holds everything received up to any moment the server ends, however.
+// The record file is made with the first line (io/appending_file.hpp: each line written whole as
+// it comes, so it holds everything received however the server ends). Under the lock.
 void RigFeed::record(std::string_view bytes) {
-  if (record_dir_.empty()) return;
-  if (record_fd_ < 0 && record_path_.empty()) {
-    record_path_ = (std::filesystem::path(record_dir_) / status_.log_name).string();
-    record_fd_ = ::open(record_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (record_fd_ < 0)
-      status_.message = fmt::format(
-          "cannot write the log into {}: {}; the page's download "
-          "still has it",
-          record_path_, std::strerror(errno));
-  }
-  while (record_fd_ >= 0 && !bytes.empty()) {
-    const ssize_t n = ::write(record_fd_, bytes.data(), bytes.size());
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      status_.message = fmt::format(
-          "writing the log into {} failed: {}; the page's download "
-          "still has it",
-          record_path_, std::strerror(errno));
-      ::close(record_fd_);
-      record_fd_ = -1;
-      return;
+  if (record_dir_.empty() || record_failed_) return;
+  try {
+    if (!record_) {
+      record_path_ = (std::filesystem::path(record_dir_) / status_.log_name).string();
+      record_ = std::make_unique<AppendingFile>(record_path_, "the rig's log");
     }
-    bytes.remove_prefix(static_cast<std::size_t>(n));
+    record_->write(bytes);
+  } catch (const InputError& e) {
+    // The page's download still has every line: it says where the record stopped.
+    record_failed_ = true;
+    record_.reset();
+    status_.message = std::string(e.what()) + "; the page's download still has the log";
   }
 }
 

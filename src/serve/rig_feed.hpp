@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "io/appending_file.hpp"
 #include "io/hall_log_reader.hpp"
 #include "io/serial_port.hpp"
 
@@ -74,7 +75,8 @@ class RigFeed {
   std::size_t most_log_bytes_;
   std::string record_dir_;
   std::string record_path_;
-  int record_fd_ = -1;
+  std::unique_ptr<AppendingFile> record_;
+  bool record_failed_ = false;
   HallLogReader reader_;
   bool reading_lines_ = true;  // false once the lines proved not to be a Hall log
   int run_ = 0;

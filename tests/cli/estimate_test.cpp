@@ -192,6 +192,8 @@ TEST_F(Estimate, ATimeReadInTheWrongUnitIsRefusedNamingTheUnitThatFits) {
     EXPECT_EQ(r.status, 2) << log;
     EXPECT_NE(r.err.find("if its time is in ms, give --time-unit ms"), std::string::npos) << r.err;
     const nlohmann::json fixed = json(log + " --time-unit ms");
+    // The times above are whole milliseconds: a pulse is timed within 1 ms, so the mean period
+    // within 1 ms of 0.79 s, and 2 ms bounds it.
     EXPECT_NEAR(fixed["period_s"].get<double>(), 0.79, 2e-3) << log;
   }
   EXPECT_NE(lab(as_micros).err.find("mu_k = 2"), std::string::npos);

@@ -41,7 +41,8 @@ TEST(CaptionValues, ACaptionThatNamesAnotherMaterialOrMuKIsWarnedAbout) {
   const CompiledRig rig = paper_rig();  // LEGO blocks, mu_k 0.29
   const PaperTable t = table();
   EXPECT_TRUE(caption_contradictions({{0.0, std::nullopt, "LEGO blocks on PVC: mu_k 0.29"},
-                                      {1.0, std::nullopt, "μₖ = 2π²l/(gT²), about 0.3"}},
+                                      {1.0, std::nullopt, "μₖ = 2π²l/(gT²), about 0.3"},
+                                      {2.0, std::nullopt, "The paper measured T = 0.79 s."}},
                                      rig, t)
                   .empty());
   const std::vector<std::string> said = caption_contradictions(

@@ -75,6 +75,26 @@ class LabServerTest : public test::TempFolderTest {
     const auto id = body.find("id");
     return id != body.end() && id->is_string() ? id->get_ref<const std::string&>() : "";
   }
+  // Bytes on a connection of their own, as no HTTP client would send them; what the server
+  // answered (until it closed the connection), or nothing when not waited for.
+  std::string send_raw(const std::string& bytes, bool wait_for_answer = true) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port_));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    (void)::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    std::string answer;
+    if (wait_for_answer) {
+      ::shutdown(fd, SHUT_WR);
+      char buffer[4096];
+      for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
+        answer.append(buffer, static_cast<std::size_t>(n));
+    }
+    ::close(fd);
+    return answer;
+  }
   // Reads the stream until `done`: every event's name and data.
   std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
     std::vector<std::pair<std::string, json>> events;
@@ -218,17 +238,10 @@ TEST_F(LabServerTest, BadRequestsCostTheirClientAnErrorAndTheServerGoesOn) {
     EXPECT_TRUE(json::parse(res->body).contains("error")) << body;
   }
   // Garbage bytes on a raw connection, and a client that vanishes mid-stream.
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(static_cast<std::uint16_t>(port_));
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
   std::mt19937 bytes(7);
   std::string noise(100000, '\0');
   for (char& c : noise) c = static_cast<char>(bytes());
-  (void)::send(fd, noise.data(), noise.size(), MSG_NOSIGNAL);
-  ::close(fd);
+  send_raw(noise, /*wait_for_answer=*/false);
   const std::string id = start({{"scene", "minimal"}});
   {
     httplib::Client leaver("127.0.0.1", port_);
@@ -499,35 +512,19 @@ TEST_F(RateLimitedServerTest, AClientAskingTooFastIsToldToWait) {
 }
 
 TEST_F(LabServerTest, OversizedHeadersAndBrokenBodiesCostTheirClientOnly) {
-  const auto raw = [this](const std::string& request) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port_));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    (void)::send(fd, request.data(), request.size(), MSG_NOSIGNAL);
-    ::shutdown(fd, SHUT_WR);
-    std::string answer;
-    char buffer[4096];
-    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
-      answer.append(buffer, static_cast<std::size_t>(n));
-    ::close(fd);
-    return answer;
-  };
   // A header of 100 kB: refused, never read whole.
-  const std::string big =
-      raw("GET /api/lab HTTP/1.1\r\nHost: x\r\nX-Big: " + std::string(100000, 'a') + "\r\n\r\n");
+  const std::string big = send_raw(
+      "GET /api/lab HTTP/1.1\r\nHost: x\r\nX-Big: " + std::string(100000, 'a') + "\r\n\r\n");
   EXPECT_EQ(big.find("HTTP/1.1 200"), std::string::npos) << big.substr(0, 200);
   // A body larger than 64 kB, and a chunked body whose chunk sizes lie.
-  const std::string large =
-      raw("POST /api/sessions HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
-          "Content-Length: 200000\r\n\r\n" +
-          std::string(200000, '{'));
+  const std::string large = send_raw(
+      "POST /api/sessions HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+      "Content-Length: 200000\r\n\r\n" +
+      std::string(200000, '{'));
   EXPECT_EQ(large.find("HTTP/1.1 20"), std::string::npos) << large.substr(0, 200);
-  const std::string chunked =
-      raw("POST /api/sessions HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n"
-          "ffffffff\r\n{\"scene\"\r\nzz\r\n\r\n");
+  const std::string chunked = send_raw(
+      "POST /api/sessions HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: chunked\r\n\r\n"
+      "ffffffff\r\n{\"scene\"\r\nzz\r\n\r\n");
   EXPECT_EQ(chunked.find("HTTP/1.1 20"), std::string::npos) << chunked.substr(0, 200);
   // The server goes on.
   const auto res = client_->Get("/api/lab");

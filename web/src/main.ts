@@ -30,8 +30,15 @@ const hallPlot = new HallPlot(byId("plot-hall"));
 const hallNote = byId("hall-note");
 const periods = new PeriodsTable(
   byId<HTMLTableSectionElement>("periods-body"),
-  byId("periods-scroll"),
   byId("periods-tally"),
+  {
+    newestFirst: false,
+    decimals: 4,
+    maxRows: 400,
+    scroller: byId("periods-scroll"),
+    accepted: "✓ yes",
+    rejected: "✗ no",
+  },
 );
 const readouts = new Readouts();
 const exportPanel = new ExportPanel(() => view.toPng());

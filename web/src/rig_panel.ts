@@ -8,7 +8,7 @@ import { byId, byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
 import { closeRig, getRig, LabError, openRig, rigLogUrl } from "./lab_client";
 import type { Estimate, LiveRig, PulseGeometry, RigEvent, RigPortState } from "./lab_types";
-import { RigPeriods } from "./rig_periods";
+import { PeriodsTable } from "./periods_table";
 import { RigPlot } from "./rig_plot";
 
 const POLL_MS = 2000;
@@ -82,9 +82,17 @@ export class RigPanel {
   private readonly estimate = byTestId("rig-estimate");
   private readonly logLink = byTestId<HTMLAnchorElement>("rig-log");
   private readonly plot = new RigPlot(byTestId("rig-plot"));
-  private readonly periods = new RigPeriods(
+  private readonly periods = new PeriodsTable(
     byTestId<HTMLTableSectionElement>("rig-periods"),
     byId("rig-periods-tally"),
+    {
+      newestFirst: true,
+      decimals: 6, // to the microsecond, as `frictionlab estimate` prints it
+      maxRows: 300,
+      periodTestId: "rig-period",
+      accepted: "accepted",
+      rejected: "rejected",
+    },
   );
   private rig: LiveRig | null = null;
   private status: PortStatus = { port: null, state: "closed", message: null, lines: 0 };

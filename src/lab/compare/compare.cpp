@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
@@ -401,12 +402,7 @@ std::string compare_csv(const CompareResult& r) {
         cell = v.dump();
       else if (v.is_string())
         cell = v.get<std::string>();
-      if (cell.find_first_of(",\"\n") != std::string::npos) {
-        std::string quoted = "\"";
-        for (const char ch : cell) quoted += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        cell = quoted + "\"";
-      }
-      line += (line.empty() && c == kColumns[0] ? "" : ",") + cell;
+      line += (line.empty() && c == kColumns[0] ? "" : ",") + csv_cell(cell);
     }
     csv += line + "\n";
   }

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "io/csv_table.hpp"
 #include "io/json_value.hpp"
 
 namespace fl {
@@ -127,12 +128,7 @@ std::string spacing_fit_csv(const SpacingFitReport& r) {
   for (std::size_t i = 0; i < r.series.rows.size(); ++i) {
     const SpacingSeriesRow& in = r.series.rows[i];
     const FitRow& out = r.fit.rows[i];
-    std::string label = in.label;
-    if (label.find_first_of(",\"\n") != std::string::npos) {
-      std::string quoted = "\"";
-      for (const char c : label) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-      label = quoted + "\"";
-    }
+    const std::string label = csv_cell(in.label);
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{}", in.line, label, in.measurement.spacing,
                        number(in.measurement.spacing_err), in.measurement.period,
                        in.measurement.period_err, out.period_squared_err, number(out.period_fit),

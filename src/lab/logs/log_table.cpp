@@ -4,22 +4,14 @@
 
 #include <fmt/format.h>
 
+#include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
-#include "io/unknown_material.hpp"
 #include "lab/logs/geometry_check.hpp"
 
 namespace fl {
 namespace {
-
-// A CSV cell: quoted when it holds a comma, a quote or a line break.
-std::string cell(const std::string& text) {
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string out = "\"";
-  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 nlohmann::json text_or_null(const std::string& text) {
   return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(text);
@@ -31,9 +23,12 @@ std::string number(const std::optional<double>& v) {
 
 }  // namespace
 
-LogSetUp set_up_for_log(const std::string& log_file, const LogSetUp& set_up, std::string* note) {
+LogSetUp set_up_for_log(const std::string& log_file, const LogSetUp& set_up, std::string* note,
+                        std::optional<LogSidecar>* sidecar, const PaperTable* materials) {
   LogSetUp out = set_up;
-  if (const std::optional<LogSidecar> side = read_log_sidecar(log_file)) {
+  const std::optional<LogSidecar> side = read_log_sidecar(log_file, materials);
+  if (sidecar != nullptr) *sidecar = side;
+  if (side) {
     apply_log_sidecar(*side, out);
     if (note != nullptr)
       *note = fmt::format("the rig from {}: l = {:.1f} +- {:.1f} mm, g = {} m/s^2", side->file,
@@ -59,14 +54,10 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
   row.material = defaults.material;
   row.temperature = defaults.temperature;
   try {
-    if (const std::optional<LogSidecar> side = read_log_sidecar(log)) {
+    if (const std::optional<LogSidecar> side = read_log_sidecar(log, defaults.paper)) {
       row.sidecar = side->file;
       if (side->label) row.label = *side->label;
       apply_log_sidecar(*side, row.set_up);
-      if (side->material && defaults.paper != nullptr && !defaults.paper->find(*side->material))
-        throw InputError(SourceLocation{side->file, 0, 0},
-                         "material: unknown material \"" + *side->material + "\"; " +
-                             unknown_material_note(*defaults.paper, *side->material));
       if (side->material) row.material = side->material;
       if (side->temperature) row.temperature = side->temperature;
     }
@@ -101,13 +92,13 @@ std::string log_table_csv(const std::vector<LogTableRow>& rows) {
       "mu_k_err_quadrature,error\n";
   for (const LogTableRow& r : rows) {
     csv += fmt::format(
-        "{},{},{},{} m,{} m,{},{},{},{},{},{},{},{},{},{},{}\n", cell(r.label), cell(r.log),
-        r.status, r.set_up.spacing, r.set_up.spacing_err, cell(r.material.value_or("")),
+        "{},{},{},{} m,{} m,{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(r.label), csv_cell(r.log),
+        r.status, r.set_up.spacing, r.set_up.spacing_err, csv_cell(r.material.value_or("")),
         r.temperature ? fmt::format("{} K", *r.temperature) : std::string(), number(r.period),
         number(r.period_err), number(r.period_std),
         r.periods_used ? std::to_string(*r.periods_used) : std::string(),
         r.periods_discarded ? std::to_string(*r.periods_discarded) : std::string(), number(r.mu_k),
-        number(r.mu_k_err_worst), number(r.mu_k_err_quadrature), cell(r.error));
+        number(r.mu_k_err_worst), number(r.mu_k_err_quadrature), csv_cell(r.error));
   }
   return csv;
 }

@@ -53,8 +53,11 @@ void apply_log_sidecar(const LogSidecar& sidecar, LogSetUp& set_up);
 
 // The rig one log was taken on, for every front end alike: `set_up` with the log's sidecar over
 // it, when the log has one. `note`, when given, is set to what the sidecar set ("the rig from
-// x.yaml: l = 75.0 +- 2.0 mm, g = 9.81 m/s^2"), or left empty.
-LogSetUp set_up_for_log(const std::string& log_file, const LogSetUp& set_up, std::string* note);
+// x.yaml: l = 75.0 +- 2.0 mm, g = 9.81 m/s^2"), or left empty; `sidecar`, when given, to the
+// sidecar read (its material checked against `materials`, when given).
+LogSetUp set_up_for_log(const std::string& log_file, const LogSetUp& set_up, std::string* note,
+                        std::optional<LogSidecar>* sidecar = nullptr,
+                        const PaperTable* materials = nullptr);
 
 // One log's row; never throws for what is wrong with the log or its sidecar (the row says it).
 LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults);

@@ -114,9 +114,8 @@ AnalyticResult analyze(const AnalyticRequest& r) {
     const PaperTable& table = paper_table_in(asset_dir(r.assets));
     const PaperMaterial* material = table.find(*r.material);
     if (material == nullptr)
-      throw InputError(
-          SourceLocation::of_field("material", *r.material),
-          "unknown material \"" + *r.material + "\"; " + unknown_material_note(table, *r.material));
+      throw InputError(SourceLocation::of_field("material", *r.material),
+                       unknown_material_message(table, *r.material));
     const PaperMeasurement* row = PaperTable::at(*material, temperature);
     if (row == nullptr)
       throw InputError(SourceLocation::of_field("temperature"),

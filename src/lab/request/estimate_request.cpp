@@ -99,9 +99,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     const PaperTable& paper = paper_table_in(asset_dir(r.assets));
     p.table.paper = &paper;
     if (r.material && paper.find(*r.material) == nullptr)
-      checks.problem(
-          "material", *r.material,
-          "unknown material \"" + *r.material + "\"; " + unknown_material_note(paper, *r.material));
+      checks.problem("material", *r.material, unknown_material_message(paper, *r.material));
     if (r.temperature)
       p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
     checks.throw_if_any();
@@ -133,9 +131,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     if (r.material) {
       const PaperMaterial* row = paper.find(*r.material);
       if (row == nullptr)
-        checks.problem("material", *r.material,
-                       "unknown material \"" + *r.material + "\"; " +
-                           unknown_material_note(paper, *r.material));
+        checks.problem("material", *r.material, unknown_material_message(paper, *r.material));
       else if (p.temperature && PaperTable::at(*row, *p.temperature) == nullptr)
         checks.problem("temperature",
                        fmt::format("the paper measured {} at 300 K only", row->name));
@@ -221,9 +217,11 @@ Outcome OneLogEstimate::outcome() const {
 OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   OneLogEstimate out;
   out.log = p.samples ? *p.samples : read_hall_log(p.log, p.reading);
-  // The log's sidecar over the request's rig.
+  // The log's sidecar over the request's rig (its material checked against the paper's).
+  std::optional<LogSidecar> sidecar;
   const LogSetUp set_up =
-      p.samples ? p.set_up : set_up_for_log(out.log.file, p.set_up, &out.sidecar_note);
+      p.samples ? p.set_up
+                : set_up_for_log(out.log.file, p.set_up, &out.sidecar_note, &sidecar, p.paper);
   out.estimate = estimate_log(out.log, set_up, !p.plot.empty());
   std::string plot_note;
   if (!p.plot.empty()) {
@@ -265,17 +263,9 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   // The paper's value for the material the request or the log's sidecar names.
   std::optional<std::string> material = p.material;
   std::optional<double> temperature = p.temperature;
-  if (!p.samples && (!material || !temperature)) {
-    if (const std::optional<LogSidecar> side = read_log_sidecar(out.log.file)) {
-      if (!material && side->material) {
-        if (p.paper != nullptr && p.paper->find(*side->material) == nullptr)
-          throw InputError(SourceLocation{side->file, 0, 0},
-                           "material: unknown material \"" + *side->material + "\"; " +
-                               unknown_material_note(*p.paper, *side->material));
-        material = side->material;
-      }
-      if (!temperature) temperature = side->temperature;
-    }
+  if (sidecar) {
+    if (!material) material = sidecar->material;
+    if (!temperature) temperature = sidecar->temperature;
   }
   if (material && p.paper != nullptr) {
     const fl_estimator::Stats& s = out.estimate.stats;

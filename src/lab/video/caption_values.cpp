@@ -69,7 +69,9 @@ std::vector<std::string> caption_contradictions(const std::vector<Caption>& capt
   for (const Caption& c : captions) {
     for (const PaperMaterial& m : table.materials) {
       if (names(material, m.name) || names(material, m.key)) continue;
-      if (names(c.text, m.name) || (m.key.size() > 4 && names(c.text, m.key)))
+      // "Paper" is also how a narration names the article: as a material, only "paper plate".
+      const bool article = lower(m.name) == "paper";
+      if (names(c.text, article ? m.name + " plate" : m.name))
         out.push_back(
             fmt::format("the caption at {:g} s names {}, but this run's plate is {}: "
                         "write {{material}} to name the run's own",

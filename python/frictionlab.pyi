@@ -604,6 +604,7 @@ class FitReport:
     mu_k_thin_line: float
     mu_k_thin_line_err: float
     gravity: float
+    paper: Optional[dict[str, Any]]
     written: list[str]
     plot: Optional[str]
     plot_failure: Optional[str]
@@ -622,6 +623,8 @@ def fit(
     scene: Union[Scene, PathLike, None] = None,
     set: Overrides = None,
     jobs: int = 0,
+    material: Optional[str] = None,
+    temperature: Optional[Quantity] = None,
 ) -> FitReport: ...
 
 # ---- comparisons and the studies of the numerics: each returns the command's --json object ----
@@ -642,6 +645,8 @@ def compare(
     rate: Optional[Quantity] = None,
     time_unit: str = "",
     assets: Optional[PathLike] = None,
+    material: Optional[str] = None,
+    temperature: Optional[Quantity] = None,
 ) -> dict[str, Any]: ...
 def accuracy(
     scene: Union[Scene, PathLike],

@@ -116,6 +116,11 @@ def test_a_fit_is_the_commands_fit(tmp_path):
     fl.fit(SERIES, out=tmp_path / "py")
     for name in ["fit.json", "fit.csv"]:
         assert (tmp_path / "cli" / name).read_bytes() == (tmp_path / "py" / name).read_bytes()
+    assert returned.paper is None
+    printed = json.loads(cli("fit", SERIES, "--material", "lego", "--json").stdout)
+    returned = fl.fit(SERIES, material="lego")
+    assert returned.paper == printed["paper"] == returned.json()["paper"]
+    assert printed["paper"]["key"] == "lego"
 
 
 def test_a_bad_fit_is_the_same_error():
@@ -229,6 +234,11 @@ def test_a_comparison_and_the_studies_are_the_commands(tmp_path):
     returned = fl.compare(log=LOGS / "clean.csv", out=tmp_path / "p")
     assert returned["mu_k_refit"] == printed["mu_k_refit"]
     assert returned["period_measured_s"] == printed["period_measured_s"]
+    assert returned["paper"] is printed["paper"] is None
+    printed = json.loads(cli("compare", "--log", LOGS / "clean.csv", "--material", "iron",
+                             "--out", tmp_path / "c", "--json").stdout)
+    returned = fl.compare(log=LOGS / "clean.csv", material="iron", out=tmp_path / "p")
+    assert returned["paper"] == printed["paper"] and printed["paper"]["key"] == "iron"
     printed = json.loads(cli("stability", "--only", "mu-1", "--json").stdout)
     returned = fl.stability(only="mu-1")
     assert [c["found"] for c in returned["cases"]] == [c["found"] for c in printed["cases"]]

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/log_options.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
 #include "cli/scene_options.hpp"
 #include "io/atomic_file.hpp"
@@ -46,6 +48,8 @@ struct CompareCommandOptions {
   bool plot = false;
   bool json = false;
   bool no_refit = false;
+  std::optional<std::string> material;
+  std::optional<std::string> temperature;
 };
 
 // As the row wrote it, to at most 6 decimals (a table written by frictionlab estimate carries
@@ -104,7 +108,8 @@ void print_table(const CompareResult& r, bool paper) {
   }
 }
 
-void print_log_report(const LogAgainstRig& r, const std::string& written) {
+void print_log_report(const LogAgainstRig& r, const std::optional<PaperComparison>& paper,
+                      const std::string& written) {
   const CompareRow& row = r.fit.rows.front();
   fmt::print(
       "frictionlab compare --log: {} against the scene {} (l = {:.1f} mm, h_c = {:.2f} mm)\n\n",
@@ -126,6 +131,7 @@ void print_log_report(const LogAgainstRig& r, const std::string& written) {
   else
     fmt::print("  mu_k refitted          none{}\n",
                row.refit_note.empty() ? "" : ": " + row.refit_note);
+  if (paper) print_paper_value(*paper, "the refitted", 22);
   fmt::print("  simulated at mu_k      {:.4f}: T = {:.6f} +- {:.6f} s (sd), {} periods\n", r.mu_k,
              r.simulated.period, r.simulated.period_std, r.simulated.periods_used);
   fmt::print(
@@ -176,6 +182,8 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   request.plot = o.plot;
   request.refit = !o.no_refit;
   request.assets = global.asset_dir;
+  request.material = o.material;
+  if (o.temperature) request.temperature = *o.temperature;
   const bool tty = isatty(2) == 1;
   const CompareRequestResult result =
       compare_measurements(request, [tty](std::size_t done, std::size_t total) {
@@ -190,7 +198,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
     if (o.json)
       fmt::print("{}\n", result.json.dump(2));
     else
-      print_log_report(*result.log, written);
+      print_log_report(*result.log, result.paper_value, written);
     return plot_failure_status(result.plot_failure);
   }
   const CompareResult& table = *result.table;
@@ -232,6 +240,11 @@ Command add_compare_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--geometry", options->geometry,
                   "With --log: pulses per period, auto, one or pair (as for estimate)");
   add_log_reading_options(*sub, options->reading, "With --log: ");
+  sub->add_option("--material", options->material,
+                  "With --log: the plate's material (the paper's Table I), for a log whose sidecar "
+                  "names none: its value is printed beside the refitted mu_k");
+  sub->add_option("--temperature", options->temperature,
+                  "With --material: the rollers' temperature (300 K, or 77 K)");
   sub->add_option("--set", options->overrides,
                   "Override a scene key, e.g. --set plate.thickness=5mm (repeatable)");
   sub->add_option("--duration", options->duration,

@@ -27,6 +27,7 @@
 #include "cli/monte_carlo_options.hpp"
 #include "cli/monte_carlo_report.hpp"
 #include "cli/option_quantity.hpp"
+#include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
@@ -167,16 +168,7 @@ int run_estimate(const EstimateOptions& o, const CLI::App& sub, const GlobalOpti
     return plot_failure_status(result.plot_failure);
   }
   print_estimate(result.log, result.estimate, result.check, result.plot);
-  if (result.paper) {
-    const PaperComparison& c = *result.paper;
-    fmt::print("  {:<20} {} at {:.0f} K: mu_k {} +- {}, T {} +- {} s (Table I)\n", "paper", c.name,
-               c.temperature, c.mu_k.value, c.mu_k.uncertainty, c.period.value,
-               c.period.uncertainty);
-    if (c.standard_errors)
-      fmt::print("  {:<20} this log's mu_k is {:+.1f} combined standard errors from it ({})\n", "",
-                 *c.standard_errors,
-                 std::fabs(*c.standard_errors) <= 2.0 ? "they agree" : "they disagree");
-  }
+  if (result.paper) print_paper_value(*result.paper, "this log's", 20);
   if (result.monte_carlo) print_mu_k_monte_carlo(*result.monte_carlo, 19, result.mc_plot);
   return plot_failure_status(result.plot_failure);
 }

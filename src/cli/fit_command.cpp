@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "cli/commands.hpp"
 #include "cli/field_spelling.hpp"
 #include "cli/monte_carlo_options.hpp"
+#include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
 #include "io/plus_minus.hpp"
 #include "lab/compare/spacing_fit_report.hpp"
@@ -41,6 +43,8 @@ struct FitOptions {
   std::string scene;
   std::vector<std::string> overrides;
   int workers = 0;
+  std::optional<std::string> material;
+  std::optional<std::string> temperature;
 };
 
 std::string pm(std::optional<double> value, std::optional<double> err, double scale, int digits) {
@@ -152,6 +156,9 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
   request.scene.asset_dir = global.asset_dir;
   request.set = o.overrides;
   request.jobs = o.workers;
+  request.material = o.material;
+  if (o.temperature) request.temperature = *o.temperature;
+  request.assets = global.asset_dir;
   const FitResult result = fit_series(request);
   for (const std::string& w : result.warnings) fmt::print(stderr, "{}\n", spelled(w));
   if (!result.rig_failure.empty()) {
@@ -167,6 +174,10 @@ int run_fit(const FitOptions& o, const GlobalOptions& global) {
     fmt::print("{}\n", out.dump(2));
   } else {
     print_report(result.report);
+    if (result.paper) {
+      fmt::print("\n");
+      print_paper_value(*result.paper, "the fitted", 22);
+    }
     if (!result.written.empty()) {
       std::string list;
       for (const std::string& w : result.written) list += (list.empty() ? "" : ", ") + w;
@@ -206,6 +217,11 @@ Command add_fit_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("-j,--jobs", options->workers,
                   "With --through-rig: rows simulated in parallel (default: every core)")
       ->check(CLI::PositiveNumber);
+  sub->add_option("--material", options->material,
+                  "The plate's material (the paper's Table I): its value is printed beside the "
+                  "fitted mu_k, with the difference in standard errors");
+  sub->add_option("--temperature", options->temperature,
+                  "With --material: the rollers' temperature (300 K, or 77 K)");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
   return Command{sub, [options, &global] { return run_fit(*options, global); }};
 }

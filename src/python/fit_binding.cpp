@@ -21,7 +21,8 @@ namespace {
 FitResult fit(const Path& series, const Quantity& gravity, const std::optional<Path>& out,
               const std::optional<Path>& plot, std::optional<std::int64_t> mc, std::uint64_t seed,
               bool through_rig, const std::optional<SceneArgument>& scene, const py::object& set,
-              int jobs) {
+              int jobs, const std::optional<std::string>& material,
+              const std::optional<Quantity>& temperature) {
   FitRequest request;
   request.series = series.string();
   request.gravity = gravity;
@@ -34,6 +35,8 @@ FitResult fit(const Path& series, const Quantity& gravity, const std::optional<P
   for (const SceneOverride& o : overrides_argument(set))
     request.set.push_back(o.path + "=" + o.value);
   request.jobs = jobs;
+  request.material = material;
+  request.temperature = temperature;
   FitResult result;
   {
     const py::gil_scoped_release released;
@@ -74,6 +77,12 @@ Carlo (mc=) and the refit through the rig (through_rig=True) are there.)")
       .def_property_readonly("mu_k_thin_line_err", line(&ThickPlateFit::mu_k_thin_line_err))
       .def_property_readonly(
           "gravity", [](const R& r) { return r.report.gravity; }, "m/s^2")
+      .def_property_readonly(
+          "paper",
+          [](const R& r) {
+            return r.paper ? python_value(paper_comparison_json(*r.paper)) : py::object(py::none());
+          },
+          "the paper's value for material= (the dict json()[\"paper\"] holds), or None")
       .def_readonly("written", &R::written, "the files written (fit.csv, fit.json, the plot)")
       .def_property_readonly(
           "plot", [](const R& r) { return r.plot.empty() ? std::nullopt : std::optional(r.plot); },
@@ -105,7 +114,7 @@ Carlo (mc=) and the refit through the rig (through_rig=True) are there.)")
         py::arg("gravity") = quantity_input_text(FitRequest{}.gravity), py::arg("out") = py::none(),
         py::arg("plot") = py::none(), py::arg("mc") = py::none(), py::arg("seed") = 1,
         py::arg("through_rig") = false, py::arg("scene") = py::none(), py::arg("set") = py::none(),
-        py::arg("jobs") = 0,
+        py::arg("jobs") = 0, py::arg("material") = py::none(), py::arg("temperature") = py::none(),
         R"(mu_k and h_c from a spacing series, as `frictionlab fit SERIES.csv`; a FitReport.
 
 series: a CSV whose header names spacing, period, period_err and optionally spacing_err and
@@ -113,7 +122,9 @@ series: a CSV whose header names spacing, period, period_err and optionally spac
   fit.json. plot: a PNG of T^2 against l with the fit ("" for out/fit.png). mc: Monte Carlo
   draws of every row, refitted (seed: the same seed, the same numbers). through_rig: refit
   through simulations of scene (a Scene or a path; default scenes/minimal.yaml) with set's
-  overrides, jobs rows at a time (0: every core).
+  overrides, jobs rows at a time (0: every core). material ("lego", a key or name of the
+  paper's Table I) and temperature ("77K"; 300 K by default): the paper's value beside the
+  fitted mu_k, as paper (json()["paper"] too).
 Raises InputError for bad input, as the command exits 2 for it: a series that gives no
 friction oscillator (T^2 falling with l) is refused, located in the file.)");
 }

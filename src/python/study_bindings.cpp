@@ -30,7 +30,8 @@ py::object compare(const std::optional<Path>& measured, const std::optional<Path
                    const std::optional<Path>& out, bool plot, bool refit,
                    const std::string& geometry, const std::string& columns,
                    const std::optional<Quantity>& rate, const std::string& time_unit,
-                   const std::optional<Path>& assets) {
+                   const std::optional<Path>& assets, const std::optional<std::string>& material,
+                   const std::optional<Quantity>& temperature) {
   CompareRequest r;
   if (measured) r.measured = measured->string();
   if (log) r.log = log->string();
@@ -46,6 +47,8 @@ py::object compare(const std::optional<Path>& measured, const std::optional<Path
   r.rate = rate;
   r.time_unit = time_unit;
   if (assets) r.assets = assets->string();
+  r.material = material;
+  r.temperature = temperature;
   CompareRequestResult result;
   {
     const py::gil_scoped_release released;
@@ -96,13 +99,16 @@ void bind_studies(py::module_& m) {
         py::arg("duration") = py::none(), py::arg("jobs") = 0, py::arg("out") = c.out,
         py::arg("plot") = false, py::arg("refit") = true, py::arg("geometry") = "",
         py::arg("columns") = "", py::arg("rate") = py::none(), py::arg("time_unit") = "",
-        py::arg("assets") = py::none(),
+        py::arg("assets") = py::none(), py::arg("material") = py::none(),
+        py::arg("temperature") = py::none(),
         R"(Simulates every row of measurements (the paper's Table I by default) and refits mu_k
 through the rig, or holds one Hall log (log=) against its simulation, as `frictionlab compare`.
 
 Returns the object `frictionlab compare --json` prints (compare.json or compare-log.json, also
 written to out). A row of your own measurements that gives no result is in the rows, with its
-status and reason (the command exits 3 for it). Raises InputError for bad input.)");
+status and reason (the command exits 3 for it). With log=, material and temperature (or the
+log's sidecar) put the paper's value beside the refitted mu_k, as "paper". Raises InputError for
+bad input.)");
   const AccuracyRequest a;
   m.def("accuracy", &accuracy, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),
         py::arg("periods") = a.periods, py::arg("out") = a.out, py::arg("plot") = false,

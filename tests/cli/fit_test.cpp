@@ -143,6 +143,43 @@ TEST_F(Fit, BadSeriesExitWithTwoAndTheCellAtFault) {
       << missing.err;
 }
 
+// The paper's value for the plate's material beside the fitted mu_k (LEGO at 77 K: mu_k 0.20 +-
+// 0.01): the difference in combined standard errors computed here from the two values and their
+// errors; none without a material; a material or temperature the paper lacks refused.
+TEST_F(Fit, TheFittedMuKBesideThePapersValueForItsMaterial) {
+  const std::string series = exact_series();
+  const nlohmann::json j = json("fit " + series + " --material lego --temperature 77K");
+  const nlohmann::json& paper = j["paper"];
+  EXPECT_EQ(paper["material"], "LEGO blocks");
+  EXPECT_EQ(paper["temperature_K"], 77.0);
+  EXPECT_EQ(paper["mu_k"], 0.20);
+  const double mu = j["mu_k"], err = j["mu_k_err"];
+  EXPECT_NEAR(paper["difference_standard_errors"].get<double>(),
+              (mu - 0.20) / std::sqrt(err * err + 0.01 * 0.01), 1e-9);
+  const test::CommandResult text = lab("fit " + series + " --material lego");
+  EXPECT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("LEGO blocks at 300 K: mu_k 0.29 +- 0.03"), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("the fitted mu_k is +0.0 combined standard errors from it (they agree)"),
+            std::string::npos)
+      << text.out;
+  EXPECT_TRUE(json("fit " + series)["paper"].is_null());
+  struct Case {
+    const char* options;
+    const char* message;
+  };
+  for (const Case& c : {Case{" --material legoo", "--material legoo: error: unknown material"},
+                        Case{" --temperature 77K",
+                             "--temperature: error: --temperature goes with "
+                             "--material"},
+                        Case{" --material iron --temperature 77K",
+                             "--temperature: error: the paper measured Iron at 300 K only"}}) {
+    const test::CommandResult r = lab("fit " + series + c.options);
+    EXPECT_EQ(r.status, 2) << c.options;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+  }
+}
+
 TEST_F(Fit, MonteCarloIsReproducibleFromItsSeedAndBesideTheFitsErrors) {
   const std::string file = exact_series();
   const test::CommandResult a = lab("fit " + file + " --mc 4000 --json");

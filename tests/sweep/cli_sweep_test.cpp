@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -377,7 +378,23 @@ TEST(CliCompare, ALogAgainstItsSimulation) {
   EXPECT_TRUE(j["disagreements"].empty()) << j["disagreements"];
   for (const char* file : {"compare-log.json", "compare-log-traces.json", "compare-log.png"})
     EXPECT_TRUE(fs::exists(out / file)) << file;
-  auto refused = lab("compare --geometry one --out " + out.string());
+  test::CommandResult refused;
+  // The paper's value for the sidecar's material (lego at 300 K: mu_k 0.29 +- 0.03) beside the
+  // refit, the difference in combined standard errors computed here from the two.
+  const double mu = j["mu_k_refit"], err = j["mu_k_refit_err_quadrature"];
+  EXPECT_EQ(j["paper"]["key"], "lego");
+  EXPECT_NEAR(j["paper"]["difference_standard_errors"].get<double>(),
+              (mu - 0.29) / std::sqrt(err * err + 0.03 * 0.03), 1e-9);
+  // A material named wins over the sidecar's; a table of rows names its own.
+  const auto iron = lab("compare --log " + log + " --material iron --out " + out.string());
+  ASSERT_EQ(iron.status, 0) << iron.err;
+  EXPECT_NE(iron.out.find("Iron at 300 K: mu_k"), std::string::npos) << iron.out;
+  EXPECT_NE(iron.out.find("the refitted mu_k is"), std::string::npos) << iron.out;
+  refused = lab("compare --material lego --out " + out.string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find("--material and --temperature go with --log"), std::string::npos)
+      << refused.err;
+  refused = lab("compare --geometry one --out " + out.string());
   EXPECT_EQ(refused.status, 2);
   EXPECT_NE(refused.err.find("--geometry: error: --geometry, --columns, --rate and --time-unit say "
                              "how to read a log; they go with --log"),

@@ -12,9 +12,11 @@
 #include "io/field_ref.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
+#include "io/log_sidecar.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/request/lab_data.hpp"
+#include "lab/request/material_fields.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
 #include "lab/request/scene_source.hpp"
@@ -73,6 +75,13 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   if (!geometry)
     checks.problem("geometry", r.geometry,
                    "expected auto, one or pair, found \"" + r.geometry + "\"");
+  if (!with_log && (r.material || r.temperature))
+    checks.problem(r.material ? "material" : "temperature",
+                   field_ref("material") + " and " + field_ref("temperature") + " go with " +
+                       field_ref("log") + "; the rows of a table name their own materials");
+  const std::string assets = asset_dir(r.assets);
+  const PaperTable& paper = paper_table_in(assets);
+  const MaterialChoice material = read_material_fields(checks, paper, r.material, r.temperature);
   std::vector<SceneOverride> overrides = read_overrides(r.set, checks);
   if (r.duration) checks.quantity(*r.duration, Dimension::kTime, "duration");
   checks.throw_if_any();
@@ -80,7 +89,6 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   CompareRequestResult result;
   result.refit_asked = r.refit;
   result.paper = r.measured.empty() && !with_log;
-  const std::string assets = asset_dir(r.assets);
   const MeasuredRows measured =
       with_log ? MeasuredRows{}
                : read_measured_rows(result.paper ? paper_measurements_path(assets) : r.measured);
@@ -123,8 +131,18 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
 
   if (with_log) {
     const HallLog log = read_hall_log(r.log, reading);
+    // The sidecar's material (checked against the paper's table) when the request names none.
+    const std::optional<LogSidecar> sidecar = read_log_sidecar(log.file, &paper);
     result.log = compare_log_with_rig(log, *geometry, options);
     result.json = log_against_rig_json(*result.log);
+    const CompareRow& row = result.log->fit.rows.front();
+    if (row.mu_k_refit && row.mu_k_refit_err_quadrature)
+      result.paper_value = paper_value_for(
+          paper, material,
+          sidecar ? MaterialChoice{sidecar->material, sidecar->temperature} : MaterialChoice{},
+          *row.mu_k_refit, *row.mu_k_refit_err_quadrature);
+    result.json["paper"] =
+        result.paper_value ? paper_comparison_json(*result.paper_value) : nlohmann::json(nullptr);
     const std::string report = r.out + "/compare-log.json";
     const std::string traces = r.out + "/compare-log-traces.json";
     write_file_atomic(report, result.json.dump(1) + "\n");

@@ -16,6 +16,7 @@
 #include "lab/compare/compare.hpp"
 #include "lab/compare/log_against_rig.hpp"
 #include "lab/compare/measured_rows.hpp"
+#include "lab/logs/paper_comparison.hpp"
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 
@@ -36,6 +37,10 @@ struct CompareRequest {
   bool plot = false;                      // "plot"
   bool refit = true;                      // "refit": refit mu_k (no_refit on the command line)
   std::string assets;                     // "assets"
+  // "material", "temperature", with log: the plate's (else the log's sidecar's), for the paper's
+  // value beside the refitted mu_k.
+  std::optional<std::string> material;
+  std::optional<QuantityInput> temperature;
 };
 
 struct CompareRequestResult {
@@ -44,7 +49,9 @@ struct CompareRequestResult {
   std::optional<CompareResult> table;  // rows compared
   std::vector<SkippedRow> skipped;     // rows of a table of logs left out (no period)
   std::optional<LogAgainstRig> log;    // or the log against its simulation
-  nlohmann::json json;                 // compare.json's or compare-log.json's object
+  // With a log: the paper's value for its material beside the refitted mu_k, when both are known.
+  std::optional<PaperComparison> paper_value;
+  nlohmann::json json;  // compare.json's or compare-log.json's object
   std::vector<std::string> written;
   std::string plot_failure;
 

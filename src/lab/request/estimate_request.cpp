@@ -122,21 +122,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     // One log's material: the paper's value is printed beside its result.
     const PaperTable& paper = paper_table_in(asset_dir(r.assets));
     p.paper = &paper;
-    if (r.temperature) {
-      p.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
-      if (!r.material)
-        checks.problem("temperature", field_ref("temperature") + " goes with " +
-                                          field_ref("material") + "; add the plate's material");
-    }
-    if (r.material) {
-      const PaperMaterial* row = paper.find(*r.material);
-      if (row == nullptr)
-        checks.problem("material", *r.material, unknown_material_message(paper, *r.material));
-      else if (p.temperature && PaperTable::at(*row, *p.temperature) == nullptr)
-        checks.problem("temperature",
-                       fmt::format("the paper measured {} at 300 K only", row->name));
-      p.material = r.material;
-    }
+    p.material = read_material_fields(checks, paper, r.material, r.temperature);
   }
   if (follow) {
     p.job = EstimateJob::kFollow;
@@ -261,16 +247,11 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
           given_pair ? "two pulses" : "one pulse"));
   }
   // The paper's value for the material the request or the log's sidecar names.
-  std::optional<std::string> material = p.material;
-  std::optional<double> temperature = p.temperature;
-  if (sidecar) {
-    if (!material) material = sidecar->material;
-    if (!temperature) temperature = sidecar->temperature;
-  }
-  if (material && p.paper != nullptr) {
-    const fl_estimator::Stats& s = out.estimate.stats;
-    out.paper = compare_with_paper(*p.paper, *material, temperature.value_or(300.0), s.mu_k,
-                                   s.mu_k_err_quadrature);
+  if (p.paper != nullptr) {
+    const MaterialChoice from_sidecar =
+        sidecar ? MaterialChoice{sidecar->material, sidecar->temperature} : MaterialChoice{};
+    out.paper = paper_value_for(*p.paper, p.material, from_sidecar, out.estimate.stats.mu_k,
+                                out.estimate.stats.mu_k_err_quadrature);
   }
   // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
   // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).

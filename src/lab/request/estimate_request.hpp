@@ -21,6 +21,7 @@
 #include "lab/logs/log_table.hpp"
 #include "lab/logs/paper_comparison.hpp"
 #include "lab/request/field_checks.hpp"
+#include "lab/request/material_fields.hpp"
 #include "lab/request/outcome.hpp"
 
 namespace fl {
@@ -70,8 +71,7 @@ struct PreparedEstimate {
   std::string mc_plot;
   // One log's material (a key or name of the paper's Table I) and temperature [K], for the
   // paper's value beside its result; the log's sidecar may name them instead.
-  std::optional<std::string> material;
-  std::optional<double> temperature;
+  MaterialChoice material;
   const PaperTable* paper = nullptr;
   std::string follow_port;
   double follow_baud = 250000.0;

@@ -11,6 +11,8 @@
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
+#include "lab/request/lab_data.hpp"
+#include "lab/request/material_fields.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
 
@@ -83,6 +85,8 @@ FitResult fit_series(const FitRequest& r) {
                                  field_ref("out") + " for its fit.png; found neither");
   }
   const std::vector<SceneOverride> overrides = read_overrides(r.set, checks);
+  const PaperTable& paper = paper_table_in(asset_dir(r.assets));
+  const MaterialChoice material = read_material_fields(checks, paper, r.material, r.temperature);
   checks.throw_if_any();
   // Output places are checked before any work; a plot that fails still leaves the results.
   if (!r.out.empty()) prepare_output_folder(r.out, "out");
@@ -119,7 +123,10 @@ FitResult fit_series(const FitRequest& r) {
     }
   }
 
+  result.paper = paper_value_for(paper, material, {}, *report.fit.mu_k, *report.fit.mu_k_err);
   result.json = spacing_fit_json(report);
+  result.json["paper"] =
+      result.paper ? paper_comparison_json(*result.paper) : nlohmann::json(nullptr);
   std::string written_json;
   if (!r.out.empty()) {
     written_json = (std::filesystem::path(r.out) / "fit.json").string();

@@ -1,7 +1,8 @@
 // A spacing series' fit, as every front end asks for it (`frictionlab fit`, frictionlab.fit): the
 // series, g, where its files and plot go, the Monte Carlo, and the refit through simulations of a
-// rig. fit_series reads and checks every field before any work (problems by field), fits, writes
-// and plots; the result says how it ended (lab/request/outcome.hpp).
+// rig, and the plate's material for the paper's value. fit_series reads and checks every field
+// before any work (problems by field), fits, writes and plots; the result says how it ended
+// (lab/request/outcome.hpp).
 #pragma once
 
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lab/compare/spacing_fit_report.hpp"
+#include "lab/logs/paper_comparison.hpp"
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/request/scene_source.hpp"
@@ -30,6 +32,10 @@ struct FitRequest {
   SceneSource scene;               // "scene": its file empty, scenes/minimal.yaml
   std::vector<std::string> set;    // "set": the rig's overrides
   int jobs = 0;                    // "jobs": rows simulated in parallel (0: every core)
+  // "material", "temperature": the plate's, for the paper's value beside the fitted mu_k.
+  std::optional<std::string> material;
+  std::optional<QuantityInput> temperature;
+  std::string assets;  // "assets": the lab's data folder (the paper's table; "": the default)
 };
 
 struct FitResult {
@@ -40,6 +46,8 @@ struct FitResult {
   std::string plot_failure;           // why the plot could not be drawn
   std::string rig_failure;            // why the refit through the rig failed (the fit stands)
   std::vector<std::string> warnings;  // the series reader's, and the fields' (field_ref mentions)
+  // The paper's value for the material named, beside the fitted mu_k (in json as "paper").
+  std::optional<PaperComparison> paper;
 
   Outcome outcome() const;
 };

@@ -98,6 +98,9 @@ std::vector<ForceArrow> force_arrows(const Camera& camera, int width, int height
   return arrows;
 }
 
+// The arrows' labels, in pixels at 640x360: the smallest that reads on a GIF of that size.
+constexpr float kArrowLabelSize = 13.0f;
+
 void draw_force_arrows(Overlay& o, float s, const std::vector<ForceArrow>& arrows) {
   // Dark outlines under every arrow first, so the arrows read over the red frame and the green
   // plate alike and no outline cuts another arrow; then the arrows in their order.
@@ -107,7 +110,7 @@ void draw_force_arrows(Overlay& o, float s, const std::vector<ForceArrow>& arrow
   for (const ForceArrow& a : arrows) {
     const Eigen::Vector2f d = a.to - a.from;
     const float length = d.norm();
-    const Rect box = o.measure_text(a.label, 11 * s);
+    const Rect box = o.measure_text(a.label, kArrowLabelSize * s);
     Eigen::Vector2f at = a.to;  // the label's centre
     switch (a.label_at) {
       case ForceArrow::Label::kBeyond: {
@@ -123,8 +126,12 @@ void draw_force_arrows(Overlay& o, float s, const std::vector<ForceArrow>& arrow
         at.y() -= 4.0f * s + 0.5f * box.height;
         break;
     }
-    o.text(a.label, Eigen::Vector2f(at.x(), at.y() - box.height / 2.0f), 11 * s, a.color,
-           TextAlign::kCenter);
+    // On a dark patch: the label reads over the bright plate, the bricks and the floor alike.
+    o.rect(Rect{at.x() - box.width / 2.0f - 3.0f * s, at.y() - box.height / 2.0f - 1.5f * s,
+                box.width + 6.0f * s, box.height + 3.0f * s},
+           Color{0.05f, 0.07f, 0.10f, 0.72f});
+    o.text(a.label, Eigen::Vector2f(at.x(), at.y() - box.height / 2.0f), kArrowLabelSize * s,
+           a.color, TextAlign::kCenter);
   }
 }
 

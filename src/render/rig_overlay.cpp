@@ -158,21 +158,32 @@ void draw_results(Overlay& o, const Rect& panel, float s, const RigOverlayState&
   const ResultsText text = results_text(state);
   float y = panel.y + 6 * s;
   const float x = panel.x + 8 * s;
+  const float room = panel.width - 16 * s;
+  // Each line shrinks to the panel's width (to 10 px at 640x360), never past its edge.
+  const auto line = [&](const std::string& words, float size, const Color& color, float at_x,
+                        float width) {
+    const FittedText fitted = fit_text(o, words, width, size, std::min(size, 10.0f), s, 1);
+    return o.text(fitted.lines.empty() ? std::string() : fitted.lines.front(),
+                  Eigen::Vector2f(at_x, y), fitted.pixel_size, color);
+  };
   const bool value = state.has_sensor && (state.estimator.period.has_value() ||
                                           state.estimator.provisional_period.has_value());
-  const Rect r =
-      o.text(text.period, Eigen::Vector2f(x, y), state.has_sensor ? 17 * s : 14 * s, kWhite);
-  if (!text.note.empty())
-    o.text(text.note, Eigen::Vector2f(r.x + r.width + 6 * s, y + 4 * s), 12 * s, kSoft);
+  const Rect r = line(text.period, state.has_sensor ? 17 : 14, kWhite, x, room);
+  if (!text.note.empty()) {
+    const float after = r.x + r.width + 6 * s;
+    y += 4 * s;
+    line(text.note, 12, kSoft, after, panel.x + panel.width - 8 * s - after);
+    y -= 4 * s;
+  }
   y += 22 * s;
   // mu_k as large as the values; what the estimator waits for, or why a value is provisional,
   // smaller.
   const bool provisional = !state.estimator.period && value;
   if (!text.detail.empty())
-    o.text(text.detail, Eigen::Vector2f(x, y), value && !provisional ? 15 * s : 13 * s,
-           value && !provisional ? kWhite : kSoft);
+    line(text.detail, value && !provisional ? 15 : 13, value && !provisional ? kWhite : kSoft, x,
+         room);
   y += 20 * s;
-  o.text(text.paper, Eigen::Vector2f(x, y), 12 * s, kSoft);
+  line(text.paper, 12, kSoft, x, room);
 }
 
 }  // namespace
@@ -230,7 +241,7 @@ ResultsText results_text(const RigOverlayState& state) {
   if (!e.signal_learned)
     out.detail = "learning the signal from its first pulses";
   else if (!e.geometry_known)
-    out.detail = fmt::format("{} seen, {} timed: 5 timed tell one pulse a period from two",
+    out.detail = fmt::format("{} seen, {} timed (green): a first T at 2 timed",
                              plural(shown, "pulse"), e.pulses);
   else
     out.detail =
@@ -251,8 +262,12 @@ void draw_time_axis(Overlay& o, const Rect& area, float s, double t0, double t1)
     const float x = area.x + area.width * static_cast<float>((tick.value - t0) / (t1 - t0));
     o.line(Eigen::Vector2f(x, area.y + area.height),
            Eigen::Vector2f(x, area.y + area.height + 2 * s), 1.0f, kSoft);
-    o.text(tick.label, Eigen::Vector2f(x, area.y + area.height + 2 * s), 11 * s, kSoft,
-           TextAlign::kCenter);
+    // Centred under its tick, but never past the plot's right end into the panel's edge.
+    const float half = 0.5f * o.measure_text(tick.label, 11 * s).width;
+    o.text(tick.label,
+           Eigen::Vector2f(std::min(x, area.x + area.width + 2 * s - half),
+                           area.y + area.height + 2 * s),
+           11 * s, kSoft, TextAlign::kCenter);
   }
 }
 

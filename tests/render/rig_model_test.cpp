@@ -469,10 +469,10 @@ TEST(RigOverlay, TheResultsSayWhatIsMeasuredOrAwaited) {
   e.signal_learned = true;
   e.learning_pulses = 2;
   text = results_text(state);
-  EXPECT_EQ(text.detail, "2 pulses seen, 0 timed: 5 timed tell one pulse a period from two");
+  EXPECT_EQ(text.detail, "2 pulses seen, 0 timed (green): a first T at 2 timed");
   e.pulses = 1;
   text = results_text(state);
-  EXPECT_EQ(text.detail, "3 pulses seen, 1 timed: 5 timed tell one pulse a period from two");
+  EXPECT_EQ(text.detail, "3 pulses seen, 1 timed (green): a first T at 2 timed");
   // Two timed pulses: one period, shown alone (no spread to show, never "± 0").
   e.pulses = 2;
   e.provisional_periods = 1;

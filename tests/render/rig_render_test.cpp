@@ -214,6 +214,51 @@ Changed changed(const ImageView& a, const ImageView& b) {
   return c;
 }
 
+// At 640x360 (a GIF's size) nothing of the overlay runs past its panels: the Hall plot's last time
+// label sits at the plot's right end, and a long line of the results shrinks to the panel's width
+// instead of running to the frame's edge. The strips beside the panels are as the rig left them.
+TEST_P(RigRender, TheOverlayStaysInsideItsPanelsAtSixFortyByThreeSixty) {
+  const auto context = test::gl_context(GetParam(), 640, 360);
+  Renderer renderer(*context);
+  const RigView view(renderer, paper_rig_model());
+  VideoDesc video;
+  video.width = 640;
+  video.height = 360;
+  const Camera camera = rig_camera(view.model(), video);
+  std::vector<HallPoint> hall;
+  for (int k = 0; k < 2500; ++k) hall.push_back({3.5 + k * 1e-3, 512.0});
+  RigOverlayState state;
+  state.heading = "LEGO blocks on PVC rollers";
+  state.t = 6.0;  // the Hall window ends on a labelled tick: 6.0 at the plot's right end
+  state.roller_speed = 165.6;
+  state.hall = hall;
+  state.estimator.signal_learned = true;
+  state.estimator.learning_pulses = 40;  // "40 pulses seen, 0 timed ...": the longest line
+  state.paper_period = test::paper_rig().friction.paper_period;
+  state.paper_mu_k = test::paper_rig().friction.paper_mu_k;
+  const auto frame = [&](bool overlay) {
+    renderer.begin_frame(camera, rig_light());
+    view.draw(pose_at(0.0, 0.0), 0.0);
+    if (overlay) draw_rig_overlay(renderer.overlay(), 640, 360, state);
+    return copy_image(renderer.end_frame());
+  };
+  const Image bare = frame(false);
+  const Image drawn = frame(true);
+  fl::test::keep_frame("rig_overlay_inside_panels", drawn.view());
+  const auto same = [&](int x0, int y0, int x1, int y1) {
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x)
+        for (std::size_t k = 0; k < 3; ++k)
+          if (bare.at(x, y)[k] != drawn.at(x, y)[k]) return false;
+    return true;
+  };
+  // The Hall plot's panel spans x 8 to 308 and y 256 to 352; the results' x 364 to 632, y 284 to
+  // 352.
+  EXPECT_TRUE(same(308, 256, 360, 352)) << "the Hall plot's labels run past its panel";
+  EXPECT_TRUE(same(632, 284, 640, 352)) << "the results run past their panel";
+  EXPECT_FALSE(same(364, 284, 632, 352));  // the results are drawn
+}
+
 // A caption at 640x360 over the rig and the overlay: a dark box with light text, centred above
 // the Hall plot (its top at y = 256) and the results panel, which stay as they were; a long
 // caption wraps to more lines within the same width, three at most.

@@ -208,13 +208,17 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
   return log;
 }
 
-HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
-  if (path == "-")
-    return parse_hall_log(read_text_stream(std::cin, "<stdin>", "the log"), "<stdin>", options);
+LogText read_log_text(const std::string& path) {
+  if (path == "-") return {read_text_stream(std::cin, "<stdin>", "the log"), "<stdin>"};
   std::error_code ec;
   const std::string file = std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
-  HallLog log = parse_hall_log(read_text_file(file, "the log"), file, options);
-  log.path = path;
+  return {read_text_file(file, "the log"), file};
+}
+
+HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
+  const LogText text = read_log_text(path);
+  HallLog log = parse_hall_log(text.bytes, text.file, options);
+  if (path != "-") log.path = path;
   return log;
 }
 

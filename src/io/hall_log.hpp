@@ -35,6 +35,14 @@ struct HallLog {
 // input. Throws InputError ("file:line:col: error: ...") for a log that cannot be used.
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options = {});
 
+// A log's bytes as read, not yet decoded: `file` is the file read (a folder's log inside it) or
+// "<stdin>" for "-". Throws InputError as read_hall_log does for what cannot be read.
+struct LogText {
+  std::string bytes;
+  std::string file;
+};
+LogText read_log_text(const std::string& path);
+
 // The same from text in memory; `name` stands for the file in messages.
 HallLog parse_hall_log(std::string_view text, const std::string& name,
                        const HallLogOptions& options = {});

@@ -9,6 +9,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/log_line.hpp"
+#include "io/log_reading_error.hpp"
 
 namespace fl {
 namespace {
@@ -69,6 +70,45 @@ const std::string kExpected =
     "a header naming the time and ADC columns (for example \"t_us,adc\", \"t_s,adc\" or "
     "\"time,value\") or lines of samples";
 
+// The request's options with the columns, the rate or the time's unit changed: what an error's
+// advice names, for a caller to try on the log before giving it.
+ReadingTry try_columns(HallLogOptions options, const std::string& columns) {
+  options.columns = columns;
+  options.rate_hz = 0.0;
+  return {options, field_ref("columns", columns), ""};
+}
+ReadingTry try_rate(HallLogOptions options, double hz, const std::string& text,
+                    const std::string& caveat) {
+  options.rate_hz = hz;
+  return {options, field_ref("rate", text), caveat};
+}
+// A guessed rate's caveat: the period scales with it.
+const std::string kGuessedRate = "if the sketch samples at 1 kHz; T scales with the rate";
+ReadingTry try_time_unit(HallLogOptions options, const std::string& unit) {
+  options.time_unit = unit;
+  return {options, field_ref("time_unit", unit), ""};
+}
+
+// Every way of reading `fields` fields as a time ("t", its unit inferred, or `time` when given)
+// and an ADC value ("adc") among the first four, the rest skipped ("_").
+std::vector<ReadingTry> column_tries(const HallLogOptions& options, std::size_t fields,
+                                     std::optional<std::size_t> time = std::nullopt,
+                                     const std::string& time_name = "t") {
+  std::vector<ReadingTry> tries;
+  if (fields < 2 || fields > 8) return tries;
+  const std::size_t most = std::min<std::size_t>(fields, 4);
+  for (std::size_t t = 0; t < most; ++t) {
+    if (time && t != *time) continue;
+    for (std::size_t v = 0; v < most; ++v) {
+      if (v == t) continue;
+      std::string columns;
+      for (std::size_t k = 0; k < fields; ++k)
+        columns += std::string(k > 0 ? "," : "") + (k == t ? time_name : k == v ? "adc" : "_");
+      tries.push_back(try_columns(options, columns));
+    }
+  }
+  return tries;
+}
 }  // namespace
 
 void LineTally::add(int line) {
@@ -184,7 +224,7 @@ bool HallLogReader::start(std::string_view text, std::size_t offset, int number)
   }
   // Lines of the doubtful header's shape: it was the log's header after all, and cannot be used.
   if (doubtful_ && fields.size() == doubtful_->fields && delimiter == doubtful_->delimiter)
-    throw InputError(SourceLocation{name_, doubtful_->number, 0}, doubtful_->message);
+    throw_doubtful();
   candidates_.push_back({std::string(text), offset, number, fields.size(), delimiter});
   if (candidates_.size() >= kConfirmingLines) start_by_position();
   return true;
@@ -215,12 +255,17 @@ bool HallLogReader::try_header(std::string_view text, int number) {
   }
   if (!value) {
     // A delimited line naming a time but no value is a header this reader cannot use.
-    if (time && delimiter != 0)
-      throw InputError(SourceLocation{name_, number, 0},
-                       "the header " + quoted(trim(text)) +
-                           " names no ADC column: expected one called " + std::string(kValueNames) +
-                           "; or name the log's fields in order with " + field_ref("columns") +
-                           " (for example " + field_ref("columns", "t_us,adc") + ")");
+    if (time && delimiter != 0) {
+      const std::optional<ColumnName> named = column_name(fields[*time].text);
+      throw LogReadingError(SourceLocation{name_, number, 0},
+                            "the header " + quoted(trim(text)) +
+                                " names no ADC column: expected one called " +
+                                std::string(kValueNames),
+                            "or name the log's fields in order with " + field_ref("columns") +
+                                " (for example " + field_ref("columns", "t_us,adc") + ")",
+                            column_tries(options_, fields.size(), *time,
+                                         named && !named->unit.empty() ? "t_" + named->unit : "t"));
+    }
     return false;
   }
   if (!time && options_.rate_hz == 0.0) {
@@ -228,8 +273,9 @@ bool HallLogReader::try_header(std::string_view text, int number) {
     if (!doubtful_)
       doubtful_ = DoubtfulHeader{
           "the header " + quoted(trim(text)) + " names no time column: expected one called " +
-              std::string(kTimeNames) + "; for a log of values only, give the sample rate with " +
-              field_ref("rate") + " (for example " + field_ref("rate", "1kHz") + ")",
+              std::string(kTimeNames),
+          "for a log of values only, give the sample rate with " + field_ref("rate") +
+              " (for example " + field_ref("rate", "1kHz") + ")",
           number, fields.size(), delimiter};
     skip(text);
     return true;
@@ -261,20 +307,19 @@ void HallLogReader::start_by_position() {
   const Candidate& first = candidates_.front();
   const SourceLocation at{name_, first.number, 0};
   if (first.fields == 1 && options_.rate_hz == 0.0)
-    throw InputError(at,
-                     "one number per line and no header: ADC values without times; give the "
-                     "sample rate with " +
-                         field_ref("rate") + " (for example " + field_ref("rate", "1kHz") +
-                         ": the sketch's delay between samples) or, if the numbers are times, "
-                         "name the fields with " +
-                         field_ref("columns"));
+    throw LogReadingError(at, "one number per line and no header: ADC values without times",
+                          "give the sample rate with " + field_ref("rate") + " (for example " +
+                              field_ref("rate", "1kHz") +
+                              ": the sketch's delay between samples) or, if the numbers are "
+                              "times, name the fields with " +
+                              field_ref("columns"),
+                          {try_rate(options_, 1000.0, "1kHz", kGuessedRate)});
   if (first.fields > 2)
-    throw InputError(at, std::to_string(first.fields) +
-                             " numbers per line and no header: say which field is the time and "
-                             "which the ADC value with " +
-                             field_ref("columns") + " (for example " +
-                             field_ref("columns", first.fields > 2 ? "t_ms,adc,_" : "t_ms,adc") +
-                             " for the first two)");
+    throw LogReadingError(at, std::to_string(first.fields) + " numbers per line and no header",
+                          "say which field is the time and which the ADC value with " +
+                              field_ref("columns") + " (for example " +
+                              field_ref("columns", "t_ms,adc,_") + " for the first two)",
+                          column_tries(options_, first.fields));
   layout_ = ColumnLayout{};
   if (first.fields == 1) {
     layout_.value = 0;
@@ -485,13 +530,16 @@ void HallLogReader::infer_unit() {
       rates.precision(3);
       rates << 1.0 / step << " Hz in seconds, " << 1e3 / step << " Hz in milliseconds, "
             << 1e6 / step << " Hz in microseconds";
-      throw InputError(SourceLocation{name_, held_.front().line, 0},
-                       "the time column " + quoted(layout_.time_name) +
-                           " names no unit, and its step of " + shown(step) +
-                           " per sample fits none: expected a sample rate from 20 Hz to 20 kHz, "
-                           "found " +
-                           rates.str() + "; give the unit with " + field_ref("time_unit") +
-                           " (us, ms or s), or the sample rate with " + field_ref("rate"));
+      throw LogReadingError(
+          SourceLocation{name_, held_.front().line, 0},
+          "the time column " + quoted(layout_.time_name) + " names no unit, and its step of " +
+              shown(step) +
+              " per sample fits none: expected a sample rate from 20 Hz to 20 kHz, found " +
+              rates.str(),
+          "give the unit with " + field_ref("time_unit") +
+              " (us, ms or s), or the sample rate with " + field_ref("rate"),
+          {try_time_unit(options_, "us"), try_time_unit(options_, "ms"),
+           try_time_unit(options_, "s")});
     }
     unit = found;
   }
@@ -538,26 +586,32 @@ std::optional<HallLogReader::PlotterLine> HallLogReader::plotter_line(std::strin
   return out;
 }
 
+void HallLogReader::throw_doubtful() const {
+  throw LogReadingError(SourceLocation{name_, doubtful_->number, 0}, doubtful_->problem,
+                        doubtful_->advice, {try_rate(options_, 1000.0, "1kHz", kGuessedRate)});
+}
+
 void HallLogReader::finish() {
   if (!started_ && !candidates_.empty()) start_by_position();
   if (pending_) confirm(*pending_);
   pending_.reset();
   if (scale_ == 0.0) infer_unit();
   reading_.segments = segment_ + 1;
-  if (!started_ && doubtful_)
-    throw InputError(SourceLocation{name_, doubtful_->number, 0}, doubtful_->message);
+  if (!started_ && doubtful_) throw_doubtful();
   if (!started_) {
     const SourceLocation top{name_, 1, 0};
     if (reading_.lines_skipped == 0 && reading_.comment_lines == 0)
       throw InputError(top, "the log is empty: expected " + kExpected);
     if (reading_.lines_skipped == 0)
       throw InputError(top, "the log has only comment lines: expected " + kExpected);
-    throw InputError(top, "none of the log's " + std::to_string(reading_.lines_skipped) +
+    throw LogReadingError(top,
+                          "none of the log's " + std::to_string(reading_.lines_skipped) +
                               " lines is a header or a sample: expected " + kExpected +
-                              ", found lines such as " + quoted(first_skipped_) +
-                              "; for a log without a header, name its fields in order with " +
+                              ", found lines such as " + quoted(first_skipped_),
+                          "for a log without a header, name its fields in order with " +
                               field_ref("columns") + " (for example " +
-                              field_ref("columns", "t_ms,adc") + ")");
+                              field_ref("columns", "t,adc") + ")",
+                          {try_columns(options_, "t,adc")});
   }
   check_shares();
 }
@@ -583,32 +637,48 @@ void HallLogReader::check_shares() const {
   const int back = reading_.out_of_order.count;
   if (corrupted >= repeated && corrupted >= back) {
     const Problem& p = first_corrupted_;
-    throw InputError(
+    throw LogReadingError(
         SourceLocation{name_, p.line, p.column},
         p.what + "; " + share + std::to_string(corrupted) +
             " are not samples. Is the log what it seems? A serial capture at the wrong baud rate "
-            "gives garbled lines (the rig firmware's is 250000); a log whose fields are not "
-            "(time, value) needs " +
-            field_ref("columns") + " (for example " + field_ref("columns", "_,t_ms,adc") + ")");
+            "gives garbled lines (the rig firmware's is 250000)",
+        "a log whose fields are not (time, value) needs " + field_ref("columns") +
+            " (for example " + field_ref("columns", "_,t,adc") + ")",
+        {try_columns(options_, "_,t,adc")});
   }
   if (repeated >= back) {
     const Problem& p = first_repeated_;
-    throw InputError(
+    // The rate the log's own clock gives: its lines over its span.
+    std::vector<ReadingTry> tries;
+    std::string example = "2kHz";
+    if (out_.size() >= 2 && out_.back().t_s > out_.front().t_s) {
+      // To three significant digits: 2000Hz, 1990Hz.
+      const double hz = static_cast<double>(lines) / (out_.back().t_s - out_.front().t_s);
+      const double digit = std::pow(10.0, std::floor(std::log10(hz)) - 2.0);
+      const double rounded = std::round(hz / digit) * digit;
+      std::ostringstream rate;
+      rate << rounded << "Hz";
+      example = rate.str();
+      tries.push_back(try_rate(options_, rounded, example,
+                               "the rate its clock gives, its lines over its span"));
+    }
+    throw LogReadingError(
         SourceLocation{name_, p.line, p.column},
         p.what + "; " + share + std::to_string(repeated) +
             " repeat the time before them: the log's clock ticks more slowly than it samples "
-            "(millis() counts whole milliseconds). Give the sample rate with " +
-            field_ref("rate") + " (for example " + field_ref("rate", "2kHz") +
-            ") to time the samples by their count, or log micros()");
+            "(millis() counts whole milliseconds)",
+        "give the sample rate with " + field_ref("rate") + " (for example " +
+            field_ref("rate", example) + ") to time the samples by their count, or log micros()",
+        std::move(tries));
   }
   const Problem& p = first_out_of_order_;
-  throw InputError(
-      SourceLocation{name_, p.line, p.column},
-      p.what + ": the times must increase; " + share + std::to_string(back) +
-          " are out of order: the log mixes captures or its clock went back. Take one capture, "
-          "or give the sample rate with " +
-          field_ref("rate") + " (for example " + field_ref("rate", "1kHz") +
-          ") to time the samples by their count");
+  throw LogReadingError(SourceLocation{name_, p.line, p.column},
+                        p.what + ": the times must increase; " + share + std::to_string(back) +
+                            " are out of order: the log mixes captures or its clock went back",
+                        "take one capture, or give the sample rate with " + field_ref("rate") +
+                            " (for example " + field_ref("rate", "1kHz") +
+                            ") to time the samples by their count",
+                        {try_rate(options_, 1000.0, "1kHz", kGuessedRate)});
 }
 
 std::vector<LogSample> HallLogReader::take() {

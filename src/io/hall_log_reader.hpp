@@ -144,12 +144,14 @@ class HallLogReader {
   // header or samples of another shape follow it ("Hall rig ready"), else the log's header, and
   // its message the log's error.
   struct DoubtfulHeader {
-    std::string message;
+    std::string problem;
+    std::string advice;
     int number = 0;
     std::size_t fields = 0;
     char delimiter = 0;
   };
   std::optional<DoubtfulHeader> doubtful_;
+  [[noreturn]] void throw_doubtful() const;
   char delimiter_ = 0;
   ColumnLayout layout_;
   std::string header_text_;    // the header as written, to recognise it again

@@ -190,7 +190,10 @@ TEST_F(Estimate, ATimeReadInTheWrongUnitIsRefusedNamingTheUnitThatFits) {
   for (const std::string& log : {as_seconds, as_micros}) {
     const test::CommandResult r = lab(log);
     EXPECT_EQ(r.status, 2) << log;
-    EXPECT_NE(r.err.find("if its time is in ms, give --time-unit ms"), std::string::npos) << r.err;
+    // Checked before it is given: the period it names is the one the unit then gives.
+    EXPECT_NE(r.err.find("if its time is in ms, give --time-unit ms, which reads it as T = 0.79"),
+              std::string::npos)
+        << r.err;
     const nlohmann::json fixed = json(log + " --time-unit ms");
     // The times above are whole milliseconds: a pulse is timed within 1 ms, so the mean period
     // within 1 ms of 0.79 s, and 2 ms bounds it.
@@ -342,6 +345,37 @@ TEST_F(Estimate, TheAdviceInAnErrorWorks) {
     const nlohmann::json j = json(c.log + " " + c.advice);
     EXPECT_NEAR(j["period_s"].get<double>(), c.period_s, 5e-4 * c.period_s) << c.log;
   }
+}
+
+// Advice is checked before it is given: each way of reading the log the message would suggest is
+// tried on it, and the message names the ones that give a rig's period, with the period they give
+// (the one the option then gives), or says what was tried when none does: a column of a counter
+// under a values-only header read at 1 kHz gives no pulse, so --rate 1kHz is not advised.
+TEST_F(Estimate, AdviceIsCheckedBeforeItIsGiven) {
+  const test::HallSamples samples = test::generate(rig());
+  std::string three;  // time in ms, the value, a constant: no header
+  for (std::size_t i = 0; i < samples.adc.size(); ++i)
+    three += std::to_string(samples.t_us[i] / 1000) + "," + std::to_string(samples.adc[i]) + ",7\n";
+  const std::string log = write("three.csv", three);
+  const test::CommandResult r = lab(log);
+  EXPECT_EQ(r.status, 2);
+  const std::string advised = "the log reads with --columns t,adc,_: T = ";
+  const std::size_t at = r.err.find(advised);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  // The only reading that works: the constant or the value as the time give none.
+  EXPECT_EQ(r.err.find("; or with"), std::string::npos) << r.err;
+  const double said = std::stod(r.err.substr(at + advised.size()));
+  const nlohmann::json j = json(log + " --columns t,adc,_");
+  EXPECT_NEAR(j["period_s"].get<double>(), said, 5e-5);
+  EXPECT_NEAR(said, 0.79, 2e-3);
+
+  std::string counter = "Hall\n";  // a banner-like header over a counter: no Hall signal
+  for (int i = 0; i < 5000; ++i) counter += std::to_string(1000 + i) + "\n";
+  const test::CommandResult c = lab(write("counter.csv", counter));
+  EXPECT_EQ(c.status, 2);
+  EXPECT_NE(c.err.find("tried --rate 1kHz on it: it gives no period of a rig"), std::string::npos)
+      << c.err;
+  EXPECT_EQ(c.err.find("for example --rate 1kHz"), std::string::npos) << c.err;
 }
 
 TEST_F(Estimate, APlotEvenWhenThereIsNoPeriod) {

@@ -96,7 +96,7 @@ TEST(HallLog, ErrorsNameTheLineAndSayWhatWasFound) {
                 "log.csv:1: error: none of the log's 2 lines is a header or a sample: expected a "
                 "header naming the time and ADC columns"},
            Case{"1,2,3\n4,5,6\n7,8,9\n",
-                "log.csv:1: error: 3 numbers per line and no header: say which field is the time "
+                "log.csv:1: error: 3 numbers per line and no header; say which field is the time "
                 "and which the ADC value with --columns"},
            Case{"512\n513\n514\n",
                 "log.csv:1: error: one number per line and no header: ADC values without times; "

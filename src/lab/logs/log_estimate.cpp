@@ -123,14 +123,26 @@ std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
   };
   for (const char* unit : {"us", "ms", "s"}) {
     if (unit == r.time_unit) continue;
-    const double rate = est.sample_rate * seconds(r.time_unit) / seconds(unit);
-    if (rate >= kLeast && rate <= kMost)
-      return fmt::format(
-          "; the samples come {:.4g} a second read in {} ({}), where a rig samples 20 to 20000 a "
-          "second: if its time is in {}, give {}",
-          est.sample_rate, r.time_unit,
-          r.time_unit_from == "header" ? "as the header names it" : "as given", unit,
-          field_ref("time_unit", unit));
+    const double factor = seconds(unit) / seconds(r.time_unit);
+    const double rate = est.sample_rate / factor;
+    if (rate < kLeast || rate > kMost) continue;
+    // Checked before it is given: the log read in that unit gives a rig's T and mu_k.
+    std::vector<double> t_s(log.t_s);
+    for (double& t : t_s) t *= factor;
+    const HallLog read_so = hall_log_from_samples(
+        std::move(t_s), std::vector<double>(log.adc.begin(), log.adc.end()), log.path);
+    const fl_estimator::Stats s = estimate_log(read_so, est.set_up, false).stats;
+    if (s.periods_used == 0 || implausible(s.period_s, kPeriodRange) ||
+        implausible(s.mu_k, kMuKRange))
+      continue;
+    return fmt::format(
+        "; the samples come {:.4g} a second read in {} ({}), where a rig samples 20 to 20000 a "
+        "second: if its time is in {}, give {}, which reads it as T = {:.4f} s, mu_k {:.3f} from "
+        "{} periods",
+        est.sample_rate, r.time_unit,
+        r.time_unit_from == "header" ? "as the header names it" : "as given", unit,
+        field_ref("time_unit", unit), static_cast<double>(s.period_s), static_cast<double>(s.mu_k),
+        s.periods_used);
   }
   return "";
 }

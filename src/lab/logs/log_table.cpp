@@ -8,6 +8,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
+#include "lab/logs/checked_reading.hpp"
 #include "lab/logs/geometry_check.hpp"
 
 namespace fl {
@@ -61,7 +62,7 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
       if (side->material) row.material = side->material;
       if (side->temperature) row.temperature = side->temperature;
     }
-    const HallLog hall = read_hall_log(log, defaults.reading);
+    const HallLog hall = read_hall_log_checked(log, defaults.reading, defaults.set_up);
     const LogEstimate est = estimate_log(hall, row.set_up, false);
     require_periods(hall, est, "");
     require_geometry(hall, est, check_geometry(hall, est), "");

@@ -14,6 +14,7 @@
 #include "io/input_error.hpp"
 #include "io/log_sidecar.hpp"
 #include "io/paper_table_yaml.hpp"
+#include "lab/logs/checked_reading.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/request/lab_data.hpp"
 #include "lab/request/material_fields.hpp"
@@ -130,7 +131,7 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   options.progress = std::move(progress);
 
   if (with_log) {
-    const HallLog log = read_hall_log(r.log, reading);
+    const HallLog log = read_hall_log_checked(r.log, reading, LogSetUp{});
     // The sidecar's material (checked against the paper's table) when the request names none.
     const std::optional<LogSidecar> sidecar = read_log_sidecar(log.file, &paper);
     result.log = compare_log_with_rig(log, *geometry, options);

@@ -14,6 +14,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/log_files.hpp"
+#include "lab/logs/checked_reading.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
 
@@ -202,7 +203,7 @@ Outcome OneLogEstimate::outcome() const {
 
 OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   OneLogEstimate out;
-  out.log = p.samples ? *p.samples : read_hall_log(p.log, p.reading);
+  out.log = p.samples ? *p.samples : read_hall_log_checked(p.log, p.reading, p.set_up);
   // The log's sidecar over the request's rig (its material checked against the paper's).
   std::optional<LogSidecar> sidecar;
   const LogSetUp set_up =

@@ -1,0 +1,63 @@
+#include "lab/logs/checked_reading.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "io/input_error.hpp"
+#include "io/log_reading_error.hpp"
+
+namespace fl {
+namespace {
+
+// What one way of reading gives, or nothing when it gives no rig's estimate.
+std::optional<std::string> outcome_of(const LogText& text, const ReadingTry& reading,
+                                      const LogSetUp& set_up) {
+  try {
+    const HallLog log = parse_hall_log(text.bytes, text.file, reading.options);
+    const LogEstimate est = estimate_log(log, set_up, false);
+    require_periods(log, est, "");
+    require_plausible(log, est, "");
+    const fl_estimator::Stats& s = est.stats;
+    return fmt::format("with {}: T = {:.4f} s, mu_k {:.3f} from {} period{}{}", reading.words,
+                       static_cast<double>(s.period_s), static_cast<double>(s.mu_k), s.periods_used,
+                       s.periods_used == 1 ? "" : "s",
+                       reading.caveat.empty() ? "" : " (" + reading.caveat + ")");
+  } catch (const InputError&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+HallLog read_hall_log_checked(const std::string& path, const HallLogOptions& options,
+                              const LogSetUp& set_up) {
+  const LogText text = read_log_text(path);
+  try {
+    HallLog log = parse_hall_log(text.bytes, text.file, options);
+    if (path != "-") log.path = path;
+    return log;
+  } catch (const LogReadingError& e) {
+    if (e.tries().empty()) throw;
+    std::vector<std::string> working;
+    std::vector<std::string> tried;
+    for (const ReadingTry& t : e.tries()) {
+      tried.push_back(t.words);
+      if (std::optional<std::string> found = outcome_of(text, t, set_up))
+        working.push_back(std::move(*found));
+    }
+    if (!working.empty())
+      throw InputError(
+          e.where(), fmt::format("{}; the log reads {}", e.problem(), fmt::join(working, "; or ")));
+    throw InputError(e.where(),
+                     fmt::format("{}; tried {} on it: {} no period of a rig; is it the rig's Hall "
+                                 "log, captured whole?",
+                                 e.problem(), fmt::join(tried, ", "),
+                                 tried.size() == 1 ? "it gives" : "none gives"));
+  }
+}
+
+}  // namespace fl

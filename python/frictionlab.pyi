@@ -338,6 +338,9 @@ class RunSummary:
     estimator: Optional[EstimatorReport]
     period_trajectory: Optional[float]
     period_trajectory_err: Optional[float]
+    oscillation_centre: Optional[float]
+    oscillation_centre_theory: Optional[float]
+    tilt: float
     estimator_disagreement: Optional[str]
     amplitude_start: Optional[float]
     amplitude_end: Optional[float]

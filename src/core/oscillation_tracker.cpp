@@ -96,8 +96,10 @@ void OscillationTracker::add(double t, double x, double v) {
                                                (-12 * u + 6) * y + (6 * u - 2) * m1;
                                       },
                                       m0, m1);
-      amplitudes_.push_back(std::fabs(f(s)));
+      const double turn = f(s);
+      amplitudes_.push_back(std::fabs(turn));
       turning_times_.push_back(t0_ + s * h);
+      turning_positions_.push_back(turn + centre_);
     }
   }
   t0_ = t;
@@ -114,6 +116,18 @@ std::optional<LinearFit> OscillationTracker::period(double since) const {
   std::vector<double> index(times.size());
   for (std::size_t i = 0; i < index.size(); ++i) index[i] = 0.5 * static_cast<double>(i);
   return fit_line(index, times);
+}
+
+std::optional<double> OscillationTracker::centre(double since) const {
+  double sum = 0.0;
+  int pairs = 0;
+  for (std::size_t k = 1; k < turning_positions_.size(); ++k) {
+    if (turning_times_[k - 1] < since) continue;
+    sum += 0.5 * (turning_positions_[k - 1] + turning_positions_[k]);
+    ++pairs;
+  }
+  if (pairs == 0) return std::nullopt;
+  return sum / pairs;
 }
 
 std::optional<double> OscillationTracker::amplitude_drift_per_period() const {

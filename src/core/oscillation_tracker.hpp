@@ -1,6 +1,8 @@
-// Period and amplitude of an oscillation x(t) read from its own trajectory, sample by sample:
-// the times x crosses its centre (placed between samples by cubic Hermite interpolation with the
-// velocities) and the turning points' amplitudes. This is the trajectory's own measure of the
+// Period, centre and amplitude of an oscillation x(t) read from its own trajectory, sample by
+// sample: the times x crosses its centre (placed between samples by cubic Hermite interpolation
+// with the velocities) and the turning points. The centre crossed is the one given (a tilted
+// rig's x_eq, core/tilted_rig.hpp); the trajectory's own centre is measured from its turning
+// points. This is the trajectory's own measure of the
 // period, independent of the Hall sensor and the estimator.
 #pragma once
 
@@ -31,9 +33,14 @@ class OscillationTracker {
 
   // Crossings of the centre, alternating in direction, in time order [s].
   const std::vector<double>& crossings() const { return crossings_; }
-  // |x - centre| at each turning point [m], and when it happened [s].
+  // |x - centre| at each turning point [m], when it happened [s], and x there [m].
   const std::vector<double>& turning_amplitudes() const { return amplitudes_; }
   const std::vector<double>& turning_times() const { return turning_times_; }
+  const std::vector<double>& turning_positions() const { return turning_positions_; }
+
+  // The oscillation's centre [m]: the mean of the midpoints of successive turning points at or
+  // after `since` [s] (needs two). nullopt before that.
+  std::optional<double> centre(double since = 0.0) const;
 
   // Period from a straight-line fit of crossing time against half-period index (needs at least
   // three crossings), with its standard error. nullopt before that. Only the crossings at or
@@ -51,6 +58,7 @@ class OscillationTracker {
   std::vector<double> crossings_;
   std::vector<double> amplitudes_;
   std::vector<double> turning_times_;
+  std::vector<double> turning_positions_;
 };
 
 }  // namespace fl

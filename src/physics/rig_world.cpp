@@ -126,7 +126,9 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
     : owned(std::move(keep)), rig(compiled), dt(compiled.world.time_step) {
   const CompiledRig& s = rig;
   const PlateMass& mass = rig.plate;
-  world.setGravity(btVector3(0, 0, -s.world.gravity));
+  // The rig's frame stays level; a tilted rig turns gravity in it (scene.hpp, world.tilt).
+  world.setGravity(btVector3(-s.world.gravity * std::sin(s.world.tilt), 0,
+                             -s.world.gravity * std::cos(s.world.tilt)));
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
   contact_erp = info.m_erp2;

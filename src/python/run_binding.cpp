@@ -331,6 +331,11 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("period_trajectory", &S::period_trajectory,
                     "s, the trajectory's own period (crossings of x = 0), harmonic only")
       .def_readonly("period_trajectory_err", &S::period_trajectory_err, "s, its standard error")
+      .def_readonly("oscillation_centre", &S::oscillation_centre,
+                    "m, the mean of the midpoints of successive turning points")
+      .def_readonly("oscillation_centre_theory", &S::oscillation_centre_theory,
+                    "m, a tilted rig's x_eq (0 on a level one)")
+      .def_readonly("tilt", &S::tilt, "rad, world.tilt")
       .def_readonly("estimator_disagreement", &S::estimator_disagreement,
                     "the estimator's period against the trajectory's, beyond both "
                     "uncertainties, or None")

@@ -6,6 +6,7 @@
 
 #include "core/friction_oscillator.hpp"
 #include "core/integrator_error.hpp"
+#include "core/tilted_rig.hpp"
 #include "core/units.hpp"
 
 namespace fl {
@@ -48,7 +49,9 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   // Both rollers slip against the plate, taking mu_k m g a between them, G times that at the
   // motor; on the linear curve the motor keeps duty - load / stall of its no-load speed.
   const MotorDesc& motor = drive.motor;
-  out.stall_load_torque = mu_k * plate.mass * scene.world.gravity * r.radius * out.gearbox_ratio;
+  out.stall_load_torque = mu_k * plate.mass *
+                          gravity_normal(scene.world.gravity, scene.world.tilt) * r.radius *
+                          out.gearbox_ratio;
   const auto ramp = duty_ramp(scene);
   const double duty = ramp ? ramp->smallest() : motor.duty;
   const double share = duty - out.stall_load_torque / motor.stall_torque;
@@ -71,7 +74,7 @@ CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
     try {
       g.linearised_growth =
           linearised_motion(rig.friction,
-                            {scene.rollers.spacing, rig.plate.h_c, scene.world.gravity},
+                            {scene.rollers.spacing, rig.plate.h_c, rig.gravity_normal},
                             g.surface_speed)
               .gamma;
     } catch (const DomainError&) {
@@ -108,18 +111,21 @@ CompiledRig compile_rig(Scene scene) {
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
   const double l = scene.rollers.spacing, mu = rig.friction.mu_k, h_c = rig.plate.h_c,
-               g = scene.world.gravity;
+               tilt = scene.world.tilt;
+  const double g = gravity_normal(scene.world.gravity, tilt);
+  rig.gravity_normal = g;
   rig.period_thin = period_thin(l, mu, g);
   rig.restoring = has_restoring_force(l, mu, h_c);
   rig.amplitude_initial = std::fabs(scene.plate.offset);
   if (rig.restoring) {
+    rig.oscillation_centre = oscillation_centre(l, mu, h_c, tilt);
     rig.period_thick = period_thick(l, mu, h_c, g);
     rig.omega = 2.0 * kPi / *rig.period_thick;
     rig.integrator_bias = integrator_period_bias(*rig.omega, scene.world.time_step);
     rig.conditioning = mu_k_with_uncertainty(*rig.period_thick, 0.0, l, 0.0, h_c, g);
-    rig.amplitude_initial =
-        amplitude_from_start(scene.plate.offset, scene.plate.velocity, *rig.omega);
-    rig.tipping_amplitude = tipping_amplitude(l, mu, h_c);
+    rig.amplitude_initial = amplitude_from_start(scene.plate.offset - *rig.oscillation_centre,
+                                                 scene.plate.velocity, *rig.omega);
+    rig.tipping_amplitude = tilted_tipping_amplitude(l, mu, h_c, tilt);
     rig.slip_threshold =
         roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
   }

@@ -79,13 +79,18 @@ struct CompiledRig {
   // when l <= 2 mu_k h_c; the thick-plate quantities are then absent. (It does not look at
   // rollers.sense: a scene whose rollers turn outward keeps these values for comparison.)
   bool restoring = false;
+  // g cos(world.tilt), what presses the plate on its rollers: every closed form below uses it
+  // (core/tilted_rig.hpp); g on a level rig.
+  double gravity_normal = 9.81;
+  // x_eq, where a tilted rig's plate oscillates about (0 on a level one) [m].
+  std::optional<double> oscillation_centre;
   double period_thin = 0.0;                    // s, the paper's formula
   std::optional<double> period_thick;          // s
   std::optional<double> omega;                 // rad/s, 2 pi / T_thick
   std::optional<double> integrator_bias;       // relative period error -(omega dt)^2 / 24
   std::optional<MuKUncertainty> conditioning;  // how errors in T, l, h_c carry into mu_k
-  double amplitude_initial = 0.0;              // m, from plate.offset and plate.velocity
-  std::optional<double> tipping_amplitude;     // m, l/2 - mu_k h_c
+  double amplitude_initial = 0.0;              // m, about x_eq, from plate.offset and velocity
+  std::optional<double> tipping_amplitude;     // m, l/2 - mu_k h_c - |x_eq|
   // Roller speed [rad/s] at which the rollers' surface keeps up with the plate's largest speed
   // A omega (below it the plate sticks to a roller for part of each cycle).
   std::optional<double> slip_threshold;

@@ -23,7 +23,10 @@ namespace fl {
 using Vec3 = std::array<double, 3>;
 
 struct WorldDesc {
-  double gravity = 9.81;          // m/s^2, pulls along -z
+  double gravity = 9.81;  // m/s^2, pulls along -z on a level rig
+  // rad: the line through the rollers' tops rises by this angle toward +x (a rig not level); the
+  // rig's frame stays as above and gravity turns: (-g sin tilt, 0, -g cos tilt).
+  double tilt = 0.0;
   double time_step = 1.0 / 1000;  // s, fixed
   int solver_iterations = 10;     // sequential-impulse iterations per step
   double duration = 10.0;         // s of simulated time

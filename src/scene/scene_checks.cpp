@@ -6,6 +6,7 @@
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
 #include "core/plausible_range.hpp"
+#include "core/units.hpp"
 #include "scene/drive_layout.hpp"
 
 namespace fl {
@@ -26,6 +27,11 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     need(finite_positive(v), key, describe("must be positive, found ", v));
   };
   positive(s.world.gravity, "world.gravity");
+  // A rig tilted beyond 30 degrees is no bench's slip of the level; at 90 the rollers carry
+  // nothing.
+  need(std::isfinite(s.world.tilt) && std::fabs(s.world.tilt) <= kPi / 6.0, "world.tilt",
+       describe("must be between -30 and 30 degrees, found ", s.world.tilt * 180.0 / kPi,
+                " deg (an angle without a unit is in radians)"));
   positive(s.world.time_step, "world.time_step");
   positive(s.world.duration, "world.duration");
   need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,

@@ -19,8 +19,9 @@ Vec3 read_vec3(const YamlNode& node, Dimension dimension) {
 }
 
 void read_world(const YamlNode& n, WorldDesc& w) {
-  n.allow_keys({"gravity", "time_step", "solver_iterations", "duration", "seed"});
+  n.allow_keys({"gravity", "tilt", "time_step", "solver_iterations", "duration", "seed"});
   if (auto v = n.find("gravity")) w.gravity = v->quantity(Dimension::kAcceleration);
+  if (auto v = n.find("tilt")) w.tilt = v->quantity(Dimension::kAngle);
   if (auto v = n.find("time_step")) w.time_step = v->quantity(Dimension::kTime);
   if (auto v = n.find("solver_iterations")) w.solver_iterations = static_cast<int>(v->integer());
   if (auto v = n.find("duration")) w.duration = v->quantity(Dimension::kTime);

@@ -34,6 +34,31 @@ TEST(OscillationTracker, PeriodAndAmplitudeOfASampledCosine) {
   }
 }
 
+// A cosine about x = c (a tilted rig's plate): crossed about the centre given, it has its period;
+// its centre, measured from the turning points, is c; and only the turning points after `since`
+// count.
+TEST(OscillationTracker, ACosineAboutAnotherCentreHasItsPeriodAndCentre) {
+  const double period = 0.79, w = 2.0 * kPi / period, c = -0.0079, amplitude = 0.005;
+  const double dt = 1e-3;
+  OscillationTracker tracker(c);
+  OscillationTracker level;  // crossings of x = 0: none, the plate never reaches it
+  for (int i = 0; i <= 10000; ++i) {
+    const double t = i * dt;
+    const double x = c + amplitude * std::cos(w * t + 0.3);
+    const double v = -amplitude * w * std::sin(w * t + 0.3);
+    tracker.add(t, x, v);
+    level.add(t, x, v);
+  }
+  ASSERT_TRUE(tracker.period().has_value());
+  EXPECT_NEAR(tracker.period()->slope / period, 1.0, 1e-9);
+  ASSERT_TRUE(tracker.centre().has_value());
+  EXPECT_NEAR(*tracker.centre(), c, 1e-9);
+  EXPECT_NEAR(*tracker.centre(5.0), c, 1e-9);
+  EXPECT_FALSE(tracker.centre(10.0).has_value());
+  for (double x : tracker.turning_positions()) EXPECT_NEAR(std::fabs(x - c), amplitude, 1e-9);
+  EXPECT_FALSE(level.period().has_value());
+}
+
 TEST(OscillationTracker, DecayingAmplitudeIsMeasuredAsDrift) {
   const double period = 0.5, w = 2.0 * kPi / period, rate = 0.01;  // 1 % per second
   OscillationTracker tracker;

@@ -34,13 +34,15 @@ struct CycleTheory {
 CycleTheory theory_at(const CompiledRig& rig, double surface_speed) {
   CycleTheory out;
   if (!rig.restoring || !(surface_speed > 0.0)) return out;
-  const PlateOnRollers plate{rig.rollers.spacing, rig.plate.h_c, rig.world.gravity};
+  const PlateOnRollers plate{rig.rollers.spacing, rig.plate.h_c, rig.gravity_normal};
   try {
     out.slip_limit_amplitude =
         surface_speed / sliding_angular_frequency(rig.friction, plate, surface_speed);
   } catch (const DomainError&) {
   }
-  if (!rig.friction.depends_on_slip()) {
+  // The stick-slip cycle's closed form is a level rig's (lab/run/regime_theory.cpp).
+  if (!rig.friction.depends_on_slip() &&
+      (rig.world.tilt == 0.0 || rig.friction.mu_s == rig.friction.mu_k)) {
     try {
       const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate, surface_speed);
       out.stick_slip_amplitude = cycle.amplitude;

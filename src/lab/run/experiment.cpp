@@ -68,6 +68,8 @@ void rig_figures(const CompiledRig& rig, RunSummary& out) {
   out.h_c = rig.plate.h_c;
   out.plate_mass = rig.plate.mass;
   out.gravity = rig.world.gravity;
+  out.tilt = rig.world.tilt;
+  out.oscillation_centre_theory = rig.oscillation_centre;
   out.temperature = rig.friction_source.temperature;
   out.time_step = rig.world.time_step;
   if (rig.sensor && rig.sensor->clock_error != 0.0) out.clock_error = rig.sensor->clock_error;
@@ -288,7 +290,8 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
   RunRecording* recording = r.recording;
   const std::optional<HallChannel>& hall = r.hall;
   const OscillationTracker& tracker = r.regime.monitor().tracker();
-  const double g = rig.world.gravity;
+  // The closed forms' g: what presses the plate on its rollers (g cos(tilt)).
+  const double g = rig.gravity_normal;
   RunSummary out;
   rig_figures(rig, out);
   out.interrupted_at = r.interrupted_at;
@@ -337,6 +340,7 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
   if (const auto p = tracker.period(harmonic_since)) {
     out.period_trajectory = p->slope;
     out.period_trajectory_err = p->slope_std_error;
+    out.oscillation_centre = tracker.centre(harmonic_since);
   }
   if (out.estimator && out.period_trajectory)
     out.estimator_disagreement =

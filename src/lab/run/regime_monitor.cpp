@@ -57,9 +57,13 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   energy_bound_ = rig.guards.energy;
   penetration_bound_ = rig.guards.penetration;
   speed_bound_ = rig.guards.speed;
-  start_abs_x_ = std::fabs(rig.plate_desc.offset);
+  // Offsets are read from the oscillation's centre: a tilted rig's x_eq, 0 on a level one.
+  centre_ = rig.oscillation_centre.value_or(0.0);
+  gravity_along_ = -rig.world.gravity * std::sin(rig.world.tilt);
+  tracker_ = OscillationTracker(centre_);
+  start_abs_x_ = std::fabs(rig.plate_desc.offset - centre_);
   turn_ = rig.guards.turn;
-  previous_x_ = rig.plate_desc.offset;
+  previous_x_ = rig.plate_desc.offset - centre_;
   z0_ = h_c_;
   linearised_growth_ = rig.guards.linearised_growth;
 }
@@ -79,9 +83,9 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                                   "vx = {}); the time step is too large for this scene",
                                   t, s.x, s.z, s.vx)};
   }
-  const double energy = 0.5 * mass_ * (s.vx * s.vx + s.vz * s.vz) +
-                        0.5 * inertia_ * s.pitch_rate * s.pitch_rate +
-                        mass_ * rig_.world.gravity * (s.z - z0_);
+  const double energy =
+      0.5 * mass_ * (s.vx * s.vx + s.vz * s.vz) + 0.5 * inertia_ * s.pitch_rate * s.pitch_rate +
+      mass_ * (rig_.gravity_normal * (s.z - z0_) + gravity_along_ * (rig_.plate_desc.offset - s.x));
   if (energy > energy_bound_) {
     return RunFailure{Regime::kNumericallyFailed, t, "plate", "energy",
                       fmt::format("t = {:.6f} s: the plate's energy {:.3g} J exceeds {:.3g} J, ten "
@@ -109,14 +113,16 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                     "blow-up (try a smaller time step)",
                     t, s.vx, surface_speed_)};
   }
+  // Where the plate is from the oscillation's centre.
+  const double x = s.x - centre_;
   // A step that carries the plate a quarter of the roller spacing resolves nothing of the motion.
-  if (std::fabs(s.x - previous_x_) > 0.25 * rig_.rollers.spacing) {
+  if (std::fabs(x - previous_x_) > 0.25 * rig_.rollers.spacing) {
     return RunFailure{
         Regime::kNumericallyFailed, t, "plate", "x",
         fmt::format("t = {:.6f} s: the plate jumped {:.1f} mm in one step of {:.3g} ms, "
                     "more than a quarter of the roller spacing: the time step is too "
                     "large for this scene",
-                    t, (s.x - previous_x_) * 1e3, rig_.world.time_step * 1e3)};
+                    t, (x - previous_x_) * 1e3, rig_.world.time_step * 1e3)};
   }
   // The plate leaves the rig when a roller is no longer under it, or it falls.
   const double half_l = 0.5 * rig_.rollers.spacing;
@@ -131,37 +137,38 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
   // Diagnosis.
   tracker_.add(t, s.x, s.vx);
   last_t_ = t;
-  if (!first_ && ((previous_x_ < 0.0 && s.x >= 0.0) || (previous_x_ > 0.0 && s.x <= 0.0)))
-    ++crossings_;
-  if (std::fabs(s.x) > max_abs_x_) {
-    max_abs_x_ = std::fabs(s.x);
+  if (!first_ && ((previous_x_ < 0.0 && x >= 0.0) || (previous_x_ > 0.0 && x <= 0.0))) ++crossings_;
+  if (std::fabs(x) > max_abs_x_) {
+    max_abs_x_ = std::fabs(x);
     x_at_max_ = t;
   }
   if (!first_ && ((previous_vx_ > 0.0 && s.vx <= 0.0) || (previous_vx_ < 0.0 && s.vx >= 0.0)) &&
       excursions_.size() < 16)
-    excursions_.push_back(std::fabs(s.x));
+    excursions_.push_back(std::fabs(x));
   previous_vx_ = s.vx;
-  previous_x_ = s.x;
+  previous_x_ = x;
   first_ = false;
   static_assert(kSettleSteps > 0);
   // Which way friction pushes while the plate rests on both rollers: toward the centre is the
   // restoring force of the oscillator; away from it, there is none. A plate that left a roller
   // within the last turn is landing, not resting: the impacts share its weight as they come.
-  const double weight = mass_ * rig_.world.gravity;
+  const double weight = mass_ * rig_.gravity_normal;
   const bool landing = last_lift_off_ && t - *last_lift_off_ <= turn_;
   if (contacts[0].normal_force > 1e-2 * weight && contacts[1].normal_force > 1e-2 * weight &&
-      std::fabs(s.x) > 1e-6 && !landing) {
-    const double friction = contacts[0].friction_force + contacts[1].friction_force;
+      std::fabs(x) > 1e-6 && !landing) {
+    // The net friction with the slope's pull (a tilted rig's friction balances it at x_eq).
+    const double friction =
+        contacts[0].friction_force + contacts[1].friction_force + mass_ * gravity_along_;
     // A plate held at rest feels no net friction but the solver's round-off: not a direction.
     const bool held = contacts[0].stuck && contacts[1].stuck;
-    if (!held && friction * s.x > 0.0) {
+    if (!held && friction * x > 0.0) {
       if (friction_away_ == 0) {
         away_first_t_ = t;
-        away_first_x_ = s.x;
+        away_first_x_ = x;
         away_first_force_ = friction;
       }
       ++friction_away_;
-    } else if (!held && friction * s.x < 0.0) {
+    } else if (!held && friction * x < 0.0) {
       ++friction_toward_;
     }
   }
@@ -296,7 +303,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = fmt::format(
         "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
         "t = {:.4f} s: the plate lifted off it{}",
-        tip_roller_, tip_force_, mass_ * rig_.world.gravity, *tip_since_,
+        tip_roller_, tip_force_, mass_ * rig_.gravity_normal, *tip_since_,
         failure ? "; then " + failure->message : std::string());
     return f;
   }
@@ -312,7 +319,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = fmt::format(
         "the normal force on roller {} fell to {:.3g} N (weight {:.3g} N) at "
         "t = {:.4f} s: the plate lifted off it",
-        tip_roller_, tip_force_, mass_ * rig_.world.gravity, *tip_since_);
+        tip_roller_, tip_force_, mass_ * rig_.gravity_normal, *tip_since_);
     return f;
   }
   if (surface_speed_ == 0.0) {
@@ -356,7 +363,7 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
       growth = motion.growth_rate;
   }
   if (const std::optional<UnresolvedLaw> unresolved = unresolved_law(
-          law_, rig_.world.gravity, rig_.world.time_step, !sticks_.empty(), growth)) {
+          law_, rig_.gravity_normal, rig_.world.time_step, !sticks_.empty(), growth)) {
     f.regime = Regime::kNumericallyFailed;
     f.since = 0.0;
     f.evidence = unresolved->reason + " (the run looked " + regime_name(motion.regime) + ": " +

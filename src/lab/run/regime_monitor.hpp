@@ -91,9 +91,13 @@ class RegimeMonitor {
   double surface_speed_;                     // m/s, the rollers' top without load (for the bounds)
   double energy_bound_;                      // J
   double penetration_bound_;
-  double speed_bound_;  // m/s
-  double start_abs_x_ = 0.0;
+  double speed_bound_;        // m/s
+  double start_abs_x_ = 0.0;  // m, from the centre
   double z0_ = 0.0;
+  // The oscillation's centre (x_eq, 0 on a level rig) and the slope's pull per unit mass along +x,
+  // -g sin(tilt) (m/s^2).
+  double centre_ = 0.0;
+  double gravity_along_ = 0.0;
 
   int crossings_ = 0;
   double previous_x_ = 0.0;

@@ -87,10 +87,20 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   }
   if (roller_speed <= 0.0)
     return {Regime::kSticks, "the rollers stand still: friction holds the plate", std::nullopt};
-  const PlateOnRollers plate{l, h_c, rig.world.gravity};
+  const PlateOnRollers plate{l, h_c, rig.gravity_normal};
   try {
-    const FrictionRegimePrediction p = predict_friction_regime(
+    FrictionRegimePrediction p = predict_friction_regime(
         rig.friction, plate, roller_speed * rig.rollers.radius, amplitude, rig.world.duration);
+    // On a tilted rig the slope's pull moves where a stick breaks, unevenly for the two rollers:
+    // the level rig's stick-slip cycle is not this one's (a clipped one, mu_s = mu_k, still is,
+    // about x_eq: docs/physics.md).
+    if (rig.world.tilt != 0.0 && p.regime == Regime::kStickSlip && p.cycle) {
+      p.cycle.reset();
+      return {p.regime,
+              "the plate reaches the rollers' speed and mu_s > mu_k: a stick-slip cycle, whose "
+              "closed form is a level rig's only",
+              p};
+    }
     return {p.regime, explain(p, amplitude, p.tipping_offset), p};
   } catch (const DomainError& e) {
     // A law the closed forms refuse here (the linearised motion creeps instead of oscillating,

@@ -130,9 +130,16 @@ struct RunSummary {
 
   // The estimator's report (scenes with a sensor and magnets), whatever the regime.
   std::optional<EstimatorReport> estimator;
-  // The trajectory's own period (crossings of x = 0), for a harmonic oscillation only.
+  // The trajectory's own period (crossings of the oscillation's centre), for a harmonic
+  // oscillation only.
   std::optional<double> period_trajectory;      // s
   std::optional<double> period_trajectory_err;  // s, standard error of the fit
+  // m, the oscillation's centre: the mean of the midpoints of successive turning points over the
+  // cycles the period is read from (with it); and where theory puts it (a tilted rig's x_eq, 0 on
+  // a level one; null without a restoring force).
+  std::optional<double> oscillation_centre;
+  std::optional<double> oscillation_centre_theory;
+  double tilt = 0.0;  // rad, world.tilt
   // The estimator's period against the trajectory's: a disagreement beyond both uncertainties.
   std::optional<std::string> estimator_disagreement;
 

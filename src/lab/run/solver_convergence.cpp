@@ -23,7 +23,7 @@ SolverConvergence::SolverConvergence(const CompiledRig& rig)
     : mass_(rig.plate.mass),
       inertia_(rig.plate.inertia_pitch),
       dt_(rig.world.time_step),
-      weight_(rig.plate.mass * rig.world.gravity) {}
+      weight_(rig.plate.mass * rig.gravity_normal) {}
 
 std::optional<SolverResidual> SolverConvergence::observe(
     double t, const PlateState& before, const PlateState& after,

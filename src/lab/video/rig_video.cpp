@@ -188,7 +188,7 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
     report.frame_triangles_full = model.stats.frame_triangles_full;
     camera = render::rig_camera(model, video);
     force_scale = render::force_scale(camera, video.width, video.height, Eigen::Vector3f::Zero(),
-                                      rig.rollers.spacing, rig.plate.mass * rig.world.gravity);
+                                      rig.rollers.spacing, rig.plate.mass * rig.gravity_normal);
     force_arrows = video.placed || video.camera != "sensor";
     // A camera that stays put never sees the frame's back faces: leave them out.
     if (video.orbit == 0.0) render::cull_back_faces(model, camera.position);

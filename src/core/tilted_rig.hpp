@@ -1,0 +1,29 @@
+// A rig that is not level: the line through the rollers' tops rises by `tilt` toward +x. In the
+// rig's own frame gravity has a component g cos(tilt) against the rollers' plane and
+// -g sin(tilt) along it. The first sets the normal forces and with them the friction's restoring
+// force, as g does on a level rig; the second acts at the centre of mass (no torque about it, so
+// the normal forces still share the weight as on a level rig, with g cos(tilt)) and only shifts
+// where the net friction balances it. For coulomb friction with both rollers slipping (rollers
+// turning inward, docs/physics.md):
+//
+//   Omega^2 = 2 mu_k g cos(tilt) / (l - 2 mu_k h_c)
+//   x_eq    = -g sin(tilt) / Omega^2 = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k)
+//
+// and a roller unloads where it does on a level rig, at |x| = l/2 - mu_k h_c, so the largest
+// amplitude about x_eq before one does is l/2 - mu_k h_c - |x_eq|. Standard library only.
+#pragma once
+
+namespace fl {
+
+// g cos(tilt): what presses the plate on its rollers [m/s^2].
+double gravity_normal(double gravity, double tilt);
+
+// The centre x_eq of the oscillation [m]; refuses l <= 2 mu_k h_c (no restoring force) and
+// |tilt| >= pi / 2 with fl::DomainError.
+double oscillation_centre(double spacing, double mu_k, double h_c, double tilt);
+
+// The largest amplitude about x_eq before a roller unloads: l/2 - mu_k h_c - |x_eq| [m] (<= 0:
+// a roller unloads even at rest, the plate cannot stay on both).
+double tilted_tipping_amplitude(double spacing, double mu_k, double h_c, double tilt);
+
+}  // namespace fl

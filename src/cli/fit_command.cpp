@@ -73,6 +73,9 @@ void print_report(const SpacingFitReport& r) {
              *f.h_c < 0.0
                  ? fmt::format(" (below the contact line: {:.1f} sd from 0)", -*f.h_c / *f.h_c_err)
                  : std::string());
+  fmt::print(
+      "                         (the intercept reads h_c - delta / mu_k for rollers with rolling "
+      "resistance delta: a spacing series alone cannot tell delta from h_c)\n");
   if (f.correlation)
     fmt::print(
         "  correlation            {:+.3f} (of mu_k and h_c: a larger h_c goes with a {} mu_k)\n",

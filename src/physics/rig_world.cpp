@@ -66,7 +66,7 @@ struct RigWorld::Impl {
   // starts resting on them (its bottom through both tops, moving with them), not dropped onto
   // them.
   void rest_on_off_centre_rollers() {
-    const double l = rig.rollers.spacing;
+    const double l = rig.contact_spacing;
     const double e = rig.rollers.runout;
     std::array<double, 2> top{}, top_speed{};  // each top's height and vertical speed at t = 0
     for (std::size_t i = 0; i < 2; ++i) {
@@ -100,7 +100,7 @@ struct RigWorld::Impl {
     // R_y(theta) (e, 0, 0) = (e cos theta, 0, -e sin theta).
     const double ox = e * std::cos(angle);
     const double oz = -e * std::sin(angle);
-    const double shaft_x = (i == 0 ? -0.5 : 0.5) * rig.rollers.spacing;
+    const double shaft_x = (i == 0 ? -0.5 : 0.5) * rig.contact_spacing;
     btTransform t = rollers[k]->getWorldTransform();
     t.setOrigin(btVector3(shaft_x + ox, 0, -rig.rollers.radius + oz));
     rollers[k]->setWorldTransform(t);
@@ -137,8 +137,10 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
 
   // Rollers. For collision each is one sphere of the roller's radius (a cylinder against a box
   // gives one contact point that jumps between the plate's edges; docs/physics.md);
-  // the renderer draws the cylinder.
-  const double l = s.rollers.spacing;
+  // the renderer draws the cylinder. A roller with rolling resistance presses the plate through
+  // a pressure centre delta ahead of its top: its sphere sits that much farther out (inward
+  // rollers), the surface's speed unchanged (scene.hpp, rollers.rolling_resistance).
+  const double l = s.contact_spacing;
   const double a = s.rollers.radius;
   roller_shape = std::make_unique<btSphereShape>(a);
   const double sense = s.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;

@@ -59,6 +59,13 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   return out;
 }
 
+// l, moved by the rollers' rolling resistance: outward for inward rollers (scene.hpp).
+double contact_spacing(const Scene& scene) {
+  const double delta = scene.rollers.rolling_resistance;
+  return scene.rollers.spacing +
+         (scene.rollers.sense == RollerSense::kInward ? 2.0 * delta : -2.0 * delta);
+}
+
 // The run's guards from the rig (before it takes the scene).
 CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
   CompiledRig::RunGuards g;
@@ -73,8 +80,7 @@ CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
   if (rig.friction.depends_on_slip() && rig.restoring) {
     try {
       g.linearised_growth =
-          linearised_motion(rig.friction,
-                            {scene.rollers.spacing, rig.plate.h_c, rig.gravity_normal},
+          linearised_motion(rig.friction, {rig.contact_spacing, rig.plate.h_c, rig.gravity_normal},
                             g.surface_speed)
               .gamma;
     } catch (const DomainError&) {
@@ -110,8 +116,9 @@ CompiledRig compile_rig(Scene scene) {
   rig.duty_ramp = duty_ramp(scene);
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
-  const double l = scene.rollers.spacing, mu = rig.friction.mu_k, h_c = rig.plate.h_c,
+  const double l = contact_spacing(scene), mu = rig.friction.mu_k, h_c = rig.plate.h_c,
                tilt = scene.world.tilt;
+  rig.contact_spacing = l;
   const double g = gravity_normal(scene.world.gravity, tilt);
   rig.gravity_normal = g;
   rig.period_thin = period_thin(l, mu, g);

@@ -82,6 +82,9 @@ struct CompiledRig {
   // g cos(world.tilt), what presses the plate on its rollers: every closed form below uses it
   // (core/tilted_rig.hpp); g on a level rig.
   double gravity_normal = 9.81;
+  // How far apart the plate's two contacts are: l, and 2 rollers.rolling_resistance more for
+  // rollers turning inward (less outward). Every closed form below uses it for l.
+  double contact_spacing = 0.089;
   // x_eq, where a tilted rig's plate oscillates about (0 on a level one) [m].
   std::optional<double> oscillation_centre;
   double period_thin = 0.0;                    // s, the paper's formula

@@ -48,7 +48,11 @@ struct RollersDesc {
   RollerSense sense = RollerSense::kInward;
   // Run-out: each tube's axis sits this far off its shaft (a hand-cut tube on a cardboard cap),
   // so its top moves up and down (and along x) at the roller's frequency; 0 for true rollers.
-  double runout = 0.0;                           // m, both rollers
+  double runout = 0.0;  // m, both rollers
+  // Rolling resistance: the lever arm delta by which each contact's pressure centre sits ahead of
+  // the roller's surface motion (a soft tube); for inward rollers the contacts sit delta outward
+  // of the tops, so the plate rests on contacts l + 2 delta apart (l - 2 delta outward). 0: rigid.
+  double rolling_resistance = 0.0;               // m
   std::array<double, 2> runout_phase{0.0, 0.0};  // rad, where each tube's axis sits at t = 0
   std::string material = "pvc";
 };

@@ -70,6 +70,12 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
   plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
   plausible(s.world.gravity, kGravityRange, "world.gravity");
+  need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
+           s.rollers.rolling_resistance < 0.5 * s.rollers.radius,
+       "rollers.rolling_resistance",
+       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * s.rollers.radius,
+                " mm): a pressure centre that far ahead of the top is no roller's, found ",
+                s.rollers.rolling_resistance * 1e3, " mm"));
   need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
            s.rollers.runout < 0.5 * s.rollers.radius,
        "rollers.runout",

@@ -34,7 +34,7 @@ struct CycleTheory {
 CycleTheory theory_at(const CompiledRig& rig, double surface_speed) {
   CycleTheory out;
   if (!rig.restoring || !(surface_speed > 0.0)) return out;
-  const PlateOnRollers plate{rig.rollers.spacing, rig.plate.h_c, rig.gravity_normal};
+  const PlateOnRollers plate{rig.contact_spacing, rig.plate.h_c, rig.gravity_normal};
   try {
     out.slip_limit_amplitude =
         surface_speed / sliding_angular_frequency(rig.friction, plate, surface_speed);

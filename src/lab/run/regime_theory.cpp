@@ -50,7 +50,7 @@ std::string explain(const FrictionRegimePrediction& p, double amplitude, double 
 }  // namespace
 
 TheoryRegime regime_from_theory(const CompiledRig& rig) {
-  const double l = rig.rollers.spacing;
+  const double l = rig.contact_spacing;  // l, moved by the rollers' rolling resistance
   const double mu = rig.friction.mu_k;
   const double h_c = rig.plate.h_c;
   if (rig.rollers.sense == RollerSense::kOutward)

@@ -21,9 +21,10 @@ PlateMass plate_mass(const Scene& scene) {
   std::vector<Part> parts;
   parts.push_back({slab, 0.0, 0.5 * p.thickness,
                    slab * (p.length * p.length + p.thickness * p.thickness) / 12.0});
-  // The payload is spread evenly along the plate (the paper's LEGO blocks keep the mass uniform).
+  // The payload is spread evenly along the plate (the paper's LEGO blocks keep the mass uniform),
+  // its centre at payload.x.
   if (p.payload.mass > 0.0)
-    parts.push_back({p.payload.mass, 0.0, p.thickness + p.payload.height,
+    parts.push_back({p.payload.mass, p.payload.x, p.thickness + p.payload.height,
                      p.payload.mass * p.length * p.length / 12.0});
   for (const PlateBlock& block : p.blocks) {
     // A block's own pitch inertia is small against the plate's; it counts as a point mass.

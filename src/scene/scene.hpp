@@ -61,6 +61,9 @@ struct RollersDesc {
 struct PayloadDesc {
   double mass = 0.0;    // kg
   double height = 0.0;  // m, of the payload's centre of mass above the plate's top face
+  // m, of the payload's centre along the plate from the plate's middle (its spread unchanged):
+  // the plate's centre of mass then lies off its middle.
+  double x = 0.0;
 };
 
 // A LEGO block on the plate's top (the paper's blocks hold the magnets), its mass and centre of

@@ -133,6 +133,10 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
        "must be >= 0");
   need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
        "plate.payload.height", "must be >= 0");
+  need(std::isfinite(s.plate.payload.x) && std::fabs(s.plate.payload.x) <= 0.5 * s.plate.length,
+       "plate.payload.x",
+       describe("must lie on the plate, within half its length (", 0.5e3 * s.plate.length,
+                " mm) of its middle, found ", s.plate.payload.x * 1e3, " mm"));
   need(std::isfinite(s.plate.offset), "plate.offset", "must be finite");
   need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
   need(std::isfinite(s.friction.mu_k) && s.friction.mu_k > 0.0, "friction.mu_k",

@@ -81,7 +81,8 @@ void read_plate(const YamlNode& n, PlateDesc& p) {
   if (auto v = n.find("density")) p.density = v->quantity(Dimension::kDensity);
   if (auto v = n.find("material")) p.material = v->text();
   if (auto payload = n.find("payload")) {
-    payload->allow_keys({"mass", "height"});
+    payload->allow_keys({"mass", "height", "x"});
+    if (auto v = payload->find("x")) p.payload.x = v->quantity(Dimension::kLength);
     if (auto v = payload->find("mass")) p.payload.mass = v->quantity(Dimension::kMass);
     if (auto v = payload->find("height")) p.payload.height = v->quantity(Dimension::kLength);
   }

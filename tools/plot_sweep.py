@@ -10,13 +10,17 @@
   runout.png             the highest jump, the share of the periods the rig's estimator discarded
                          and the period's error against the rollers' run-out, with theory's hop
                          threshold (when rollers.runout varies)
+  tilt.png               the oscillation's centre against the rig's tilt with theory's line
+                         x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k), and the period against the
+                         thick plate's with g cos(tilt) (when world.tilt varies)
   cycles.png             each cycle's period and amplitude against the rollers' speed during it,
                          the ramp's way down and way up apart, with theory's slip threshold
                          (when the sweep recorded cycles: OUTDIR/cycles/*.csv)
   map.png                the error against the thick curve over the first two axes, regimes marked
                          and named in a legend, values spanning decades evenly spaced (when two
                          axes have more than one value)
-  axis.png               the period against the only axis (when none of the above applies)
+  axis.png               the period against the only axis with the thick-plate T of each point
+                         (when none of the above applies: rollers.rolling_resistance, say)
 
 Usage: plot_sweep.py results.csv sweep.json OUTDIR"""
 import csv
@@ -247,6 +251,44 @@ def plot_runout(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "runout.png"))
 
 
+def plot_tilt(rows, meta, out):
+    axis = next(a for a in meta["axes"] if a.get("key") == "world.tilt" and len(a["values"]) > 1)
+    pos, numeric = axis_positions(axis)
+    unit = axis.get("unit") or "rad"
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    theory = sorted((pos[r[axis["name"]]], number(r, "oscillation_centre_theory_m")) for r in rows
+                    if number(r, "oscillation_centre_theory_m") is not None)
+    top.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1,
+             label="theory: x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k)")
+    for regime in sorted({r["regime"] or r["status"] for r in rows}):
+        members = [r for r in rows if (r["regime"] or r["status"]) == regime]
+        centred = [r for r in members if number(r, "oscillation_centre_m") is not None]
+        colour = REGIME_COLOURS.get(regime, "grey")
+        top.plot([pos[r[axis["name"]]] for r in centred],
+                 [1e3 * number(r, "oscillation_centre_m") for r in centred], "o", ms=5,
+                 color=colour, label=f"measured ({regime})")
+        if not centred:  # a regime without a centre (tips): marked on the axis
+            top.plot([pos[r[axis["name"]]] for r in members], [0] * len(members), "x", ms=8,
+                     color=colour, label=f"{regime}: no oscillation")
+        timed = [r for r in members if number(r, "period_trajectory_s")]
+        bottom.plot([pos[r[axis["name"]]] for r in timed],
+                    [number(r, "period_trajectory_s") for r in timed], "o", ms=5, color=colour,
+                    label=f"the trajectory ({regime})")
+    thick = sorted((pos[r[axis["name"]]], number(r, "period_thick_s")) for r in rows
+                   if number(r, "period_thick_s"))
+    bottom.plot([t[0] for t in thick], [t[1] for t in thick], "k-", lw=1,
+                label="thick plate with g cos(tilt)")
+    top.set_ylabel("oscillation centre [mm]")
+    top.set_title(f"{meta['sweep']}: a rig that is not level")
+    bottom.set_ylabel("period T [s]")
+    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
+    for ax in (top, bottom):
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_png.save(fig, os.path.join(out, "tilt.png"))
+
+
 def read_cycles(out, index):
     path = os.path.join(out, "cycles", f"{int(index):08d}.csv")
     if not os.path.exists(path):
@@ -443,6 +485,9 @@ def main(csv_path, json_path, out):
         drawn += 1
     if any(a.get("key") == "rollers.runout" and len(a["values"]) > 1 for a in meta["axes"]):
         plot_runout(rows, meta, out)
+        drawn += 1
+    if any(a.get("key") == "world.tilt" and len(a["values"]) > 1 for a in meta["axes"]):
+        plot_tilt(rows, meta, out)
         drawn += 1
     varied = [a for a in meta["axes"] if len(a["values"]) > 1]
     if len(varied) >= 2:

@@ -139,6 +139,7 @@ void decide_headline(RunSummary& out) {
   if (!out.harmonic()) {
     out.period_trajectory.reset();
     out.period_trajectory_err.reset();
+    out.oscillation_centre.reset();
     out.period_withheld = fmt::format(
         "no period: the regime is '{}', not a harmonic oscillation, so the paper's model does "
         "not hold",

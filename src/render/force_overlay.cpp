@@ -65,12 +65,12 @@ ForceScale force_scale(const Camera& camera, int width, int height, const Eigen:
 std::vector<ForceArrow> force_arrows(const Camera& camera, int width, int height,
                                      const PlateForces& forces, const ForceScale& scale) {
   std::vector<ForceArrow> arrows;
-  const Eigen::Vector3f up = Eigen::Vector3f::UnitZ();
-  const Eigen::Vector3f along = Eigen::Vector3f::UnitX();
+  const Eigen::Vector3f up = forces.rig_to_world.linear() * Eigen::Vector3f::UnitZ();
+  const Eigen::Vector3f along = forces.rig_to_world.linear() * Eigen::Vector3f::UnitX();
   const auto add = [&](std::string label, const Eigen::Vector3f& point,
                        const Eigen::Vector3f& direction, double force, const Color& color,
                        ForceArrow::Label label_at) {
-    const auto ray = screen_ray(camera, width, height, point, direction);
+    const auto ray = screen_ray(camera, width, height, forces.rig_to_world * point, direction);
     if (!ray) return;
     const float length = static_cast<float>(force) * scale.pixels_per_newton;
     arrows.push_back(ForceArrow{std::move(label), ray->first, ray->first + ray->second * length,

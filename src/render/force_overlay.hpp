@@ -32,6 +32,9 @@ struct ContactForce {
 struct PlateForces {
   std::array<ContactForce, 2> rollers;               // roller 0 (x = -l/2), roller 1
   Eigen::Vector3f centre = Eigen::Vector3f::Zero();  // m, world: the net friction's start
+  // The rig's frame in the world's (RigModel::tilt): the points above and the forces' directions
+  // (x, z) are the rig's.
+  Eigen::Affine3f rig_to_world = Eigen::Affine3f::Identity();
 };
 
 // The scale of a video's arrows: pixels per newton, and the round force its reference arrow

@@ -20,7 +20,8 @@ using palette::kWhite;
 }  // namespace
 
 double ThickPlateCurve::at(double t) const {
-  return x0 * std::cos(omega * t) + (omega > 0.0 ? v0 / omega * std::sin(omega * t) : v0 * t);
+  return centre + x0 * std::cos(omega * t) +
+         (omega > 0.0 ? v0 / omega * std::sin(omega * t) : v0 * t);
 }
 
 double ThickPlateCurve::velocity_at(double t) const {

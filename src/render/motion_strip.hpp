@@ -17,9 +17,10 @@ namespace fl::render {
 // x(t) of the harmonic oscillator the thick-plate formula describes: released at x0 with speed
 // v0 at t = 0, angular frequency omega = 2 pi / T_thick, about x = 0.
 struct ThickPlateCurve {
-  double x0 = 0.0;     // m
-  double v0 = 0.0;     // m/s
-  double omega = 0.0;  // rad/s
+  double x0 = 0.0;      // m, from the centre
+  double v0 = 0.0;      // m/s
+  double omega = 0.0;   // rad/s
+  double centre = 0.0;  // m, what the plate oscillates about (a tilted rig's x_eq)
 
   double at(double t) const;           // m
   double velocity_at(double t) const;  // m/s, dx/dt

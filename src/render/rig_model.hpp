@@ -67,6 +67,9 @@ struct RigModel {
   ShadowBounds shadow;                   // fixed: the static parts' shadows never move
   Eigen::Vector3f sensor = Eigen::Vector3f::Zero();  // the Hall sensor (or where it would be)
   Eigen::Vector3f magnet = Eigen::Vector3f::Zero();  // the magnet nearest the sensor, at rest
+  // The rig's frame in the world's: a rig tilted by world.tilt turned about y so that +x rises,
+  // the ground (its table) with it; the identity for a level rig.
+  Eigen::Affine3f tilt = Eigen::Affine3f::Identity();
   RigModelStats stats;
 
   // Triangles drawn in the camera pass at `pose` (with blur: proxies replace fast gears).

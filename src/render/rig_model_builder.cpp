@@ -384,7 +384,11 @@ bool rig_uses_parts(const CompiledRig& rig) {
 
 RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
                          assets::MeshLibrary* meshes, bool cut_away_near_side) {
-  return ModelBuilder(rig, catalog, meshes, cut_away_near_side).build();
+  RigModel model = ModelBuilder(rig, catalog, meshes, cut_away_near_side).build();
+  // A tilted rig drawn tilted: turned about y by -tilt, so that +x rises by tilt.
+  model.tilt = Eigen::Affine3f(
+      Eigen::AngleAxisf(-static_cast<float>(rig.world.tilt), Eigen::Vector3f::UnitY()));
+  return model;
 }
 
 }  // namespace fl::render

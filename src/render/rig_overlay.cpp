@@ -200,6 +200,8 @@ std::string rig_heading(const CompiledRig& rig, const std::string& material) {
     heading += fmt::format("  \xc2\xb7  {}{:.0f} K", rig.warming ? "from " : "",
                            rig.friction_source.temperature);
   heading += fmt::format("  \xc2\xb7  l = {:.0f} mm", rig.rollers.spacing * 1e3);
+  if (rig.world.tilt != 0.0)
+    heading += fmt::format("  \xc2\xb7  tilted {:+.1f}\xc2\xb0", rig.world.tilt * 180.0 / kPi);
   return heading;
 }
 

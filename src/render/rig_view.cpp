@@ -13,11 +13,11 @@ RigView::RigView(Renderer& renderer, RigModel model)
 void RigView::draw(const RigPose& pose, double exposure) const {
   for (const RigPart& part : model_.parts) {
     const PlacedPart placed = place_part(model_, part, pose, exposure);
-    renderer_.draw(ids_[placed.mesh], placed.pose, part.casts_shadow);
+    renderer_.draw(ids_[placed.mesh], model_.tilt * placed.pose, part.casts_shadow);
   }
   // The ground last: where the rig covers it, its fragments fail the depth test before they are
   // shaded.
-  renderer_.draw(ids_[model_.ground], Eigen::Affine3f::Identity(), false);
+  renderer_.draw(ids_[model_.ground], model_.tilt, false);
 }
 
 }  // namespace fl::render

@@ -551,6 +551,42 @@ TEST(RigOverlay, TheTopBarNamesTheTemperatureTheSceneSets) {
   scene.friction.temperature_set = false;  // a scene that names none
   EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
             "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm");
+  scene.world.tilt = -2.0 * kPi / 180.0;  // a tilted rig says so
+  EXPECT_EQ(rig_heading(compile_rig(scene), "LEGO blocks"),
+            "LEGO blocks on PVC rollers  \xc2\xb7  l = 89 mm  \xc2\xb7  tilted -2.0\xc2\xb0");
+}
+
+// A tilted rig is drawn tilted: the model turns the rig's frame about y so that +x rises by the
+// tilt, and the force arrows start where the turned plate's points are.
+TEST(RigOverlay, ATiltedRigIsDrawnTilted) {
+  Scene scene = test::scene_file("minimal.yaml");
+  scene.world.tilt = 3.0 * kPi / 180.0;
+  const RigModel model = build_rig_model(compile_rig(scene), nullptr, nullptr);
+  const Eigen::Vector3f end = model.tilt * Eigen::Vector3f(0.1f, 0.0f, 0.0f);
+  EXPECT_NEAR(std::atan2(end.z(), end.x()), 3.0 * kPi / 180.0, 1e-6);
+  // The normal force's arrow stands on the turned plate: along the rig's z turned the same way.
+  PlateForces forces;
+  forces.rig_to_world = model.tilt;
+  forces.rollers[0] = ContactForce{true, 1.0, 0.0, Eigen::Vector3f(-0.0445f, 0.0f, 0.0f)};
+  VideoDesc video;
+  video.width = 640;
+  video.height = 360;
+  const Camera camera = rig_camera(model, video);
+  const ForceScale scale{100.0f, 1.0};
+  const std::vector<ForceArrow> arrows = force_arrows(camera, 640, 360, forces, scale);
+  ASSERT_EQ(arrows.size(), 3u);  // F0, the net friction (both zero) and N0, last
+  const ForceArrow& n0 = arrows.back();
+  // Where the turned contact point and a point 1 N along the turned normal project.
+  const auto projected = [&](const Eigen::Vector3f& p) {
+    return *project_to_pixel(camera, 640, 360, p);
+  };
+  const Eigen::Vector3f from = model.tilt * Eigen::Vector3f(-0.0445f, 0.0f, 0.0f);
+  EXPECT_LT((n0.from - projected(from)).norm(), 1e-3f);
+  const Eigen::Vector2f direction = (n0.to - n0.from).normalized();
+  const Eigen::Vector2f expected =
+      (projected(from + 0.01f * (model.tilt.linear() * Eigen::Vector3f::UnitZ())) - n0.from)
+          .normalized();
+  EXPECT_GT(direction.dot(expected), 0.9999f);
 }
 
 // The file's extension picks the format; a GIF is drawn small unless asked otherwise.

@@ -191,7 +191,8 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
                                       rig.rollers.spacing, rig.plate.mass * rig.gravity_normal);
     force_arrows = video.placed || video.camera != "sensor";
     // A camera that stays put never sees the frame's back faces: leave them out.
-    if (video.orbit == 0.0) render::cull_back_faces(model, camera.position);
+    if (video.orbit == 0.0) render::cull_back_faces(model, model.tilt.inverse() * camera.position);
+    forces.rig_to_world = model.tilt;
     view = std::make_unique<render::RigView>(*renderer, std::move(model));
 
     if (!request.frames.empty()) {
@@ -283,7 +284,9 @@ void RigVideo::take_motion(const VideoStep& step) {
   if (motion.empty()) {
     // The theory starts where the run does.
     if (rig.restoring && rig.rollers.sense == RollerSense::kInward && rig.omega)
-      theory = render::ThickPlateCurve{step.plate_x, step.plate_vx, *rig.omega};
+      theory =
+          render::ThickPlateCurve{step.plate_x - rig.oscillation_centre.value_or(0.0),
+                                  step.plate_vx, *rig.omega, rig.oscillation_centre.value_or(0.0)};
     theory_label =
         theory && rig.period_thick
             ? fmt::format("theory: thick plate, \xce\xbc\xe2\x82\x96 = {:.3g}, T = {:.4f} s",

@@ -22,6 +22,15 @@ double gravity_normal(double gravity, double tilt);
 // |tilt| >= pi / 2 with fl::DomainError.
 double oscillation_centre(double spacing, double mu_k, double h_c, double tilt);
 
+// The same where the two rollers' coefficients differ: mu_0 at roller 0 (x = -l/2), mu_1 at roller
+// 1 (rollers at different speeds under a slip-speed law: each its mu at its own surface speed). At
+// rest the net friction balances the slope's pull, S = m g sin(tilt), so its torque about the
+// centre of mass is h_c S and
+//   x_eq = h_c tan(tilt) - (l/2) ((mu_1 - mu_0) + 2 tan(tilt)) / (mu_0 + mu_1),
+// on a level rig (l/2) (mu_0 - mu_1) / (mu_0 + mu_1) whatever h_c (docs/physics.md). Refuses
+// mu_0 + mu_1 <= 0, l <= (mu_0 + mu_1) h_c and |tilt| >= pi / 2 with fl::DomainError.
+double oscillation_centre(double spacing, double mu_0, double mu_1, double h_c, double tilt);
+
 // The largest amplitude about x_eq before a roller unloads: l/2 - mu_k h_c - |x_eq| [m] (<= 0:
 // a roller unloads even at rest, the plate cannot stay on both).
 double tilted_tipping_amplitude(double spacing, double mu_k, double h_c, double tilt);

@@ -147,7 +147,7 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   // The ideal drive: the set speed. Roller 0 at -l/2 turns about +y so its top moves toward +x
   // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
   const double speed = rig.roller_speed_ramp ? rig.roller_speed_ramp->at(0.0) : s.rollers.speed;
-  roller_omega = {sense * speed, -sense * speed};
+  roller_omega = {sense * speed, -sense * s.rollers.speed_roller_1.value_or(speed)};
   if (s.drive) {
     drivetrain = std::make_unique<Drivetrain>(rig);
     roller_omega = drivetrain->roller_speeds();

@@ -125,14 +125,27 @@ CompiledRig compile_rig(Scene scene) {
   rig.restoring = has_restoring_force(l, mu, h_c);
   rig.amplitude_initial = std::fabs(scene.plate.offset);
   if (rig.restoring) {
-    rig.oscillation_centre = oscillation_centre(l, mu, h_c, tilt);
+    // Each roller's coefficient at its own surface speed (rollers at different speeds under a
+    // slip-speed law put the centre off the midpoint; coulomb's is mu_k at any speed).
+    const double a = scene.rollers.radius;
+    const double mu_0 = scene.rollers.speed_roller_1 && !scene.drive
+                            ? rig.friction.kinetic(scene.rollers.speed * a)
+                            : mu;
+    const double mu_1 = scene.rollers.speed_roller_1 && !scene.drive
+                            ? rig.friction.kinetic(*scene.rollers.speed_roller_1 * a)
+                            : mu;
+    try {
+      rig.oscillation_centre = oscillation_centre(l, mu_0, mu_1, h_c, tilt);
+    } catch (const DomainError&) {  // the two coefficients together leave no restoring force
+      rig.oscillation_centre = oscillation_centre(l, mu, h_c, tilt);
+    }
     rig.period_thick = period_thick(l, mu, h_c, g);
     rig.omega = 2.0 * kPi / *rig.period_thick;
     rig.integrator_bias = integrator_period_bias(*rig.omega, scene.world.time_step);
     rig.conditioning = mu_k_with_uncertainty(*rig.period_thick, 0.0, l, 0.0, h_c, g);
     rig.amplitude_initial = amplitude_from_start(scene.plate.offset - *rig.oscillation_centre,
                                                  scene.plate.velocity, *rig.omega);
-    rig.tipping_amplitude = tilted_tipping_amplitude(l, mu, h_c, tilt);
+    rig.tipping_amplitude = tipping_amplitude(l, mu, h_c) - std::fabs(*rig.oscillation_centre);
     rig.slip_threshold =
         roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
   }

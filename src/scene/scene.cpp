@@ -84,7 +84,7 @@ double gearbox_ratio(const DriveDesc& drive) {
 double nominal_roller_speed(const Scene& scene) {
   if (!scene.drive) {
     if (const auto ramp = roller_speed_ramp(scene)) return ramp->largest();
-    return scene.rollers.speed;
+    return std::max(scene.rollers.speed, scene.rollers.speed_roller_1.value_or(0.0));
   }
   const auto ramp = duty_ramp(scene);
   const double duty = ramp ? ramp->largest() : scene.drive->motor.duty;

@@ -40,6 +40,9 @@ struct RollersDesc {
   double radius = 0.010;              // a, m
   double length = 0.100;              // m, along y
   double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller (ideal drive only)
+  // rad/s: roller 1's own speed where the two differ (rollers.speed: [roller 0, roller 1]; two
+  // motors, a slipping belt); `speed` is then roller 0's. Absent: both turn at `speed`.
+  std::optional<double> speed_roller_1;
   // The speed over time instead (ideal drive only; values in rad/s, times in s): piecewise
   // linear, held after its last point. Empty: the constant `speed`.
   std::vector<RampPoint> speed_ramp;

@@ -96,6 +96,17 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   }
   need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
        describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
+  if (const std::optional<double>& second = s.rollers.speed_roller_1) {
+    need(std::isfinite(*second) && *second >= 0.0, "rollers.speed",
+         describe("roller 1's speed must be >= 0, found ", *second, " rad/s"));
+    if (std::isfinite(*second) && *second > 0.0)
+      plausible(*second, kRollerSpeedRange, "rollers.speed");
+    need(!s.drive, "rollers.speed",
+         "two speeds [roller 0, roller 1] are the ideal drive's: a drive turns both rollers "
+         "through its gears at one speed; remove the drive or give one speed");
+    need(s.rollers.speed_ramp.empty(), "rollers.speed",
+         "two speeds go with a constant speed, not with rollers.speed_ramp; give one");
+  }
   // A ramp: times from 0 s, increasing; speeds >= 0, duties 0 to 1.
   const auto ramp = [&](const std::vector<RampPoint>& points, const char* key, double least,
                         double most, const char* unit) {

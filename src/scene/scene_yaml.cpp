@@ -50,7 +50,18 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
   if (auto v = n.find("length")) r.length = v->quantity(Dimension::kLength);
   if (auto v = n.find("wall")) r.wall = v->quantity(Dimension::kLength);
   if (auto v = n.find("density")) r.density = v->quantity(Dimension::kDensity);
-  if (auto v = n.find("speed")) r.speed = v->quantity(Dimension::kAngularSpeed);
+  if (auto v = n.find("speed")) {
+    if (v->is_sequence()) {
+      if (v->size() != 2)
+        v->fail(
+            "expected one speed, or a list of 2 speeds [roller 0, roller 1], e.g. "
+            "[1600 rpm, 1500 rpm]");
+      r.speed = (*v)[0].quantity(Dimension::kAngularSpeed);
+      r.speed_roller_1 = (*v)[1].quantity(Dimension::kAngularSpeed);
+    } else {
+      r.speed = v->quantity(Dimension::kAngularSpeed);
+    }
+  }
   if (n.has("speed") && n.has("speed_ramp"))
     n.at("speed_ramp")
         .fail("give speed (constant) or speed_ramp (over time), not both; remove one of the keys");

@@ -1,5 +1,6 @@
 #include "lab/run/regime_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -71,9 +72,10 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
             std::nullopt};
   // The rollers' speed: set (ideal drive), or the motor's under the plate's friction load.
   // A ramped ideal drive: its slowest speed over the run, where the plate is likeliest to stick.
-  double roller_speed = rig.roller_speed_ramp
-                            ? rig.roller_speed_ramp->smallest(0.0, rig.world.duration)
-                            : rig.rollers.speed;
+  double roller_speed =
+      rig.roller_speed_ramp
+          ? rig.roller_speed_ramp->smallest(0.0, rig.world.duration)
+          : std::min(rig.rollers.speed, rig.rollers.speed_roller_1.value_or(rig.rollers.speed));
   if (rig.drive) {
     const MotorDesc& motor = rig.drive->parts.motor;
     if (!rig.drive->roller_speed_loaded)

@@ -145,13 +145,16 @@ std::string summary_text(const RunSummary& s) {
                      *s.mu_k_recovered_thick));
   if (s.period_trajectory)
     line(fmt::format("  period (trajectory)    {:.6f} s", *s.period_trajectory));
-  // A tilted rig's plate oscillates about x_eq, down the slope (a level one's about 0).
-  if (s.tilt != 0.0 && s.oscillation_centre)
-    line(fmt::format("  oscillation centre     {:+.3f} mm (theory, tilted {:+.2f} deg: {})",
-                     *s.oscillation_centre * 1e3, s.tilt * 180.0 / kPi,
-                     s.oscillation_centre_theory
-                         ? fmt::format("{:+.3f} mm", *s.oscillation_centre_theory * 1e3)
-                         : std::string("none")));
+  // A plate oscillating off the rollers' midpoint (a tilted rig's, rollers at different speeds):
+  // where, beside theory's x_eq.
+  const bool off_centre = s.tilt != 0.0 || s.oscillation_centre_theory.value_or(0.0) != 0.0;
+  if (off_centre && s.oscillation_centre)
+    line(fmt::format(
+        "  oscillation centre     {:+.3f} mm (theory {}{})", *s.oscillation_centre * 1e3,
+        s.oscillation_centre_theory ? fmt::format("{:+.3f} mm", *s.oscillation_centre_theory * 1e3)
+                                    : std::string("none"),
+        s.tilt != 0.0 ? fmt::format(", the rig tilted {:+.2f} deg", s.tilt * 180.0 / kPi)
+                      : std::string()));
   line(fmt::format(
       "  analytic, thin plate   {:.6f} s{}", s.period_thin,
       period ? fmt::format("  (estimator {:+.4f} %)", 100.0 * (*period / s.period_thin - 1.0))

@@ -118,14 +118,29 @@ TEST_P(RigRender, TheRigIsDrawnAndThePlateLandsWhereItsPoseSays) {
   }
 }
 
-TEST_P(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
-  const auto context = test::gl_context(GetParam(), 320, 180);
-  Renderer renderer(*context);
-  const RigView view(renderer, paper_rig_model());
+// A GL context of a frame's size on a back end, its renderer, the paper's rig in it and the rig's
+// camera for that frame.
+struct Stage {
+  Stage(const std::string& backend, int width, int height)
+      : context(test::gl_context(backend, width, height)),
+        renderer(*context),
+        view(renderer, paper_rig_model()) {
+    video.width = width;
+    video.height = height;
+    camera = rig_camera(view.model(), video);
+  }
+  std::unique_ptr<GlContext> context;
+  Renderer renderer;
+  const RigView view;
   VideoDesc video;
-  video.width = 320;
-  video.height = 180;
-  const Camera camera = rig_camera(view.model(), video);
+  Camera camera;
+};
+
+TEST_P(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
+  Stage stage(GetParam(), 320, 180);
+  Renderer& renderer = stage.renderer;
+  const RigView& view = stage.view;
+  const Camera& camera = stage.camera;
   const Image a = draw(renderer, view, camera, pose_at(0.0, 0.0));
   const Image b = draw(renderer, view, camera, pose_at(0.02, 0.0));
   const Image c = draw(renderer, view, camera, pose_at(0.0, 1.2));
@@ -138,12 +153,9 @@ TEST_P(RigRender, PosesChangeTheFrameAndTheSamePoseDoesNot) {
 }
 
 TEST_P(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
-  const auto context = test::gl_context(GetParam(), 640, 360);
-  Renderer renderer(*context);
-  const RigView view(renderer, paper_rig_model());
-  VideoDesc video;
-  video.width = 640;
-  video.height = 360;
+  Stage stage(GetParam(), 640, 360);
+  Renderer& renderer = stage.renderer;
+  const RigView& view = stage.view;
   std::vector<HallPoint> hall;
   for (int k = 0; k < 2500; ++k) {
     const double t = 0.5 + k * 1e-3;
@@ -166,7 +178,7 @@ TEST_P(RigRender, TheOverlayIsDrawnAtSixFortyByThreeSixty) {
   state.estimator.mu_k_err = 0.008;
   state.paper_period = test::paper_rig().friction.paper_period;
   state.paper_mu_k = test::paper_rig().friction.paper_mu_k;
-  renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+  renderer.begin_frame(stage.camera, rig_light());
   view.draw(pose_at(0.01, 0.5), 1.0 / 120.0);
   draw_rig_overlay(renderer.overlay(), 640, 360, state);
   const Image frame = copy_image(renderer.end_frame());
@@ -218,13 +230,10 @@ Changed changed(const ImageView& a, const ImageView& b) {
 // label sits at the plot's right end, and a long line of the results shrinks to the panel's width
 // instead of running to the frame's edge. The strips beside the panels are as the rig left them.
 TEST_P(RigRender, TheOverlayStaysInsideItsPanelsAtSixFortyByThreeSixty) {
-  const auto context = test::gl_context(GetParam(), 640, 360);
-  Renderer renderer(*context);
-  const RigView view(renderer, paper_rig_model());
-  VideoDesc video;
-  video.width = 640;
-  video.height = 360;
-  const Camera camera = rig_camera(view.model(), video);
+  Stage stage(GetParam(), 640, 360);
+  Renderer& renderer = stage.renderer;
+  const RigView& view = stage.view;
+  const Camera& camera = stage.camera;
   std::vector<HallPoint> hall;
   for (int k = 0; k < 2500; ++k) hall.push_back({3.5 + k * 1e-3, 512.0});
   RigOverlayState state;
@@ -263,12 +272,9 @@ TEST_P(RigRender, TheOverlayStaysInsideItsPanelsAtSixFortyByThreeSixty) {
 // the Hall plot (its top at y = 256) and the results panel, which stay as they were; a long
 // caption wraps to more lines within the same width, three at most.
 TEST_P(RigRender, ACaptionIsASubtitleClearOfTheBottomPanels) {
-  const auto context = test::gl_context(GetParam(), 640, 360);
-  Renderer renderer(*context);
-  const RigView view(renderer, paper_rig_model());
-  VideoDesc video;
-  video.width = 640;
-  video.height = 360;
+  Stage stage(GetParam(), 640, 360);
+  Renderer& renderer = stage.renderer;
+  const RigView& view = stage.view;
   std::vector<HallPoint> hall;
   for (int k = 0; k < 2500; ++k)
     hall.push_back({0.5 + k * 1e-3, 512.0 + 200.0 * std::sin(k * 0.01)});
@@ -278,7 +284,7 @@ TEST_P(RigRender, ACaptionIsASubtitleClearOfTheBottomPanels) {
   state.hall = hall;
   state.estimator.pulses = 3;
   const auto frame = [&](const std::string& caption) {
-    renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+    renderer.begin_frame(stage.camera, rig_light());
     view.draw(pose_at(0.01, 0.5), 0.0);
     draw_rig_overlay(renderer.overlay(), 640, 360, state);
     if (!caption.empty()) draw_caption(renderer.overlay(), 640, 360, caption);
@@ -370,17 +376,14 @@ TEST_P(RigRender, EachCameraPresetMatchesItsGoldenImage) {
 // The title card at full strength hides the panels drawn before it: where the results panel and
 // the speeds' panel are, the card shows its own colour, as where no panel is.
 TEST_P(RigRender, TheTitleCardIsOpaque) {
-  const auto context = test::gl_context(GetParam(), 640, 360);
-  Renderer renderer(*context);
-  const RigView view(renderer, paper_rig_model());
-  VideoDesc video;
-  video.width = 640;
-  video.height = 360;
+  Stage stage(GetParam(), 640, 360);
+  Renderer& renderer = stage.renderer;
+  const RigView& view = stage.view;
   RigOverlayState state;
   state.heading = "LEGO blocks on PVC rollers";
   state.estimator.pulses = 2;
   const TitleCard card = make_title_card(compile_rig(test::paper_rig()), "LEGO blocks", 1.0, 30);
-  renderer.begin_frame(rig_camera(view.model(), video), rig_light());
+  renderer.begin_frame(stage.camera, rig_light());
   view.draw(pose_at(0.0, 0.0), 0.0);
   draw_rig_overlay(renderer.overlay(), 640, 360, state);
   draw_title_card(renderer.overlay(), 640, 360, card, 1.0f);

@@ -31,9 +31,4 @@ double oscillation_centre(double spacing, double mu_0, double mu_1, double h_c, 
   return h_c * t - 0.5 * spacing * ((mu_1 - mu_0) + 2.0 * t) / sum + 0.0;
 }
 
-double tilted_tipping_amplitude(double spacing, double mu_k, double h_c, double tilt) {
-  return tipping_amplitude(spacing, mu_k, h_c) -
-         std::fabs(oscillation_centre(spacing, mu_k, h_c, tilt));
-}
-
 }  // namespace fl

@@ -31,8 +31,4 @@ double oscillation_centre(double spacing, double mu_k, double h_c, double tilt);
 // mu_0 + mu_1 <= 0, l <= (mu_0 + mu_1) h_c and |tilt| >= pi / 2 with fl::DomainError.
 double oscillation_centre(double spacing, double mu_0, double mu_1, double h_c, double tilt);
 
-// The largest amplitude about x_eq before a roller unloads: l/2 - mu_k h_c - |x_eq| [m] (<= 0:
-// a roller unloads even at rest, the plate cannot stay on both).
-double tilted_tipping_amplitude(double spacing, double mu_k, double h_c, double tilt);
-
 }  // namespace fl

@@ -128,12 +128,9 @@ CompiledRig compile_rig(Scene scene) {
     // Each roller's coefficient at its own surface speed (rollers at different speeds under a
     // slip-speed law put the centre off the midpoint; coulomb's is mu_k at any speed).
     const double a = scene.rollers.radius;
-    const double mu_0 = scene.rollers.speed_roller_1 && !scene.drive
-                            ? rig.friction.kinetic(scene.rollers.speed * a)
-                            : mu;
-    const double mu_1 = scene.rollers.speed_roller_1 && !scene.drive
-                            ? rig.friction.kinetic(*scene.rollers.speed_roller_1 * a)
-                            : mu;
+    const bool own_speeds = scene.rollers.speed_roller_1 && !scene.drive;
+    const double mu_0 = own_speeds ? rig.friction.kinetic(scene.rollers.speed * a) : mu;
+    const double mu_1 = own_speeds ? rig.friction.kinetic(*scene.rollers.speed_roller_1 * a) : mu;
     try {
       rig.oscillation_centre = oscillation_centre(l, mu_0, mu_1, h_c, tilt);
     } catch (const DomainError&) {  // the two coefficients together leave no restoring force

@@ -589,6 +589,7 @@ def sweep(
     plot: bool = False,
     progress: Optional[Callable[[dict[str, Any]], None]] = None,
     assets: Optional[PathLike] = None,
+    accuracy: Optional[Quantity] = None,
 ) -> dict[str, SweepColumn]: ...
 
 # ---- a spacing series' fit ----

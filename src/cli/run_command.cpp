@@ -71,8 +71,8 @@ int run_run(const RunCommandOptions& o, const GlobalOptions& global) {
     fmt::print(stderr, "warning: {}\n", spelled(warning));
   const double duration = prepared.rig->world.duration;
   if (prepared.chosen_time_step && !o.json)
-    fmt::print("--accuracy {}: time step {:.4g} ms (predicted integrator bias {:.2e})\n",
-               o.accuracy, *prepared.chosen_time_step * 1e3, prepared.chosen_bias.value_or(0.0));
+    fmt::print("--accuracy {}: time step {:.4g} ms, sized by the {}\n", o.accuracy,
+               *prepared.chosen_time_step * 1e3, prepared.chosen_step_why);
   RunControl control;
   // Ctrl-C or SIGTERM ends the run after its step; what it did is kept, closed and reported.
   control.stop = &stop_requested();

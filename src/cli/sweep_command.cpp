@@ -115,6 +115,7 @@ struct SweepCommandOptions {
   std::string shard;
   bool json = false;
   bool fresh = false;
+  std::string accuracy;
 };
 
 int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global) {
@@ -125,6 +126,7 @@ int run_sweep_command(const SweepCommandOptions& o, const GlobalOptions& global)
   request.plot = o.plot;
   request.shard = o.shard;
   request.fresh = o.fresh;
+  if (!o.accuracy.empty()) request.accuracy = o.accuracy;
   request.assets = global.asset_dir;
   const PreparedSweep prepared = prepare_sweep(request);
   const SweepSpec& spec = prepared.spec;
@@ -247,6 +249,9 @@ Command add_sweep_command(CLI::App& app, const GlobalOptions& global) {
                   "Run shard K of N (points whose index % N == K-1), e.g. 2/8; join with merge");
   sub->add_flag("--json", options->json, "Print one JSON object instead of the summary");
   sub->add_flag("--fresh", options->fresh, "Discard the folder's earlier results and start over");
+  sub->add_option("--accuracy", options->accuracy,
+                  "Run each point at the largest step whose predicted period error stays within "
+                  "this, e.g. 0.01% (over the file's accuracy:)");
   return Command{sub, [options, &global] { return run_sweep_command(*options, global); }};
 }
 

@@ -69,7 +69,8 @@ py::object column(const std::vector<const json*>& values) {
 
 py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Path>& out,
                bool fresh, const std::optional<std::string>& shard, bool plot,
-               const py::object& progress, const std::optional<Path>& assets) {
+               const py::object& progress, const std::optional<Path>& assets,
+               const std::optional<Quantity>& accuracy) {
   SweepRequest request;
   request.file = file.string();
   request.jobs = jobs;
@@ -78,6 +79,7 @@ py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Pa
   if (shard) request.shard = *shard;
   request.plot = plot;
   if (assets) request.assets = assets->string();
+  request.accuracy = accuracy;
   const PreparedSweep prepared = prepare_sweep(request);
   const SweepRunOptions& options = prepared.options;
   std::atomic<bool> stop{false};
@@ -134,12 +136,14 @@ void bind_sweep(py::module_& m) {
   m.def("sweep", &sweep, py::arg("file"), py::kw_only(), py::arg("jobs") = py::none(),
         py::arg("out") = py::none(), py::arg("fresh") = false, py::arg("shard") = py::none(),
         py::arg("plot") = false, py::arg("progress") = py::none(), py::arg("assets") = py::none(),
+        py::arg("accuracy") = py::none(),
         R"(Runs every point of a sweep file (docs/sweep-format.md), as `frictionlab sweep`.
 
 jobs: worker threads (default: every core). out: the sweep's folder (default
 out/sweep/NAME, as the command's), where plan.json, points/, results.csv and sweep.json are
 written; points found done there are not run again (fresh=True discards them). shard: "K/N"
-runs the points whose index % N == K-1. plot: draw the results' plots into out, as
+runs the points whose index % N == K-1. accuracy: run each point at the largest step
+whose predicted period error stays within it ("0.01%", over the file's accuracy:). plot: draw the results' plots into out, as
 `frictionlab sweep --plot` (a plot that fails warns; the results stand). progress: called as points finish with a dict
 (total, done, resumed, failed, invalid, elapsed_s: failed, a guard stopped the run;
 invalid, the scene refused the point's values). Ctrl-C stops handing out points; the running

@@ -64,9 +64,10 @@ TEST(CliRun, SetOverridesAndAccuracyChoosesTheStep) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_DOUBLE_EQ(j["mu_k_set"].get<double>(), 1.0);
-  // The largest 1/N s step with |bias| <= 1e-5: mu_k = 1 needs about 1.01 ms, not the scene's 1 ms.
-  EXPECT_LE(std::fabs(j["predicted_integrator_bias"].get<double>()), 1e-5);
-  EXPECT_GT(std::fabs(j["predicted_integrator_bias"].get<double>()), 0.9e-5);
+  // The largest 1/N s step with |bias| <= 90 % of 1e-5 (the integrator's share): mu_k = 1 needs
+  // about 0.96 ms (N = 1040), not the scene's 1 ms; one N less would pass 0.9e-5 by 0.2 %.
+  EXPECT_LE(std::fabs(j["predicted_integrator_bias"].get<double>()), 0.9e-5);
+  EXPECT_GT(std::fabs(j["predicted_integrator_bias"].get<double>()), 0.89e-5);
   EXPECT_NE(j["time_step_s"].get<double>(), 1e-3);
 }
 

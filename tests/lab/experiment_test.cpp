@@ -4,6 +4,7 @@
 #include "lab/run/experiment.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -131,17 +132,61 @@ TEST(StepChoice, TheChosenStepMeetsTheTargetAndTheNextLargerDoesNot) {
   const Scene s = minimal_scene();
   for (double target : {1e-3, 1e-4, 1e-5}) {
     Scene at = s;
-    at.world.time_step = step_for_accuracy(s, target);
-    EXPECT_LE(std::fabs(predicted_integrator_bias(at)), target);
+    const StepChoice choice = step_for_accuracy(s, target);
+    EXPECT_EQ(choice.basis, StepBasis::kIntegratorBias);
+    at.world.time_step = choice.time_step;
+    // The bias takes its share of the target, and one step coarser would take more.
+    const double share = kIntegratorShareOfAccuracy * target;
+    EXPECT_LE(std::fabs(predicted_integrator_bias(at)), share);
     Scene coarser = at;
     coarser.world.time_step = 1.0 / (1.0 / at.world.time_step - 1.0);
-    EXPECT_GT(std::fabs(predicted_integrator_bias(coarser)), target);
+    EXPECT_GT(std::fabs(predicted_integrator_bias(coarser)), share);
     // And the simulation at that step meets the target.
     at.world.duration = 8.0;
     at.sensor.reset();
     const RunSummary r = run_experiment(at, {});
     EXPECT_LE(std::fabs(*r.period_trajectory / *r.period_thick - 1.0), target) << target;
   }
+}
+
+// A law whose Stribeck drop is narrower than the bias's step, on rollers slow enough that the
+// plate sticks: the step resolves the drop (v_s / (mu_s g)), and the run at it is a stick-slip
+// run, not a numerical failure.
+TEST(StepChoice, AStickingPlateOnANarrowStribeckDropGetsTheStepThatResolvesIt) {
+  Scene s = minimal_scene();
+  s.friction.law = FrictionLawKind::kStribeck;
+  s.friction.mu_k = 0.29;
+  s.friction.mu_s = 0.35;
+  s.friction.v_s = 1e-3;
+  s.rollers.speed = 100.0 * 2.0 * std::numbers::pi / 60.0;
+  const StepChoice choice = step_for_accuracy(s, 1e-4);
+  EXPECT_EQ(choice.basis, StepBasis::kFrictionLaw) << choice.reason;
+  const double drop_step = *s.friction.v_s / (*s.friction.mu_s * s.world.gravity);
+  EXPECT_LE(choice.time_step, drop_step);
+  EXPECT_GT(1.0 / (1.0 / choice.time_step - 1.0), drop_step);
+  Scene at = s;
+  at.world.time_step = choice.time_step;
+  at.world.duration = 3.0;
+  at.sensor.reset();
+  const RunSummary r = run_experiment(at, {});
+  EXPECT_EQ(r.regime, Regime::kStickSlip) << r.regime_evidence;
+  // The same rollers at full speed: the plate never sticks, and the bias alone sizes the step.
+  s.rollers.speed = 1600.0 * 2.0 * std::numbers::pi / 60.0;
+  EXPECT_EQ(step_for_accuracy(s, 1e-4).basis, StepBasis::kIntegratorBias);
+}
+
+// No oscillation (l <= 2 mu_k h_c) has no period to size a step by: a run refuses the accuracy,
+// a sweep point keeps its scene's step and says it is a fallback.
+TEST(StepChoice, NoOscillationKeepsTheScenesStepAndSaysSo) {
+  Scene s = minimal_scene();
+  s.friction.mu_k = 10.0;
+  s.friction.from_paper = false;
+  s.rollers.spacing = 0.04;
+  EXPECT_THROW(step_for_accuracy(s, 1e-4), DomainError);
+  const StepChoice choice = step_for_accuracy_or_scene(compile_rig(s), 1e-4);
+  EXPECT_EQ(choice.basis, StepBasis::kSceneStep);
+  EXPECT_EQ(choice.time_step, s.world.time_step);
+  EXPECT_NE(step_basis_name(choice.basis).find("fallback"), std::string::npos);
 }
 
 TEST(ErrorLaw, FitRecoversAKnownLaw) {

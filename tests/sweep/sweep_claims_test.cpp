@@ -60,6 +60,35 @@ TEST(SweepClaims, SpacingSweepFollowsTheThickCurveWithinAHundredthOfAPercent) {
   }
 }
 
+// README: the 10 008-point sweep at 0.01 % (each point at its own step, the trajectory's period
+// only) puts every point within 0.01 % of the thick-plate curve. One shard in eight, spread over
+// the whole grid (every eighth point), is run here.
+TEST(SweepClaims, AnAccuracySweepPutsEveryPointWithinItsAccuracy) {
+  const SweepSpec spec =
+      load_sweep_file(kSource + "/scenes/sweeps/materials-spacings.yaml", kInputs);
+  ASSERT_TRUE(spec.accuracy.has_value());
+  const fs::path dir = fs::path(FRICTIONLAB_TEST_BINARY_DIR) / "sweep-claims-test" / "accuracy";
+  SweepRunOptions o;
+  o.out_dir = dir.string();
+  o.inputs = kInputs;
+  o.fresh = true;
+  o.shard = Shard{1, 8};
+  const SweepOutcome outcome = run_sweep(spec, o);
+  ASSERT_EQ(outcome.ran, 1251u);
+  std::size_t checked = 0;
+  for (const auto& [index, point] : SweepStore::open(dir.string()).load_points()) {
+    const nlohmann::json& row = point.row;
+    const std::string where = row["params"].dump();
+    ASSERT_EQ(row["status"], "ok") << where << row["error"];
+    ASSERT_EQ(row["regime"], "oscillates") << where;
+    const double error =
+        row["period_trajectory_s"].get<double>() / row["period_thick_s"].get<double>() - 1.0;
+    EXPECT_LT(std::fabs(error), *spec.accuracy) << where;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 1251u);
+}
+
 TEST(SweepClaims, RunoutSweepJumpsFromTheHopThresholdOn) {
   const nlohmann::json rows = run_rows("runout");
   ASSERT_EQ(rows.size(), 21u);

@@ -1,8 +1,11 @@
 // Running sweeps: results bit-identical whatever the number of workers, failing points recorded
 // without stopping the sweep, resume from the point files, interrupts, shards and merge.
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -259,6 +262,67 @@ TEST(SweepRun, ShardsSharingOneFolderFinishIt) {
   EXPECT_FALSE(run(spec, shared, 1, Shard{1, 2}).complete);
   EXPECT_TRUE(run(spec, shared, 1, Shard{2, 2}).complete);
   expect_same_final_files(whole, shared);
+}
+
+// A sweep at a stated accuracy: each point steps at its own largest step (a whole fraction of a
+// second, its predicted bias within 90 % of the accuracy) and lands within the accuracy of the
+// thick-plate period and of the same point at the scene's 1 ms; asking for the trajectory's period
+// only leaves the estimator's columns null, and nothing else changes.
+TEST(SweepRun, AnAccuracySweepStepsEachPointAtItsOwnStepAndMeetsTheAccuracy) {
+  const std::string axes =
+      "set:\n  world.duration: 12 s\n  plate.length: 300 mm\n  plate.offset: 10 mm\n"
+      "  sensor.position: [105 mm, 0 mm, 15 mm]\n"
+      "axes:\n"
+      "  - material: [cardboard, rigid-foam]\n"
+      "  - key: rollers.spacing\n    values: [45 mm, 89 mm, 180 mm]\n";
+  const std::string head = "format: 1\nscene: ../minimal.yaml\n";
+  const SweepSpec fixed = load(head + axes);
+  const SweepSpec hall = load(head + "accuracy: 0.01%\n" + axes);
+  const SweepSpec trajectory = load(head + "accuracy: 0.01%\nperiod: trajectory\n" + axes);
+  const auto rows_of = [&](const SweepSpec& spec, const std::string& name) {
+    const fs::path dir = folder(name);
+    EXPECT_TRUE(run(spec, dir, 2).complete);
+    return nlohmann::json::parse(read(dir / "sweep.json"))["rows"];
+  };
+  const nlohmann::json at_1ms = rows_of(fixed, "fixed");
+  const nlohmann::json with_hall = rows_of(hall, "hall");
+  const nlohmann::json without = rows_of(trajectory, "trajectory");
+  ASSERT_EQ(without.size(), 6u);
+  std::set<double> steps;
+  for (std::size_t i = 0; i < without.size(); ++i) {
+    const nlohmann::json& row = without[i];
+    const std::string where = row["params"].dump();
+    ASSERT_EQ(row["status"], "ok") << where << row["error"];
+    EXPECT_EQ(row["regime"], "oscillates") << where;
+    EXPECT_EQ(row["time_step_basis"], "integrator bias") << where;
+    EXPECT_TRUE(at_1ms[i]["time_step_basis"].is_null()) << where;
+    // The step: 1/N s, its bias within the integrator's 90 % of 1e-4, and 1/(N-1) s beyond it.
+    const double dt = row["time_step_s"].get<double>();
+    const double n = std::round(1.0 / dt);
+    EXPECT_NEAR(1.0 / dt, n, 1e-9) << where;
+    const double omega = 2.0 * std::numbers::pi / row["period_thick_s"].get<double>();
+    EXPECT_LE(std::pow(omega * dt, 2) / 24.0, 0.9e-4) << where;
+    EXPECT_GT(std::pow(omega / (n - 1.0), 2) / 24.0, 0.9e-4) << where;
+    steps.insert(dt);
+    // Within the accuracy of theory and of the fixed-step sweep's point.
+    const double t = row["period_trajectory_s"].get<double>();
+    EXPECT_LT(std::fabs(t / row["period_thick_s"].get<double>() - 1.0), 1e-4) << where;
+    EXPECT_LT(std::fabs(t / at_1ms[i]["period_trajectory_s"].get<double>() - 1.0), 1e-4) << where;
+    // No Hall signal: the estimator's period is not measured, mu_k comes from the trajectory.
+    EXPECT_TRUE(row["period_s"].is_null()) << where;
+    EXPECT_TRUE(row["periods_used"].is_null()) << where;
+    EXPECT_NEAR(row["mu_k_recovered_thick"].get<double>(), row["mu_k_set"].get<double>(),
+                2e-4 * row["mu_k_set"].get<double>())
+        << where;
+    // With the Hall signal: the same trajectory, and the estimator's period as well.
+    EXPECT_EQ(with_hall[i]["period_trajectory_s"], row["period_trajectory_s"]) << where;
+    ASSERT_TRUE(with_hall[i]["period_s"].is_number()) << where;
+    // Within the estimator's resolution: its 1 kHz samples, two per timed span of N periods.
+    const double span = with_hall[i]["periods_used"].get<double>() * t;
+    EXPECT_NEAR(with_hall[i]["period_s"].get<double>() / t, 1.0, 2e-3 / span) << where;
+  }
+  // Each point its own step: they span the grid's frequencies.
+  EXPECT_EQ(steps.size(), 6u);
 }
 
 }  // namespace

@@ -183,6 +183,18 @@ TEST(SweepSpec, ErrorsAreLocated) {
            Case{"format: 1\nscene: nowhere.yaml\naxes: [{seeds: 2}]\n",
                 "t.yaml:2:8: error: scene: no scene file at"},
            Case{kHead + "axes: []\n", "t.yaml:3:7: error: axes: expected at least one axis"},
+           Case{kHead + "accuracy: 0 %\naxes: [{seeds: 2}]\n",
+                "t.yaml:3:11: error: accuracy: expected a period accuracy above 0 and at most "
+                "10 % (e.g. 0.01%), found 0"},
+           Case{kHead + "accuracy: 2 mm\naxes: [{seeds: 2}]\n", "t.yaml:3:11: error: accuracy:"},
+           Case{kHead + "accuracy: 0.01%\nset: {world.time_step: 2 ms}\naxes: [{seeds: 2}]\n",
+                "t.yaml:3:11: error: accuracy: the accuracy picks each point's time step, and the "
+                "sweep sets world.time_step as well; drop one of them"},
+           Case{kHead + "accuracy: 0.01%\naxes: [{key: world.time_step, values: [1 ms]}]\n",
+                "t.yaml:3:11: error: accuracy: the accuracy picks each point's time step"},
+           Case{kHead + "period: hal\naxes: [{seeds: 2}]\n",
+                "t.yaml:3:9: error: period: expected hall (the rig's estimator on the simulated "
+                "Hall signal, and the trajectory's period) or trajectory"},
        }) {
     const std::string message = error_of(c.text);
     EXPECT_EQ(message.substr(0, c.message.size()), c.message) << c.text;
@@ -204,13 +216,33 @@ TEST(SweepSpec, AKeyPathTheSceneDoesNotHaveIsLocatedInTheSweepFile) {
 
 TEST(SweepSpec, SweepFilesInTheRepositoryLoad) {
   for (const char* name : {"materials.yaml", "spacing.yaml", "roller-speed.yaml",
-                           "roller-speed-ramp.yaml", "runout.yaml"}) {
+                           "roller-speed-ramp.yaml", "runout.yaml", "materials-spacings.yaml"}) {
     const SweepSpec spec = load_sweep_file(kSweeps + "/" + name, kInputs);
     EXPECT_GT(spec.point_count(), 1u) << name;
   }
   EXPECT_EQ(load_sweep_file(kSweeps + "/spacing.yaml", kInputs).point_count(), 120u);
   EXPECT_EQ(load_sweep_file(kSweeps + "/materials.yaml", kInputs).point_count(), 15u);
   EXPECT_EQ(load_sweep_file(kSweeps + "/roller-speed.yaml", kInputs).point_count(), 40u);
+  const SweepSpec fast = load_sweep_file(kSweeps + "/materials-spacings.yaml", kInputs);
+  EXPECT_EQ(fast.point_count(), 10008u);
+  ASSERT_TRUE(fast.accuracy.has_value());
+  EXPECT_DOUBLE_EQ(*fast.accuracy, 1e-4);
+  EXPECT_FALSE(fast.hall);
+}
+
+// The accuracy and the period's source change every point's result, so they are part of the plan
+// (a folder run at one accuracy is not resumed at another); a plan without them keeps its bytes.
+TEST(SweepSpec, TheAccuracyAndThePeriodsSourceArePartOfThePlan) {
+  const SweepSpec plain = load(kHead + "axes: [{seeds: 2}]\n");
+  EXPECT_FALSE(sweep_plan(plain).contains("accuracy"));
+  EXPECT_FALSE(sweep_plan(plain).contains("period"));
+  SweepSpec fine = load(kHead + "accuracy: 0.01%\nperiod: trajectory\naxes: [{seeds: 2}]\n");
+  EXPECT_DOUBLE_EQ(sweep_plan(fine)["accuracy"].get<double>(), 1e-4);
+  EXPECT_EQ(sweep_plan(fine)["period"], "trajectory");
+  // The command line's --accuracy replaces the file's.
+  set_sweep_accuracy(fine, 1e-3, SourceLocation::of_field("accuracy", "0.1%"));
+  EXPECT_DOUBLE_EQ(sweep_plan(fine)["accuracy"].get<double>(), 1e-3);
+  EXPECT_NE(sweep_plan(fine), sweep_plan(load(kHead + "accuracy: 0.01%\naxes: [{seeds: 2}]\n")));
 }
 
 TEST(SweepSpec, RollerSpeedRampSweepRunsOneRampPerLawAndRecordsCycles) {

@@ -128,7 +128,9 @@ PreparedRun prepare_run(const RunRequest& r) {
   CompiledRig rig = compile_rig(scene);
   if (target) {
     try {
-      rig = with_time_step(std::move(rig), step_for_accuracy(rig, *target));
+      const StepChoice choice = step_for_accuracy(rig, *target);
+      rig = with_time_step(std::move(rig), choice.time_step);
+      out.chosen_step_why = step_basis_name(choice.basis) + ": " + choice.reason;
     } catch (const DomainError& e) {
       checks.problem("accuracy", quantity_input_text(*r.accuracy), e.what());
       checks.throw_if_any();

@@ -62,6 +62,7 @@ struct PreparedRun {
   OutputDesc output;                       // the scene's output part: which files `out` holds
   std::optional<double> chosen_time_step;  // s, when `accuracy` picked it
   std::optional<double> chosen_bias;       // its predicted integrator bias (relative)
+  std::string chosen_step_why;             // what sized it, when `accuracy` picked it
   std::optional<VideoRequest> frames;      // when the run draws frames
   VideoDesc video;                         // and how: the scene's video part with the request's
   std::string out;

@@ -38,10 +38,15 @@ PreparedSweep prepare_sweep(const SweepRequest& r) {
       checks.problem("shard", r.shard, without_location(e.what()));
     }
   }
+  const std::optional<double> accuracy =
+      checks.quantity(r.accuracy, Dimension::kDimensionless, "accuracy");
   checks.throw_if_any();
   PreparedSweep p;
   p.options.inputs = scene_inputs(asset_dir(r.assets));
   p.spec = load_sweep_file(r.file, p.options.inputs);
+  if (accuracy)
+    set_sweep_accuracy(p.spec, *accuracy,
+                       SourceLocation::of_field("accuracy", quantity_input_text(*r.accuracy)));
   p.options.out_dir = r.out.empty() ? "out/sweep/" + p.spec.name : r.out;
   prepare_output_folder(p.options.out_dir, "out");
   p.options.workers = r.jobs.value_or(0);

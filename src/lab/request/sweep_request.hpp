@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/sweep/sweep_run.hpp"
 #include "lab/sweep/sweep_spec.hpp"
@@ -24,7 +25,10 @@ struct SweepRequest {
   bool plot = false;        // "plot": the results' plots, when every point is done
   std::string shard;        // "shard": K/N, this process's share of the points
   bool fresh = false;       // "fresh": discard the folder's earlier results
-  std::string assets;       // "assets": the lab's data
+  // "accuracy": each point at the largest step whose predicted period error stays within it
+  // (over the file's `accuracy:`), e.g. "0.01%"
+  std::optional<QuantityInput> accuracy;
+  std::string assets;  // "assets": the lab's data
 };
 
 struct PreparedSweep {

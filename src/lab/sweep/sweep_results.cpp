@@ -10,6 +10,7 @@
 #include "io/field_ref.hpp"
 #include "lab/run/cycle_report.hpp"
 #include "lab/run/experiment.hpp"
+#include "lab/run/step_choice.hpp"
 #include "lab/run/summary_fields.hpp"
 
 namespace fl {
@@ -21,6 +22,8 @@ const std::vector<std::string>& fixed_columns() {
   static const std::vector<std::string> columns = [] {
     std::vector<std::string> names;
     for (const char* c : sweep_summary_columns()) names.emplace_back(c);
+    // What sized the point's step, when the sweep has an accuracy (lab/run/step_choice.hpp).
+    names.emplace_back("time_step_basis");
     return names;
   }();
   return columns;
@@ -75,7 +78,14 @@ PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
   if (scene) {
     out.row["seed"] = scene->world.seed;
     try {
-      const CompiledRig rig = compile_rig(*scene);
+      CompiledRig rig = compile_rig(*scene);
+      if (spec.accuracy) {
+        const StepChoice step = step_for_accuracy_or_scene(rig, *spec.accuracy);
+        rig = with_time_step(std::move(rig), step.time_step);
+        out.row["time_step_basis"] = step_basis_name(step.basis);
+      }
+      // Only the trajectory's period asked for: no Hall signal to simulate.
+      if (!spec.hall) rig.sensor.reset();
       RunOptions options;
       options.record_cycles = spec.cycles;
       RunRecording recording;

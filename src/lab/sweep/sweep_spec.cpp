@@ -302,6 +302,23 @@ bool is_key_path_problem(const InputError& e, const std::string& path) {
   }
 }
 
+// Why a sweep cannot take this accuracy, or empty when it can.
+std::string accuracy_problem(const SweepSpec& spec, double accuracy) {
+  if (!(accuracy > 0.0) || accuracy > 0.1)
+    return fmt::format("expected a period accuracy above 0 and at most 10 % (e.g. 0.01%), found {}",
+                       format_number(accuracy));
+  const std::string step = "world.time_step";
+  bool sets_step = false;
+  for (const SceneOverride& o : spec.set) sets_step = sets_step || o.path == step;
+  for (const SweepAxis* a : spec.axes())
+    for (const SceneOverride& o : a->values.front().overrides)
+      sets_step = sets_step || o.path == step;
+  if (sets_step)
+    return "the accuracy picks each point's time step, and the sweep sets " + step +
+           " as well; drop one of them";
+  return {};
+}
+
 // Loads the base scene with some overrides; an error that is about `path` itself is rethrown
 // located at `where` in the sweep file, any other (a value the point will report) is ignored.
 void probe_key(const SweepSpec& spec, const std::vector<SceneOverride>& overrides,
@@ -322,7 +339,8 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
                      const SceneInputs& inputs) {
   const PaperTableSource& paper = inputs.paper;
   root.expect_map();
-  root.allow_keys({"format", "name", "description", "scene", "set", "cycles", "axes"});
+  root.allow_keys(
+      {"format", "name", "description", "scene", "set", "cycles", "accuracy", "period", "axes"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads sweep format 1, found " + format.text());
   SweepSpec spec;
@@ -331,6 +349,16 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
   if (auto v = root.find("name")) spec.name = v->text();
   if (auto v = root.find("description")) v->text();
   if (auto v = root.find("cycles")) spec.cycles = v->boolean();
+  if (auto v = root.find("period")) {
+    const std::string text = v->text();
+    if (text != "hall" && text != "trajectory")
+      v->fail(
+          "expected hall (the rig's estimator on the simulated Hall signal, and the "
+          "trajectory's period) or trajectory (the trajectory's period only, no sensor), "
+          "found \"" +
+          text + "\"");
+    spec.hall = text == "hall";
+  }
 
   const YamlNode scene = root.at("scene");
   std::filesystem::path scene_path(scene.text());
@@ -410,6 +438,12 @@ SweepSpec read_sweep(const YamlNode& root, const std::string& name, const std::s
     overrides.insert(overrides.end(), a->values.front().overrides.begin(),
                      a->values.front().overrides.end());
     probe_key(spec, overrides, a->key, a->where, "axis " + a->name, inputs);
+  }
+  if (auto v = root.find("accuracy")) {
+    const double accuracy = v->quantity(Dimension::kDimensionless);
+    const std::string problem = accuracy_problem(spec, accuracy);
+    if (!problem.empty()) v->fail(problem);
+    spec.accuracy = accuracy;
   }
   return spec;
 }
@@ -493,6 +527,12 @@ std::string text_digest(std::string_view text) {
   return fmt::format("{:016x}", h);
 }
 
+void set_sweep_accuracy(SweepSpec& spec, double accuracy, const SourceLocation& where) {
+  const std::string problem = accuracy_problem(spec, accuracy);
+  if (!problem.empty()) throw InputError(where, problem);
+  spec.accuracy = accuracy;
+}
+
 nlohmann::json sweep_plan(const SweepSpec& spec) {
   nlohmann::json axes = nlohmann::json::array();
   for (const SweepAxis* a : spec.axes()) {
@@ -525,6 +565,8 @@ nlohmann::json sweep_plan(const SweepSpec& spec) {
                       {"points", points}};
   // Only a sweep that records cycles says so: other plans keep their bytes.
   if (spec.cycles) plan["cycles"] = true;
+  if (spec.accuracy) plan["accuracy"] = *spec.accuracy;
+  if (!spec.hall) plan["period"] = "trajectory";
   return plan;
 }
 

@@ -62,6 +62,12 @@ struct SweepSpec {
   std::string scene_text;          // its content when loaded (resuming checks it did not change)
   std::vector<SceneOverride> set;  // `set:`, applied to every point before its axes
   bool cycles = false;             // `cycles:`: each point's cycles to cycles/NNNNNNNN.csv
+  // `accuracy:` (or `sweep --accuracy`): each point runs at the largest step whose predicted
+  // period error stays within it (relative; lab/run/step_choice.hpp), not the scene's step.
+  std::optional<double> accuracy;
+  // `period: trajectory`: the points measure only the trajectory's period; the Hall sensor is
+  // not simulated and the estimator's columns are null. `period: hall` (the default): both.
+  bool hall = true;
   std::vector<SweepGroup> groups;
 
   std::size_t point_count() const;
@@ -87,6 +93,11 @@ SweepSpec load_sweep_file(const std::string& file, const SceneInputs& inputs);
 // resolved against `base_dir`.
 SweepSpec load_sweep_text(std::string_view text, const std::string& name,
                           const std::string& base_dir, const SceneInputs& inputs);
+
+// Sets the sweep's accuracy (`sweep --accuracy`, over the file's `accuracy:`); `where` names the
+// option in errors. Throws InputError when it is not a fraction in (0, 10 %], or when the sweep
+// sets world.time_step, which the accuracy would override.
+void set_sweep_accuracy(SweepSpec& spec, double accuracy, const SourceLocation& where);
 
 // Point `index` (0 <= index < point_count()).
 SweepPoint sweep_point(const SweepSpec& spec, std::size_t index);

@@ -26,6 +26,16 @@ class FrictionWorld final : public btDiscreteDynamicsWorld {
   }
 };
 
+// Bullet's default pools hold 4096 manifolds and 4096 collision algorithms, allocated and cleared
+// when a world is made: most of the cost of a short run. A rig has a few pairs (the plate against
+// two rollers and the guides' boxes); past the pools Bullet allocates from the heap.
+btDefaultCollisionConstructionInfo small_pools() {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = 64;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = 64;
+  return info;
+}
+
 }  // namespace
 
 struct RigWorld::Impl {
@@ -39,7 +49,7 @@ struct RigWorld::Impl {
   // What the rollers did to the plate in the last step, read once per step from the manifolds.
   std::array<RollerContact, 2> contacts{};
 
-  btDefaultCollisionConfiguration configuration;
+  btDefaultCollisionConfiguration configuration{small_pools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;

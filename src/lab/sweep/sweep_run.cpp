@@ -240,15 +240,16 @@ SweepOutcome run_sweep(const SweepSpec& spec, const SweepRunOptions& given) {
   {
     const int threads = std::max(
         1, std::min(outcome.workers, static_cast<int>(std::max<std::size_t>(1, pending.size()))));
+    // The workers only compute; this thread writes each point's file as it arrives, so a
+    // worker does not wait on the disk (each file is synced) while this thread mostly would.
     WorkPool<PointResult> pool(threads, [&](std::size_t index) {
-      PointResult r = run_sweep_point(spec, sweep_point(spec, index), options.inputs);
-      store.save_point(r);
-      return r;
+      return run_sweep_point(spec, sweep_point(spec, index), options.inputs);
     });
     for (const std::size_t index : pending) pool.push(index);
     pool.close();
     while (!pool.finished()) {
       for (const PointResult& r : pool.take(std::chrono::milliseconds(250))) {
+        store.save_point(r);
         ++outcome.ran;
         ++progress.done;
         wall_sum += r.wall_s;

@@ -346,6 +346,7 @@ class RunSummary:
     amplitude_end: Optional[float]
     amplitude_drift_per_period: Optional[float]
     roller_speed: float
+    roller_speed_1: float
     drive: Optional[DriveReport]
     plate_speed_max: float
     slip_margin: float

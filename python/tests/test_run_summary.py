@@ -102,6 +102,7 @@ def summary_keys(r):
         "h_c_m": r.h_c,
         "plate_mass_kg": r.plate_mass,
         "roller_speed_rad_s": r.roller_speed,
+        "roller_speed_1_rad_s": r.roller_speed_1,
         "drive": None
         if d is None
         else {

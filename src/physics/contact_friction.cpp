@@ -56,12 +56,17 @@ void ContactFriction::before_solve(btDispatcher& dispatcher) {
       const btVector3& n = pt.m_normalWorldOnB;
       if (stuck_[i]) {
         double limit = law_.mu_s;
-        // The ratio |F|/N extrapolated to the step's end: if it crosses mu_s inside the step,
-        // the contact breaks there; the limit is blended by the fraction before the crossing.
+        // When the ratio |F|/N, extrapolated from the last two steps, crosses mu_s: the contact
+        // breaks there, and this step's limit is blended by the share of its impulse that comes
+        // before the crossing. The semi-implicit Euler step is a leapfrog: the impulse solved at
+        // this step's positions stands for the half steps either side of them, from half a step
+        // after the last positions to one and a half, so that is the window the crossing is
+        // placed in (counting from the step's start instead broke the stick half a step late).
         if (stuck_steps_[i] >= 2) {
-          const double next = 2.0 * ratio_now_[i] - ratio_before_[i];
-          if (next > law_.mu_s && next > ratio_now_[i]) {
-            const double before = (law_.mu_s - ratio_now_[i]) / (next - ratio_now_[i]);
+          const double rise = ratio_now_[i] - ratio_before_[i];  // per step
+          if (rise > 0.0) {
+            const double crossing = (law_.mu_s - ratio_now_[i]) / rise;  // steps after the last
+            const double before = std::clamp(crossing - 0.5, 0.0, 1.0);
             limit = before * law_.mu_s + (1.0 - before) * law_.kinetic(0.0);
           }
         }

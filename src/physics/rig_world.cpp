@@ -157,7 +157,9 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   // The ideal drive: the set speed. Roller 0 at -l/2 turns about +y so its top moves toward +x
   // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
   const double speed = rig.roller_speed_ramp ? rig.roller_speed_ramp->at(0.0) : s.rollers.speed;
-  roller_omega = {sense * speed, -sense * s.rollers.speed_roller_1.value_or(speed)};
+  const double speed_1 = rig.roller_speed_ramp_roller_1 ? rig.roller_speed_ramp_roller_1->at(0.0)
+                                                        : s.rollers.speed_roller_1.value_or(speed);
+  roller_omega = {sense * speed, -sense * speed_1};
   if (s.drive) {
     drivetrain = std::make_unique<Drivetrain>(rig);
     roller_omega = drivetrain->roller_speeds();
@@ -333,7 +335,9 @@ void RigWorld::step() {
     // rollers at over the step; what roller_speeds() reads after it).
     const double sense = impl_->rig.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
     const double speed = rig.roller_speed_ramp->at(t_next);
-    impl_->roller_omega = {sense * speed, -sense * speed};
+    const double speed_1 =
+        rig.roller_speed_ramp_roller_1 ? rig.roller_speed_ramp_roller_1->at(t_next) : speed;
+    impl_->roller_omega = {sense * speed, -sense * speed_1};
   }
   if (rig.warming) {
     // Warming rollers: the law's coefficients scaled with mu_k at the step's middle.

@@ -344,7 +344,10 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("amplitude_end", &S::amplitude_end,
                     "m, last turning point; None when the run reached none")
       .def_readonly("amplitude_drift_per_period", &S::amplitude_drift_per_period, "relative")
-      .def_readonly("roller_speed", &S::roller_speed, "rad/s")
+      .def_readonly("roller_speed", &S::roller_speed,
+                    "rad/s, roller 0's (mean when driven or ramped)")
+      .def_readonly("roller_speed_1", &S::roller_speed_1,
+                    "rad/s, roller 1's (mean when driven or ramped)")
       .def_readonly("drive", &S::drive, "the motor and gears, or None for the ideal drive")
       .def_readonly("plate_speed_max", &S::plate_speed_max, "m/s")
       .def_readonly("slip_margin", &S::slip_margin, "roller surface speed / plate's largest speed")

@@ -113,6 +113,7 @@ CompiledRig compile_rig(Scene scene) {
                         rig.friction.mu_k, w->mu_k_room.value_or(rig.friction.mu_k));
   rig.roller_speed_nominal = nominal_roller_speed(scene);
   rig.roller_speed_ramp = roller_speed_ramp(scene);
+  rig.roller_speed_ramp_roller_1 = roller_speed_ramp_roller_1(scene);
   rig.duty_ramp = duty_ramp(scene);
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
@@ -127,10 +128,17 @@ CompiledRig compile_rig(Scene scene) {
   if (rig.restoring) {
     // Each roller's coefficient at its own surface speed (rollers at different speeds under a
     // slip-speed law put the centre off the midpoint; coulomb's is mu_k at any speed).
+    // A ramp with a speed for each roller: theory's centre at its first point's speeds.
     const double a = scene.rollers.radius;
-    const bool own_speeds = scene.rollers.speed_roller_1 && !scene.drive;
-    const double mu_0 = own_speeds ? rig.friction.kinetic(scene.rollers.speed * a) : mu;
-    const double mu_1 = own_speeds ? rig.friction.kinetic(*scene.rollers.speed_roller_1 * a) : mu;
+    const bool own_speeds =
+        (scene.rollers.speed_roller_1 || rig.roller_speed_ramp_roller_1) && !scene.drive;
+    const double speed_0 =
+        rig.roller_speed_ramp ? rig.roller_speed_ramp->at(0.0) : scene.rollers.speed;
+    const double speed_1 = rig.roller_speed_ramp_roller_1
+                               ? rig.roller_speed_ramp_roller_1->at(0.0)
+                               : scene.rollers.speed_roller_1.value_or(speed_0);
+    const double mu_0 = own_speeds ? rig.friction.kinetic(speed_0 * a) : mu;
+    const double mu_1 = own_speeds ? rig.friction.kinetic(speed_1 * a) : mu;
     try {
       rig.oscillation_centre = oscillation_centre(l, mu_0, mu_1, h_c, tilt);
     } catch (const DomainError&) {  // the two coefficients together leave no restoring force

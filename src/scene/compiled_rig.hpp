@@ -69,6 +69,7 @@ struct CompiledRig {
   // What the scene schedules over time, when it does: the rollers' speed [rad/s] (ideal drive,
   // rollers.speed_ramp) or the motor's duty (drive.motor.duty_ramp).
   std::optional<Ramp> roller_speed_ramp;
+  std::optional<Ramp> roller_speed_ramp_roller_1;  // roller 1's own, when the ramp gives two
   std::optional<Ramp> duty_ramp;
   std::optional<CompiledDrive> drive;
   // Rollers warming from friction.temperature (friction.warming): mu_k over time, `friction`

@@ -23,4 +23,13 @@ struct RampKey {
 // a time < 0 or not after the previous point's, and a value outside [least, most].
 std::vector<RampPoint> read_ramp(const YamlNode& node, const RampKey& key);
 
+// A schedule for two (rollers.speed_ramp: each point's value one speed for both rollers, or
+// [roller 0, roller 1]): `first` the one or roller 0's, `second` roller 1's when the points give
+// two (empty otherwise). Every point gives one value, or every point two.
+struct RampPair {
+  std::vector<RampPoint> first;
+  std::vector<RampPoint> second;
+};
+RampPair read_ramp_pair(const YamlNode& node, const RampKey& key);
+
 }  // namespace fl

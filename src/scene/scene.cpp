@@ -96,6 +96,11 @@ std::optional<Ramp> roller_speed_ramp(const Scene& scene) {
   return Ramp(scene.rollers.speed_ramp);
 }
 
+std::optional<Ramp> roller_speed_ramp_roller_1(const Scene& scene) {
+  if (scene.drive || scene.rollers.speed_ramp_roller_1.empty()) return std::nullopt;
+  return Ramp(scene.rollers.speed_ramp_roller_1);
+}
+
 std::optional<Ramp> duty_ramp(const Scene& scene) {
   if (!scene.drive || scene.drive->motor.duty_ramp.empty()) return std::nullopt;
   return Ramp(scene.drive->motor.duty_ramp);

@@ -46,6 +46,9 @@ struct RollersDesc {
   // The speed over time instead (ideal drive only; values in rad/s, times in s): piecewise
   // linear, held after its last point. Empty: the constant `speed`.
   std::vector<RampPoint> speed_ramp;
+  // Roller 1's own schedule, when the ramp's points give two speeds [roller 0, roller 1]
+  // (`speed_ramp` is then roller 0's); empty: both follow `speed_ramp`.
+  std::vector<RampPoint> speed_ramp_roller_1;
   double wall = 0.0015;     // m, the PVC tube's wall (its mass and inertia, when driven)
   double density = 1400.0;  // kg/m^3 (PVC)
   RollerSense sense = RollerSense::kInward;
@@ -266,6 +269,8 @@ double nominal_roller_speed(const Scene& scene);
 // The ramp a scene schedules (rollers.speed_ramp in rad/s for the ideal drive, or
 // drive.motor.duty_ramp for the motor), or nullopt when its speed or duty is constant.
 std::optional<Ramp> roller_speed_ramp(const Scene& scene);
+// Roller 1's own ramp, when the scene's ramp gives two speeds.
+std::optional<Ramp> roller_speed_ramp_roller_1(const Scene& scene);
 std::optional<Ramp> duty_ramp(const Scene& scene);
 
 // The gearbox's speed-up from the motor to the rollers (product of driver / driven teeth).

@@ -1,5 +1,6 @@
 #include "scene/scene_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -124,6 +125,14 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   const std::size_t before_ramps = problems.size();
   ramp(s.rollers.speed_ramp, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
        " rad/s");
+  ramp(s.rollers.speed_ramp_roller_1, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
+       " rad/s (roller 1)");
+  need(s.rollers.speed_ramp_roller_1.empty() ||
+           (s.rollers.speed_ramp_roller_1.size() == s.rollers.speed_ramp.size() &&
+            std::equal(s.rollers.speed_ramp.begin(), s.rollers.speed_ramp.end(),
+                       s.rollers.speed_ramp_roller_1.begin(),
+                       [](const RampPoint& a, const RampPoint& b) { return a.at == b.at; })),
+       "rollers.speed_ramp", "roller 1's points must be at roller 0's times");
   need(s.rollers.speed_ramp.empty() || !s.drive, "rollers.speed_ramp",
        "the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead");
   if (s.drive) ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");

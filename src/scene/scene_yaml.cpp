@@ -65,9 +65,12 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
   if (n.has("speed") && n.has("speed_ramp"))
     n.at("speed_ramp")
         .fail("give speed (constant) or speed_ramp (over time), not both; remove one of the keys");
-  if (auto v = n.find("speed_ramp"))
-    r.speed_ramp = read_ramp(
+  if (auto v = n.find("speed_ramp")) {
+    RampPair ramps = read_ramp_pair(
         *v, {"speed", Dimension::kAngularSpeed, 0.0, std::nullopt, "{at: 0 s, speed: 100 rpm}"});
+    r.speed_ramp = std::move(ramps.first);
+    r.speed_ramp_roller_1 = std::move(ramps.second);
+  }
   if (auto v = n.find("sense")) {
     const std::string sense = v->text();
     if (sense == "inward")

@@ -30,22 +30,48 @@ double surface_speed(const Scene& s) {
   return s.rollers.speed * s.rollers.radius;
 }
 
-// mu_s = 1.2 mu_k at 200 rpm from 30 mm: a stick-slip cycle with sticks of 2 x_b / v_r.
+// mu_s from 1.1 to 2.07 mu_k (mu_k = 0.29) at 200 rpm from 30 mm: a stick-slip cycle with sticks
+// of 2 x_b / v_r, its period within 1e-4 of the closed form at the scene's 1 ms.
 TEST(FrictionLawAccuracy, StickSlipCycleWithinOneTenThousandthOfItsClosedForm) {
-  const Scene s = minimal({{"rollers.speed", "200 rpm"},
-                           {"plate.offset", "30 mm"},
-                           {"friction.mu_s", "0.348"},
-                           {"world.duration", "6 s"}});
-  const CompiledRig rig = compile_rig(s);
-  const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate_of(rig), surface_speed(s));
-  const RunSummary r = run_experiment(rig, {});
-  ASSERT_EQ(r.regime, Regime::kStickSlip) << r.regime_evidence;
-  ASSERT_TRUE(r.stick_slip_period && r.stick_slip_amplitude && r.stick_duration);
-  EXPECT_NEAR(*r.stick_slip_period / cycle.period, 1.0, 1e-4);
-  // The amplitude and the stick's length carry the step in which the stick is found: at most
-  // v_r dt of travel, one step of time.
-  EXPECT_NEAR(*r.stick_slip_amplitude, cycle.amplitude, surface_speed(s) * s.world.time_step);
-  EXPECT_NEAR(*r.stick_duration, cycle.stick_duration, 1.5 * s.world.time_step);
+  for (const char* mu_s : {"0.319", "0.348", "0.4", "0.5", "0.6"}) {
+    const Scene s = minimal({{"rollers.speed", "200 rpm"},
+                             {"plate.offset", "30 mm"},
+                             {"friction.mu_s", mu_s},
+                             {"world.duration", "6 s"}});
+    const CompiledRig rig = compile_rig(s);
+    const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate_of(rig), surface_speed(s));
+    const RunSummary r = run_experiment(rig, {});
+    ASSERT_EQ(r.regime, Regime::kStickSlip) << mu_s << ": " << r.regime_evidence;
+    ASSERT_TRUE(r.stick_slip_period && r.stick_slip_amplitude && r.stick_duration) << mu_s;
+    EXPECT_NEAR(*r.stick_slip_period / cycle.period, 1.0, 1e-4) << mu_s;
+    // The amplitude and the stick's length carry the step in which the stick is found: at most
+    // v_r dt of travel, one step of time.
+    EXPECT_NEAR(*r.stick_slip_amplitude, cycle.amplitude, surface_speed(s) * s.world.time_step)
+        << mu_s;
+    EXPECT_NEAR(*r.stick_duration, cycle.stick_duration, 1.5 * s.world.time_step) << mu_s;
+  }
+}
+
+// The cycle's error is second order in the step: a stick breaks where the ratio |F|/N crosses
+// mu_s within the half steps the step's impulse stands for (docs/physics.md). A quarter of the step
+// takes the error to a sixteenth (measured: 7.5e-5 at 2 ms, 5.4e-6 at 0.5 ms); first order, which
+// breaking half a step late gave, would leave a quarter. Asserted below 0.15 of it, between the
+// two.
+TEST(FrictionLawAccuracy, StickSlipCycleErrorIsSecondOrderInTheStep) {
+  const auto error_at = [](const char* step) {
+    const Scene s = minimal({{"rollers.speed", "200 rpm"},
+                             {"plate.offset", "30 mm"},
+                             {"friction.mu_s", "0.6"},
+                             {"world.time_step", step},
+                             {"world.duration", "8 s"}});
+    const CompiledRig rig = compile_rig(s);
+    const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate_of(rig), surface_speed(s));
+    const RunSummary r = run_experiment(rig, {});
+    EXPECT_EQ(r.regime, Regime::kStickSlip) << step;
+    return std::fabs(r.stick_slip_period.value_or(0.0) / cycle.period - 1.0);
+  };
+  const double coarse = error_at("2 ms"), fine = error_at("0.5 ms");
+  EXPECT_LT(fine, 0.15 * coarse) << coarse << " at 2 ms, " << fine << " at 0.5 ms";
 }
 
 // A linear law: x'' - 2 gamma x' + Omega^2 x = 0 exactly while both rollers slip, with

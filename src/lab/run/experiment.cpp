@@ -75,6 +75,7 @@ void rig_figures(const CompiledRig& rig, RunSummary& out) {
   if (rig.sensor && rig.sensor->clock_error != 0.0) out.clock_error = rig.sensor->clock_error;
   out.solver_iterations = rig.world.solver_iterations;
   out.roller_speed = rig.rollers.speed;
+  out.roller_speed_1 = rig.rollers.speed_roller_1.value_or(rig.rollers.speed);
   if (const FrictionSource& source = rig.friction_source; source.paper_material) {
     out.paper_material = *source.paper_material;
     out.paper_period = source.paper_period;
@@ -303,11 +304,17 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
   out.min_normal_force = r.extremes.min_normal_force;
   out.max_penetration = r.extremes.max_penetration;
   if (r.cycles) recording->cycles = r.cycles->cycles();
-  if (r.ramp) out.roller_speed = r.ramp->mean().value_or(rig.roller_speed_ramp->at(0.0));
+  if (r.ramp) {
+    out.roller_speed = r.ramp->mean(0).value_or(rig.roller_speed_ramp->at(0.0));
+    out.roller_speed_1 = r.ramp->mean(1).value_or(
+        (rig.roller_speed_ramp_roller_1 ? rig.roller_speed_ramp_roller_1 : rig.roller_speed_ramp)
+            ->at(0.0));
+  }
   if (r.failure) out.failure = r.failure->message;
   if (r.drive) {
     out.drive = r.drive->report();
     out.roller_speed = std::fabs(out.drive->roller_speeds[0]);
+    out.roller_speed_1 = std::fabs(out.drive->roller_speeds[1]);
   }
   if (!tracker.turning_amplitudes().empty()) {
     out.amplitude_start = tracker.turning_amplitudes().front();

@@ -217,11 +217,27 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     open = nullptr;
   }
   if (stuck_roller >= 0) {
-    if (!open) sticks_.push_back({stuck_roller, t, t, 0, true});
+    if (!open) sticks_.push_back({stuck_roller, stick_start(stuck_roller, t), t, 0, true});
     sticks_.back().end = t;
     ++sticks_.back().steps;
   }
+  for (int i = 0; i < 2; ++i) {
+    slips_[i][1] = slips_[i][0];
+    slips_[i][0] = s.vx - surface[i];
+  }
+  ++slip_steps_;
   return std::nullopt;
+}
+
+double RegimeMonitor::stick_start(int roller, double t) const {
+  // The slip at the last two steps, extrapolated to where it reaches zero: the stick began there
+  // (between the last step and this one), not at this step. The same rule for every stick, so
+  // the intervals between sticks, a stick-slip cycle's period, carry no whole-step rounding.
+  if (slip_steps_ < 2) return t;
+  const double last = slips_[roller][0], before = slips_[roller][1];
+  if (!(std::fabs(last) < std::fabs(before)) || last * before <= 0.0) return t;
+  const double steps_after_last = std::clamp(last / (before - last), 0.0, 1.0);
+  return t - rig_.world.time_step * (1.0 - steps_after_last);
 }
 
 RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) const {

@@ -83,6 +83,8 @@ class RegimeMonitor {
   const OscillationTracker& tracker() const { return tracker_; }
 
  private:
+  // When a stick on `roller` found at step time t began, between the last step and t.
+  double stick_start(int roller, double t) const;
   const CompiledRig& rig_;
   double mass_, inertia_, h_c_;
   bool slip_dependent_;
@@ -110,6 +112,10 @@ class RegimeMonitor {
   double slip_ratio_min_ = 1e300;
   // The stick episodes the contacts reported, and the oscillation's crossings and turning points.
   std::vector<StickEpisode> sticks_;
+  // The plate's slip on each roller (its speed less the roller's surface speed, m/s) at the last
+  // two steps, to place a stick's start between steps.
+  std::array<std::array<double, 2>, 2> slips_{};
+  int slip_steps_ = 0;
   OscillationTracker tracker_;
   double last_t_ = 0.0;
   // The rollers' mean surface speed over the last quarter of the run.

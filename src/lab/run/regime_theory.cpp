@@ -74,7 +74,10 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   // A ramped ideal drive: its slowest speed over the run, where the plate is likeliest to stick.
   double roller_speed =
       rig.roller_speed_ramp
-          ? rig.roller_speed_ramp->smallest(0.0, rig.world.duration)
+          ? std::min(rig.roller_speed_ramp->smallest(0.0, rig.world.duration),
+                     rig.roller_speed_ramp_roller_1
+                         ? rig.roller_speed_ramp_roller_1->smallest(0.0, rig.world.duration)
+                         : rig.roller_speed_ramp->smallest(0.0, rig.world.duration))
           : std::min(rig.rollers.speed, rig.rollers.speed_roller_1.value_or(rig.rollers.speed));
   if (rig.drive) {
     const MotorDesc& motor = rig.drive->parts.motor;

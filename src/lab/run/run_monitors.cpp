@@ -67,13 +67,15 @@ void TrajectoryRecorder::record(const StepContext& step) {
 }
 
 void RampSpeedAverage::record(const StepContext& step) {
-  sum_ += std::fabs(step.world.roller_speeds()[0]);
+  const std::array<double, 2> speeds = step.world.roller_speeds();
+  sum_[0] += std::fabs(speeds[0]);
+  sum_[1] += std::fabs(speeds[1]);
   ++steps_;
 }
 
-std::optional<double> RampSpeedAverage::mean() const {
+std::optional<double> RampSpeedAverage::mean(int roller) const {
   if (steps_ == 0) return std::nullopt;
-  return sum_ / static_cast<double>(steps_);
+  return sum_[static_cast<std::size_t>(roller)] / static_cast<double>(steps_);
 }
 
 RunExtremes::RunExtremes() : min_normal_force(std::numeric_limits<double>::infinity()) {}

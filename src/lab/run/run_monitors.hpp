@@ -112,10 +112,11 @@ class TrajectoryRecorder final : public RunMonitor {
 class RampSpeedAverage final : public RunMonitor {
  public:
   void record(const StepContext& step) override;
-  std::optional<double> mean() const;
+  // Each roller's mean |speed| over the run [rad/s] (index 0 at -l/2).
+  std::optional<double> mean(int roller = 0) const;
 
  private:
-  double sum_ = 0.0;
+  std::array<double, 2> sum_{};
   long long steps_ = 0;
 };
 

@@ -201,8 +201,12 @@ std::string summary_text(const RunSummary& s) {
         d.motor_speed * kRpm, d.motor_torque * 1e3, d.load_torque * 1e3));
     line(gearbox_line(d));
   }
-  line(fmt::format("  rollers                {:.0f} rpm, slip margin {:.2f}", s.roller_speed * kRpm,
-                   s.slip_margin));
+  const std::string speeds =
+      std::fabs(s.roller_speed_1 - s.roller_speed) > 1e-9 * std::fabs(s.roller_speed)
+          ? fmt::format("{:.0f} rpm (roller 0), {:.0f} rpm (roller 1)", s.roller_speed * kRpm,
+                        s.roller_speed_1 * kRpm)
+          : fmt::format("{:.0f} rpm", s.roller_speed * kRpm);
+  line(fmt::format("  rollers                {}, slip margin {:.2f}", speeds, s.slip_margin));
   line(
       fmt::format("  run                    {:.2f} s simulated in {:.3f} s: {:.0f} x real time, "
                   "{:.0f} steps/s",

@@ -147,7 +147,8 @@ struct RunSummary {
   std::optional<double> amplitude_start;
   std::optional<double> amplitude_end;
   std::optional<double> amplitude_drift_per_period;  // relative
-  double roller_speed = 0.0;  // rad/s (mean |roller 0| when driven or ramped)
+  double roller_speed = 0.0;    // rad/s, roller 0's (mean |roller 0| when driven or ramped)
+  double roller_speed_1 = 0.0;  // rad/s, roller 1's (mean |roller 1| when driven or ramped)
   std::optional<DriveReport> drive;
   double plate_speed_max = 0.0;   // m/s
   double slip_margin = 0.0;       // roller surface speed / plate's largest speed

@@ -150,6 +150,8 @@ const std::vector<SummaryField>& summary_fields() {
       {nullptr, "gravity_m_s2", [](S s) { return json_or_null(s.gravity); }},
       {"roller_speed_rad_s", "roller_speed_rad_s",
        [](S s) { return json_or_null(s.roller_speed); }},
+      {"roller_speed_1_rad_s", "roller_speed_1_rad_s",
+       [](S s) { return json_or_null(s.roller_speed_1); }},
       {"drive", nullptr, drive_json},
       {"plate_speed_max_m_s", nullptr, [](S s) { return json_or_null(s.plate_speed_max); }},
       {"slip_margin", "slip_margin", [](S s) { return json_or_null(s.slip_margin); }},

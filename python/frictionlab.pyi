@@ -340,6 +340,8 @@ class RunSummary:
     period_trajectory_err: Optional[float]
     oscillation_centre: Optional[float]
     oscillation_centre_theory: Optional[float]
+    drift_speed: Optional[float]
+    drift_speed_theory: Optional[float]
     tilt: float
     estimator_disagreement: Optional[str]
     amplitude_start: Optional[float]

@@ -13,6 +13,9 @@
   tilt.png               the oscillation's centre against the rig's tilt with theory's line
                          x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k), and the period against the
                          thick plate's with g cos(tilt) (when world.tilt varies)
+  skew.png               the plate's sideways drift against the rollers' skew with theory's line
+                         v_r sin(skew / 2), and the period's error against the thick plate's on
+                         parallel rollers (when rollers.skew varies)
   cycles.png             each cycle's period and amplitude against the rollers' speed during it,
                          the ramp's way down and way up apart, with theory's slip threshold
                          (when the sweep recorded cycles: OUTDIR/cycles/*.csv)
@@ -289,6 +292,40 @@ def plot_tilt(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "tilt.png"))
 
 
+def plot_skew(rows, meta, out):
+    axis = next(a for a in meta["axes"] if a.get("key") == "rollers.skew" and len(a["values"]) > 1)
+    pos, numeric = axis_positions(axis)
+    unit = axis.get("unit") or "rad"
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    theory = sorted((pos[r[axis["name"]]], number(r, "drift_speed_theory_m_s")) for r in rows
+                    if number(r, "drift_speed_theory_m_s") is not None)
+    top.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1,
+             label="theory: v_r sin(skew / 2)")
+    for regime in sorted({r["regime"] or r["status"] for r in rows}):
+        members = [r for r in rows if (r["regime"] or r["status"]) == regime]
+        colour = REGIME_COLOURS.get(regime, "grey")
+        drifting = [r for r in members if number(r, "drift_speed_m_s") is not None]
+        top.plot([pos[r[axis["name"]]] for r in drifting],
+                 [1e3 * number(r, "drift_speed_m_s") for r in drifting], "o", ms=5, color=colour,
+                 label=f"measured ({regime})")
+        timed = [r for r in members
+                 if number(r, "period_trajectory_s") and number(r, "period_thick_s")]
+        bottom.plot([pos[r[axis["name"]]] for r in timed],
+                    [100 * (number(r, "period_trajectory_s") / number(r, "period_thick_s") - 1)
+                     for r in timed], "o", ms=5, color=colour, label=f"the trajectory ({regime})")
+    bottom.axhline(0.0, color="k", lw=1, label="thick plate on parallel rollers")
+    bottom.axhspan(-0.01, 0.01, color="0.85", label="+-0.01 %")
+    top.set_ylabel("sideways drift [mm/s]")
+    top.set_title(f"{meta['sweep']}: roller axes not quite parallel")
+    bottom.set_ylabel("T / T_thick - 1 [%]")
+    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
+    for ax in (top, bottom):
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_png.save(fig, os.path.join(out, "skew.png"))
+
+
 def read_cycles(out, index):
     path = os.path.join(out, "cycles", f"{int(index):08d}.csv")
     if not os.path.exists(path):
@@ -488,6 +525,9 @@ def main(csv_path, json_path, out):
         drawn += 1
     if any(a.get("key") == "world.tilt" and len(a["values"]) > 1 for a in meta["axes"]):
         plot_tilt(rows, meta, out)
+        drawn += 1
+    if any(a.get("key") == "rollers.skew" and len(a["values"]) > 1 for a in meta["axes"]):
+        plot_skew(rows, meta, out)
         drawn += 1
     varied = [a for a in meta["axes"] if len(a["values"]) > 1]
     if len(varied) >= 2:

@@ -74,6 +74,8 @@ def summary_keys(r):
         "period_trajectory_err_s": r.period_trajectory_err,
         "oscillation_centre_m": r.oscillation_centre,
         "oscillation_centre_theory_m": r.oscillation_centre_theory,
+        "drift_speed_m_s": r.drift_speed,
+        "drift_speed_theory_m_s": r.drift_speed_theory,
         "tilt_rad": r.tilt,
         "period_thin_s": r.period_thin,
         "period_thick_s": r.period_thick,

@@ -46,6 +46,8 @@ struct RigWorld::Impl {
   long long steps = 0;
   std::array<double, 2> roller_omega{};
   std::array<double, 2> roller_angle{};
+  // Each roller's axis: +y, or turned about +z by +skew/2 (roller 0) and -skew/2 (roller 1).
+  std::array<btVector3, 2> roller_axis{btVector3(0, 1, 0), btVector3(0, 1, 0)};
   // What the rollers did to the plate in the last step, read once per step from the manifolds.
   std::array<RollerContact, 2> contacts{};
 
@@ -125,7 +127,7 @@ struct RigWorld::Impl {
   static void before_step(btDynamicsWorld* world, btScalar /*time_step*/) {
     auto* impl = static_cast<Impl*>(world->getWorldUserInfo());
     for (int i = 0; i < 2; ++i) {
-      impl->rollers[i]->setAngularVelocity(btVector3(0, impl->roller_omega[i], 0));
+      impl->rollers[i]->setAngularVelocity(impl->roller_axis[i] * impl->roller_omega[i]);
       impl->rollers[i]->setLinearVelocity(btVector3(0, 0, 0));
       if (impl->rig.rollers.runout > 0.0) impl->place_off_centre(i);
     }
@@ -153,6 +155,13 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   const double l = s.contact_spacing;
   const double a = s.rollers.radius;
   roller_shape = std::make_unique<btSphereShape>(a);
+  // Skewed axes, turned about +z: (-sin phi, cos phi, 0) with phi = +skew/2 for roller 0 and
+  // -skew/2 for roller 1. An inward roller's top then moves at v_r (cos phi, sin phi, 0) times its
+  // sense: both tops move toward +y for skew > 0.
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double phi = (i == 0 ? 0.5 : -0.5) * s.rollers.skew;
+    roller_axis[i] = btVector3(-std::sin(phi), std::cos(phi), 0);
+  }
   const double sense = s.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
   // The ideal drive: the set speed. Roller 0 at -l/2 turns about +y so its top moves toward +x
   // (the centre) when inward. With a drive, the gear train's (physics/drivetrain.hpp).
@@ -221,7 +230,11 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   ci.m_angularDamping = 0.0;
   plate = std::make_unique<btRigidBody>(ci);
   plate->setActivationState(DISABLE_DEACTIVATION);
-  if (guides.empty()) {
+  if (guides.empty() && s.rollers.skew != 0.0) {
+    // No guides and skewed axes: the plate also drifts along y with the rollers' surfaces.
+    plate->setLinearFactor(btVector3(1, 1, 1));
+    plate->setAngularFactor(btVector3(0, 1, 0));
+  } else if (guides.empty()) {
     // No guides (the minimal scene): the plate moves in the x-z plane and pitches about y.
     plate->setLinearFactor(btVector3(1, 0, 1));
     plate->setAngularFactor(btVector3(0, 1, 0));

@@ -336,6 +336,11 @@ A value the run did not measure is None, never 0. str(summary) is the summary
       .def_readonly("oscillation_centre_theory", &S::oscillation_centre_theory,
                     "m, a tilted rig's x_eq (0 on a level one)")
       .def_readonly("tilt", &S::tilt, "rad, world.tilt")
+      .def_readonly("drift_speed", &S::drift_speed,
+                    "m/s along +y, skewed axes' sideways drift over the run's second half; None "
+                    "without skew")
+      .def_readonly("drift_speed_theory", &S::drift_speed_theory,
+                    "m/s, v_r sin(skew / 2); None without skew or with unequal speeds")
       .def_readonly("estimator_disagreement", &S::estimator_disagreement,
                     "the estimator's period against the trajectory's, beyond both "
                     "uncertainties, or None")

@@ -155,6 +155,21 @@ CompiledRig compile_rig(Scene scene) {
         roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
   }
   if (h_c > 0.0) rig.mu_k_restoring_limit = l / (2.0 * h_c);
+  // Skewed axes: both surfaces move along +y at v_r sin(skew / 2); the plate's slip along y dies
+  // out and it drifts with them (docs/physics.md). One surface speed for both rollers only.
+  const bool one_speed =
+      !rig.roller_speed_ramp &&
+      !(scene.rollers.speed_roller_1 && *scene.rollers.speed_roller_1 != scene.rollers.speed);
+  bool guided = false;  // guide towers stop the drift where the plate meets one
+  if (scene.frame)
+    for (const FramePart& part : scene.frame->parts) guided = guided || part.guide;
+  if (scene.rollers.skew != 0.0 && one_speed && !guided) {
+    const double speed = rig.drive && rig.drive->roller_speed_loaded
+                             ? *rig.drive->roller_speed_loaded
+                             : scene.rollers.speed;
+    if (!rig.drive || rig.drive->roller_speed_loaded)
+      rig.drift_speed = speed * scene.rollers.radius * std::sin(0.5 * scene.rollers.skew);
+  }
   rig.guards = run_guards(rig, scene);
   rig.name = std::move(scene.name);
   rig.world = scene.world;

@@ -88,6 +88,10 @@ struct CompiledRig {
   double contact_spacing = 0.089;
   // x_eq, where a tilted rig's plate oscillates about (0 on a level one) [m].
   std::optional<double> oscillation_centre;
+  // Skewed axes (rollers.skew): the plate's sideways drift once its slip along y has died out,
+  // v_r sin(skew / 2) [m/s] (docs/physics.md); none without skew, with guide towers (they stop
+  // it), or when the rollers' surface speeds differ or change (two speeds, a ramp).
+  std::optional<double> drift_speed;
   double period_thin = 0.0;                    // s, the paper's formula
   std::optional<double> period_thick;          // s
   std::optional<double> omega;                 // rad/s, 2 pi / T_thick

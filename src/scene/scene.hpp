@@ -58,7 +58,11 @@ struct RollersDesc {
   // Rolling resistance: the lever arm delta by which each contact's pressure centre sits ahead of
   // the roller's surface motion (a soft tube); for inward rollers the contacts sit delta outward
   // of the tops, so the plate rests on contacts l + 2 delta apart (l - 2 delta outward). 0: rigid.
-  double rolling_resistance = 0.0;               // m
+  double rolling_resistance = 0.0;  // m
+  // Axes not quite parallel: roller 0's axis turned by +skew/2 about +z, roller 1's by -skew/2.
+  // Their surfaces then move along +y too (inward rollers), and the plate drifts sideways. 0:
+  // parallel.
+  double skew = 0.0;                             // rad
   std::array<double, 2> runout_phase{0.0, 0.0};  // rad, where each tube's axis sits at t = 0
   std::string material = "pvc";
 };

@@ -71,6 +71,10 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
   plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
   plausible(s.world.gravity, kGravityRange, "world.gravity");
+  need(std::isfinite(s.rollers.skew) && std::fabs(s.rollers.skew) <= kPi / 18.0, "rollers.skew",
+       describe("must be between -10 and 10 degrees (axes that far from parallel are no "
+                "bench's misalignment), found ",
+                s.rollers.skew * 180.0 / kPi, " degrees"));
   need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
            s.rollers.rolling_resistance < 0.5 * s.rollers.radius,
        "rollers.rolling_resistance",

@@ -34,7 +34,8 @@ void read_world(const YamlNode& n, WorldDesc& w) {
 
 void read_rollers(const YamlNode& n, RollersDesc& r) {
   n.allow_keys({"spacing", "radius", "diameter", "length", "wall", "density", "speed", "speed_ramp",
-                "sense", "material", "runout", "runout_phase", "rolling_resistance"});
+                "sense", "material", "runout", "runout_phase", "rolling_resistance", "skew"});
+  if (auto v = n.find("skew")) r.skew = v->quantity(Dimension::kAngle);
   if (auto v = n.find("rolling_resistance")) r.rolling_resistance = v->quantity(Dimension::kLength);
   if (auto v = n.find("runout")) r.runout = v->quantity(Dimension::kLength);
   if (auto v = n.find("runout_phase")) {

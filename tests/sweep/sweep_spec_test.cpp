@@ -216,7 +216,8 @@ TEST(SweepSpec, AKeyPathTheSceneDoesNotHaveIsLocatedInTheSweepFile) {
 
 TEST(SweepSpec, SweepFilesInTheRepositoryLoad) {
   for (const char* name : {"materials.yaml", "spacing.yaml", "roller-speed.yaml",
-                           "roller-speed-ramp.yaml", "runout.yaml", "materials-spacings.yaml"}) {
+                           "roller-speed-ramp.yaml", "runout.yaml", "materials-spacings.yaml",
+                           "skew.yaml", "tilt.yaml", "rolling-resistance.yaml"}) {
     const SweepSpec spec = load_sweep_file(kSweeps + "/" + name, kInputs);
     EXPECT_GT(spec.point_count(), 1u) << name;
   }

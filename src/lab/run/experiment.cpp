@@ -203,6 +203,7 @@ struct RunLoop::Impl {
   std::vector<RunMonitor*> monitors{&regime, &convergence};
   std::optional<CycleRecorder> cycles;
   std::optional<RampSpeedAverage> ramp;
+  std::optional<SidewaysDrift> drift;
   std::optional<StepObserver> observer;
   std::optional<HallChannel> hall;
   std::optional<TrajectoryRecorder> trajectory;
@@ -224,6 +225,9 @@ RunLoop::RunLoop(const CompiledRig& rig, const RunOptions& options, RunRecording
   Impl& r = *impl_;
   if (options.record_cycles && recording != nullptr) r.monitors.push_back(&r.cycles.emplace());
   if (rig.roller_speed_ramp) r.monitors.push_back(&r.ramp.emplace());
+  // Skewed axes: the drift read over the run's second half, after the slip along y has died out
+  // (within about v_r / (mu_k g), 0.6 s for the minimal scene; docs/physics.md).
+  if (rig.rollers.skew != 0.0) r.monitors.push_back(&r.drift.emplace(0.5 * rig.world.duration));
   if (options.observer) r.observer.emplace(options.observer, &r.regime.monitor());
   if (rig.sensor && !rig.magnets.empty()) {
     r.hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
@@ -301,6 +305,8 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
   out.steps = r.world.steps();
   out.duration = r.world.time();
   out.plate_speed_max = r.extremes.plate_speed_max;
+  if (r.drift) out.drift_speed = r.drift->speed();
+  out.drift_speed_theory = rig.drift_speed;
   out.min_normal_force = r.extremes.min_normal_force;
   out.max_penetration = r.extremes.max_penetration;
   if (r.cycles) recording->cycles = r.cycles->cycles();

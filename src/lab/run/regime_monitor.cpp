@@ -133,6 +133,20 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                                   "{:.1f} mm, z = {:.1f} mm; a roller is no longer under it)",
                                   t, s.x * 1e3, s.z * 1e3)};
   }
+  // Sideways: the lab's contacts are one point at each roller's middle (y = 0), so the plate
+  // drifting along y (skewed axes) loses them when its edge comes there; within 1 mm of the edge
+  // the contact already meets the box's rounded edge (Bullet's collision margin) and tilts.
+  const double edge = 0.5 * rig_.plate_desc.width - 1e-3;
+  if (!rig_.frame && std::fabs(s.y) > edge) {
+    return RunFailure{
+        Regime::kLost, t, "plate", "y",
+        fmt::format("t = {:.6f} s: the plate drifted {:.1f} mm sideways, its edge within 1 mm of "
+                    "the rollers' middles, where the lab's contacts are (one point a roller; a "
+                    "real rig's {:.0f} mm rollers would hold it up to {:.1f} mm): shorten the run "
+                    "or lessen rollers.skew",
+                    t, s.y * 1e3, rig_.rollers.length * 1e3,
+                    0.5e3 * (rig_.rollers.length + rig_.plate_desc.width))};
+  }
 
   // Diagnosis.
   tracker_.add(t, s.x, s.vx);

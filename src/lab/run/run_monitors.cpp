@@ -78,6 +78,23 @@ std::optional<double> RampSpeedAverage::mean(int roller) const {
   return sum_[static_cast<std::size_t>(roller)] / static_cast<double>(steps_);
 }
 
+void SidewaysDrift::record(const StepContext& step) {
+  if (step.t < since_) return;
+  // Times from `since` keep the sums well conditioned.
+  const double t = step.t - since_, y = step.plate.y;
+  n_ += 1.0;
+  st_ += t;
+  sy_ += y;
+  stt_ += t * t;
+  sty_ += t * y;
+}
+
+std::optional<double> SidewaysDrift::speed() const {
+  const double spread = n_ * stt_ - st_ * st_;
+  if (n_ < 2.0 || !(spread > 0.0)) return std::nullopt;
+  return (n_ * sty_ - st_ * sy_) / spread;
+}
+
 RunExtremes::RunExtremes() : min_normal_force(std::numeric_limits<double>::infinity()) {}
 
 void RunExtremes::record(const StepContext& step) {

@@ -120,6 +120,20 @@ class RampSpeedAverage final : public RunMonitor {
   long long steps_ = 0;
 };
 
+// The plate's sideways drift (skewed axes): the slope of y against t, fitted by least squares over
+// the steps from `since` [s] on (after the slip along y has died out) [m/s].
+class SidewaysDrift final : public RunMonitor {
+ public:
+  explicit SidewaysDrift(double since) : since_(since) {}
+  void record(const StepContext& step) override;
+  // Null with fewer than two steps fitted.
+  std::optional<double> speed() const;
+
+ private:
+  double since_;
+  double n_ = 0.0, st_ = 0.0, sy_ = 0.0, stt_ = 0.0, sty_ = 0.0;
+};
+
 // The plate's largest speed, the smallest normal force and the deepest penetration.
 class RunExtremes final : public RunMonitor {
  public:

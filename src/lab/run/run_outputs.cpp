@@ -155,6 +155,13 @@ std::string summary_text(const RunSummary& s) {
                                     : std::string("none"),
         s.tilt != 0.0 ? fmt::format(", the rig tilted {:+.2f} deg", s.tilt * 180.0 / kPi)
                       : std::string()));
+  if (s.drift_speed)
+    line(fmt::format("  sideways drift         {:+.3f} mm/s over the run's second half (theory {})",
+                     *s.drift_speed * 1e3,
+                     s.drift_speed_theory
+                         ? fmt::format("{:+.3f} mm/s, v_r sin(skew/2)", *s.drift_speed_theory * 1e3)
+                         : std::string("none: guide towers hold the plate, or the rollers' "
+                                       "surface speeds differ or change")));
   line(fmt::format(
       "  analytic, thin plate   {:.6f} s{}", s.period_thin,
       period ? fmt::format("  (estimator {:+.4f} %)", 100.0 * (*period / s.period_thin - 1.0))

@@ -139,6 +139,11 @@ struct RunSummary {
   // a level one; null without a restoring force).
   std::optional<double> oscillation_centre;
   std::optional<double> oscillation_centre_theory;
+  // Skewed axes (rollers.skew): the plate's sideways drift along +y [m/s], fitted over the run's
+  // second half, and theory's v_r sin(skew / 2); null without skew (the plate cannot drift) or,
+  // for theory, when the two rollers' surface speeds differ or change.
+  std::optional<double> drift_speed;
+  std::optional<double> drift_speed_theory;
   double tilt = 0.0;  // rad, world.tilt
   // The estimator's period against the trajectory's: a disagreement beyond both uncertainties.
   std::optional<std::string> estimator_disagreement;

@@ -58,7 +58,7 @@ struct RigWorld::Impl {
   FrictionWorld world{&dispatcher, &broadphase, &solver, &configuration};
   std::unique_ptr<ContactFriction> friction;
 
-  std::unique_ptr<btSphereShape> roller_shape;
+  std::array<std::unique_ptr<btSphereShape>, 2> roller_shapes;
   std::array<std::unique_ptr<btRigidBody>, 2> rollers;
   std::unique_ptr<Drivetrain> drivetrain;  // the motor and gears (absent: the ideal drive)
   std::vector<std::unique_ptr<btBoxShape>> guide_shapes;
@@ -114,7 +114,7 @@ struct RigWorld::Impl {
     const double oz = -e * std::sin(angle);
     const double shaft_x = (i == 0 ? -0.5 : 0.5) * rig.contact_spacing;
     btTransform t = rollers[k]->getWorldTransform();
-    t.setOrigin(btVector3(shaft_x + ox, 0, -rig.rollers.radius + oz));
+    t.setOrigin(btVector3(shaft_x + ox, 0, -rig.roller_radii[k] + oz));
     rollers[k]->setWorldTransform(t);
     const double w = roller_omega[k];
     rollers[k]->setLinearVelocity(btVector3(w * oz, 0, -w * ox));
@@ -138,9 +138,10 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
     : owned(std::move(keep)), rig(compiled), dt(compiled.world.time_step) {
   const CompiledRig& s = rig;
   const PlateMass& mass = rig.plate;
-  // The rig's frame stays level; a tilted rig turns gravity in it (scene.hpp, world.tilt).
-  world.setGravity(btVector3(-s.world.gravity * std::sin(s.world.tilt), 0,
-                             -s.world.gravity * std::cos(s.world.tilt)));
+  // The rig's frame stays level; a tilted rig turns gravity in it (scene.hpp, world.tilt; and
+  // rollers of different radii, rig.contact_tilt).
+  world.setGravity(btVector3(-s.world.gravity * std::sin(rig.contact_tilt), 0,
+                             -s.world.gravity * std::cos(rig.contact_tilt)));
   btContactSolverInfo& info = world.getSolverInfo();
   info.m_numIterations = s.world.solver_iterations;
   contact_erp = info.m_erp2;
@@ -152,9 +153,12 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   // the renderer draws the cylinder. A roller with rolling resistance presses the plate through
   // a pressure centre delta ahead of its top: its sphere sits that much farther out (inward
   // rollers), the surface's speed unchanged (scene.hpp, rollers.rolling_resistance).
+  // Rollers of different radii on axes at one height: the rig's frame is turned with the line
+  // through their tops (rig.contact_tilt, with gravity), so in it the tops stand level, the axes
+  // at -a_0 and -a_1, the tangent points l cos(asin((a_1 - a_0) / l)) apart (rig.contact_spacing).
   const double l = s.contact_spacing;
-  const double a = s.rollers.radius;
-  roller_shape = std::make_unique<btSphereShape>(a);
+  for (std::size_t i = 0; i < 2; ++i)
+    roller_shapes[i] = std::make_unique<btSphereShape>(rig.roller_radii[i]);
   // Skewed axes, turned about +z: (-sin phi, cos phi, 0) with phi = +skew/2 for roller 0 and
   // -skew/2 for roller 1. An inward roller's top then moves at v_r (cos phi, sin phi, 0) times its
   // sense: both tops move toward +y for skew > 0.
@@ -175,7 +179,9 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   }
   for (int i = 0; i < 2; ++i) {
     const double x = (i == 0 ? -0.5 : 0.5) * l;
-    btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr, roller_shape.get());
+    const double a = rig.roller_radii[static_cast<std::size_t>(i)];
+    btRigidBody::btRigidBodyConstructionInfo ci(0.0, nullptr,
+                                                roller_shapes[static_cast<std::size_t>(i)].get());
     ci.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), btVector3(x, 0, -a));
     ci.m_friction = 0.0;  // per contact point (ContactFriction)
     ci.m_restitution = 0.0;
@@ -314,7 +320,7 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
   const btVector3 bottom = body.getOrigin() - up * rig.plate.h_c;
   for (std::size_t i = 0; i < 2; ++i) {
     const double above = (bottom - rollers[i]->getWorldTransform().getOrigin()).dot(up);
-    out[i].gap = std::max(above - rig.rollers.radius, 0.0);
+    out[i].gap = std::max(above - rig.roller_radii[i], 0.0);
   }
   return out;
 }
@@ -410,9 +416,9 @@ std::array<double, 2> RigWorld::roller_angles() const {
 }
 
 std::array<double, 2> RigWorld::roller_surface_speeds() const {
-  const double a = impl_->rig.rollers.radius;
+  const std::array<double, 2>& a = impl_->rig.roller_radii;
   const std::array<double, 2> omega = roller_speeds();
-  return {omega[0] * a, omega[1] * a};
+  return {omega[0] * a[0], omega[1] * a[1]};
 }
 
 std::optional<DriveState> RigWorld::drive() const {

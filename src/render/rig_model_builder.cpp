@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "core/unequal_radii.hpp"
 #include "render/lego_merge.hpp"
 #include "render/rig_geometry.hpp"
 #include "render/rig_meshes.hpp"
@@ -89,13 +90,17 @@ class ModelBuilder {
 
 void ModelBuilder::add_shafts() {
   const double l = rig_.rollers.spacing;
-  const double a = rig_.rollers.radius;
   if (rig_.drive) {
     layout_ = &rig_.drive->layout;
     for (const ShaftPlacement& s : layout_->shafts) model_.shafts.push_back({s.role, s.x, s.z});
   } else {
-    model_.shafts.push_back({"roller 0", -0.5 * l, -a});
-    model_.shafts.push_back({"roller 1", 0.5 * l, -a});
+    // In the rig's frame, turned with the line through the rollers' tops (rig.contact_tilt):
+    // rollers of different radii have their tops level there and their axes at -a_0 and -a_1,
+    // l cos(asin((a_1 - a_0) / l)) apart (physics/rig_world.cpp).
+    const std::array<double, 2>& a = rig_.roller_radii;
+    const double along = tangent_spacing(l, a[0], a[1]);
+    model_.shafts.push_back({"roller 0", -0.5 * along, -a[0]});
+    model_.shafts.push_back({"roller 1", 0.5 * along, -a[1]});
   }
 }
 
@@ -243,15 +248,22 @@ void ModelBuilder::add_plate() {
 }
 
 void ModelBuilder::add_rollers_and_axles() {
-  const float a = static_cast<float>(rig_.rollers.radius);
   const float length = static_cast<float>(rig_.rollers.length);
-  // The rollers, in every blur level.
-  std::vector<std::size_t> variants;
-  for (const double sweep : kBlurSweeps)
-    variants.push_back(add_mesh(rig::make_roller(a, length, sweep)));
+  // The rollers, in every blur level; each its own size when the two differ.
+  std::array<std::vector<std::size_t>, 2> variants;
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (k == 1 && rig_.roller_radii[1] == rig_.roller_radii[0]) {
+      variants[1] = variants[0];
+      break;
+    }
+    const float a = static_cast<float>(rig_.roller_radii[k]);
+    for (const double sweep : kBlurSweeps)
+      variants[k].push_back(add_mesh(rig::make_roller(a, length, sweep)));
+  }
   for (int k = 0; k < 2; ++k) {
-    RigPart part = make_part(variants[0], RigPart::Body::kShaft, k);
-    part.blur_variants = variants;
+    const std::vector<std::size_t>& own = variants[static_cast<std::size_t>(k)];
+    RigPart part = make_part(own[0], RigPart::Body::kShaft, k);
+    part.blur_variants = own;
     // The second roller's mark starts on the other side, so the two never look alike.
     part.phase = k == 0 ? 0.0 : kPi;
     model_.parts.push_back(part);
@@ -385,9 +397,10 @@ bool rig_uses_parts(const CompiledRig& rig) {
 RigModel build_rig_model(const CompiledRig& rig, const assets::PartCatalog* catalog,
                          assets::MeshLibrary* meshes, bool cut_away_near_side) {
   RigModel model = ModelBuilder(rig, catalog, meshes, cut_away_near_side).build();
-  // A tilted rig drawn tilted: turned about y by -tilt, so that +x rises by tilt.
+  // A tilted rig drawn tilted: turned about y by -tilt, so that +x rises by tilt (the line
+  // through the rollers' tops, which rollers of different radii tilt as well).
   model.tilt = Eigen::Affine3f(
-      Eigen::AngleAxisf(-static_cast<float>(rig.world.tilt), Eigen::Vector3f::UnitY()));
+      Eigen::AngleAxisf(-static_cast<float>(rig.contact_tilt), Eigen::Vector3f::UnitY()));
   return model;
 }
 

@@ -3,6 +3,7 @@
 #include "render/caption_overlay.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -202,6 +203,9 @@ std::string rig_heading(const CompiledRig& rig, const std::string& material) {
   heading += fmt::format("  \xc2\xb7  l = {:.0f} mm", rig.rollers.spacing * 1e3);
   if (rig.world.tilt != 0.0)
     heading += fmt::format("  \xc2\xb7  tilted {:+.1f}\xc2\xb0", rig.world.tilt * 180.0 / kPi);
+  if (rig.roller_radii[0] != rig.roller_radii[1])
+    heading += fmt::format("  \xc2\xb7  rollers {:.1f} / {:.1f} mm", rig.roller_radii[0] * 2e3,
+                           rig.roller_radii[1] * 2e3);
   return heading;
 }
 
@@ -319,9 +323,12 @@ TitleCard make_title_card(const CompiledRig& rig, const std::string& material, d
                               rig.rollers.material == "pvc" ? "PVC" : rig.rollers.material,
                               rig.friction_source.temperature);
   const double rpm = rig.roller_speed_nominal * kRpm;
+  const std::array<double, 2>& a = rig.roller_radii;
   card.lines.push_back(fmt::format(
-      "roller spacing l = {:.0f} mm, rollers {:.0f} mm across, {} at {:.0f} rpm",
-      rig.rollers.spacing * 1e3, rig.rollers.radius * 2e3,
+      "roller spacing l = {:.0f} mm, rollers {} mm across, {} at {:.0f} rpm",
+      rig.rollers.spacing * 1e3,
+      a[0] == a[1] ? fmt::format("{:.0f}", a[0] * 2e3)
+                   : fmt::format("{:.1f} and {:.1f}", a[0] * 2e3, a[1] * 2e3),
       rig.rollers.sense == RollerSense::kInward ? "tops turning inward" : "tops turning outward",
       rpm));
   if (rig.drive) {

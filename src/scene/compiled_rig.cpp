@@ -6,7 +6,9 @@
 
 #include "core/friction_oscillator.hpp"
 #include "core/integrator_error.hpp"
+#include "core/skewed_rollers.hpp"
 #include "core/tilted_rig.hpp"
+#include "core/unequal_radii.hpp"
 #include "core/units.hpp"
 
 namespace fl {
@@ -60,9 +62,18 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
 }
 
 // l, moved by the rollers' rolling resistance: outward for inward rollers (scene.hpp).
+// The tilt rollers of different radii give the line through their tops (core/unequal_radii.hpp).
+double radii_tilt(const Scene& scene) {
+  const double a_1 = scene.rollers.radius_roller_1.value_or(scene.rollers.radius);
+  return tangent_tilt(scene.rollers.spacing, scene.rollers.radius, a_1);
+}
+
+// Along that line the tangent points lie l cos(radii tilt) apart; rolling resistance moves each
+// contact delta outward of its tangent point (inward rollers) or inward.
 double contact_spacing(const Scene& scene) {
   const double delta = scene.rollers.rolling_resistance;
-  return scene.rollers.spacing +
+  const double a_1 = scene.rollers.radius_roller_1.value_or(scene.rollers.radius);
+  return tangent_spacing(scene.rollers.spacing, scene.rollers.radius, a_1) +
          (scene.rollers.sense == RollerSense::kInward ? 2.0 * delta : -2.0 * delta);
 }
 
@@ -70,11 +81,13 @@ double contact_spacing(const Scene& scene) {
 CompiledRig::RunGuards run_guards(const CompiledRig& rig, const Scene& scene) {
   CompiledRig::RunGuards g;
   const double plate_mass = rig.plate.mass;
-  g.surface_speed = rig.roller_speed_nominal * scene.rollers.radius;
+  const double a_min = std::min(rig.roller_radii[0], rig.roller_radii[1]);
+  const double a_max = std::max(rig.roller_radii[0], rig.roller_radii[1]);
+  g.surface_speed = rig.roller_speed_nominal * a_max;
   const double v = std::max(g.surface_speed, std::fabs(scene.plate.velocity));
-  g.energy = 10.0 * (0.5 * plate_mass * v * v + plate_mass * scene.world.gravity *
-                                                    (scene.plate.length + scene.rollers.radius));
-  g.penetration = std::min(0.5e-3, 0.1 * scene.rollers.radius);
+  g.energy = 10.0 * (0.5 * plate_mass * v * v +
+                     plate_mass * scene.world.gravity * (scene.plate.length + a_max));
+  g.penetration = std::min(0.5e-3, 0.1 * a_min);
   g.speed = 2.0 * v + 0.5;
   g.turn = rig.roller_speed_nominal > 0.0 ? 2.0 * kPi / rig.roller_speed_nominal : 0.0;
   if (rig.friction.depends_on_slip() && rig.restoring) {
@@ -118,8 +131,11 @@ CompiledRig compile_rig(Scene scene) {
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
   const double l = contact_spacing(scene), mu = rig.friction.mu_k, h_c = rig.plate.h_c,
-               tilt = scene.world.tilt;
+               tilt = scene.world.tilt + radii_tilt(scene);
   rig.contact_spacing = l;
+  rig.contact_tilt = tilt;
+  rig.roller_radii = {scene.rollers.radius,
+                      scene.rollers.radius_roller_1.value_or(scene.rollers.radius)};
   const double g = gravity_normal(scene.world.gravity, tilt);
   rig.gravity_normal = g;
   rig.period_thin = period_thin(l, mu, g);
@@ -137,8 +153,10 @@ CompiledRig compile_rig(Scene scene) {
     const double speed_1 = rig.roller_speed_ramp_roller_1
                                ? rig.roller_speed_ramp_roller_1->at(0.0)
                                : scene.rollers.speed_roller_1.value_or(speed_0);
-    const double mu_0 = own_speeds ? rig.friction.kinetic(speed_0 * a) : mu;
-    const double mu_1 = own_speeds ? rig.friction.kinetic(speed_1 * a) : mu;
+    const double a_1 = rig.roller_radii[1];
+    const bool own_surfaces = own_speeds || a_1 != a;
+    const double mu_0 = own_surfaces ? rig.friction.kinetic(speed_0 * a) : mu;
+    const double mu_1 = own_surfaces ? rig.friction.kinetic(speed_1 * a_1) : mu;
     try {
       rig.oscillation_centre = oscillation_centre(l, mu_0, mu_1, h_c, tilt);
     } catch (const DomainError&) {  // the two coefficients together leave no restoring force
@@ -151,14 +169,14 @@ CompiledRig compile_rig(Scene scene) {
     rig.amplitude_initial = amplitude_from_start(scene.plate.offset - *rig.oscillation_centre,
                                                  scene.plate.velocity, *rig.omega);
     rig.tipping_amplitude = tipping_amplitude(l, mu, h_c) - std::fabs(*rig.oscillation_centre);
-    rig.slip_threshold =
-        roller_speed_for_full_slip(rig.amplitude_initial, scene.rollers.radius, l, mu, h_c, g);
+    rig.slip_threshold = roller_speed_for_full_slip(
+        rig.amplitude_initial, std::min(rig.roller_radii[0], rig.roller_radii[1]), l, mu, h_c, g);
   }
   if (h_c > 0.0) rig.mu_k_restoring_limit = l / (2.0 * h_c);
   // Skewed axes: both surfaces move along +y at v_r sin(skew / 2); the plate's slip along y dies
   // out and it drifts with them (docs/physics.md). One surface speed for both rollers only.
   const bool one_speed =
-      !rig.roller_speed_ramp &&
+      !rig.roller_speed_ramp && rig.roller_radii[0] == rig.roller_radii[1] &&
       !(scene.rollers.speed_roller_1 && *scene.rollers.speed_roller_1 != scene.rollers.speed);
   bool guided = false;  // guide towers stop the drift where the plate meets one
   if (scene.frame)
@@ -168,7 +186,7 @@ CompiledRig compile_rig(Scene scene) {
                              ? *rig.drive->roller_speed_loaded
                              : scene.rollers.speed;
     if (!rig.drive || rig.drive->roller_speed_loaded)
-      rig.drift_speed = speed * scene.rollers.radius * std::sin(0.5 * scene.rollers.skew);
+      rig.drift_speed = skew_drift_speed(speed * scene.rollers.radius, scene.rollers.skew);
   }
   rig.guards = run_guards(rig, scene);
   rig.name = std::move(scene.name);

@@ -83,6 +83,13 @@ struct CompiledRig {
   // g cos(world.tilt), what presses the plate on its rollers: every closed form below uses it
   // (core/tilted_rig.hpp); g on a level rig.
   double gravity_normal = 9.81;
+  // The line through the plate's two contacts, against the level: world.tilt, plus
+  // asin((a_1 - a_0) / l) for rollers of different radii on axes at one height (the plate rests
+  // tilted on them). The world and every closed form use it as a tilted rig's tilt; a level rig of
+  // equal rollers has 0 [rad].
+  double contact_tilt = 0.0;
+  // Each roller's radius [m] (index 0 at -l/2): rollers.radius, or [roller 0, roller 1].
+  std::array<double, 2> roller_radii{0.010, 0.010};
   // How far apart the plate's two contacts are: l, and 2 rollers.rolling_resistance more for
   // rollers turning inward (less outward). Every closed form below uses it for l.
   double contact_spacing = 0.089;

@@ -65,7 +65,9 @@ FrictionLaw friction_law(const FrictionDesc& f) {
 }
 
 double largest_slip_speed(const Scene& scene) {
-  const double surface = nominal_roller_speed(scene) * scene.rollers.radius;
+  const double surface =
+      nominal_roller_speed(scene) *
+      std::max(scene.rollers.radius, scene.rollers.radius_roller_1.value_or(0.0));
   return surface + std::max(surface, std::fabs(scene.plate.velocity));
 }
 

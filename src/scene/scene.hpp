@@ -36,8 +36,11 @@ struct WorldDesc {
 enum class RollerSense { kInward, kOutward };  // which way the rollers' tops turn
 
 struct RollersDesc {
-  double spacing = 0.089;             // l, m, between the two axes
-  double radius = 0.010;              // a, m
+  double spacing = 0.089;  // l, m, between the two axes
+  double radius = 0.010;   // a, m (roller 0's, when the two differ)
+  // Roller 1's own radius (rollers.radius: [roller 0, roller 1]): its top then stands higher or
+  // lower than roller 0's, and the plate lies tilted. Absent: both `radius`.
+  std::optional<double> radius_roller_1;
   double length = 0.100;              // m, along y
   double speed = 167.55160819145563;  // rad/s (1600 rpm), each roller (ideal drive only)
   // rad/s: roller 1's own speed where the two differ (rollers.speed: [roller 0, roller 1]; two

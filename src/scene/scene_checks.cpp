@@ -59,6 +59,12 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
                   " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
   positive(s.rollers.spacing, "rollers.spacing");
   positive(s.rollers.radius, "rollers.radius");
+  if (s.rollers.radius_roller_1) {
+    positive(*s.rollers.radius_roller_1, "rollers.radius");
+    need(!s.drive, "rollers.radius",
+         "two radii go with the ideal drive only (the drive's gear train is laid out for one "
+         "roller size); give one radius or drop the drive");
+  }
   // Beyond any bench (core/plausible_range.hpp): a slip of the unit or the keyboard, refused
   // before it is computed with (a plain 89 is 89 m; 1e300 rpm).
   const auto plausible = [&](double v, const PlausibleRange& range, const char* key) {
@@ -68,6 +74,8 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   };
   plausible(s.rollers.spacing, kSpacingRange, "rollers.spacing");
   plausible(s.rollers.radius, kRollerRadiusRange, "rollers.radius");
+  if (s.rollers.radius_roller_1)
+    plausible(*s.rollers.radius_roller_1, kRollerRadiusRange, "rollers.radius");
   plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
   plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
   plausible(s.world.gravity, kGravityRange, "world.gravity");
@@ -142,10 +150,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   if (s.drive) ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");
   // The largest speed a ramp reaches is read below only once the ramps hold.
   const bool ramps_hold = problems.size() == before_ramps;
-  if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius))
-    need(s.rollers.spacing > 2.0 * s.rollers.radius, "rollers.spacing",
+  const double radius_1 = s.rollers.radius_roller_1.value_or(s.rollers.radius);
+  if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius) &&
+      finite_positive(radius_1))
+    need(s.rollers.spacing > s.rollers.radius + radius_1, "rollers.spacing",
          describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
-                  " mm is not more than their diameter ", 2e3 * s.rollers.radius, " mm"));
+                  " mm is not more than their radii's sum ", 1e3 * (s.rollers.radius + radius_1),
+                  " mm"));
   positive(s.plate.length, "plate.length");
   positive(s.plate.width, "plate.width");
   positive(s.plate.thickness, "plate.thickness");

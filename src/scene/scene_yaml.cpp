@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
@@ -46,8 +48,22 @@ void read_rollers(const YamlNode& n, RollersDesc& r) {
   if (auto v = n.find("spacing")) r.spacing = v->quantity(Dimension::kLength);
   if (n.has("radius") && n.has("diameter"))
     n.at("diameter").fail("give radius or diameter, not both");
-  if (auto v = n.find("radius")) r.radius = v->quantity(Dimension::kLength);
-  if (auto v = n.find("diameter")) r.radius = 0.5 * v->quantity(Dimension::kLength);
+  // One size for both rollers, or [roller 0, roller 1].
+  for (const char* key : {"radius", "diameter"}) {
+    const auto v = n.find(key);
+    if (!v) continue;
+    const double scale = std::string_view(key) == "diameter" ? 0.5 : 1.0;
+    if (v->is_sequence()) {
+      if (v->size() != 2)
+        v->fail(std::string("expected one ") + key +
+                ", or a list of 2 [roller 0, roller 1], e.g. " +
+                (scale == 0.5 ? "[20 mm, 22 mm]" : "[10 mm, 11 mm]"));
+      r.radius = scale * (*v)[0].quantity(Dimension::kLength);
+      r.radius_roller_1 = scale * (*v)[1].quantity(Dimension::kLength);
+    } else {
+      r.radius = scale * v->quantity(Dimension::kLength);
+    }
+  }
   if (auto v = n.find("length")) r.length = v->quantity(Dimension::kLength);
   if (auto v = n.find("wall")) r.wall = v->quantity(Dimension::kLength);
   if (auto v = n.find("density")) r.density = v->quantity(Dimension::kDensity);

@@ -42,7 +42,7 @@ CycleTheory theory_at(const CompiledRig& rig, double surface_speed) {
   }
   // The stick-slip cycle's closed form is a level rig's (lab/run/regime_theory.cpp).
   if (!rig.friction.depends_on_slip() &&
-      (rig.world.tilt == 0.0 || rig.friction.mu_s == rig.friction.mu_k)) {
+      (rig.contact_tilt == 0.0 || rig.friction.mu_s == rig.friction.mu_k)) {
     try {
       const StickSlipCycle cycle = stick_slip_cycle(rig.friction, plate, surface_speed);
       out.stick_slip_amplitude = cycle.amplitude;

@@ -334,8 +334,10 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
     out.warming = warming_report(
         *rig.warming, hall ? hall->estimator().periods() : std::vector<EstimatedPeriod>{},
         rig.rollers.spacing, rig.plate.h_c, g, out.duration);
-  // The rollers' surface speed: the set one, or the drive's mean under load.
-  const double surface_speed = out.roller_speed * rig.rollers.radius;
+  // The rollers' surface speed: the set one, or the drive's mean under load; the slower roller's
+  // where the two differ.
+  const double surface_speed =
+      std::min(out.roller_speed * rig.roller_radii[0], out.roller_speed_1 * rig.roller_radii[1]);
   out.slip_margin = out.plate_speed_max > 0.0 ? surface_speed / out.plate_speed_max
                                               : std::numeric_limits<double>::infinity();
 

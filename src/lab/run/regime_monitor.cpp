@@ -59,7 +59,7 @@ RegimeMonitor::RegimeMonitor(const CompiledRig& rig)
   speed_bound_ = rig.guards.speed;
   // Offsets are read from the oscillation's centre: a tilted rig's x_eq, 0 on a level one.
   centre_ = rig.oscillation_centre.value_or(0.0);
-  gravity_along_ = -rig.world.gravity * std::sin(rig.world.tilt);
+  gravity_along_ = -rig.world.gravity * std::sin(rig.contact_tilt);
   tracker_ = OscillationTracker(centre_);
   start_abs_x_ = std::fabs(rig.plate_desc.offset - centre_);
   turn_ = rig.guards.turn;

@@ -95,11 +95,12 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   const PlateOnRollers plate{l, h_c, rig.gravity_normal};
   try {
     FrictionRegimePrediction p = predict_friction_regime(
-        rig.friction, plate, roller_speed * rig.rollers.radius, amplitude, rig.world.duration);
+        rig.friction, plate, roller_speed * std::min(rig.roller_radii[0], rig.roller_radii[1]),
+        amplitude, rig.world.duration);
     // On a tilted rig the slope's pull moves where a stick breaks, unevenly for the two rollers:
     // the level rig's stick-slip cycle is not this one's (a clipped one, mu_s = mu_k, still is,
     // about x_eq: docs/physics.md).
-    if (rig.world.tilt != 0.0 && p.regime == Regime::kStickSlip && p.cycle) {
+    if (rig.contact_tilt != 0.0 && p.regime == Regime::kStickSlip && p.cycle) {
       p.cycle.reset();
       return {p.regime,
               "the plate reaches the rollers' speed and mu_s > mu_k: a stick-slip cycle, whose "

@@ -152,6 +152,32 @@ void BM_PngFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_PngFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// 60 frames of 720p written as PNG files: arg 0 on one thread behind the caller (the sink
+// `--frames` used before), arg N on a pool of N encoder threads (0: one per core). Frames per
+// second of wall time, the folder written and synced as `--frames` does.
+void BM_PngSink720p(benchmark::State& state) {
+  const std::vector<Image> frames = rendered_frames(1280, 720);
+  const auto threads = static_cast<unsigned>(state.range(0));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("fl-bench-png-" + std::to_string(threads));
+  constexpr int kFrames = 60;
+  for (auto _ : state) {
+    std::filesystem::remove_all(dir);
+    PngSinkOptions options;
+    options.directory = dir.string();
+    std::unique_ptr<FrameSink> sink =
+        threads == 0 ? std::make_unique<ThreadedSink>(make_png_sink(options), 4)
+                     : make_png_pool_sink(options, threads);
+    for (int i = 0; i < kFrames; ++i) sink->write(frames[i % frames.size()].view());
+    sink->finish();
+  }
+  std::filesystem::remove_all(dir);
+  state.counters["frames_per_s"] =
+      benchmark::Counter(static_cast<double>(kFrames) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PngSink720p)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // A whole 720p video of 150 frames (5 s), render and encode: with queue 0 the encoder runs on
 // the render thread (no overlap); with queue 8 it runs on its own thread. x264_threads 0 lets
 // x264 choose (3 on 2 cores); preset 0 is veryfast (the default), 1 superfast. The time

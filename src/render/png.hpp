@@ -35,4 +35,11 @@ std::string png_frame_name(const PngSinkOptions& options, int index);
 // and replace_existing is false.
 std::unique_ptr<FrameSink> make_png_sink(const PngSinkOptions& options);
 
+// The same on a pool of `threads` encoder threads (0: one per core), each frame to its own file,
+// so frames are encoded side by side (render/png_pool_sink.cpp). write() copies the frame into one
+// of 2 x threads slots, waiting while all are taken; an encoder's error is rethrown by the next
+// write() or by finish(), which waits for every frame taken. Destroyed without finish(), the
+// frames not yet begun are not written (each file is whole or absent).
+std::unique_ptr<FrameSink> make_png_pool_sink(const PngSinkOptions& options, unsigned threads = 0);
+
 }  // namespace fl::render

@@ -88,4 +88,8 @@ std::unique_ptr<FrameSink> make_png_sink(const PngSinkOptions&) {
   missing("PNG frames");
 }
 
+std::unique_ptr<FrameSink> make_png_pool_sink(const PngSinkOptions&, unsigned) {
+  missing("PNG frames");
+}
+
 }  // namespace fl::render

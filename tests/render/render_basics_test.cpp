@@ -3,7 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -277,6 +281,64 @@ TEST(RenderThreadedSink, RethrowsTheInnerSinksError) {
         sink.finish();
       },
       RenderError);
+}
+
+// The pool writes every frame to its own file, each the frame given (whichever thread encoded
+// it), the same bytes the one-thread sink writes; an earlier run's frames are refused as there.
+TEST(RenderPngPoolSink, WritesEveryFrameToItsFileAsTheOneThreadSinkDoes) {
+  if (!kHasRender) GTEST_SKIP() << "this build has no PNG writer";
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "fl-png-pool-test";
+  fs::remove_all(root);
+  PngSinkOptions pooled, single;
+  pooled.directory = (root / "pool").string();
+  single.directory = (root / "one").string();
+  auto pool = make_png_pool_sink(pooled, 3);
+  auto one = make_png_sink(single);
+  Image frame(16, 8);
+  for (int i = 0; i < 40; ++i) {
+    for (std::size_t k = 0; k < frame.rgba.size(); ++k)
+      frame.rgba[k] = static_cast<std::uint8_t>((k * 7 + static_cast<std::size_t>(i) * 13) % 251);
+    pool->write(frame.view());  // the frame may be changed as soon as write returns
+    one->write(frame.view());
+  }
+  pool->finish();
+  one->finish();
+  EXPECT_EQ(pool->frame_count(), 40u);
+  for (int i = 0; i < 40; ++i) {
+    const std::string name = png_frame_name(pooled, i);
+    const auto bytes = [](const fs::path& path) {
+      std::ifstream in(path, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return text.str();
+    };
+    const std::string pa = bytes(root / "pool" / name), pb = bytes(root / "one" / name);
+    ASSERT_FALSE(pa.empty()) << name;
+    EXPECT_EQ(pa, pb) << name;
+    const Image back = read_png((root / "pool" / name).string());
+    EXPECT_EQ(back.rgba[5], static_cast<std::uint8_t>((5 * 7 + i * 13) % 251)) << name;
+  }
+  EXPECT_THROW(make_png_pool_sink(pooled, 2), RenderError);
+  fs::remove_all(root);
+}
+
+TEST(RenderPngPoolSink, RethrowsAnEncodersError) {
+  if (!kHasRender) GTEST_SKIP() << "this build has no PNG writer";
+  namespace fs = std::filesystem;
+  const fs::path root = fs::temp_directory_path() / "fl-png-pool-error-test";
+  fs::remove_all(root);
+  PngSinkOptions options;
+  options.directory = root.string();
+  auto pool = make_png_pool_sink(options, 2);
+  fs::remove_all(root);  // a file where the folder was: the encoders cannot write
+  std::ofstream(root) << "not a folder";
+  const Image frame(8, 4);
+  EXPECT_ANY_THROW({
+    for (int i = 0; i < 20; ++i) pool->write(frame.view());
+    pool->finish();
+  });
+  fs::remove_all(root);
 }
 
 TEST(RenderPngNames, AreZeroPadded) {

@@ -199,7 +199,13 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
       render::PngSinkOptions options;
       options.directory = request.frames;
       options.replace_existing = true;
-      png = std::make_unique<render::ThreadedSink>(render::make_png_sink(options), 4);
+      // Encoded on a pool of threads beside the drawing (render/png.hpp): one per core with a
+      // GPU drawing; one with a software rasteriser, which draws on every core itself (a pool of
+      // two there only competed with it; README's performance table).
+      const std::string drawn_by = context->description();
+      const bool software = drawn_by.find("llvmpipe") != std::string::npos ||
+                            drawn_by.find("softpipe") != std::string::npos;
+      png = render::make_png_pool_sink(options, software ? 1 : 0);
     }
   } catch (const render::RenderError& e) {
     throw VideoUnavailable(e.what());

@@ -254,19 +254,29 @@ def plot_runout(rows, meta, out):
     atomic_png.save(fig, os.path.join(out, "runout.png"))
 
 
+def by_regime(rows):
+    """Each regime (or status, for a point without one) of the rows, its rows and its colour."""
+    for regime in sorted({r["regime"] or r["status"] for r in rows}):
+        yield (regime, [r for r in rows if (r["regime"] or r["status"]) == regime],
+               REGIME_COLOURS.get(regime, "grey"))
+
+
+def theory_line(ax, rows, pos, axis, key, label):
+    """Theory's value of each point (in thousandths: mm, mm/s) as a black line over the axis."""
+    theory = sorted((pos[r[axis["name"]]], number(r, key)) for r in rows
+                    if number(r, key) is not None)
+    ax.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1, label=label)
+
+
 def plot_tilt(rows, meta, out):
     axis = next(a for a in meta["axes"] if a.get("key") == "world.tilt" and len(a["values"]) > 1)
     pos, numeric = axis_positions(axis)
     unit = axis.get("unit") or "rad"
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    theory = sorted((pos[r[axis["name"]]], number(r, "oscillation_centre_theory_m")) for r in rows
-                    if number(r, "oscillation_centre_theory_m") is not None)
-    top.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1,
-             label="theory: x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k)")
-    for regime in sorted({r["regime"] or r["status"] for r in rows}):
-        members = [r for r in rows if (r["regime"] or r["status"]) == regime]
+    theory_line(top, rows, pos, axis, "oscillation_centre_theory_m",
+                "theory: x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k)")
+    for regime, members, colour in by_regime(rows):
         centred = [r for r in members if number(r, "oscillation_centre_m") is not None]
-        colour = REGIME_COLOURS.get(regime, "grey")
         top.plot([pos[r[axis["name"]]] for r in centred],
                  [1e3 * number(r, "oscillation_centre_m") for r in centred], "o", ms=5,
                  color=colour, label=f"measured ({regime})")
@@ -297,13 +307,8 @@ def plot_skew(rows, meta, out):
     pos, numeric = axis_positions(axis)
     unit = axis.get("unit") or "rad"
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
-    theory = sorted((pos[r[axis["name"]]], number(r, "drift_speed_theory_m_s")) for r in rows
-                    if number(r, "drift_speed_theory_m_s") is not None)
-    top.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1,
-             label="theory: v_r sin(skew / 2)")
-    for regime in sorted({r["regime"] or r["status"] for r in rows}):
-        members = [r for r in rows if (r["regime"] or r["status"]) == regime]
-        colour = REGIME_COLOURS.get(regime, "grey")
+    theory_line(top, rows, pos, axis, "drift_speed_theory_m_s", "theory: v_r sin(skew / 2)")
+    for regime, members, colour in by_regime(rows):
         drifting = [r for r in members if number(r, "drift_speed_m_s") is not None]
         top.plot([pos[r[axis["name"]]] for r in drifting],
                  [1e3 * number(r, "drift_speed_m_s") for r in drifting], "o", ms=5, color=colour,

@@ -35,13 +35,13 @@ std::map<int, double>& best_wall() {
   return best;
 }
 
-void BM_SpacingSweep(benchmark::State& state) {
-  const int workers = static_cast<int>(state.range(0));
+// Runs the repository's sweep file `name` whole, into a fresh folder `dir`, on `workers` threads
+// (0: every core), once per iteration; the last run's outcome.
+fl::SweepOutcome run_whole(benchmark::State& state, const std::string& name,
+                           const std::filesystem::path& dir, int workers) {
   const fl::SceneInputs inputs{[]() -> const fl::PaperTable& { return table(); }, {}};
   const fl::SweepSpec spec = fl::load_sweep_file(
-      std::string(FRICTIONLAB_BENCH_SOURCE_DIR) + "/scenes/sweeps/spacing.yaml", inputs);
-  const std::filesystem::path dir =
-      std::filesystem::path(FRICTIONLAB_BENCH_BINARY_DIR) / "bench-sweep" / std::to_string(workers);
+      std::string(FRICTIONLAB_BENCH_SOURCE_DIR) + "/scenes/sweeps/" + name, inputs);
   fl::SweepOutcome outcome;
   for (auto _ : state) {
     fl::SweepRunOptions options;
@@ -54,6 +54,14 @@ void BM_SpacingSweep(benchmark::State& state) {
     if (!outcome.complete || outcome.ran != spec.point_count())
       state.SkipWithError("the sweep did not run every point");
   }
+  return outcome;
+}
+
+void BM_SpacingSweep(benchmark::State& state) {
+  const int workers = static_cast<int>(state.range(0));
+  const std::filesystem::path dir =
+      std::filesystem::path(FRICTIONLAB_BENCH_BINARY_DIR) / "bench-sweep" / std::to_string(workers);
+  const fl::SweepOutcome outcome = run_whole(state, "spacing.yaml", dir, workers);
   double& best = best_wall()[workers];
   if (best == 0.0 || outcome.wall_s < best) best = outcome.wall_s;
   state.counters["points"] = static_cast<double>(outcome.ran);
@@ -73,22 +81,9 @@ BENCHMARK(BM_SpacingSweep)
     ->Unit(benchmark::kSecond);
 
 void BM_AccuracySweep(benchmark::State& state) {
-  const fl::SceneInputs inputs{[]() -> const fl::PaperTable& { return table(); }, {}};
-  const fl::SweepSpec spec = fl::load_sweep_file(
-      std::string(FRICTIONLAB_BENCH_SOURCE_DIR) + "/scenes/sweeps/materials-spacings.yaml", inputs);
   const std::filesystem::path dir =
       std::filesystem::path(FRICTIONLAB_BENCH_BINARY_DIR) / "bench-sweep" / "accuracy";
-  fl::SweepOutcome outcome;
-  for (auto _ : state) {
-    fl::SweepRunOptions options;
-    options.out_dir = dir.string();
-    options.fresh = true;
-    options.inputs = inputs;
-    outcome = fl::run_sweep(spec, options);
-    state.SetIterationTime(outcome.wall_s);
-    if (!outcome.complete || outcome.ran != spec.point_count())
-      state.SkipWithError("the sweep did not run every point");
-  }
+  const fl::SweepOutcome outcome = run_whole(state, "materials-spacings.yaml", dir, 0);
   double worst = 0.0, steps = 0.0;
   int ok = 0;
   for (const auto& [index, point] : fl::SweepStore::open(dir.string()).load_points()) {

@@ -96,3 +96,21 @@ def test_progress_counts_invalid_points_apart_from_failed(sweeps):
     assert last["done"] == last["total"] == 6
     # The two 5 mm points: the scene refuses a spacing shorter than the rollers' diameter.
     assert last["invalid"] == 2 and last["failed"] == 0
+
+
+def test_a_sweep_at_an_accuracy_is_the_commands(tmp_path):
+    """accuracy= picks each point's step as `sweep --accuracy` does: the same files, each row with
+    the step it took and what sized it."""
+    file = tmp_path / "tiny.yaml"
+    file.write_text(SWEEP.format(scene=SCENES / "minimal.yaml"))
+    cli_json("sweep", file, "--accuracy", "0.01%", "--out", tmp_path / "command", status=3)
+    columns = fl.sweep(file, accuracy="0.01%", out=tmp_path / "module")
+    for name in ("results.csv", "sweep.json", "plan.json"):
+        assert (tmp_path / "module" / name).read_bytes() == (tmp_path / "command" / name).read_bytes()
+    ok = [i for i, s in enumerate(columns["status"]) if s == "ok"]
+    assert ok and all(columns["time_step_basis"][i] == "integrator bias" for i in ok)
+    for i in ok:  # each step 1/N s, its predicted bias within 90 % of the accuracy
+        dt = float(columns["time_step_s"][i])
+        omega = 2 * math.pi / float(columns["period_thick_s"][i])
+        assert (omega * dt) ** 2 / 24 <= 0.9e-4
+        assert abs(1 / dt - round(1 / dt)) < 1e-6

@@ -268,10 +268,23 @@ def theory_line(ax, rows, pos, axis, key, label):
     ax.plot([t[0] for t in theory], [1e3 * t[1] for t in theory], "k-", lw=1, label=label)
 
 
+def finish_two_panels(fig, top, bottom, axis, numeric, out, name, title, top_label, bottom_label):
+    """Labels, grids and legends of a plot of two panels over one axis, saved as `name`."""
+    unit = axis.get("unit") or "rad"
+    top.set_ylabel(top_label)
+    top.set_title(title)
+    bottom.set_ylabel(bottom_label)
+    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
+    for ax in (top, bottom):
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    atomic_png.save(fig, os.path.join(out, name))
+
+
 def plot_tilt(rows, meta, out):
     axis = next(a for a in meta["axes"] if a.get("key") == "world.tilt" and len(a["values"]) > 1)
     pos, numeric = axis_positions(axis)
-    unit = axis.get("unit") or "rad"
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     theory_line(top, rows, pos, axis, "oscillation_centre_theory_m",
                 "theory: x_eq = -(l - 2 mu_k h_c) tan(tilt) / (2 mu_k)")
@@ -291,21 +304,14 @@ def plot_tilt(rows, meta, out):
                    if number(r, "period_thick_s"))
     bottom.plot([t[0] for t in thick], [t[1] for t in thick], "k-", lw=1,
                 label="thick plate with g cos(tilt)")
-    top.set_ylabel("oscillation centre [mm]")
-    top.set_title(f"{meta['sweep']}: a rig that is not level")
-    bottom.set_ylabel("period T [s]")
-    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
-    for ax in (top, bottom):
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    atomic_png.save(fig, os.path.join(out, "tilt.png"))
+    finish_two_panels(fig, top, bottom, axis, numeric, out, "tilt.png",
+                      f"{meta['sweep']}: a rig that is not level", "oscillation centre [mm]",
+                      "period T [s]")
 
 
 def plot_skew(rows, meta, out):
     axis = next(a for a in meta["axes"] if a.get("key") == "rollers.skew" and len(a["values"]) > 1)
     pos, numeric = axis_positions(axis)
-    unit = axis.get("unit") or "rad"
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     theory_line(top, rows, pos, axis, "drift_speed_theory_m_s", "theory: v_r sin(skew / 2)")
     for regime, members, colour in by_regime(rows):
@@ -320,15 +326,9 @@ def plot_skew(rows, meta, out):
                      for r in timed], "o", ms=5, color=colour, label=f"the trajectory ({regime})")
     bottom.axhline(0.0, color="k", lw=1, label="thick plate on parallel rollers")
     bottom.axhspan(-0.01, 0.01, color="0.85", label="+-0.01 %")
-    top.set_ylabel("sideways drift [mm/s]")
-    top.set_title(f"{meta['sweep']}: roller axes not quite parallel")
-    bottom.set_ylabel("T / T_thick - 1 [%]")
-    bottom.set_xlabel(axis["name"] + (f" [{unit}]" if numeric else ""))
-    for ax in (top, bottom):
-        ax.grid(True, alpha=0.3)
-        ax.legend(fontsize=8)
-    fig.tight_layout()
-    atomic_png.save(fig, os.path.join(out, "skew.png"))
+    finish_two_panels(fig, top, bottom, axis, numeric, out, "skew.png",
+                      f"{meta['sweep']}: roller axes not quite parallel", "sideways drift [mm/s]",
+                      "T / T_thick - 1 [%]")
 
 
 def read_cycles(out, index):

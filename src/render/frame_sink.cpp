@@ -1,7 +1,6 @@
 #include "render/frame_sink.hpp"
 
 #include <chrono>
-#include <cstring>
 #include <stdexcept>
 
 #include "render/png.hpp"
@@ -48,11 +47,7 @@ void ThreadedSink::write(const ImageView& frame) {
     free_.pop_back();
   }
   // Copy outside the lock; the slot keeps its buffer from frame to frame.
-  Image& image = slots_[slot];
-  if (image.width != frame.width || image.height != frame.height)
-    image = Image(frame.width, frame.height);
-  const std::size_t row_bytes = static_cast<std::size_t>(frame.width) * 4;
-  for (int y = 0; y < frame.height; ++y) std::memcpy(image.row(y), frame.row(y), row_bytes);
+  copy_into(slots_[slot], frame);
   {
     std::lock_guard lock(mutex_);
     ready_.push_back(slot);

@@ -17,10 +17,15 @@ ImageView Image::view() const {
 }
 
 Image copy_image(const ImageView& view) {
-  Image out(view.width, view.height);
-  const std::size_t bytes = static_cast<std::size_t>(view.width) * 4;
-  for (int y = 0; y < view.height; ++y) std::memcpy(out.row(y), view.row(y), bytes);
+  Image out;
+  copy_into(out, view);
   return out;
+}
+
+void copy_into(Image& into, const ImageView& view) {
+  if (into.width != view.width || into.height != view.height) into = Image(view.width, view.height);
+  const std::size_t bytes = static_cast<std::size_t>(view.width) * 4;
+  for (int y = 0; y < view.height; ++y) std::memcpy(into.row(y), view.row(y), bytes);
 }
 
 namespace {

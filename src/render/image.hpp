@@ -41,6 +41,8 @@ struct Image {
 
 // A copy of a view's pixels.
 Image copy_image(const ImageView& view);
+// The same into an image kept from frame to frame: its buffer is reused when the size matches.
+void copy_into(Image& into, const ImageView& view);
 
 // Root mean square difference of the R, G and B channels (0 to 255); the sizes must match.
 double rms_difference(const ImageView& a, const ImageView& b);

@@ -1,7 +1,6 @@
 // PNG frames encoded on a pool of threads, each frame to its own numbered file (render/png.hpp).
 #include <algorithm>
 #include <condition_variable>
-#include <cstring>
 #include <deque>
 #include <exception>
 #include <filesystem>
@@ -53,11 +52,7 @@ class PngPoolSink final : public FrameSink {
       index = options_.first_index + static_cast<int>(count_++);
     }
     // Copy outside the lock; the slot keeps its buffer from frame to frame.
-    Image& image = slots_[slot];
-    if (image.width != frame.width || image.height != frame.height)
-      image = Image(frame.width, frame.height);
-    const std::size_t row_bytes = static_cast<std::size_t>(frame.width) * 4;
-    for (int y = 0; y < frame.height; ++y) std::memcpy(image.row(y), frame.row(y), row_bytes);
+    copy_into(slots_[slot], frame);
     {
       std::lock_guard lock(mutex_);
       queue_.push_back({slot, index});

@@ -353,10 +353,8 @@ void RigWorld::step() {
     // The ideal drive's scheduled speed at the step's end (the speed the solver holds the
     // rollers at over the step; what roller_speeds() reads after it).
     const double sense = impl_->rig.rollers.sense == RollerSense::kInward ? 1.0 : -1.0;
-    const double speed = rig.roller_speed_ramp->at(t_next);
-    const double speed_1 =
-        rig.roller_speed_ramp_roller_1 ? rig.roller_speed_ramp_roller_1->at(t_next) : speed;
-    impl_->roller_omega = {sense * speed, -sense * speed_1};
+    impl_->roller_omega = {sense * rig.roller_speed_ramp->at(t_next),
+                           -sense * rig.roller_speed_ramp_roller_1->at(t_next)};
   }
   if (rig.warming) {
     // Warming rollers: the law's coefficients scaled with mu_k at the step's middle.

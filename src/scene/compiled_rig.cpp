@@ -61,19 +61,13 @@ CompiledDrive compile_drive(const Scene& scene, const PlateMass& plate, double m
   return out;
 }
 
-// l, moved by the rollers' rolling resistance: outward for inward rollers (scene.hpp).
-// The tilt rollers of different radii give the line through their tops (core/unequal_radii.hpp).
-double radii_tilt(const Scene& scene) {
-  const double a_1 = scene.rollers.radius_roller_1.value_or(scene.rollers.radius);
-  return tangent_tilt(scene.rollers.spacing, scene.rollers.radius, a_1);
-}
-
-// Along that line the tangent points lie l cos(radii tilt) apart; rolling resistance moves each
-// contact delta outward of its tangent point (inward rollers) or inward.
-double contact_spacing(const Scene& scene) {
+// How far apart the plate's contacts are: along the line through the rollers' tops, which
+// rollers of different radii tilt (core/unequal_radii.hpp), the tangent points lie l cos(tilt)
+// apart, and rolling resistance moves each contact delta outward of its tangent point (inward
+// rollers) or inward (scene.hpp).
+double contact_spacing(const Scene& scene, const std::array<double, 2>& radii) {
   const double delta = scene.rollers.rolling_resistance;
-  const double a_1 = scene.rollers.radius_roller_1.value_or(scene.rollers.radius);
-  return tangent_spacing(scene.rollers.spacing, scene.rollers.radius, a_1) +
+  return tangent_spacing(scene.rollers.spacing, radii[0], radii[1]) +
          (scene.rollers.sense == RollerSense::kInward ? 2.0 * delta : -2.0 * delta);
 }
 
@@ -130,12 +124,13 @@ CompiledRig compile_rig(Scene scene) {
   rig.duty_ramp = duty_ramp(scene);
   if (scene.drive) rig.drive = compile_drive(scene, rig.plate, rig.friction.mu_k);
 
-  const double l = contact_spacing(scene), mu = rig.friction.mu_k, h_c = rig.plate.h_c,
-               tilt = scene.world.tilt + radii_tilt(scene);
-  rig.contact_spacing = l;
-  rig.contact_tilt = tilt;
   rig.roller_radii = {scene.rollers.radius,
                       scene.rollers.radius_roller_1.value_or(scene.rollers.radius)};
+  const std::array<double, 2>& radii = rig.roller_radii;
+  const double l = contact_spacing(scene, radii), mu = rig.friction.mu_k, h_c = rig.plate.h_c,
+               tilt = scene.world.tilt + tangent_tilt(scene.rollers.spacing, radii[0], radii[1]);
+  rig.contact_spacing = l;
+  rig.contact_tilt = tilt;
   const double g = gravity_normal(scene.world.gravity, tilt);
   rig.gravity_normal = g;
   rig.period_thin = period_thin(l, mu, g);
@@ -145,18 +140,17 @@ CompiledRig compile_rig(Scene scene) {
     // Each roller's coefficient at its own surface speed (rollers at different speeds under a
     // slip-speed law put the centre off the midpoint; coulomb's is mu_k at any speed).
     // A ramp with a speed for each roller: theory's centre at its first point's speeds.
-    const double a = scene.rollers.radius;
     const bool own_speeds =
-        (scene.rollers.speed_roller_1 || rig.roller_speed_ramp_roller_1) && !scene.drive;
+        (scene.rollers.speed_roller_1 || !scene.rollers.speed_ramp_roller_1.empty()) &&
+        !scene.drive;
     const double speed_0 =
         rig.roller_speed_ramp ? rig.roller_speed_ramp->at(0.0) : scene.rollers.speed;
     const double speed_1 = rig.roller_speed_ramp_roller_1
                                ? rig.roller_speed_ramp_roller_1->at(0.0)
                                : scene.rollers.speed_roller_1.value_or(speed_0);
-    const double a_1 = rig.roller_radii[1];
-    const bool own_surfaces = own_speeds || a_1 != a;
-    const double mu_0 = own_surfaces ? rig.friction.kinetic(speed_0 * a) : mu;
-    const double mu_1 = own_surfaces ? rig.friction.kinetic(speed_1 * a_1) : mu;
+    const bool own_surfaces = own_speeds || radii[0] != radii[1];
+    const double mu_0 = own_surfaces ? rig.friction.kinetic(speed_0 * radii[0]) : mu;
+    const double mu_1 = own_surfaces ? rig.friction.kinetic(speed_1 * radii[1]) : mu;
     try {
       rig.oscillation_centre = oscillation_centre(l, mu_0, mu_1, h_c, tilt);
     } catch (const DomainError&) {  // the two coefficients together leave no restoring force
@@ -169,25 +163,23 @@ CompiledRig compile_rig(Scene scene) {
     rig.amplitude_initial = amplitude_from_start(scene.plate.offset - *rig.oscillation_centre,
                                                  scene.plate.velocity, *rig.omega);
     rig.tipping_amplitude = tipping_amplitude(l, mu, h_c) - std::fabs(*rig.oscillation_centre);
-    rig.slip_threshold = roller_speed_for_full_slip(
-        rig.amplitude_initial, std::min(rig.roller_radii[0], rig.roller_radii[1]), l, mu, h_c, g);
+    rig.slip_threshold = roller_speed_for_full_slip(rig.amplitude_initial,
+                                                    std::min(radii[0], radii[1]), l, mu, h_c, g);
   }
   if (h_c > 0.0) rig.mu_k_restoring_limit = l / (2.0 * h_c);
   // Skewed axes: both surfaces move along +y at v_r sin(skew / 2); the plate's slip along y dies
   // out and it drifts with them (docs/physics.md). One surface speed for both rollers only.
   const bool one_speed =
-      !rig.roller_speed_ramp && rig.roller_radii[0] == rig.roller_radii[1] &&
+      !rig.roller_speed_ramp && radii[0] == radii[1] &&
       !(scene.rollers.speed_roller_1 && *scene.rollers.speed_roller_1 != scene.rollers.speed);
   bool guided = false;  // guide towers stop the drift where the plate meets one
   if (scene.frame)
     for (const FramePart& part : scene.frame->parts) guided = guided || part.guide;
-  if (scene.rollers.skew != 0.0 && one_speed && !guided) {
-    const double speed = rig.drive && rig.drive->roller_speed_loaded
-                             ? *rig.drive->roller_speed_loaded
-                             : scene.rollers.speed;
-    if (!rig.drive || rig.drive->roller_speed_loaded)
-      rig.drift_speed = skew_drift_speed(speed * scene.rollers.radius, scene.rollers.skew);
-  }
+  // The rollers' speed: the set one, or the motor's under the plate's load (none if it stalls).
+  const std::optional<double> speed =
+      rig.drive ? rig.drive->roller_speed_loaded : std::optional<double>(scene.rollers.speed);
+  if (scene.rollers.skew != 0.0 && one_speed && !guided && speed)
+    rig.drift_speed = skew_drift_speed(*speed * radii[0], scene.rollers.skew);
   rig.guards = run_guards(rig, scene);
   rig.name = std::move(scene.name);
   rig.world = scene.world;

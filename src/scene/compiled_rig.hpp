@@ -7,6 +7,7 @@
 // A CompiledRig is immutable: change the Scene and compile again (sweeps and compare do).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -69,7 +70,9 @@ struct CompiledRig {
   // What the scene schedules over time, when it does: the rollers' speed [rad/s] (ideal drive,
   // rollers.speed_ramp) or the motor's duty (drive.motor.duty_ramp).
   std::optional<Ramp> roller_speed_ramp;
-  std::optional<Ramp> roller_speed_ramp_roller_1;  // roller 1's own, when the ramp gives two
+  // Roller 1's schedule: its own when the ramp gives two speeds, else roller 0's; present exactly
+  // when roller_speed_ramp is.
+  std::optional<Ramp> roller_speed_ramp_roller_1;
   std::optional<Ramp> duty_ramp;
   std::optional<CompiledDrive> drive;
   // Rollers warming from friction.temperature (friction.warming): mu_k over time, `friction`

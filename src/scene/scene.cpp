@@ -99,7 +99,8 @@ std::optional<Ramp> roller_speed_ramp(const Scene& scene) {
 }
 
 std::optional<Ramp> roller_speed_ramp_roller_1(const Scene& scene) {
-  if (scene.drive || scene.rollers.speed_ramp_roller_1.empty()) return std::nullopt;
+  if (scene.rollers.speed_ramp_roller_1.empty()) return roller_speed_ramp(scene);
+  if (scene.drive) return std::nullopt;
   return Ramp(scene.rollers.speed_ramp_roller_1);
 }
 

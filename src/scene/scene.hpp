@@ -276,7 +276,8 @@ double nominal_roller_speed(const Scene& scene);
 // The ramp a scene schedules (rollers.speed_ramp in rad/s for the ideal drive, or
 // drive.motor.duty_ramp for the motor), or nullopt when its speed or duty is constant.
 std::optional<Ramp> roller_speed_ramp(const Scene& scene);
-// Roller 1's own ramp, when the scene's ramp gives two speeds.
+// Roller 1's ramp: its own when the scene's ramp gives two speeds, else roller 0's (nullopt
+// exactly when roller_speed_ramp is).
 std::optional<Ramp> roller_speed_ramp_roller_1(const Scene& scene);
 std::optional<Ramp> duty_ramp(const Scene& scene);
 

@@ -83,16 +83,19 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
        describe("must be between -10 and 10 degrees (axes that far from parallel are no "
                 "bench's misalignment), found ",
                 s.rollers.skew * 180.0 / kPi, " degrees"));
+  // Bounded by the smaller roller where the two differ.
+  const double radius_least =
+      std::min(s.rollers.radius, s.rollers.radius_roller_1.value_or(s.rollers.radius));
   need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
-           s.rollers.rolling_resistance < 0.5 * s.rollers.radius,
+           s.rollers.rolling_resistance < 0.5 * radius_least,
        "rollers.rolling_resistance",
-       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * s.rollers.radius,
+       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
                 " mm): a pressure centre that far ahead of the top is no roller's, found ",
                 s.rollers.rolling_resistance * 1e3, " mm"));
   need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
-           s.rollers.runout < 0.5 * s.rollers.radius,
+           s.rollers.runout < 0.5 * radius_least,
        "rollers.runout",
-       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * s.rollers.radius,
+       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
                 " mm), found ", 1e3 * s.rollers.runout, " mm"));
   for (const double phase : s.rollers.runout_phase)
     need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");

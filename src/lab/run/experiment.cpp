@@ -312,9 +312,7 @@ RunSummary RunLoop::finish(std::optional<SolverResidual>& unconverged) {
   if (r.cycles) recording->cycles = r.cycles->cycles();
   if (r.ramp) {
     out.roller_speed = r.ramp->mean(0).value_or(rig.roller_speed_ramp->at(0.0));
-    out.roller_speed_1 = r.ramp->mean(1).value_or(
-        (rig.roller_speed_ramp_roller_1 ? rig.roller_speed_ramp_roller_1 : rig.roller_speed_ramp)
-            ->at(0.0));
+    out.roller_speed_1 = r.ramp->mean(1).value_or(rig.roller_speed_ramp_roller_1->at(0.0));
   }
   if (r.failure) out.failure = r.failure->message;
   if (r.drive) {

@@ -75,9 +75,7 @@ TheoryRegime regime_from_theory(const CompiledRig& rig) {
   double roller_speed =
       rig.roller_speed_ramp
           ? std::min(rig.roller_speed_ramp->smallest(0.0, rig.world.duration),
-                     rig.roller_speed_ramp_roller_1
-                         ? rig.roller_speed_ramp_roller_1->smallest(0.0, rig.world.duration)
-                         : rig.roller_speed_ramp->smallest(0.0, rig.world.duration))
+                     rig.roller_speed_ramp_roller_1->smallest(0.0, rig.world.duration))
           : std::min(rig.rollers.speed, rig.rollers.speed_roller_1.value_or(rig.rollers.speed));
   if (rig.drive) {
     const MotorDesc& motor = rig.drive->parts.motor;

@@ -78,7 +78,14 @@ struct RigFrames {
     view = std::make_unique<RigView>(*renderer, std::move(model));
   }
 
+  // Frame i read back at once.
   ImageView frame(int i) {
+    draw(i);
+    return renderer->end_frame();
+  }
+
+  // Frame i drawn, its read-back left to the caller (end_frame, or submit_frame and take_frame).
+  void draw(int i) {
     const double t = i / 30.0;
     const double w = 2.0 * std::numbers::pi / 0.794;
     RigPose pose = rest_pose(compile_rig(fl::test::paper_rig()));
@@ -155,7 +162,6 @@ struct RigFrames {
       state.motion = strip;
       draw_rig_overlay(renderer->overlay(), video.width, video.height, state);
     }
-    return renderer->end_frame();
   }
 };
 
@@ -199,6 +205,43 @@ BENCHMARK(BM_RigFrame)
     ->Args({1280, 720, 0, 4, 0, 2048})
     ->Args({1280, 720, 1, 1, 0, 2048})
     ->Args({1280, 720, 0, 1, 0, 2048})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3.0);
+
+// A stream of frames read back behind the drawing, as videos take them (Renderer::submit_frame,
+// then GlContext::take_frame once frames_behind() frames wait): on a GPU the copies of earlier
+// frames overlap the drawing of later ones; OSMesa reads each frame where it is drawn. Compare
+// with BM_RigFrame at the same arguments. Args: width, height.
+void BM_RigFrameStream(benchmark::State& state) {
+  if (!kHasRender || (!kHasOsmesa && !kHasEgl)) {
+    state.SkipWithError("built without rendering or without a GL back end");
+    return;
+  }
+  RigFrames rig(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)), 4, true, true,
+                state.range(1) > 480 ? 1024 : 512);
+  for (int i = 0; i < 3; ++i) rig.frame(i);  // shaders compiled
+  GlContext& gl = *rig.context;
+  int i = 0;
+  std::uint64_t checksum = 0;
+  const double cpu0 = process_cpu_seconds();
+  for (auto _ : state) {
+    rig.draw(i++);
+    rig.renderer->submit_frame();
+    while (gl.queued_frames() > gl.frames_behind()) checksum += gl.take_frame().row(0)[0];
+  }
+  while (gl.queued_frames() > 0) checksum += gl.take_frame().row(0)[0];
+  benchmark::DoNotOptimize(checksum);
+  report(state, process_cpu_seconds() - cpu0, rig.renderer->last_frame_stats(),
+         static_cast<std::size_t>(i));
+  state.SetLabel(std::string(rig.context->backend_name()) + ", " +
+                 std::to_string(gl.frames_behind()) + " frames behind");
+}
+BENCHMARK(BM_RigFrameStream)
+    ->ArgNames({"w", "h"})
+    ->Args({1280, 720})
+    ->Args({1920, 1080})
+    ->Args({3840, 2160})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MinTime(3.0);

@@ -59,7 +59,6 @@ struct AnalyticOptions {
 
 void print_report(const AnalyticReport& r) {
   const AnalyticSetUp& s = r.set_up;
-  constexpr double kRpm = kRpmPerRadPerSecond;
   fmt::print("frictionlab analytic: the friction oscillator for {}\n", r.source);
   fmt::print("  roller spacing l             {:.1f} +- {:.1f} mm\n", s.spacing * 1e3,
              s.spacing_err * 1e3);
@@ -98,8 +97,8 @@ void print_report(const AnalyticReport& r) {
   fmt::print(
       "  full slip at amplitude {:.0f} mm needs the rollers above {:.0f} rpm; at {:.0f} rpm the "
       "slip margin is {:.2f}{}\n",
-      s.amplitude * 1e3, *r.roller_speed_for_full_slip * kRpm, s.roller_speed * kRpm,
-      *r.slip_margin,
+      s.amplitude * 1e3, *r.roller_speed_for_full_slip * kRpmPerRadPerSecond,
+      s.roller_speed * kRpmPerRadPerSecond, *r.slip_margin,
       *r.slip_margin > 1.0 ? "" : " (< 1: the plate sticks to a roller for part of each cycle)");
   if (r.friction_law_refused)
     fmt::print("  friction law                 no closed forms here: {}\n",
@@ -118,7 +117,7 @@ void print_report(const AnalyticReport& r) {
   fmt::print("  mu at the rollers' speed     {:.4f} (v_r = {:.4g} m/s)\n", a.mu_at_surface_speed,
              a.surface_speed);
   fmt::print("  slip threshold (this law)    {:.1f} rpm for A = {:.0f} mm\n",
-             a.full_slip_roller_speed * kRpm, s.amplitude * 1e3);
+             a.full_slip_roller_speed * kRpmPerRadPerSecond, s.amplitude * 1e3);
   fmt::print(
       "  stick condition              a plate stuck to a roller breaks free at |x| = x_b = "
       "{:.3f} mm\n",

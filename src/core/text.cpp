@@ -1,11 +1,20 @@
 #include "core/text.hpp"
 
+#include <sstream>
+
 namespace fl {
 
 std::string_view trim(std::string_view s, std::string_view strip) {
   const std::size_t first = s.find_first_not_of(strip);
   if (first == std::string_view::npos) return {};
   return s.substr(first, s.find_last_not_of(strip) - first + 1);
+}
+
+std::string shown_number(double v) {
+  std::ostringstream s;
+  s.precision(12);
+  s << v;
+  return s.str();
 }
 
 }  // namespace fl

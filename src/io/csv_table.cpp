@@ -3,12 +3,10 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "core/text.hpp"
+
 namespace fl {
 namespace {
-
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r';
-}
 
 // The fields of one line; `line_number` and `file` locate them.
 std::vector<CsvCell> split_line(std::string_view line, int line_number, const std::string& file) {

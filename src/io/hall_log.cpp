@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/text.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
 
@@ -62,14 +63,6 @@ void stamp_rig_clock(HallLog& log) {
     const auto us = static_cast<uint64_t>(std::llround((t - t0) * 1e6));
     log.t_us.push_back(static_cast<uint32_t>(us & 0xFFFFFFFFu));
   }
-}
-
-// A number as given, for messages.
-std::string shown(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
 }
 
 }  // namespace
@@ -180,14 +173,14 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
     if (!(adc[i] >= 0.0 && adc[i] <= 65535.0))
       throw fail(i + 1, "sample " + std::to_string(i + 1) +
                             ": expected an ADC value from 0 to 65535 counts, found " +
-                            shown(adc[i]));
+                            shown_number(adc[i]));
     log.adc.push_back(static_cast<uint16_t>(std::lround(adc[i])));
     if (!std::isfinite(t_s[i]))
-      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown(t_s[i]) +
+      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown_number(t_s[i]) +
                             " s is not a finite number");
     if (i > 0 && !(t_s[i] > t_s[i - 1]))
-      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown(t_s[i]) +
-                            " s is not after the previous sample's " + shown(t_s[i - 1]) +
+      throw fail(i + 1, "sample " + std::to_string(i + 1) + ": time " + shown_number(t_s[i]) +
+                            " s is not after the previous sample's " + shown_number(t_s[i - 1]) +
                             " s: the times must increase");
   }
   log.path = name;

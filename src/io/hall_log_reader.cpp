@@ -26,7 +26,7 @@ constexpr std::size_t kConfirmingLines = 3;
 
 // A field or line for a message: bytes that are not printable ASCII (garbage from a reset, a
 // wrong baud rate) as \xNN.
-std::string quoted(std::string_view s) {
+std::string quoted_for_message(std::string_view s) {
   constexpr std::size_t kMax = 60;
   constexpr char kHex[] = "0123456789abcdef";
   std::string out = "\"";
@@ -43,14 +43,6 @@ std::string quoted(std::string_view s) {
   if (s.size() > kMax) out += "...";
   out += '"';
   return out;
-}
-
-// A number as the log wrote it, for messages.
-std::string shown(double v) {
-  std::ostringstream s;
-  s.precision(12);
-  s << v;
-  return s.str();
 }
 
 std::string percent(int part, int whole) {
@@ -126,7 +118,7 @@ HallLogReader::HallLogReader(std::string name, HallLogOptions options)
     const std::optional<std::string> unit = time_unit_name(options_.time_unit);
     if (!unit)
       throw InputError(SourceLocation::of_field("time_unit"),
-                       "expected us, ms or s, found " + quoted(options_.time_unit));
+                       "expected us, ms or s, found " + quoted_for_message(options_.time_unit));
     options_.time_unit = *unit;
   }
   if (!(options_.rate_hz >= 0.0) || !std::isfinite(options_.rate_hz))
@@ -258,7 +250,7 @@ bool HallLogReader::try_header(std::string_view text, int number) {
     if (time && delimiter != 0) {
       const std::optional<ColumnName> named = column_name(fields[*time].text);
       throw LogReadingError(SourceLocation{name_, number, 0},
-                            "the header " + quoted(trim(text)) +
+                            "the header " + quoted_for_message(trim(text)) +
                                 " names no ADC column: expected one called " +
                                 std::string(kValueNames),
                             "or name the log's fields in order with " + field_ref("columns") +
@@ -272,8 +264,8 @@ bool HallLogReader::try_header(std::string_view text, int number) {
     // Held, not thrown: a banner that mentions the sensor ("Hall rig ready") reads like this.
     if (!doubtful_)
       doubtful_ = DoubtfulHeader{
-          "the header " + quoted(trim(text)) + " names no time column: expected one called " +
-              std::string(kTimeNames),
+          "the header " + quoted_for_message(trim(text)) +
+              " names no time column: expected one called " + std::string(kTimeNames),
           "for a log of values only, give the sample rate with " + field_ref("rate") +
               " (for example " + field_ref("rate", "1kHz") + ")",
           number, fields.size(), delimiter};
@@ -399,24 +391,25 @@ void HallLogReader::data_line(std::string_view text, std::size_t offset, int num
             (layout_.time ? "time in field " + std::to_string(*layout_.time + 1) + " and the "
                           : std::string()) +
             "ADC value in field " + std::to_string(layout_.value + 1) + "), found " +
-            std::to_string(fields.size()) + ": " + quoted(trim(text))};
+            std::to_string(fields.size()) + ": " + quoted_for_message(trim(text))};
   } else {
     const LogField& vf = fields[layout_.value];
     if (!parse_log_number(vf.text, delimiter_, &value, &reading_.decimal_comma)) {
-      problem = {
-          number, vf.column,
-          "column " + quoted(layout_.value_name) + ": expected a number, found " + quoted(vf.text)};
+      problem = {number, vf.column,
+                 "column " + quoted_for_message(layout_.value_name) +
+                     ": expected a number, found " + quoted_for_message(vf.text)};
     } else if (value < 0.0 || value > 65535.0) {
       problem = {number, vf.column,
-                 "column " + quoted(layout_.value_name) +
-                     ": expected an ADC value from 0 to 65535 counts, found " + shown(value)};
+                 "column " + quoted_for_message(layout_.value_name) +
+                     ": expected an ADC value from 0 to 65535 counts, found " +
+                     shown_number(value)};
     } else if (layout_.time && !timed_by_rate) {
       const LogField& tf = fields[*layout_.time];
       time_column = tf.column;
       if (!parse_log_number(tf.text, delimiter_, &t, &reading_.decimal_comma))
         problem = {number, tf.column,
-                   "column " + quoted(layout_.time_name) + ": expected a number, found " +
-                       quoted(tf.text)};
+                   "column " + quoted_for_message(layout_.time_name) +
+                       ": expected a number, found " + quoted_for_message(tf.text)};
     }
   }
   if (problem.line != 0) {
@@ -469,15 +462,16 @@ void HallLogReader::timed(double reading, std::uint16_t adc, int line, int colum
     reading_.repeated_times.add(line);
     if (first_repeated_.line == 0)
       first_repeated_ = {line, column,
-                         "time " + shown(reading) + unit + " repeats the previous sample's (line " +
+                         "time " + shown_number(reading) + unit +
+                             " repeats the previous sample's (line " +
                              std::to_string(pending_->line) + ")"};
   } else if (!confirmed_ || s.t > confirmed_->t) {
     // The sample held back jumped ahead of its neighbours (a garbled time): it goes.
     reading_.out_of_order.add(pending_->line);
     if (first_out_of_order_.line == 0)
       first_out_of_order_ = {pending_->line, pending_->column,
-                             "time " + shown(pending_->reading) + unit +
-                                 " is ahead of the next sample's " + shown(reading) + unit +
+                             "time " + shown_number(pending_->reading) + unit +
+                                 " is ahead of the next sample's " + shown_number(reading) + unit +
                                  " (line " + std::to_string(line) + ")"};
     if (pending_->offset != wrap_offset_) --reading_.clock_wraps;
     wrap_offset_ = pending_->offset;
@@ -490,8 +484,9 @@ void HallLogReader::timed(double reading, std::uint16_t adc, int line, int colum
     reading_.out_of_order.add(line);
     if (first_out_of_order_.line == 0)
       first_out_of_order_ = {line, column,
-                             "time " + shown(reading) + unit + " is not after the previous " +
-                                 "sample's " + shown(pending_->reading) + unit + " (line " +
+                             "time " + shown_number(reading) + unit +
+                                 " is not after the previous " + "sample's " +
+                                 shown_number(pending_->reading) + unit + " (line " +
                                  std::to_string(pending_->line) + ")"};
   }
 }
@@ -532,8 +527,8 @@ void HallLogReader::infer_unit() {
             << 1e6 / step << " Hz in microseconds";
       throw LogReadingError(
           SourceLocation{name_, held_.front().line, 0},
-          "the time column " + quoted(layout_.time_name) + " names no unit, and its step of " +
-              shown(step) +
+          "the time column " + quoted_for_message(layout_.time_name) +
+              " names no unit, and its step of " + shown_number(step) +
               " per sample fits none: expected a sample rate from 20 Hz to 20 kHz, found " +
               rates.str(),
           "give the unit with " + field_ref("time_unit") +
@@ -607,7 +602,7 @@ void HallLogReader::finish() {
     throw LogReadingError(top,
                           "none of the log's " + std::to_string(reading_.lines_skipped) +
                               " lines is a header or a sample: expected " + kExpected +
-                              ", found lines such as " + quoted(first_skipped_),
+                              ", found lines such as " + quoted_for_message(first_skipped_),
                           "for a log without a header, name its fields in order with " +
                               field_ref("columns") + " (for example " +
                               field_ref("columns", "t,adc") + ")",

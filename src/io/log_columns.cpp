@@ -10,8 +10,6 @@
 namespace fl {
 namespace {
 
-constexpr std::string_view kPadding = " \t\r\"'";
-
 std::string lower(std::string_view s) {
   std::string out(s);
   std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) {
@@ -43,7 +41,7 @@ std::optional<std::string> unit_suffix(std::string_view rest) {
 }
 
 std::optional<std::string> time_unit_of(std::string_view header) {
-  std::string name = lower(trim(header, kPadding));
+  std::string name = lower(trim(header, kFieldPadding));
   if (name.size() > 2 && name.compare(name.size() - 2, 2, "()") == 0) name.resize(name.size() - 2);
   if (name == "micros" || name == "us" || name == "\xC2\xB5s") return std::string("us");
   if (name == "millis" || name == "ms") return std::string("ms");
@@ -67,7 +65,7 @@ bool is_value_name(std::string_view header) {
 }
 
 bool is_skip_name(std::string_view name) {
-  const std::string n = lower(trim(name, kPadding));
+  const std::string n = lower(trim(name, kFieldPadding));
   return n.empty() || n == "_" || n == "-" || n == "x" || n == "skip";
 }
 

@@ -10,13 +10,6 @@
 namespace fl {
 namespace {
 
-// Around a field: blanks and quotes.
-constexpr std::string_view kPadding = " \t\r\"'";
-
-bool is_blank(char c) {
-  return c == ' ' || c == '\t' || c == '\r';
-}
-
 bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
@@ -51,8 +44,8 @@ std::vector<LogField> split_fields(std::string_view line, char delimiter, std::s
       const std::size_t start = i;
       while (i < line.size() && !is_blank(line[i])) ++i;
       const std::string_view raw = line.substr(start, i - start);
-      const std::size_t lead = raw.find_first_not_of(kPadding);
-      out.push_back({trim(raw, kPadding),
+      const std::size_t lead = raw.find_first_not_of(kFieldPadding);
+      out.push_back({trim(raw, kFieldPadding),
                      static_cast<int>(offset + start + (lead == raw.npos ? 0 : lead)) + 1});
     }
     return out;
@@ -61,9 +54,9 @@ std::vector<LogField> split_fields(std::string_view line, char delimiter, std::s
     const std::size_t end = line.find(delimiter, i);
     const std::string_view raw =
         line.substr(i, end == std::string_view::npos ? line.npos : end - i);
-    const std::size_t lead = raw.find_first_not_of(kPadding);
-    out.push_back(
-        {trim(raw, kPadding), static_cast<int>(offset + i + (lead == raw.npos ? 0 : lead)) + 1});
+    const std::size_t lead = raw.find_first_not_of(kFieldPadding);
+    out.push_back({trim(raw, kFieldPadding),
+                   static_cast<int>(offset + i + (lead == raw.npos ? 0 : lead)) + 1});
     if (end == std::string_view::npos) break;
     i = end + 1;
   }
@@ -71,7 +64,7 @@ std::vector<LogField> split_fields(std::string_view line, char delimiter, std::s
 }
 
 bool parse_log_number(std::string_view text, char delimiter, double* out, bool* decimal_comma) {
-  text = trim(text, kPadding);
+  text = trim(text, kFieldPadding);
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   if (text.empty()) return false;
   std::string swapped;

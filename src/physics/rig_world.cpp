@@ -12,20 +12,6 @@
 namespace fl {
 namespace {
 
-// Bullet's world with the rig's friction applied after collision detection and before the
-// solver, each step: the one place the friction law acts (physics/contact_friction.hpp).
-class FrictionWorld final : public btDiscreteDynamicsWorld {
- public:
-  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
-  ContactFriction* friction = nullptr;
-
- protected:
-  void solveConstraints(btContactSolverInfo& info) override {
-    if (friction != nullptr) friction->before_solve(*getDispatcher());
-    btDiscreteDynamicsWorld::solveConstraints(info);
-  }
-};
-
 // Bullet's default pools hold 4096 manifolds and 4096 collision algorithms, allocated and cleared
 // when a world is made: most of the cost of a short run. A rig has a few pairs (the plate against
 // two rollers and the guides' boxes); past the pools Bullet allocates from the heap.
@@ -39,6 +25,20 @@ btDefaultCollisionConstructionInfo small_pools() {
 }  // namespace
 
 struct RigWorld::Impl {
+  // Bullet's world with the rig's friction applied after collision detection and before the
+  // solver, each step: the one place the friction law acts (physics/contact_friction.hpp).
+  class FrictionWorld final : public btDiscreteDynamicsWorld {
+   public:
+    using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+    ContactFriction* friction = nullptr;
+
+   protected:
+    void solveConstraints(btContactSolverInfo& info) override {
+      if (friction != nullptr) friction->before_solve(*getDispatcher());
+      btDiscreteDynamicsWorld::solveConstraints(info);
+    }
+  };
+
   std::shared_ptr<const CompiledRig> owned;  // when the world compiled its scene itself
   const CompiledRig& rig;
   double dt = 0.0;

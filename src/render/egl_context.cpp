@@ -3,7 +3,9 @@
 // here, a GPU's driver where there is one), else the first EGL device that starts
 // (EGL_EXT_platform_device). With no default framebuffer, the frame is drawn into our own: the
 // 4x multisampled target the OSMesa back end uses too, resolved into a single-sampled colour
-// buffer and read with glReadPixels, whose rows come bottom-up and are flipped.
+// buffer and read with glReadPixels into a ring of pixel buffer objects: the copy of a frame runs
+// while GL draws the next ones, and the mapped buffer is handed on as it is, its rows bottom-up
+// (a negative stride, no flip).
 #include "render/gl_api.hpp"
 
 // No X11 here: some eglplatform.h versions bring Xlib.h and its macros (None, Bool) unless told.
@@ -11,14 +13,14 @@
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "render/components.hpp"
 #include "render/frame_target.hpp"
@@ -203,13 +205,17 @@ class EglContext final : public GlContext {
       resolved_ = std::make_unique<SingleSampleTarget>(gl_, width_, height_, samples_ <= 1);
       if (samples_ > 1)
         target_ = std::make_unique<MultisampleTarget>(gl_, width_, height_, samples_);
+      gl_.GenBuffers(kReadBuffers, read_buffers_.data());
+      for (const GLuint buffer : read_buffers_) {
+        gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, buffer);
+        gl_.BufferData(GL_PIXEL_PACK_BUFFER, frame_bytes(), nullptr, GL_STREAM_READ);
+      }
+      gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
       gl_.check("creating the EGL context");
     } catch (...) {
       release();
       throw;
     }
-    rows_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 4, 0);
-    frame_.assign(rows_.size(), 0);
   }
 
   ~EglContext() override { release(); }
@@ -242,27 +248,66 @@ class EglContext final : public GlContext {
     return target_ ? target_->framebuffer() : resolved_->framebuffer();
   }
 
-  ImageView read_frame() override {
+  void queue_frame() override {
+    if (queued_ == kReadBuffers)
+      throw std::logic_error("EglContext::queue_frame: every read buffer holds a frame not taken");
+    unmap();
     if (target_) target_->resolve_into(resolved_->framebuffer());
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, resolved_->framebuffer());
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows_.data());
+    const std::size_t slot = (next_ + static_cast<std::size_t>(queued_)) % kReadBuffers;
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, read_buffers_[slot]);
+    // Into the buffer object: GL copies when the frame is done, and this call returns at once.
+    gl_.ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     gl_.check("reading the frame");
-    // GL's rows run bottom-up; frames are top-down.
-    const std::size_t row = static_cast<std::size_t>(width_) * 4;
-    for (int y = 0; y < height_; ++y)
-      std::memcpy(frame_.data() + static_cast<std::size_t>(y) * row,
-                  rows_.data() + static_cast<std::size_t>(height_ - 1 - y) * row, row);
-    return ImageView{frame_.data(), width_, height_, static_cast<std::ptrdiff_t>(row)};
+    ++queued_;
   }
 
+  ImageView take_frame() override {
+    if (queued_ == 0) throw std::logic_error("EglContext::take_frame: no frame is queued");
+    unmap();
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, read_buffers_[next_]);
+    // Waits for that frame's copy, not for the frames drawn since.
+    const auto* rows = static_cast<const std::uint8_t*>(
+        gl_.MapBufferRange(GL_PIXEL_PACK_BUFFER, 0, frame_bytes(), GL_MAP_READ_BIT));
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    gl_.check("mapping a read-back buffer");
+    if (rows == nullptr) throw RenderError("EGL could not map a frame's read-back buffer");
+    mapped_ = read_buffers_[next_];
+    next_ = (next_ + 1) % kReadBuffers;
+    --queued_;
+    // GL's rows run bottom-up; frames are top-down: start at the last row and step back.
+    const auto row = static_cast<std::ptrdiff_t>(width_) * 4;
+    return ImageView{rows + row * (height_ - 1), width_, height_, -row};
+  }
+
+  int queued_frames() const override { return queued_; }
+  int frames_behind() const override { return kReadBuffers - 1; }
+
  private:
+  // Frames in flight: the one being taken and two more drawn behind it.
+  static constexpr int kReadBuffers = 3;
+
+  GLsizeiptr frame_bytes() const { return static_cast<GLsizeiptr>(width_) * height_ * 4; }
+
+  // The buffer last handed out goes back to GL.
+  void unmap() {
+    if (mapped_ == 0) return;
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, mapped_);
+    gl_.UnmapBuffer(GL_PIXEL_PACK_BUFFER);
+    gl_.BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    mapped_ = 0;
+  }
+
   void release() {
     if (display_ == EGL_NO_DISPLAY) return;
     if (context_ != EGL_NO_CONTEXT) {
       // GL objects must go while their context is current.
       if (eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE) {
+        unmap();
+        if (read_buffers_[0] != 0) gl_.DeleteBuffers(kReadBuffers, read_buffers_.data());
         target_.reset();
         resolved_.reset();
       }
@@ -282,8 +327,10 @@ class EglContext final : public GlContext {
   GlApi gl_;
   std::unique_ptr<SingleSampleTarget> resolved_;
   std::unique_ptr<MultisampleTarget> target_;
-  std::vector<std::uint8_t> rows_;   // as read, bottom-up
-  std::vector<std::uint8_t> frame_;  // top-down
+  std::array<GLuint, kReadBuffers> read_buffers_{};
+  std::size_t next_ = 0;  // the read buffer of the oldest queued frame
+  int queued_ = 0;
+  GLuint mapped_ = 0;  // the buffer whose pixels the last take_frame() handed out
 };
 
 }  // namespace

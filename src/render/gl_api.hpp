@@ -60,6 +60,7 @@ namespace fl::render {
   X(PFNGLGETSTRINGPROC, GetString)                                           \
   X(PFNGLGETUNIFORMLOCATIONPROC, GetUniformLocation)                         \
   X(PFNGLLINKPROGRAMPROC, LinkProgram)                                       \
+  X(PFNGLMAPBUFFERRANGEPROC, MapBufferRange)                                 \
   X(PFNGLPIXELSTOREIPROC, PixelStorei)                                       \
   X(PFNGLPOLYGONOFFSETPROC, PolygonOffset)                                   \
   X(PFNGLREADBUFFERPROC, ReadBuffer)                                         \
@@ -76,6 +77,7 @@ namespace fl::render {
   X(PFNGLUNIFORM3FPROC, Uniform3f)                                           \
   X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                             \
   X(PFNGLUNIFORMMATRIX4FVPROC, UniformMatrix4fv)                             \
+  X(PFNGLUNMAPBUFFERPROC, UnmapBuffer)                                       \
   X(PFNGLUSEPROGRAMPROC, UseProgram)                                         \
   X(PFNGLVERTEXATTRIBPOINTERPROC, VertexAttribPointer)                       \
   X(PFNGLVIEWPORTPROC, Viewport)

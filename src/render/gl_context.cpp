@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdlib>
+#include <stdexcept>
 
 #include "render/components.hpp"
 #include "render/gl_backends.hpp"
@@ -120,6 +121,13 @@ std::unique_ptr<GlContext> make_gl_context(const GlContextOptions& options, std:
       request.source.empty() ? std::string() : " (from " + request.source + ")";
   throw RenderError("unknown GL back end '" + request.name + "'" + from +
                     "; valid back ends: " + valid_names());
+}
+
+ImageView GlContext::read_frame() {
+  if (queued_frames() != 0)
+    throw std::logic_error("GlContext::read_frame with frames queued: take them first");
+  queue_frame();
+  return take_frame();
 }
 
 }  // namespace fl::render

@@ -1,6 +1,10 @@
 // The GL back end behind one small interface. A GlContext is an OpenGL 3.3+ core context with
 // a frame of a fixed size: the renderer draws into frame_framebuffer() (multisampled when
 // samples() > 1) and read_frame() resolves it and returns the finished pixels, rows top-down.
+// A stream of frames can also be read back a few frames behind the drawing: queue_frame() starts
+// a frame's copy out of GL and take_frame() hands back the oldest queued one, so that GL draws
+// the next frames while the copies finish (pixel buffer objects where the back end reads with
+// glReadPixels).
 // Back ends: "osmesa" (software, llvmpipe; FRICTIONLAB_WITH_OSMESA) and "egl" (no display:
 // Mesa's surfaceless platform or an EGL device; FRICTIONLAB_WITH_EGL). A build without any makes
 // no context: make_gl_context says which it has.
@@ -73,8 +77,23 @@ class GlContext {
   // The framebuffer the renderer draws a frame into (multisampled, with depth).
   virtual unsigned frame_framebuffer() const = 0;
   // Resolves the frame, waits for GL to finish it, and returns its RGBA pixels, rows top-down.
-  // The view stays valid until the next frame is drawn. Throws RenderError on a GL error.
-  virtual ImageView read_frame() = 0;
+  // The view stays valid until the next frame is drawn. No frame may be queued (a logic error
+  // otherwise: take them first). Throws RenderError on a GL error.
+  ImageView read_frame();
+
+  // Resolves the frame just drawn and starts copying it out of GL; the caller may draw the next
+  // frame at once. At most frames_behind() + 1 frames may be queued: with that many, take one
+  // before queueing another (a logic error otherwise).
+  virtual void queue_frame() = 0;
+  // The oldest queued frame's RGBA pixels, rows top-down, once its copy is done (a logic error
+  // when none is queued). The view stays valid until the next queue_frame(), take_frame() or
+  // draw. Throws RenderError on a GL error.
+  virtual ImageView take_frame() = 0;
+  // Frames queued and not yet taken.
+  virtual int queued_frames() const = 0;
+  // How many frames the read-back may lag the drawing: 0 where a frame is read where it is drawn
+  // (OSMesa's own buffer), 2 where pixel buffer objects carry it.
+  virtual int frames_behind() const = 0;
 };
 
 // Makes a context of the chosen back end. Throws RenderError for an unknown name (listing the

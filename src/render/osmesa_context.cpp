@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -85,12 +86,22 @@ class OsmesaContext final : public GlContext {
   const GlApi& gl() const override { return gl_; }
   unsigned frame_framebuffer() const override { return target_ ? target_->framebuffer() : 0; }
 
-  ImageView read_frame() override {
+  // The frame is finished in OSMesa's own buffer, which the next frame draws over: it is taken
+  // where it is drawn.
+  void queue_frame() override {
+    if (queued_) throw std::logic_error("OsmesaContext::queue_frame: the last frame is not taken");
     if (target_) target_->resolve_into(0);
     gl_.Finish();
     gl_.check("finishing the frame");
+    queued_ = true;
+  }
+  ImageView take_frame() override {
+    if (!queued_) throw std::logic_error("OsmesaContext::take_frame: no frame is queued");
+    queued_ = false;
     return ImageView{buffer_.data(), width_, height_, static_cast<std::ptrdiff_t>(width_) * 4};
   }
+  int queued_frames() const override { return queued_ ? 1 : 0; }
+  int frames_behind() const override { return 0; }
 
  private:
   int width_;
@@ -100,6 +111,7 @@ class OsmesaContext final : public GlContext {
   std::vector<std::uint8_t> buffer_;
   GlApi gl_;
   std::unique_ptr<MultisampleTarget> target_;
+  bool queued_ = false;
 };
 
 }  // namespace

@@ -155,24 +155,24 @@ const void* buffer_offset(std::size_t bytes) {
   return reinterpret_cast<const void*>(bytes);
 }
 
-struct GpuMesh {
-  GLuint vao = 0;
-  GLuint vertices = 0;
-  GLuint indices = 0;
-  GLsizei index_count = 0;
-  Eigen::Vector3f centre = Eigen::Vector3f::Zero();
-  float radius = 0.0f;
-};
-
-struct DrawItem {
-  MeshId mesh;
-  Eigen::Matrix4f model;
-  bool casts_shadow;
-};
-
 }  // namespace
 
 struct Renderer::Impl {
+  struct GpuMesh {
+    GLuint vao = 0;
+    GLuint vertices = 0;
+    GLuint indices = 0;
+    GLsizei index_count = 0;
+    Eigen::Vector3f centre = Eigen::Vector3f::Zero();
+    float radius = 0.0f;
+  };
+
+  struct DrawItem {
+    MeshId mesh;
+    Eigen::Matrix4f model;
+    bool casts_shadow;
+  };
+
   Impl(GlContext& c, RendererOptions o)
       : context(c),
         gl(c.gl()),
@@ -430,7 +430,7 @@ Renderer::Renderer(GlContext& context, RendererOptions options)
 Renderer::~Renderer() {
   Impl& r = *impl_;
   const GlApi& gl = r.gl;
-  for (GpuMesh& mesh : r.meshes) {
+  for (Impl::GpuMesh& mesh : r.meshes) {
     gl.DeleteVertexArrays(1, &mesh.vao);
     gl.DeleteBuffers(1, &mesh.vertices);
     gl.DeleteBuffers(1, &mesh.indices);
@@ -457,7 +457,7 @@ MeshId Renderer::upload(const MeshData& data) {
     v.color[2] = to_byte(c.b);
     v.color[3] = to_byte(c.a);
   }
-  GpuMesh mesh;
+  Impl::GpuMesh mesh;
   std::tie(mesh.centre, mesh.radius) = data.bounding_sphere();
   mesh.index_count = static_cast<GLsizei>(data.indices.size());
   gl.GenVertexArrays(1, &mesh.vao);
@@ -501,7 +501,7 @@ void Renderer::draw(MeshId mesh, const Eigen::Affine3f& model, bool casts_shadow
   if (!r.in_frame) throw std::logic_error("Renderer::draw outside begin_frame/end_frame");
   if (mesh >= r.meshes.size())
     throw std::invalid_argument("Renderer::draw: no mesh with id " + std::to_string(mesh));
-  r.draws.push_back(DrawItem{mesh, model.matrix(), casts_shadow});
+  r.draws.push_back(Impl::DrawItem{mesh, model.matrix(), casts_shadow});
 }
 
 void Renderer::set_shadow_bounds(std::optional<ShadowBounds> bounds) {
@@ -513,8 +513,15 @@ Overlay& Renderer::overlay() {
 }
 
 ImageView Renderer::end_frame() {
+  if (impl_->context.queued_frames() != 0)
+    throw std::logic_error("Renderer::end_frame with frames queued: take them first");
+  submit_frame();
+  return impl_->context.take_frame();
+}
+
+void Renderer::submit_frame() {
   Impl& r = *impl_;
-  if (!r.in_frame) throw std::logic_error("Renderer::end_frame without begin_frame");
+  if (!r.in_frame) throw std::logic_error("Renderer::submit_frame without begin_frame");
   r.in_frame = false;
   const std::optional<ShadowBounds> bounds = r.fixed_bounds ? r.fixed_bounds : r.caster_bounds();
   const bool shadows = r.options.shadows && bounds.has_value();
@@ -530,7 +537,7 @@ ImageView Renderer::end_frame() {
   r.overlay_pass();
   r.gl.BindVertexArray(0);
   r.gl.check("drawing the frame");
-  return r.context.read_frame();
+  r.context.queue_frame();
 }
 
 const FrameStats& Renderer::last_frame_stats() const {

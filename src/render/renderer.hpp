@@ -70,8 +70,11 @@ class Renderer {
   // The 2D layer of this frame, drawn over the scene.
   Overlay& overlay();
   // Renders the shadow map, the scene and the overlay, and returns the finished frame (valid
-  // until the next end_frame).
+  // until the next frame is drawn). No frame may be queued (submit_frame).
   ImageView end_frame();
+  // The same for a stream of frames read back behind the drawing: renders the frame and queues
+  // its read-back (GlContext::queue_frame). With frames_behind() + 1 queued, take one first.
+  void submit_frame();
 
   const FrameStats& last_frame_stats() const;
   GlContext& context();

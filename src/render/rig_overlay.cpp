@@ -24,8 +24,6 @@ using palette::kWhite;
 const Color kTrace{1.0f, 0.78f, 0.15f, 1.0f};
 const Color kDiscarded{0.95f, 0.25f, 0.22f, 0.28f};  // a discarded period, shaded
 
-constexpr double kRpm = kRpmPerRadPerSecond;
-
 std::string slow_motion_text(double factor) {
   if (std::fabs(factor - 1.0) < 1e-9) return "real time";
   if (factor > 1.0) return fmt::format("slow motion \xc3\x97{:g}", factor);
@@ -322,7 +320,7 @@ TitleCard make_title_card(const CompiledRig& rig, const std::string& material, d
   card.subtitle = fmt::format("{} on {} rollers, {:.0f} K", material,
                               rig.rollers.material == "pvc" ? "PVC" : rig.rollers.material,
                               rig.friction_source.temperature);
-  const double rpm = rig.roller_speed_nominal * kRpm;
+  const double rpm = rig.roller_speed_nominal * kRpmPerRadPerSecond;
   const std::array<double, 2>& a = rig.roller_radii;
   card.lines.push_back(fmt::format(
       "roller spacing l = {:.0f} mm, rollers {} mm across, {} at {:.0f} rpm",
@@ -335,8 +333,8 @@ TitleCard make_title_card(const CompiledRig& rig, const std::string& material, d
     const DriveDesc& d = rig.drive->parts;
     card.lines.push_back(fmt::format(
         "{:.0f} V motor at {:.0f} % duty ({:.0f} rpm), {:g}:1 gearbox, idlers couple the rollers",
-        d.motor.rated_voltage, d.motor.duty * 100.0, d.motor.duty * d.motor.no_load_speed * kRpm,
-        rig.drive->gearbox_ratio));
+        d.motor.rated_voltage, d.motor.duty * 100.0,
+        d.motor.duty * d.motor.no_load_speed * kRpmPerRadPerSecond, rig.drive->gearbox_ratio));
   }
   std::string payload =
       fmt::format("plate {:.0f} \xc3\x97 {:.0f} \xc3\x97 {:g} mm", rig.plate_desc.length * 1e3,
@@ -433,12 +431,12 @@ void draw_rig_overlay(Overlay& o, int width, int height, const RigOverlayState& 
   float y = speeds.y + 4 * s;
   if (state.motor_speed) {
     o.text("motor", Eigen::Vector2f(speeds.x + 6 * s, y), 13 * s, kSoft);
-    o.text(fmt::format("{:.0f} rpm", std::fabs(*state.motor_speed) * kRpm),
+    o.text(fmt::format("{:.0f} rpm", std::fabs(*state.motor_speed) * kRpmPerRadPerSecond),
            Eigen::Vector2f(speeds.x + speeds.width - 6 * s, y), 13 * s, kWhite, TextAlign::kRight);
     y += 17 * s;
   }
   o.text("rollers", Eigen::Vector2f(speeds.x + 6 * s, y), 13 * s, kSoft);
-  o.text(fmt::format("{:.0f} rpm", std::fabs(state.roller_speed) * kRpm),
+  o.text(fmt::format("{:.0f} rpm", std::fabs(state.roller_speed) * kRpmPerRadPerSecond),
          Eigen::Vector2f(speeds.x + speeds.width - 6 * s, y), 13 * s, kWhite, TextAlign::kRight);
   // What the plate does, as the run reads it so far.
   if (!state.regime.empty()) {

@@ -4,6 +4,7 @@
 
 #include "core/units.hpp"
 #include "io/input_error.hpp"
+#include "io/json_value.hpp"
 #include "lab/request/field_checks.hpp"
 #include "serve/web_spelling.hpp"
 
@@ -11,10 +12,6 @@ namespace fl::serve {
 namespace {
 
 using nlohmann::json;
-
-json or_null(const std::optional<double>& v) {
-  return v ? json(*v) : json(nullptr);
-}
 
 json vec3(const Vec3& v) {
   return json::array({v[0], v[1], v[2]});
@@ -100,9 +97,9 @@ json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable
       {"mu_k", rig.friction.mu_k},
       {"temperature_K", rig.friction_source.temperature},
       {"period_thin", rig.period_thin},
-      {"period_thick", or_null(rig.period_thick)},
-      {"omega", or_null(rig.omega)},
-      {"tipping_amplitude", or_null(rig.tipping_amplitude)},
+      {"period_thick", json_or_null(rig.period_thick)},
+      {"omega", json_or_null(rig.omega)},
+      {"tipping_amplitude", json_or_null(rig.tipping_amplitude)},
       {"paper", paper_json(rig, table)},
   };
 }

@@ -3,15 +3,12 @@
 #include <fmt/format.h>
 
 #include "io/csv_table.hpp"
+#include "io/json_value.hpp"
 
 namespace fl::serve {
 namespace {
 
 using nlohmann::json;
-
-json or_null(const std::optional<double>& v) {
-  return v ? json(*v) : json(nullptr);
-}
 
 // The paper's row for the rig's material, when its friction is the paper's.
 const PaperMaterial* paper_row(const CompiledRig& rig, const PaperTable& table) {
@@ -36,13 +33,13 @@ json row_json(const ClassRow& row, const PaperTable& table) {
           {"h_c", rig.plate.h_c},
           {"state", s.state},
           {"t", s.t},
-          {"period", or_null(s.period)},
-          {"period_err", or_null(s.period_err)},
+          {"period", json_or_null(s.period)},
+          {"period_err", json_or_null(s.period_err)},
           {"period_from", s.period_from.empty() ? json(nullptr) : json(s.period_from)},
-          {"mu_k", or_null(s.mu_k)},
-          {"mu_k_err", or_null(s.mu_k_err)},
-          {"paper_period", or_null(paper_value(rig.friction_source.paper_period))},
-          {"paper_mu_k", or_null(paper_value(rig.friction_source.paper_mu_k))}};
+          {"mu_k", json_or_null(s.mu_k)},
+          {"mu_k_err", json_or_null(s.mu_k_err)},
+          {"paper_period", json_or_null(paper_value(rig.friction_source.paper_period))},
+          {"paper_mu_k", json_or_null(paper_value(rig.friction_source.paper_mu_k))}};
 }
 
 }  // namespace

@@ -3,9 +3,11 @@
 // matches its golden image.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -112,6 +114,51 @@ TEST_P(RenderScene, TwoPosesGiveDifferentFrames) {
   EXPECT_GT(foreground_centroid(c.view()).x, foreground_centroid(a.view()).x + 10.0);
   // The same pose draws the same frame.
   EXPECT_EQ(rms_difference(a.view(), a_again.view()), 0.0);
+}
+
+// A stream of frames read back behind the drawing (pixel buffer objects on EGL, OSMesa's own
+// buffer at once) comes out in the order it was drawn, each frame the pixels end_frame gives for
+// the same pose.
+TEST_P(RenderScene, FramesReadBehindTheDrawingComeInOrderAndWhole) {
+  std::vector<float> xs;
+  for (int k = 0; k < 7; ++k) xs.push_back(-0.09f + 0.03f * static_cast<float>(k));
+  std::vector<Image> alone;
+  for (const float x : xs) alone.push_back(draw_box(Eigen::Vector3f(x, 0.0f, 0.0f), 0.2f));
+
+  std::vector<Image> streamed;
+  for (const float x : xs) {
+    renderer_->begin_frame(camera_, DirectionalLight{});
+    Eigen::Affine3f pose = Eigen::Affine3f::Identity();
+    pose.translate(Eigen::Vector3f(x, 0.0f, 0.0f));
+    pose.rotate(Eigen::AngleAxisf(0.2f, Eigen::Vector3f::UnitZ()));
+    renderer_->draw(box_, pose);
+    renderer_->submit_frame();
+    while (context_->queued_frames() > context_->frames_behind())
+      streamed.push_back(copy_image(context_->take_frame()));
+  }
+  // The back end holds the frames it said it would, no more.
+  EXPECT_EQ(context_->queued_frames(), std::min<int>(context_->frames_behind(), 7));
+  while (context_->queued_frames() > 0) streamed.push_back(copy_image(context_->take_frame()));
+
+  ASSERT_EQ(streamed.size(), alone.size());
+  for (std::size_t k = 0; k < alone.size(); ++k)
+    EXPECT_EQ(rms_difference(streamed[k].view(), alone[k].view()), 0.0) << "frame " << k;
+  // In drawing order: the box walks right.
+  for (std::size_t k = 1; k < streamed.size(); ++k)
+    EXPECT_GT(foreground_centroid(streamed[k].view()).x,
+              foreground_centroid(streamed[k - 1].view()).x + 5.0)
+        << "frame " << k;
+}
+
+TEST_P(RenderScene, AFrameIsNotReadAtOnceWhileOthersAreQueued) {
+  draw_box(Eigen::Vector3f::Zero(), 0.0f);
+  renderer_->begin_frame(camera_, DirectionalLight{});
+  renderer_->submit_frame();
+  EXPECT_THROW(context_->read_frame(), std::logic_error);
+  renderer_->begin_frame(camera_, DirectionalLight{});
+  EXPECT_THROW(renderer_->end_frame(), std::logic_error);
+  context_->take_frame();
+  EXPECT_THROW(context_->take_frame(), std::logic_error);
 }
 
 TEST_P(RenderScene, TheDemoSceneIsNotBlankAndCastsShadows) {

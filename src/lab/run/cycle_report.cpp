@@ -15,8 +15,6 @@
 namespace fl {
 namespace {
 
-constexpr double kRpm = kRpmPerRadPerSecond;
-
 std::string cell(const std::optional<double>& v) {
   return v ? fmt::format("{}", *v) : std::string();
 }
@@ -70,10 +68,11 @@ std::string cycles_csv(const CompiledRig& rig, const std::vector<CycleRecord>& c
   for (const CycleRecord& c : cycles) {
     const CycleTheory theory = theory_at(rig, c.surface_speed_mean);
     fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{},{},{},{}\n", c.start,
-                   c.period, c.amplitude, c.x_min, c.x_max, c.surface_speed_mean / a * kRpm,
-                   c.surface_speed_mean, ramp_direction(rig, c), c.stuck() ? "true" : "false",
-                   c.stick_duration, cell(theory.slip_limit_amplitude),
-                   cell(theory.stick_slip_amplitude), cell(theory.stick_slip_period));
+                   c.period, c.amplitude, c.x_min, c.x_max,
+                   c.surface_speed_mean / a * kRpmPerRadPerSecond, c.surface_speed_mean,
+                   ramp_direction(rig, c), c.stuck() ? "true" : "false", c.stick_duration,
+                   cell(theory.slip_limit_amplitude), cell(theory.stick_slip_amplitude),
+                   cell(theory.stick_slip_period));
   }
   return out;
 }

@@ -19,14 +19,12 @@ nlohmann::json timing_json(const RunSummary& s) {
 
 namespace {
 
-constexpr double kRpm = kRpmPerRadPerSecond;
-
 // The gear train's line: the ratio and senses are measured over the steps in which the motor and
 // both rollers turned, and the line says when that was only part of the run.
 std::string gearbox_line(const DriveReport& d) {
-  const std::string speeds =
-      fmt::format("  gearbox                rollers at {:+.0f} and {:+.0f} rpm",
-                  d.roller_speeds[0] * kRpm, d.roller_speeds[1] * kRpm);
+  const std::string speeds = fmt::format(
+      "  gearbox                rollers at {:+.0f} and {:+.0f} rpm",
+      d.roller_speeds[0] * kRpmPerRadPerSecond, d.roller_speeds[1] * kRpmPerRadPerSecond);
   if (!d.speed_ratio)
     return fmt::format("{}: the train never turned, no ratio measured (design {:.3f})", speeds,
                        d.gearbox_ratio);
@@ -90,7 +88,7 @@ std::string summary_text(const RunSummary& s) {
         "  run-out                {:.3f} mm, {} the {:.3f} mm above which theory has the plate hop "
         "(at its starting turning points, {:.0f} rpm){}",
         *s.runout * 1e3, above ? "above" : "below", *s.runout_threshold * 1e3,
-        s.roller_speed * kRpm,
+        s.roller_speed * kRpmPerRadPerSecond,
         s.jumps ? fmt::format(": {} jumps, the highest {:.3f} mm", *s.jumps,
                               s.highest_jump.value_or(0.0) * 1e3)
                 : std::string(": no jump")));
@@ -205,14 +203,15 @@ std::string summary_text(const RunSummary& s) {
     line(fmt::format(
         "  motor                  {:.1f} rpm, {:.1f} mN m (the plate's friction takes {:.2f} mN m "
         "at the rollers)",
-        d.motor_speed * kRpm, d.motor_torque * 1e3, d.load_torque * 1e3));
+        d.motor_speed * kRpmPerRadPerSecond, d.motor_torque * 1e3, d.load_torque * 1e3));
     line(gearbox_line(d));
   }
   const std::string speeds =
       std::fabs(s.roller_speed_1 - s.roller_speed) > 1e-9 * std::fabs(s.roller_speed)
-          ? fmt::format("{:.0f} rpm (roller 0), {:.0f} rpm (roller 1)", s.roller_speed * kRpm,
-                        s.roller_speed_1 * kRpm)
-          : fmt::format("{:.0f} rpm", s.roller_speed * kRpm);
+          ? fmt::format("{:.0f} rpm (roller 0), {:.0f} rpm (roller 1)",
+                        s.roller_speed * kRpmPerRadPerSecond,
+                        s.roller_speed_1 * kRpmPerRadPerSecond)
+          : fmt::format("{:.0f} rpm", s.roller_speed * kRpmPerRadPerSecond);
   line(fmt::format("  rollers                {}, slip margin {:.2f}", speeds, s.slip_margin));
   line(
       fmt::format("  run                    {:.2f} s simulated in {:.3f} s: {:.0f} x real time, "

@@ -67,12 +67,12 @@ Trial try_step(const Scene& base, double dt, Regime expected) {
 }
 
 std::string describe_case(const CompiledRig& rig) {
-  constexpr double kRpm = kRpmPerRadPerSecond;
   return fmt::format(
       "mu_k {:g}, l {:g} mm, h_c {:.3g} mm, {:g} rpm{}, A0 {:.3g} mm, plate {:.3g} g, "
       "dt {:.3g} ms",
       rig.friction.mu_k, rig.rollers.spacing * 1e3, rig.plate.h_c * 1e3,
-      rig.roller_speed_nominal * kRpm, rig.rollers.sense == RollerSense::kOutward ? " outward" : "",
+      rig.roller_speed_nominal * kRpmPerRadPerSecond,
+      rig.rollers.sense == RollerSense::kOutward ? " outward" : "",
       std::fabs(rig.plate_desc.offset) * 1e3, rig.plate.mass * 1e3, rig.world.time_step * 1e3);
 }
 

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "lab/run/cycle_report.hpp"
 #include "lab/run/experiment.hpp"
@@ -43,20 +44,14 @@ nlohmann::json empty_row(const SweepSpec& spec, const SweepPoint& point) {
   return row;
 }
 
-std::string csv_cell(const nlohmann::json& v) {
+// A JSON value as a CSV cell: null empty, numbers as the shortest text that reads back.
+std::string json_csv_cell(const nlohmann::json& v) {
   if (v.is_null()) return "";
   if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
   if (v.is_number_unsigned()) return std::to_string(v.get<std::uint64_t>());
   if (v.is_number_integer()) return std::to_string(v.get<std::int64_t>());
   if (v.is_number_float()) return fmt::format("{}", v.get<double>());
-  const std::string text = v.is_string() ? v.get<std::string>() : v.dump();
-  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
+  return csv_cell(v.is_string() ? v.get<std::string>() : v.dump());
 }
 
 }  // namespace
@@ -126,15 +121,14 @@ std::string sweep_results_csv(const nlohmann::json& plan, const std::vector<nloh
   const std::vector<std::string> columns = sweep_result_columns(plan);
   const std::size_t axes = plan.at("axes").size();
   std::string csv;
-  for (std::size_t i = 0; i < columns.size(); ++i)
-    csv += (i ? "," : "") + csv_cell(nlohmann::json(columns[i]));
+  for (std::size_t i = 0; i < columns.size(); ++i) csv += (i ? "," : "") + csv_cell(columns[i]);
   csv += '\n';
   for (const nlohmann::json& row : rows) {
-    csv += csv_cell(row.at("index"));
+    csv += json_csv_cell(row.at("index"));
     for (std::size_t a = 0; a < axes; ++a)
-      csv += "," + csv_cell(row.at("params").at(columns[1 + a]));
+      csv += "," + json_csv_cell(row.at("params").at(columns[1 + a]));
     for (const std::string& c : run_columns(plan))
-      csv += "," + csv_cell(row.value(c, nlohmann::json()));
+      csv += "," + json_csv_cell(row.value(c, nlohmann::json()));
     csv += '\n';
   }
   return csv;

@@ -138,7 +138,13 @@ struct RigVideo final : public VideoEngine {
   void take_estimator(const VideoStep& step);
   void take_motion(const VideoStep& step);
   void draw(const render::RigPose& pose, double t, double video_time, float title_opacity);
+  // Hands the frame drawn to GL's read-back; the frames it has read go to the sinks, a couple
+  // of frames behind the drawing where the back end reads through buffer objects.
   void emit();
+  // Writes the oldest frame read back to the sinks.
+  void write_taken();
+  // Writes every frame still being read back.
+  void drain();
   render::RigOverlayState overlay_state(double t) const;
 };
 
@@ -376,11 +382,21 @@ void RigVideo::draw(const render::RigPose& pose, double t, double video_time, fl
 }
 
 void RigVideo::emit() {
-  const render::ImageView frame = renderer->end_frame();
-  if (encoder) encoder->write(frame);
-  if (png) png->write(frame);
+  renderer->submit_frame();
   report.triangles = renderer->last_frame_stats().triangles;
   ++video_frame;
+  const render::GlContext& gl = renderer->context();
+  while (gl.queued_frames() > gl.frames_behind()) write_taken();
+}
+
+void RigVideo::write_taken() {
+  const render::ImageView frame = renderer->context().take_frame();
+  if (encoder) encoder->write(frame);
+  if (png) png->write(frame);
+}
+
+void RigVideo::drain() {
+  while (renderer->context().queued_frames() > 0) write_taken();
 }
 
 void RigVideo::observe(const VideoStep& step) {
@@ -446,6 +462,7 @@ VideoReport RigVideo::finish(const VideoEnding& ending) {
     }
   }
   report.ending_frames = video_frame - before_ending;
+  drain();
   if (!request.still.empty() && started) {
     // The still turns with the orbit as the frame after the video's last would, whether or not
     // a video is written: a still alone counts the frames the video would have had.

@@ -50,8 +50,11 @@ TEST(ImperfectScenes, RunoutAboveTheThresholdMakesThePlateJump) {
   EXPECT_GT(*r.summary.runout, *r.summary.runout_threshold);
   ASSERT_TRUE(r.summary.jumps.has_value());
   EXPECT_GT(*r.summary.jumps, 100);
+  // The periods the estimator kept give the trajectory's period. How many a jump spoils is a
+  // matter of which jumps a chaotic hopping plate makes (tests/lab/jump_periods_test.cpp holds
+  // the share over neighbouring set-ups).
   const EstimatorReport& e = *r.summary.estimator;
-  EXPECT_EQ(e.periods_discarded, 0);
+  EXPECT_GE(e.periods_used, 10);
   EXPECT_LT(std::fabs(e.period - *r.summary.period_trajectory), 3.0 * e.period_std_error);
 }
 

@@ -21,12 +21,12 @@ struct JumpRun {
   RunRecording recording;
 };
 
-JumpRun paper_rig(const std::string& runout) {
+JumpRun paper_rig(const std::string& runout, const std::string& phase = "0 deg") {
   const Scene s =
       test::scene_file("paper-rig.yaml", std::vector<SceneOverride>{
                                              {"world.duration", "20 s"},
                                              {"rollers.runout", runout},
-                                             {"rollers.runout_phase", "[0 deg, 90 deg]"},
+                                             {"rollers.runout_phase", "[" + phase + ", 90 deg]"},
                                          });
   RunOptions options;
   options.record_hall = true;
@@ -79,7 +79,25 @@ TEST(JumpPeriods, TrueRollersGiveSteadyPulsesAndNoDiscard) {
 }
 
 // 0.3 mm, three times the threshold: jumps up to 2 mm high once a turn, which the pulses show but
-// not enough for the estimator to reject them; its periods are still the trajectory's.
+// seldom enough for the estimator to reject them; its periods are still the trajectory's.
+// A hopping plate is chaotic: two runs that differ by rounding alone (1e-18 m) part tenfold about
+// every 0.8 s, 1e-5 m apart after 10 s (docs/physics.md), and which of its jumps happen to bend a
+// pulse enough to be rejected differs with them. So the share of rejected periods is held over
+// eight set-ups whose first roller's phase differs by a degree: fewer than one in ten (measured:
+// 6 of 184, all in two of the eight runs), where 0.5 mm rejects 67 of 162 over the same phases.
+TEST(JumpPeriods, ModerateJumpsSeldomSpoilAPeriodOverNeighbouringSetUps) {
+  int used = 0;
+  int discarded = 0;
+  for (int phase = 0; phase < 8; ++phase) {
+    const JumpRun run = paper_rig("0.3 mm", std::to_string(phase) + " deg");
+    ASSERT_TRUE(run.summary.estimator.has_value()) << phase;
+    used += run.summary.estimator->periods_used;
+    discarded += run.summary.estimator->periods_discarded;
+    EXPECT_LT(std::fabs(estimator_off_trajectory(run.summary)), 3.0) << phase;
+  }
+  EXPECT_LT(discarded, 0.1 * (used + discarded)) << discarded << " of " << used + discarded;
+}
+
 TEST(JumpPeriods, ModerateJumpsShowInThePulsesAndTheEstimatorFollowsTheTrajectory) {
   const JumpRun run = paper_rig("0.3 mm");
   ASSERT_TRUE(run.summary.jumps.has_value()) << run.summary.regime_evidence;
@@ -91,7 +109,6 @@ TEST(JumpPeriods, ModerateJumpsShowInThePulsesAndTheEstimatorFollowsTheTrajector
   // a spread of 3 % is 5 counts, far past what noise and rounding give.
   EXPECT_GT(peak_spread(settled_peaks(run.recording)), 0.03);
   ASSERT_TRUE(run.summary.estimator.has_value());
-  EXPECT_GE(run.summary.estimator->periods_used, 20);
   EXPECT_LT(std::fabs(estimator_off_trajectory(run.summary)), 3.0);
   // The jumps list says when and how high, each over within the run.
   ASSERT_EQ(static_cast<int>(run.recording.jumps.size()), *run.summary.jumps);

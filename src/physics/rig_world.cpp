@@ -33,19 +33,6 @@ struct RigWorld::Impl {
     using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
     ContactFriction* friction = nullptr;
 
-    // Bullet derives a kinematic body's velocities from its transform's change at the start of
-    // each step; the rollers' velocities are set before each internal step instead (before_step),
-    // over whatever it derived: only the bookkeeping for the next step is kept.
-    void saveKinematicState(btScalar /*time_step*/) override {
-      for (int i = 0; i < getNumCollisionObjects(); ++i) {
-        btRigidBody* body = btRigidBody::upcast(getCollisionObjectArray()[i]);
-        if (body == nullptr || !body->isKinematicObject()) continue;
-        body->setInterpolationWorldTransform(body->getWorldTransform());
-        body->setInterpolationLinearVelocity(body->getLinearVelocity());
-        body->setInterpolationAngularVelocity(body->getAngularVelocity());
-      }
-    }
-
    protected:
     void solveConstraints(btContactSolverInfo& info) override {
       if (friction != nullptr) friction->before_solve(*getDispatcher());

@@ -4,6 +4,13 @@
 
 namespace fl {
 
+std::string ascii_lower(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return out;
+}
+
 std::string_view trim(std::string_view s, std::string_view strip) {
   const std::size_t first = s.find_first_not_of(strip);
   if (first == std::string_view::npos) return {};

@@ -20,6 +20,10 @@ inline constexpr bool is_blank(char c) {
 // A number as given (12 significant digits), for messages.
 std::string shown_number(double v);
 
+// `s` with the letters A to Z in lower case (column names, units, words; other bytes as they are,
+// whatever the locale).
+std::string ascii_lower(std::string_view s);
+
 // `s` without leading and trailing characters from `strip`.
 std::string_view trim(std::string_view s, std::string_view strip = kWhitespace);
 

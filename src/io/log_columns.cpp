@@ -10,19 +10,11 @@
 namespace fl {
 namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) {
-    return static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-  });
-  return out;
-}
-
 // Letters and digits only, lower case: "ADC Value" -> "adcvalue", "analogRead(A0)" ->
 // "analogreada0".
 std::string letters_and_digits(std::string_view s) {
   std::string out;
-  for (char c : lower(s))
+  for (char c : ascii_lower(s))
     if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) out += c;
   return out;
 }
@@ -41,7 +33,7 @@ std::optional<std::string> unit_suffix(std::string_view rest) {
 }
 
 std::optional<std::string> time_unit_of(std::string_view header) {
-  std::string name = lower(trim(header, kFieldPadding));
+  std::string name = ascii_lower(trim(header, kFieldPadding));
   if (name.size() > 2 && name.compare(name.size() - 2, 2, "()") == 0) name.resize(name.size() - 2);
   if (name == "micros" || name == "us" || name == "\xC2\xB5s") return std::string("us");
   if (name == "millis" || name == "ms") return std::string("ms");
@@ -65,7 +57,7 @@ bool is_value_name(std::string_view header) {
 }
 
 bool is_skip_name(std::string_view name) {
-  const std::string n = lower(trim(name, kFieldPadding));
+  const std::string n = ascii_lower(trim(name, kFieldPadding));
   return n.empty() || n == "_" || n == "-" || n == "x" || n == "skip";
 }
 
@@ -79,7 +71,7 @@ const std::string_view kValueNames =
     "reading, sensor or signal";
 
 std::optional<std::string> time_unit_name(std::string_view text) {
-  const std::string unit = lower(trim(text));
+  const std::string unit = ascii_lower(trim(text));
   if (unit == "s" || unit == "sec" || unit == "secs" || unit == "second" || unit == "seconds")
     return std::string("s");
   if (unit == "ms" || unit == "msec" || unit == "millis" || unit == "milliseconds")

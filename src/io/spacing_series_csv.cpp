@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
 #include "core/units.hpp"
 #include "io/csv_table.hpp"
 #include "io/estimate_table_columns.hpp"
@@ -41,12 +42,6 @@ const ColumnInfo& info(SeriesColumn column) {
   return kColumns[static_cast<std::size_t>(column)];
 }
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 std::string known_names() {
   std::string out;
   for (const ColumnInfo& c : kColumns)
@@ -64,7 +59,7 @@ std::string known_names() {
 bool sweep_results_header(const std::vector<CsvCell>& cells) {
   const auto has = [&](std::string_view name) {
     return std::any_of(cells.begin(), cells.end(),
-                       [&](const CsvCell& c) { return lower(c.text) == name; });
+                       [&](const CsvCell& c) { return ascii_lower(c.text) == name; });
   };
   return has("index") && has("seed") && has("status") && has("spacing_m") && has("period_s") &&
          has("period_std_error_s");
@@ -75,7 +70,7 @@ std::vector<std::optional<SeriesColumn>> read_sweep_header(const std::vector<Csv
   std::vector<std::optional<SeriesColumn>> order;
   bool axes = false;
   for (const CsvCell& cell : cells) {
-    const std::string name = lower(cell.text);
+    const std::string name = ascii_lower(cell.text);
     if (name == "index") {
       axes = true;
       order.push_back(SeriesColumn::kLabel);
@@ -104,7 +99,7 @@ std::vector<std::optional<SeriesColumn>> read_header(const std::vector<CsvCell>&
   std::array<int, 5> seen{};  // column of the file (1-based) where each was named, 0 if not
   *status = -1;
   for (const CsvCell& cell : cells) {
-    std::string name = lower(cell.text);
+    std::string name = ascii_lower(cell.text);
     if (name == "rollers.spacing") name = "spacing";  // the table frictionlab estimate writes
     if (name == "status") *status = static_cast<int>(order.size());
     if (name == "status" || is_estimate_table_note_column(name) || name == "mu_k" ||

@@ -6,21 +6,17 @@
 
 #include <fmt/format.h>
 
+#include "core/text.hpp"
+
 namespace fl {
 namespace {
 
 const char* const kMuK = "\xce\xbc\xe2\x82\x96";  // μₖ
 
-std::string lower(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
-
 // Whether `word` stands in `text` as a word of its own (case-insensitive).
 bool names(const std::string& text, const std::string& word) {
-  const std::string t = lower(text);
-  const std::string w = lower(word);
+  const std::string t = ascii_lower(text);
+  const std::string w = ascii_lower(word);
   for (std::size_t at = t.find(w); at != std::string::npos; at = t.find(w, at + 1)) {
     const bool starts = at == 0 || !std::isalnum(static_cast<unsigned char>(t[at - 1]));
     const std::size_t end = at + w.size();
@@ -70,7 +66,7 @@ std::vector<std::string> caption_contradictions(const std::vector<Caption>& capt
     for (const PaperMaterial& m : table.materials) {
       if (names(material, m.name) || names(material, m.key)) continue;
       // "Paper" is also how a narration names the article: as a material, only "paper plate".
-      const bool article = lower(m.name) == "paper";
+      const bool article = ascii_lower(m.name) == "paper";
       if (names(c.text, article ? m.name + " plate" : m.name))
         out.push_back(
             fmt::format("the caption at {:g} s names {}, but this run's plate is {}: "

@@ -20,5 +20,13 @@ TEST(Trim, StripsTheCharactersAskedFor) {
   EXPECT_EQ(trim("\"\"", "\""), "");
 }
 
+// Only A to Z change: digits, punctuation and the bytes of UTF-8 (the caption's "\xce\xbc", mu)
+// stay as they are.
+TEST(AsciiLower, LowersAToZAndNothingElse) {
+  EXPECT_EQ(ascii_lower("ADC Value (A0) T_us"), "adc value (a0) t_us");
+  EXPECT_EQ(ascii_lower("\xce\x9c\xce\xbc Z@[`{"), "\xce\x9c\xce\xbc z@[`{");
+  EXPECT_EQ(ascii_lower(""), "");
+}
+
 }  // namespace
 }  // namespace fl

@@ -7,6 +7,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "physics/contact_friction.hpp"
+#include "physics/contact_warm_start.hpp"
 #include "physics/drivetrain.hpp"
 #include "physics/roller_plate_contact.hpp"
 
@@ -31,11 +32,11 @@ struct RigWorld::Impl {
   class FrictionWorld final : public btDiscreteDynamicsWorld {
    public:
     using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
-    ContactFriction* friction = nullptr;
+    Impl* rig = nullptr;
 
    protected:
     void solveConstraints(btContactSolverInfo& info) override {
-      if (friction != nullptr) friction->before_solve(*getDispatcher());
+      if (rig != nullptr) rig->before_solve(info);
       btDiscreteDynamicsWorld::solveConstraints(info);
     }
   };
@@ -68,6 +69,10 @@ struct RigWorld::Impl {
   std::unique_ptr<btRigidBody> plate;
 
   Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep);
+
+  // After collision detection, before the solver: the friction law at every contact, then the
+  // solver's start on the two roller contacts at their balance (physics/contact_warm_start.hpp).
+  void before_solve(const btContactSolverInfo& info);
 
   // Reads the contact manifolds once per step, after it: the rollers' forces on the plate, and
   // each roller contact's impulses for the friction's stick test.
@@ -262,7 +267,25 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   friction = std::make_unique<ContactFriction>(
       rig.friction, rig.guide_friction, plate.get(),
       std::array<const btRigidBody*, 2>{rollers[0].get(), rollers[1].get()});
-  world.friction = friction.get();
+  world.rig = this;
+}
+
+void RigWorld::Impl::before_solve(const btContactSolverInfo& info) {
+  friction->before_solve(dispatcher);
+  std::array<RollerContactPoint, 2> points{};
+  const int n = dispatcher.getNumManifolds();
+  for (int m = 0; m < n; ++m) {
+    btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    const bool plate_first = manifold->getBody0() == plate.get();
+    const btCollisionObject* other = plate_first ? manifold->getBody1() : manifold->getBody0();
+    if (!plate_first && manifold->getBody1() != plate.get()) continue;
+    for (std::size_t i = 0; i < 2; ++i) {
+      if (other != rollers[i].get()) continue;
+      if (manifold->getNumContacts() != 1 || points[i].point != nullptr) return;
+      points[i] = {&manifold->getContactPoint(0), plate_first, rollers[i].get()};
+    }
+  }
+  warm_start_roller_contacts(*plate, points, dt, info);
 }
 
 RigWorld::Impl::~Impl() {

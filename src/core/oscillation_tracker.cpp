@@ -19,18 +19,22 @@ double hermite_slope(double s, double p0, double p1, double m0, double m1) {
 }
 
 // Root of f in [0, 1] given f(0) and f(1) of opposite signs: a few safeguarded Newton steps
-// from the linear guess.
+// from the linear guess. A guess whose Newton correction is below 1e-15 is the root: tested before
+// the bracket is, because a correction under an ulp leaves the next guess on the bracket's edge,
+// where the bisection that guards the bracket would walk away from the root.
 template <typename F, typename DF>
 double root_in_unit(F f, DF df, double f0, double f1) {
   double lo = 0.0, hi = 1.0;
   double s = f0 / (f0 - f1);
   for (int i = 0; i < 20; ++i) {
     const double value = f(s);
+    if (value == 0.0) return s;
+    const double slope = df(s);
+    if (slope != 0.0 && std::fabs(value / slope) < 1e-15) return s;
     if ((value < 0) == (f0 < 0))
       lo = s;
     else
       hi = s;
-    const double slope = df(s);
     double next = slope != 0.0 ? s - value / slope : 0.5 * (lo + hi);
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     if (std::fabs(next - s) < 1e-15) return next;

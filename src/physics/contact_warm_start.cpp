@@ -55,9 +55,36 @@ std::optional<std::array<double, 2>> resting_normal_impulses(
   return impulse;
 }
 
+void RollerContactSolver::start_friction_at(const std::array<RollerContactPoint, 2>& contacts) {
+  for (std::size_t i = 0; i < 2; ++i) friction_started_[i] = contacts[i].point;
+}
+
+void RollerContactSolver::convertContacts(btPersistentManifold** manifolds, int count,
+                                          const btContactSolverInfo& info) {
+  btSequentialImpulseConstraintSolver::convertContacts(manifolds, count, info);
+  const std::array<const btManifoldPoint*, 2> started = friction_started_;
+  friction_started_ = {};
+  if (started[0] == nullptr && started[1] == nullptr) return;
+  for (int c = 0; c < m_tmpSolverContactConstraintPool.size(); ++c) {
+    const btSolverConstraint& contact = m_tmpSolverContactConstraintPool[c];
+    const auto* point = static_cast<const btManifoldPoint*>(contact.m_originalContactPoint);
+    if (point == nullptr || (point != started[0] && point != started[1])) continue;
+    // As the solver applies a row's impulse (resolveSingleConstraintRowGeneric), and as it warm
+    // starts a normal row (setupContactConstraint).
+    btSolverConstraint& friction = m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex];
+    friction.m_appliedImpulse = point->m_appliedImpulseLateral1 * info.m_warmstartingFactor;
+    btSolverBody& a = m_tmpSolverBodyPool[friction.m_solverBodyIdA];
+    btSolverBody& b = m_tmpSolverBodyPool[friction.m_solverBodyIdB];
+    a.internalApplyImpulse(friction.m_contactNormal1 * a.internalGetInvMass(),
+                           friction.m_angularComponentA, friction.m_appliedImpulse);
+    b.internalApplyImpulse(friction.m_contactNormal2 * b.internalGetInvMass(),
+                           friction.m_angularComponentB, friction.m_appliedImpulse);
+  }
+}
+
 bool warm_start_roller_contacts(const btRigidBody& plate,
                                 const std::array<RollerContactPoint, 2>& contacts, double time_step,
-                                const btContactSolverInfo& info) {
+                                const btContactSolverInfo& info, RollerContactSolver& solver) {
   if (!(info.m_solverMode & SOLVER_USE_WARMSTARTING) || !(info.m_warmstartingFactor > 0.0))
     return false;
   for (const RollerContactPoint& c : contacts)
@@ -74,6 +101,7 @@ bool warm_start_roller_contacts(const btRigidBody& plate,
     pt.m_appliedImpulseLateral1 = -pt.m_combinedFriction * pt.m_appliedImpulse;
     pt.m_appliedImpulseLateral2 = 0.0;
   }
+  solver.start_friction_at(contacts);
   return true;
 }
 

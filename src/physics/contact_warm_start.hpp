@@ -38,12 +38,33 @@ std::optional<std::array<double, 2>> resting_normal_impulses(
     const btRigidBody& plate, const std::array<RollerContactPoint, 2>& contacts, double time_step,
     double erp);
 
+// Bullet's sequential-impulse solver, which also starts the friction rows of chosen contact
+// points from their points' lateral impulses. Bullet 3.24 starts every friction row from zero
+// (btSequentialImpulseConstraintSolver::setFrictionConstraintImpulse), so a normal impulse started
+// at its balance is pulled off it in the first iterations by its friction arriving late: the
+// friction's moment on the plate shifts the split. The chosen points are those warm_start_roller_
+// contacts set, for the next solve only.
+class RollerContactSolver final : public btSequentialImpulseConstraintSolver {
+ public:
+  // The points whose friction rows start from their m_appliedImpulseLateral1 times the warm-
+  // starting factor in the next solve; forgotten after it.
+  void start_friction_at(const std::array<RollerContactPoint, 2>& contacts);
+
+ protected:
+  void convertContacts(btPersistentManifold** manifolds, int count,
+                       const btContactSolverInfo& info) override;
+
+ private:
+  std::array<const btManifoldPoint*, 2> friction_started_{};
+};
+
 // Sets both points' applied impulses so that the solver's warm start (the applied impulse times
 // `info`'s warm-starting factor) is the balance above, the sliding friction with it, when the
 // balance exists; otherwise leaves them as they are (the solver starts from the last step's).
-// Returns whether it set them.
+// With the balance, tells `solver` to start the points' friction rows there too. Returns whether it
+// set them.
 bool warm_start_roller_contacts(const btRigidBody& plate,
                                 const std::array<RollerContactPoint, 2>& contacts, double time_step,
-                                const btContactSolverInfo& info);
+                                const btContactSolverInfo& info, RollerContactSolver& solver);
 
 }  // namespace fl

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include <cstdlib>
 #include <btBulletDynamicsCommon.h>
 
 #include "physics/contact_friction.hpp"
@@ -56,7 +57,7 @@ struct RigWorld::Impl {
   btDefaultCollisionConfiguration configuration{small_pools()};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
+  RollerContactSolver solver;  // Bullet's, starting the roller contacts' friction too
   FrictionWorld world{&dispatcher, &broadphase, &solver, &configuration};
   std::unique_ptr<ContactFriction> friction;
 
@@ -285,7 +286,7 @@ void RigWorld::Impl::before_solve(const btContactSolverInfo& info) {
       points[i] = {&manifold->getContactPoint(0), plate_first, rollers[i].get()};
     }
   }
-  warm_start_roller_contacts(*plate, points, dt, info);
+  if (!std::getenv("FL_NOSEED")) warm_start_roller_contacts(*plate, points, dt, info, solver);
 }
 
 RigWorld::Impl::~Impl() {

@@ -71,7 +71,8 @@ void RollerContactSolver::convertContacts(btPersistentManifold** manifolds, int 
     if (point == nullptr || (point != started[0] && point != started[1])) continue;
     // As the solver applies a row's impulse (resolveSingleConstraintRowGeneric), and as it warm
     // starts a normal row (setupContactConstraint).
-    btSolverConstraint& friction = m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex];
+    btSolverConstraint& friction =
+        m_tmpSolverContactFrictionConstraintPool[contact.m_frictionIndex];
     friction.m_appliedImpulse = point->m_appliedImpulseLateral1 * info.m_warmstartingFactor;
     btSolverBody& a = m_tmpSolverBodyPool[friction.m_solverBodyIdA];
     btSolverBody& b = m_tmpSolverBodyPool[friction.m_solverBodyIdB];

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include <cstdlib>
 #include <btBulletDynamicsCommon.h>
 
 #include "physics/contact_friction.hpp"
@@ -286,7 +285,7 @@ void RigWorld::Impl::before_solve(const btContactSolverInfo& info) {
       points[i] = {&manifold->getContactPoint(0), plate_first, rollers[i].get()};
     }
   }
-  if (!std::getenv("FL_NOSEED")) warm_start_roller_contacts(*plate, points, dt, info, solver);
+  warm_start_roller_contacts(*plate, points, dt, info, solver);
 }
 
 RigWorld::Impl::~Impl() {

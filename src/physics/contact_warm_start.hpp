@@ -1,15 +1,16 @@
 // Where Bullet's solver starts each step on the plate's two roller contacts. The
-// sequential-impulse solver starts each contact's impulse from the last step's times a factor
-// (0.85, warm starting), and a new contact from zero. The two contacts share the plate's weight
-// through its pitch, and on a long plate between close rollers that split is ill-conditioned: a
-// 300 mm plate on rollers 40 mm apart has a 2 x 2 contact matrix whose Gauss-Seidel iterations
-// shrink an error by about 0.8 each, so from zero (a run's first step) or from 85 % of the answer
-// 10 iterations leave a normal force off by several 1e-4 of the weight. The run's solver check
-// (lab/run/solver_convergence.hpp) then finds the step unconverged and the whole run starts again
-// at twice the iterations, sometimes four times: in a sweep of materials and spacings on such a
-// plate, two points in five did. Starting both normal impulses at the balance the step asks
-// for (exact while both contacts slide) leaves the solver less to do; the answer stays the
-// solver's own (it still iterates, and the check still judges it), only its starting guess moves.
+// sequential-impulse solver starts each contact's normal impulse from the last step's times a
+// factor (0.85, warm starting), a new contact's from zero, and (Bullet 3.24) every friction row
+// from zero. The two contacts share the plate's weight through its pitch, and on a long plate
+// between close rollers that split is ill-conditioned: a 300 mm plate on rollers 40 mm apart has
+// a 2 x 2 contact matrix whose Gauss-Seidel iterations shrink an error by about 0.8 each, so from
+// Bullet's start 10 iterations leave a normal force off by several 1e-4 of the weight. The run's
+// solver check (lab/run/solver_convergence.hpp) then finds the step unconverged and the whole run
+// starts again at twice the iterations, sometimes four times: in a sweep of materials and
+// spacings on such a plate, two points in five did. Starting both normal impulses and their
+// sliding friction at the balance the step asks for (exact while both contacts slide) leaves the
+// solver nothing to undo; the answer stays the solver's own (it still iterates, and the check
+// still judges it), only its starting guess moves.
 #pragma once
 
 #include <array>

@@ -398,6 +398,7 @@ void RigWorld::step() {
     law.mu_s *= scale;
     impl_->friction->set_law(law);
   }
+  impl_->solver.m_analyticsData.m_numIterationsUsed = 0;
   impl_->world.stepSimulation(impl_->dt, 0);
   for (std::size_t i = 0; i < 2; ++i) impl_->roller_angle[i] += impl_->roller_omega[i] * impl_->dt;
   std::array<ContactFriction::RollerImpulses, 2> impulses{};
@@ -410,6 +411,10 @@ void RigWorld::step() {
 double RigWorld::time() const {
   return static_cast<double>(impl_->steps) * impl_->dt;
 }
+int RigWorld::solver_iterations_used() const {
+  return impl_->solver.m_analyticsData.m_numIterationsUsed;
+}
+
 long long RigWorld::steps() const {
   return impl_->steps;
 }

@@ -29,13 +29,16 @@ std::optional<std::array<double, 2>> resting_normal_impulses(
     const btVector3 relative =
         plate.getVelocityInLocalPoint(lever[i]) -
         roller.getVelocityInLocalPoint(at - roller.getCenterOfMassPosition());
-    const btVector3 slip = relative - normal[i] * normal[i].dot(relative);
+    // The slip Bullet's friction row takes its direction from: the velocities at the step's start
+    // with the step's external impulse (a tilted rig's gravity has a part along the plate).
+    const btVector3 moving = relative + external;
+    const btVector3 slip = moving - normal[i] * normal[i].dot(moving);
     const double slip_speed = slip.length();
     if (!(slip_speed > kNoSlip)) return std::nullopt;
     direction[i] = normal[i] - pt.m_combinedFriction * slip / slip_speed;
     const double distance = pt.getDistance();
     const double aim = -distance / time_step * (distance > 0.0 ? 1.0 : erp);
-    wanted[i] = aim - normal[i].dot(relative + external);
+    wanted[i] = aim - normal[i].dot(moving);
   }
   // Speed change along normal i per unit impulse at contact j, as the solver moves the plate
   // (its linear and angular factors hold it to its plane).

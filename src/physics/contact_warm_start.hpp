@@ -31,7 +31,8 @@ struct RollerContactPoint {
 // The two normal impulses [N s] that bring both contact points to the normal speed the solver aims
 // for at the step's end (closing a gap, or pushing a penetration out at erp depth / dt, as
 // btSequentialImpulseConstraintSolver does), with each contact's friction sliding against the
-// plate's slip at the step's start (mu = the point's combined friction), under the plate's
+// slip Bullet directs its friction row by (the step's start plus the step's external impulse;
+// mu = the point's combined friction), under the plate's
 // external force over the step (gravity): the 2 x 2 linear balance of the plate's speeds at the
 // points. Nullopt when there is no such balance with both impulses positive (a plate lifting off a
 // roller, a contact with no slip to give its friction a direction, a singular balance).

@@ -51,15 +51,12 @@ TEST(SolverStart, OneIterationGivesTheThickPlatesStaticSplit) {
 // step of 2 s of oscillation.
 TEST(SolverStart, ASlidingStepStopsAfterOneIteration) {
   RigWorld world(plate_on_rollers(0.020, 10));
-  int steps = 0;
   for (int i = 0; i < 2000; ++i) {
     world.step();
     const auto c = world.contacts();
     ASSERT_TRUE(c[0].touching && c[1].touching && !c[0].stuck && !c[1].stuck) << i;
     EXPECT_EQ(world.solver_iterations_used(), 1) << "step " << i;
-    ++steps;
   }
-  EXPECT_EQ(steps, 2000);
 }
 
 // A plate stuck on a roller (rollers at 6 rpm, slower than the plate gets): the stuck contact

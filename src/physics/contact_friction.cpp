@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/plate_manifold.hpp"
+
 namespace fl {
 namespace {
 
@@ -28,23 +30,12 @@ ContactFriction::ContactFriction(const FrictionLaw& law, double guide_friction,
       rollers_(rollers),
       slip_dependent_(law.depends_on_slip()) {}
 
-int ContactFriction::classify(const btPersistentManifold& manifold, bool& plate_first) const {
-  const btCollisionObject* a = manifold.getBody0();
-  const btCollisionObject* b = manifold.getBody1();
-  if (a != plate_ && b != plate_) return -2;
-  plate_first = a == plate_;
-  const btCollisionObject* other = plate_first ? b : a;
-  for (int i = 0; i < 2; ++i)
-    if (other == rollers_[static_cast<std::size_t>(i)]) return i;
-  return -1;
-}
-
 void ContactFriction::before_solve(btDispatcher& dispatcher) {
   const int manifolds = dispatcher.getNumManifolds();
   for (int m = 0; m < manifolds; ++m) {
     btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
     bool plate_first = false;
-    const int who = classify(*manifold, plate_first);
+    const int who = plate_manifold_roller(*manifold, plate_, rollers_, plate_first);
     if (who == -2) continue;
     for (int k = 0; k < manifold->getNumContacts(); ++k) {
       btManifoldPoint& pt = manifold->getContactPoint(k);

@@ -52,9 +52,6 @@ class ContactFriction {
   const std::array<bool, 2>& stuck() const { return stuck_; }
 
  private:
-  // Which roller a manifold joins to the plate (0, 1), -1 for a guide, -2 for neither.
-  int classify(const btPersistentManifold& manifold, bool& plate_first) const;
-
   FrictionLaw law_;
   double guide_friction_;
   const btRigidBody* plate_;

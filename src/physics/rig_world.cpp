@@ -9,6 +9,7 @@
 #include "physics/contact_friction.hpp"
 #include "physics/contact_warm_start.hpp"
 #include "physics/drivetrain.hpp"
+#include "physics/plate_manifold.hpp"
 #include "physics/roller_plate_contact.hpp"
 
 namespace fl {
@@ -69,6 +70,10 @@ struct RigWorld::Impl {
   std::unique_ptr<btRigidBody> plate;
 
   Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep);
+
+  std::array<const btRigidBody*, 2> roller_bodies() const {
+    return {rollers[0].get(), rollers[1].get()};
+  }
 
   // After collision detection, before the solver: the friction law at every contact, then the
   // solver's start on the two roller contacts at their balance (physics/contact_warm_start.hpp).
@@ -271,9 +276,8 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   world.addRigidBody(plate.get());
 
   world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
-  friction = std::make_unique<ContactFriction>(
-      rig.friction, rig.guide_friction, plate.get(),
-      std::array<const btRigidBody*, 2>{rollers[0].get(), rollers[1].get()});
+  friction = std::make_unique<ContactFriction>(rig.friction, rig.guide_friction, plate.get(),
+                                               roller_bodies());
   world.rig = this;
 }
 
@@ -309,42 +313,37 @@ std::array<RollerContact, 2> RigWorld::Impl::measure_contacts(
   const int n = dispatcher.getNumManifolds();
   for (int m = 0; m < n; ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-    for (int i = 0; i < 2; ++i) {
-      const btCollisionObject* roller = rollers[i].get();
-      const bool plate_first = manifold->getBody0() == plate.get();
-      if (!((plate_first && manifold->getBody1() == roller) ||
-            (!plate_first && manifold->getBody0() == roller &&
-             manifold->getBody1() == plate.get())))
-        continue;
-      for (int k = 0; k < manifold->getNumContacts(); ++k) {
-        const btManifoldPoint& pt = manifold->getContactPoint(k);
-        // The normal points from body1 to body0; we want forces on the plate.
-        const double sign = plate_first ? 1.0 : -1.0;
-        const btVector3 normal = sign * pt.m_normalWorldOnB;
-        const btVector3 impulse = normal * pt.getAppliedImpulse() +
-                                  sign * pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
-                                  sign * pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
-        out[i].touching =
-            out[i].touching || pt.getDistance() <= 0.0 || pt.getAppliedImpulse() > 0.0;
-        out[i].normal_force += impulse.z() / dt;
-        out[i].friction_force += impulse.x() / dt;
-        const double distance = pt.getDistance();
-        if (!seen[i] || -distance > deepest[i]) {
-          seen[i] = true;
-          // Bullet's normal row aims at -distance / dt for a point still apart, and pushes a
-          // penetrating one out at erp2 depth / dt (btSequentialImpulseConstraintSolver).
-          deepest[i] = -distance;
-          const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
-          out[i].point_x = at.x();
-          out[i].point_z = at.z();
-          // Relative to the roller's surface: a roller off its shaft moves its axis (run-out),
-          // and the surface's normal speed is the axis's (omega x r is along the surface).
-          out[i].normal_speed_target = -distance / dt * (distance > 0.0 ? 1.0 : contact_erp) +
-                                       normal.dot(rollers[i]->getLinearVelocity());
-        }
-        out[i].penetration = std::max(out[i].penetration, -distance);
-        impulses[static_cast<std::size_t>(i)].add(pt);
+    bool plate_first = false;
+    const int roller = plate_manifold_roller(*manifold, plate.get(), roller_bodies(), plate_first);
+    if (roller < 0) continue;
+    const auto i = static_cast<std::size_t>(roller);
+    for (int k = 0; k < manifold->getNumContacts(); ++k) {
+      const btManifoldPoint& pt = manifold->getContactPoint(k);
+      // The normal points from body1 to body0; we want forces on the plate.
+      const double sign = plate_first ? 1.0 : -1.0;
+      const btVector3 normal = sign * pt.m_normalWorldOnB;
+      const btVector3 impulse = normal * pt.getAppliedImpulse() +
+                                sign * pt.m_lateralFrictionDir1 * pt.m_appliedImpulseLateral1 +
+                                sign * pt.m_lateralFrictionDir2 * pt.m_appliedImpulseLateral2;
+      out[i].touching = out[i].touching || pt.getDistance() <= 0.0 || pt.getAppliedImpulse() > 0.0;
+      out[i].normal_force += impulse.z() / dt;
+      out[i].friction_force += impulse.x() / dt;
+      const double distance = pt.getDistance();
+      if (!seen[i] || -distance > deepest[i]) {
+        seen[i] = true;
+        // Bullet's normal row aims at -distance / dt for a point still apart, and pushes a
+        // penetrating one out at erp2 depth / dt (btSequentialImpulseConstraintSolver).
+        deepest[i] = -distance;
+        const btVector3& at = plate_first ? pt.getPositionWorldOnA() : pt.getPositionWorldOnB();
+        out[i].point_x = at.x();
+        out[i].point_z = at.z();
+        // Relative to the roller's surface: a roller off its shaft moves its axis (run-out),
+        // and the surface's normal speed is the axis's (omega x r is along the surface).
+        out[i].normal_speed_target = -distance / dt * (distance > 0.0 ? 1.0 : contact_erp) +
+                                     normal.dot(rollers[i]->getLinearVelocity());
       }
+      out[i].penetration = std::max(out[i].penetration, -distance);
+      impulses[i].add(pt);
     }
   }
   // The plate's bottom face (h_c below its centre of mass along its own z axis) above each
@@ -411,6 +410,7 @@ void RigWorld::step() {
 double RigWorld::time() const {
   return static_cast<double>(impl_->steps) * impl_->dt;
 }
+
 int RigWorld::solver_iterations_used() const {
   return impl_->solver.m_analyticsData.m_numIterationsUsed;
 }

@@ -1,8 +1,13 @@
 #include "serve/lab_server.hpp"
 
+#include <sys/socket.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -20,11 +25,15 @@
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
+#include "serve/bounded_server.hpp"
 #include "serve/class_table.hpp"
 #include "serve/lab_session.hpp"
+#include "serve/path_scrubber.hpp"
 #include "serve/rate_limit.hpp"
 #include "serve/rig_feed.hpp"
 #include "serve/rig_watch.hpp"
+#include "serve/scene_folder.hpp"
+#include "serve/session_key.hpp"
 
 namespace fl::serve {
 namespace {
@@ -33,6 +42,7 @@ using nlohmann::json;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
 constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
+constexpr std::size_t kMostHead = 16 * 1024;  // bytes of a request's line and headers together
 // Each stream holds a thread while its page listens: two streams a session (a page reloading)
 // and some for the other requests.
 std::size_t thread_count(int max_sessions) {
@@ -49,6 +59,37 @@ bool carries_token(const httplib::Request& req, const std::string& token) {
 void send_json(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_content(body.dump(), "application/json");
+}
+
+// The key a request carries for its session: the header X-Session-Key, or for a GET ?key= (a
+// stream and a download are addresses, which carry no header). A control or an end takes the
+// header only: a download's link shared by its student does not control the session.
+std::string session_key_of(const httplib::Request& req) {
+  if (req.has_header("X-Session-Key")) return req.get_header_value("X-Session-Key");
+  return req.method == "GET" ? req.get_param_value("key") : std::string();
+}
+
+// Makes the reply say "Connection: close" (the bounded server ends the connection after it).
+// The request is the library's own object, not a const one; the handler sees it through a
+// const reference.
+void say_connection_ends(const httplib::Request& req) {
+  auto& headers = const_cast<httplib::Request&>(req).headers;
+  headers.erase("Connection");
+  headers.emplace("Connection", "close");
+}
+
+void send_body_too_large(httplib::Response& res) {
+  send_json(res, 413,
+            error_json(fmt::format("the request's body is larger than {} KiB, the most the lab "
+                                   "takes: send a smaller one",
+                                   kMostBody / 1024)));
+}
+
+// A body beyond the bound, sent in chunks the stream let through with their framing: 413.
+bool refuse_large_body(const httplib::Request& req, httplib::Response& res) {
+  if (req.body.size() <= kMostBody) return false;
+  send_body_too_large(res);
+  return true;
 }
 
 std::string event(const char* name, const json& data) {
@@ -76,9 +117,16 @@ struct LabServer::Impl {
   ServeOptions options;
   const bool may_choose_port;
   RateLimit rate;
-  httplib::Server server;
+  BoundedServer server{kMostHead, kMostBody};
+  const SceneFolder scenes{options.scenes_dir};
+  PathScrubber public_paths;
+  // An open session and its key: only a request that carries the key controls it.
+  struct OpenSession {
+    std::shared_ptr<LabSession> session;
+    std::string key;
+  };
   mutable std::mutex mutex;
-  std::map<std::string, std::shared_ptr<LabSession>> sessions;
+  std::map<std::string, OpenSession> sessions;
   std::mt19937_64 ids{std::random_device{}()};
   std::atomic<bool> stopping{false};
   std::atomic<bool> listening{false};
@@ -112,16 +160,31 @@ struct LabServer::Impl {
   json rig_status_json() const;
   std::vector<ClassRow> class_rows() const;
 
-  // The session a request names, or a 404 said and null.
+  // The session a request names when it carries the session's key; else a 404 (no such
+  // session) or a 403 (not its key) said, and null.
   std::shared_ptr<LabSession> find(const httplib::Request& req, httplib::Response& res) const {
-    std::shared_ptr<LabSession> found;
+    OpenSession found;
     {
       const std::lock_guard lock(mutex);
       const auto it = sessions.find(req.matches[1]);
       if (it != sessions.end()) found = it->second;
     }
-    if (!found) send_json(res, 404, error_json("no such session (it ended or never began)"));
-    return found;
+    if (!found.session) {
+      send_json(res, 404, error_json("no such session (it ended or never began)"));
+      return nullptr;
+    }
+    const std::string given = session_key_of(req);
+    if (!same_key(found.key, given)) {
+      send_json(res, 403,
+                error_json(fmt::format(
+                    "session {} is controlled only by the page that opened it: this request {}; "
+                    "send the key POST /api/sessions answered (the header X-Session-Key; ?key= "
+                    "only for a stream or a download), or open a session of your own",
+                    std::string(req.matches[1]),
+                    given.empty() ? "carries no session key" : "carries another key")));
+      return nullptr;
+    }
+    return found.session;
   }
   // Takes the sessions out of the table under the lock, and lets them go after it: a session's
   // end gives its memory back (~LabSession), which must not hold up the other pages.
@@ -130,8 +193,8 @@ struct LabServer::Impl {
     std::vector<std::shared_ptr<LabSession>> out;
     const std::lock_guard lock(mutex);
     for (auto it = sessions.begin(); it != sessions.end();) {
-      if (which(it->first, *it->second)) {
-        out.push_back(std::move(it->second));
+      if (which(it->first, *it->second.session)) {
+        out.push_back(std::move(it->second.session));
         it = sessions.erase(it);
       } else {
         ++it;
@@ -189,7 +252,7 @@ std::vector<ClassRow> LabServer::Impl::class_rows() const {
   {
     const std::lock_guard lock(mutex);
     open.reserve(sessions.size());
-    for (const auto& [id, session] : sessions) open.emplace_back(id, session);
+    for (const auto& [id, open_session] : sessions) open.emplace_back(id, open_session.session);
   }
   std::sort(open.begin(), open.end(),
             [](const auto& a, const auto& b) { return a.second->created() < b.second->created(); });
@@ -203,8 +266,7 @@ std::vector<ClassRow> LabServer::Impl::class_rows() const {
 void LabServer::Impl::routes() {
   server.Get("/api/lab", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200,
-              lab_json(list_scenes(options.scenes_dir), paper_table_in(options.asset_dir),
-                       options.version));
+              lab_json(scenes.list(), paper_table_in(options.asset_dir), options.version));
   });
   server.Post("/api/sessions",
               [this](const httplib::Request& req, httplib::Response& res) { create(req, res); });
@@ -215,6 +277,7 @@ void LabServer::Impl::routes() {
     stream(s, res);
   });
   server.Post(session + "/control", [this](const httplib::Request& req, httplib::Response& res) {
+    if (refuse_large_body(req, res)) return;
     const auto s = find(req, res);
     if (!s) return;
     control(*s, req, res);
@@ -240,19 +303,20 @@ void LabServer::Impl::routes() {
     send_json(res, 200, rig_status_json());
   });
   server.Post("/api/rig", [this](const httplib::Request& req, httplib::Response& res) {
+    if (refuse_large_body(req, res)) return;
     const auto read = read_rig_body(req.body);
     if (const auto* refusal = std::get_if<BodyRefusal>(&read))
       return send_json(res, 400, error_json(refusal->message));
     const RigCommand& command = std::get<RigCommand>(read);
+    if (!may_choose_port)
+      return send_json(
+          res, 403,
+          error_json("this server is shared: a page may neither open nor close its serial "
+                     "ports; the rig's port is the one its --serial names"));
     if (command.action == RigCommand::Action::kClose) {
       if (const auto feed = current_rig()) feed->close();
       return send_json(res, 200, rig_status_json());
     }
-    if (!may_choose_port)
-      return send_json(
-          res, 403,
-          error_json("this server is shared: a page may not open its serial ports; the "
-                     "rig's port is the one its --serial names"));
     const std::vector<std::string> known = ports();
     if (std::find(known.begin(), known.end(), command.port) == known.end())
       return send_json(
@@ -284,6 +348,8 @@ void LabServer::Impl::routes() {
     res.set_content(class_csv(class_rows(), paper_table_in(options.asset_dir)), "text/csv");
   });
   server.Delete(session, [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = find(req, res);
+    if (!s) return;
     const std::string id = req.matches[1];
     const bool ended =
         !take_out([&](const std::string& key, const LabSession&) { return key == id; }).empty();
@@ -293,6 +359,7 @@ void LabServer::Impl::routes() {
 }
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
+  if (refuse_large_body(req, res)) return;
   auto read = read_session_body(req.body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read)) {
     json body = error_json(refusal->message);
@@ -305,6 +372,8 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
   const SessionRequest& request = std::get<SessionBody>(read).request;
   if (full()) return refuse_full(res);
   try {
+    // Only a scene inside the folder is read: a link leading outside is as if absent.
+    scenes.check(request.scene);
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
     // A session keeps every step and Hall sample for its files (about 0.6 MB a simulated second):
     // a longer run keeps its summary, cycles and nothing step by step, so that no set-up grows
@@ -315,14 +384,21 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
     }
     auto s = std::make_shared<LabSession>(request.scene, std::move(prepared),
                                           std::get<SessionBody>(read).name);
-    const std::string id = fmt::format("{:016x}", ids());
-    json out{{"id", id},
-             {"rig", rig_json(request.scene, s->rig(), paper_table_in(options.asset_dir))}};
+    OpenSession open{std::move(s), new_session_key()};
+    json out{
+        {"id", ""},
+        {"key", open.key},
+        {"rig", rig_json(request.scene, open.session->rig(), paper_table_in(options.asset_dir))}};
     {
       // Counted again where the session is added: two pages may have asked at once.
       const std::lock_guard lock(mutex);
       if (static_cast<int>(sessions.size()) >= options.max_sessions) return refuse_full(res);
-      sessions.emplace(id, std::move(s));
+      std::string id;
+      do {
+        id = fmt::format("{:016x}", ids());
+      } while (sessions.contains(id));
+      out["id"] = id;
+      sessions.emplace(std::move(id), std::move(open));
     }
     send_json(res, 201, out);
   } catch (const InputError& e) {
@@ -406,7 +482,48 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
   httplib::Server& s = impl_->server;
   const std::size_t threads = thread_count(impl_->options.max_sessions);
   s.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
-  s.set_payload_max_length(kMostBody);
+  // cpp-httplib's own options add SO_REUSEPORT, with which a second server on a port in use
+  // binds it too and shares its requests: SO_REUSEADDR alone lets a port be bound again after
+  // its server ended, never while one listens on it.
+  s.set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
+  // The folders a message may name, by what they are (the scenes' files by their names alone).
+  PathScrubber& paths = impl_->public_paths;
+  paths.add(impl_->options.scenes_dir, "", "the scenes folder");
+  paths.add(impl_->options.asset_dir, "assets/", "assets");
+  paths.add(impl_->options.web_dir, "web/", "web");
+  paths.add(impl_->options.record_dir, "record/", "the record folder");
+  if (const char* home = std::getenv("HOME")) paths.add(home, "~/", "~");
+  std::error_code here_unknown;
+  paths.add(std::filesystem::current_path(here_unknown).string(), "", ".");
+  // Every error's body is JSON naming the server's folders by what they are (answered before
+  // the library compresses it), and a request past the stream's bounds (bounded_server.hpp) is
+  // answered so, on a connection that then ends.
+  s.set_error_handler(httplib::Server::HandlerWithResponse(
+      [this](const httplib::Request& req, httplib::Response& res) {
+        const RequestBound passed = BoundedServer::bound_passed();
+        if (passed == RequestBound::kBodyTooLarge || res.status == 413) {
+          say_connection_ends(req);
+          send_body_too_large(res);
+          return httplib::Server::HandlerResponse::Handled;
+        }
+        if (passed == RequestBound::kHeadTooLarge) {
+          say_connection_ends(req);
+          send_json(res, 431,
+                    error_json(fmt::format("the request's line and headers are larger than {} KiB, "
+                                           "the most the lab takes",
+                                           kMostHead / 1024)));
+          return httplib::Server::HandlerResponse::Handled;
+        }
+        if (res.get_header_value("Content-Type") != "application/json")
+          return httplib::Server::HandlerResponse::Unhandled;
+        json body = json::parse(res.body, nullptr, /*allow_exceptions=*/false);
+        if (body.is_discarded()) return httplib::Server::HandlerResponse::Unhandled;
+        send_json(res, res.status, impl_->public_paths.scrubbed_body(std::move(body)));
+        return httplib::Server::HandlerResponse::Handled;
+      }));
   s.set_exception_handler(
       [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
         std::string what = "an internal error";
@@ -481,12 +598,24 @@ int LabServer::bind() {
     if (port < 0) throw std::runtime_error("could not listen on " + o.host);
     return port;
   }
-  if (!impl_->server.bind_to_port(o.host, o.port))
-    throw std::runtime_error(
-        fmt::format("could not listen on {}:{} (another server on that port?); give another "
-                    "port, or 0 for any free one",
-                    o.host, o.port));
-  return o.port;
+  errno = 0;
+  if (impl_->server.bind_to_port(o.host, o.port)) return o.port;
+  // cpp-httplib says only that it failed; bind()'s errno is left as it was.
+  const int why = errno;
+  if (why == EADDRINUSE)
+    throw std::runtime_error(fmt::format(
+        "port {} on {} is in use: another program (perhaps another frictionlab serve) listens "
+        "on it; stop that one, or give another port (--port {}), or --port 0 for any free one",
+        o.port, o.host, o.port == 65535 ? 8080 : o.port + 1));
+  if (why == EACCES)
+    throw std::runtime_error(fmt::format(
+        "port {} on {} needs the administrator's rights (ports below 1024 do); give a port from "
+        "1024 on (--port 8080), or --port 0 for any free one",
+        o.port, o.host));
+  throw std::runtime_error(
+      fmt::format("could not listen on {}:{}{}; give another --host or --port, or --port 0 for "
+                  "any free one",
+                  o.host, o.port, why != 0 ? ": " + std::string(std::strerror(why)) : ""));
 }
 
 // cpp-httplib's stop() does nothing to a server that has not begun to listen, which would then

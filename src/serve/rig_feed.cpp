@@ -137,7 +137,11 @@ void RigFeed::record(std::string_view bytes) {
     // The page's download still has every line: it says where the record stopped.
     record_failed_ = true;
     record_.reset();
-    status_.message = std::string(e.what()) + "; the page's download still has the log";
+    // Said without the folder's place on the laptop: a page reads it.
+    status_.message = fmt::format(
+        "{} in the --record folder: {}; the page's download still has "
+        "the log",
+        status_.log_name, without_location(e.what()));
   }
 }
 

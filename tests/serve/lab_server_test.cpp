@@ -12,6 +12,7 @@
 #include <atomic>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <thread>
 
@@ -19,112 +20,13 @@
 
 #include "io/csv_table.hpp"
 #include "lab/run/run_outputs.hpp"
+#include "lab_server_fixture.hpp"
 #include "support/scene_fixture.hpp"
-#include "support/temp_folder.hpp"
 
 namespace fl::serve {
 namespace {
 
 using nlohmann::json;
-
-class LabServerTest : public test::TempFolderTest {
- protected:
-  LabServerTest() : TempFolderTest("lab-server") {}
-
-  void SetUp() override {
-    TempFolderTest::SetUp();
-    const std::filesystem::path scenes =
-        std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes";
-    std::filesystem::create_directories(dir_ / "scenes");
-    for (const char* name : {"minimal.yaml", "paper-rig.yaml"})
-      std::filesystem::copy_file(scenes / name, dir_ / "scenes" / name);
-    write("web/index.html", "<!doctype html><title>frictionlab</title>");
-    ServeOptions options;
-    options.host = "127.0.0.1";
-    options.port = 0;
-    options.scenes_dir = (dir_ / "scenes").string();
-    options.web_dir = (dir_ / "web").string();
-    options.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
-    options.version = "frictionlab test";
-    options.max_sessions = max_sessions_;
-    options.token = token_;
-    options.requests_per_second = requests_per_second_;
-    options.idle_seconds = idle_seconds_;
-    server_ = std::make_unique<LabServer>(options);
-    port_ = server_->bind();
-    thread_ = std::thread([this] { server_->listen(); });
-    client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
-    client_->set_read_timeout(30, 0);
-  }
-  void TearDown() override {
-    server_->stop();
-    thread_.join();
-    TempFolderTest::TearDown();
-  }
-
-  httplib::Result post(const std::string& path, const json& body) {
-    return client_->Post(path.c_str(), body.dump(), "application/json");
-  }
-  // A session's id, or fails the test.
-  std::string start(const json& request) {
-    const auto res = post("/api/sessions", request);
-    EXPECT_TRUE(res);
-    if (!res) return "";
-    EXPECT_EQ(res->status, 201) << res->body;
-    const json body = json::parse(res->body);
-    const auto id = body.find("id");
-    return id != body.end() && id->is_string() ? id->get_ref<const std::string&>() : "";
-  }
-  // Bytes on a connection of their own, as no HTTP client would send them; what the server
-  // answered (until it closed the connection), or nothing when not waited for.
-  std::string send_raw(const std::string& bytes, bool wait_for_answer = true) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_port = htons(static_cast<std::uint16_t>(port_));
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    EXPECT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    (void)::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL);
-    std::string answer;
-    if (wait_for_answer) {
-      ::shutdown(fd, SHUT_WR);
-      char buffer[4096];
-      for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;)
-        answer.append(buffer, static_cast<std::size_t>(n));
-    }
-    ::close(fd);
-    return answer;
-  }
-  // Reads the stream until `done`: every event's name and data.
-  std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
-    std::vector<std::pair<std::string, json>> events;
-    std::string buffer;
-    httplib::Client reader("127.0.0.1", port_);
-    reader.set_read_timeout(60, 0);
-    reader.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data,
-                                                                std::size_t length) {
-      buffer.append(data, length);
-      for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
-        const std::string block = buffer.substr(0, end);
-        buffer.erase(0, end + 2);
-        const auto name_end = block.find('\n');
-        events.emplace_back(block.substr(7, name_end - 7), json::parse(block.substr(name_end + 7)));
-        if (events.back().first == "done") return false;
-      }
-      return true;
-    });
-    return events;
-  }
-
-  int max_sessions_ = 30;
-  std::string token_;
-  double requests_per_second_ = 1000.0;
-  double idle_seconds_ = 600.0;
-  std::unique_ptr<LabServer> server_;
-  std::thread thread_;
-  int port_ = 0;
-  std::unique_ptr<httplib::Client> client_;
-};
 
 TEST_F(LabServerTest, OffersTheFoldersScenesByNameAndThePapersMaterials) {
   const auto res = client_->Get("/api/lab");
@@ -162,7 +64,7 @@ TEST_F(LabServerTest, ASessionsRunIsTheRunsSummaryAndFilesByteForByte) {
   const std::vector<std::string> set{"world.duration=1.5s", "rollers.spacing=70mm"};
   const std::string id = start({{"scene", "minimal"}, {"set", set}});
   ASSERT_FALSE(id.empty());
-  ASSERT_EQ(post("/api/sessions/" + id + "/control", {{"action", "play"}})->status, 200);
+  ASSERT_EQ(command(id, {{"action", "play"}})->status, 200);
   const auto events = stream_to_done(id);
   ASSERT_FALSE(events.empty());
   ASSERT_EQ(events.back().first, "done");
@@ -178,7 +80,7 @@ TEST_F(LabServerTest, ASessionsRunIsTheRunsSummaryAndFilesByteForByte) {
   EXPECT_EQ(events.back().second, summary_json(summary));
   for (const auto& [name, text] : run_output_files(scene.output, rig, summary, recording)) {
     if (name == "timing.json") continue;
-    const auto file = client_->Get(("/api/sessions/" + id + "/files/" + name).c_str());
+    const auto file = client_->Get(session(id, "/files/" + name).c_str());
     ASSERT_TRUE(file);
     EXPECT_EQ(file->status, 200) << name;
     EXPECT_TRUE(file->body == text) << name << " differs from run's";
@@ -246,7 +148,7 @@ TEST_F(LabServerTest, BadRequestsCostTheirClientAnErrorAndTheServerGoesOn) {
   {
     httplib::Client leaver("127.0.0.1", port_);
     int chunks = 0;
-    leaver.Get(("/api/sessions/" + id + "/stream").c_str(),
+    leaver.Get(session(id, "/stream").c_str(),
                [&](const char*, std::size_t) { return ++chunks < 3; });
   }
   const auto res = client_->Get("/api/lab");
@@ -257,13 +159,12 @@ TEST_F(LabServerTest, BadRequestsCostTheirClientAnErrorAndTheServerGoesOn) {
 
 TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
   const std::string id = start({{"scene", "minimal"}});
-  const std::string control = "/api/sessions/" + id + "/control";
   // A step while paused advances one frame's worth of simulated time, 1/30 s.
-  ASSERT_EQ(post(control, {{"action", "step"}})->status, 200);
+  ASSERT_EQ(command(id, {{"action", "step"}})->status, 200);
   std::string buffer;
   httplib::Client reader("127.0.0.1", port_);
   json first;
-  reader.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data, std::size_t n) {
+  reader.Get(session(id, "/stream").c_str(), [&](const char* data, std::size_t n) {
     buffer.append(data, n);
     const auto end = buffer.find("\n\n");
     if (end == std::string::npos) return true;
@@ -273,15 +174,15 @@ TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
   // The run stops at the first 1 ms step at or past it.
   EXPECT_NEAR(first["t"].get<double>(), 1.0 / 30, 1e-3 + 1e-12);
   EXPECT_FALSE(first["playing"].get<bool>());
-  const json slow = json::parse(post(control, {{"speed", 0.0625}})->body);
+  const json slow = json::parse(command(id, {{"speed", 0.0625}})->body);
   EXPECT_EQ(slow["speed"], 0.0625);
-  const json reset = json::parse(post(control, {{"action", "reset"}})->body);
+  const json reset = json::parse(command(id, {{"action", "reset"}})->body);
   EXPECT_EQ(reset["t"], 0.0);
   EXPECT_FALSE(reset["playing"].get<bool>());
   // What it does not know: 400, saying what it takes.
   for (const json& bad :
        {json{{"speed", 4}}, json{{"speed", "fast"}}, json{{"action", "jump"}}, json::object()}) {
-    const auto res = post(control, bad);
+    const auto res = command(id, bad);
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 400) << bad.dump();
   }
@@ -290,10 +191,10 @@ TEST_F(LabServerTest, ControlsPlayPauseStepResetAndSlowDown) {
   ASSERT_TRUE(gone);
   EXPECT_EQ(gone->status, 404);
   // No files before the run's end.
-  const auto early = client_->Get(("/api/sessions/" + id + "/files/summary.json").c_str());
+  const auto early = client_->Get(session(id, "/files/summary.json").c_str());
   ASSERT_TRUE(early);
   EXPECT_EQ(early->status, 404);
-  ASSERT_EQ(client_->Delete(("/api/sessions/" + id).c_str())->status, 200);
+  ASSERT_EQ(end(id)->status, 200);
   EXPECT_EQ(server_->sessions(), 0);
 }
 
@@ -312,16 +213,16 @@ TEST_F(LabServerTest, ALongRunKeepsItsSummaryButNotItsStepsSoNoSetUpGrowsTheServ
   port_ = port;
   client_ = std::make_unique<httplib::Client>("127.0.0.1", port_);
   const std::string id = start({{"scene", "minimal"}, {"set", {"world.duration=1.5s"}}});
-  ASSERT_EQ(post("/api/sessions/" + id + "/control", {{"action", "play"}})->status, 200);
+  ASSERT_EQ(command(id, {{"action", "play"}})->status, 200);
   const auto events = stream_to_done(id);
   ASSERT_EQ(events.back().first, "done");
   // The summary is the run's, recorded or not.
   const Scene scene =
       test::scene_file("minimal.yaml", std::vector<SceneOverride>{{"world.duration", "1.5s"}});
   EXPECT_EQ(events.back().second, summary_json(run_experiment(compile_rig(scene), RunOptions{})));
-  EXPECT_EQ(client_->Get(("/api/sessions/" + id + "/files/summary.json").c_str())->status, 200);
+  EXPECT_EQ(client_->Get(session(id, "/files/summary.json").c_str())->status, 200);
   for (const char* name : {"trajectory.csv", "hall.csv", "periods.csv"}) {
-    const auto res = client_->Get(("/api/sessions/" + id + "/files/" + name).c_str());
+    const auto res = client_->Get(session(id, std::string("/files/") + name).c_str());
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 404) << name;
     EXPECT_NE(res->body.find("longer than 1 s"), std::string::npos) << res->body;
@@ -372,12 +273,7 @@ TEST_F(SharedServerTest, TheApiAnswersOnlyToTheToken) {
 TEST_F(SharedServerTest, APageBeyondTheLimitIsToldTheLabIsFull) {
   const std::string create = "/api/sessions?token=s3cret";
   std::vector<std::string> ids;
-  for (int i = 0; i < 2; ++i) {
-    const auto res = post(create, {{"scene", "minimal"}});
-    ASSERT_TRUE(res);
-    ASSERT_EQ(res->status, 201) << res->body;
-    ids.push_back(json::parse(res->body)["id"]);
-  }
+  for (int i = 0; i < 2; ++i) ids.push_back(start({{"scene", "minimal"}}, create));
   const auto full = post(create, {{"scene", "minimal"}});
   ASSERT_TRUE(full);
   EXPECT_EQ(full->status, 503);
@@ -385,7 +281,7 @@ TEST_F(SharedServerTest, APageBeyondTheLimitIsToldTheLabIsFull) {
   EXPECT_EQ(body["refused"], true);
   EXPECT_NE(body["error"].get<std::string>().find("2 sessions"), std::string::npos);
   // One ends: the next page gets its session.
-  ASSERT_EQ(client_->Delete(("/api/sessions/" + ids[0] + "?token=s3cret").c_str())->status, 200);
+  ASSERT_EQ(end(ids[0], "?token=s3cret")->status, 200);
   EXPECT_EQ(post(create, {{"scene", "minimal"}})->status, 201);
   EXPECT_EQ(server_->sessions(), 2);
 }
@@ -405,7 +301,7 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
     EXPECT_EQ(refusal["problems"][0]["field"], "name");
     EXPECT_NE(res->body.find("letters, digits"), std::string::npos) << res->body;
   }
-  ASSERT_EQ(post("/api/sessions/" + ada + "/control", {{"action", "play"}})->status, 200);
+  ASSERT_EQ(command(ada, {{"action", "play"}})->status, 200);
   const auto events = stream_to_done(ada);
   const json& summary = events.back().second;
   const json table = json::parse(client_->Get("/api/class")->body);
@@ -465,7 +361,7 @@ TEST_F(LabServerTest, StreamsAreToldWhenTheServerStops) {
     httplib::Client c("127.0.0.1", port_);
     c.set_read_timeout(20, 0);
     std::string buffer;
-    c.Get(("/api/sessions/" + id + "/stream").c_str(), [&](const char* data, std::size_t n) {
+    c.Get(session(id, "/stream").c_str(), [&](const char* data, std::size_t n) {
       buffer.append(data, n);
       for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
         names.push_back(buffer.substr(7, buffer.find('\n') - 7));
@@ -545,15 +441,14 @@ TEST_F(ForgetfulServerTest, ASessionNobodyWatchesEndsAndOneWatchedStays) {
   std::atomic<bool> leave{false};
   std::thread viewer([&] {
     httplib::Client c("127.0.0.1", port_);
-    c.Get(("/api/sessions/" + watched + "/stream").c_str(),
-          [&](const char*, std::size_t) { return !leave; });
+    c.Get(session(watched, "/stream").c_str(), [&](const char*, std::size_t) { return !leave; });
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(1200));
   // Any API request looks; the one left alone has ended, the one streamed goes on.
   EXPECT_EQ(client_->Get("/api/lab")->status, 200);
   EXPECT_EQ(server_->sessions(), 1);
-  EXPECT_EQ(post("/api/sessions/" + left + "/control", {{"action", "play"}})->status, 404);
-  EXPECT_EQ(post("/api/sessions/" + watched + "/control", {{"action", "play"}})->status, 200);
+  EXPECT_EQ(command(left, {{"action", "play"}})->status, 404);
+  EXPECT_EQ(command(watched, {{"action", "play"}})->status, 200);
   leave = true;
   viewer.join();
 }

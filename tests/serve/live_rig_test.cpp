@@ -80,12 +80,14 @@ class LiveRigTest : public test::TempFolderTest {
     const auto res = post("/api/sessions", {{"scene", "paper-rig"}});
     ASSERT_TRUE(res);
     ASSERT_EQ(res->status, 201) << res->body;
-    const std::string id = json::parse(res->body)["id"];
-    reading_ = std::thread([this, id] {
+    const json session = json::parse(res->body);
+    const std::string id = session["id"];
+    const std::string key = session["key"];
+    reading_ = std::thread([this, id, key] {
       httplib::Client reader("127.0.0.1", port_);
       reader.set_read_timeout(60, 0);
       std::string buffer;
-      reader.Get(("/api/sessions/" + id + "/stream").c_str(),
+      reader.Get(("/api/sessions/" + id + "/stream?key=" + key).c_str(),
                  [&](const char* data, std::size_t length) {
                    buffer.append(data, length);
                    for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
@@ -268,6 +270,10 @@ TEST_F(LiveRigTest, APageOpensOnlyAPortTheServerListedAndASharedServerNone) {
   ASSERT_TRUE(refused);
   EXPECT_EQ(refused->status, 403);
   EXPECT_NE(refused->body.find("--serial"), std::string::npos);
+  // Nor closes the one --serial opened: the class's rig is not a student's to stop.
+  const auto closing = post("/api/rig", {{"action", "close"}});
+  ASSERT_TRUE(closing);
+  EXPECT_EQ(closing->status, 403);
 }
 
 }  // namespace

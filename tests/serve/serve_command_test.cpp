@@ -1,5 +1,6 @@
-// frictionlab serve's refusals before it serves (each says what is wrong and exits 2), and its
-// end at SIGTERM: exit 0, the rig's log written whole.
+// frictionlab serve's refusals before it serves (each says what is wrong and exits 2: a port in
+// use, by another program or another serve), and its end at SIGTERM: exit 0, the rig's log
+// written whole.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <netinet/in.h>
@@ -46,6 +47,44 @@ TEST_F(ServeCommandTest, APortInUseIsBadInputSayingWhatToDo) {
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("--port " + std::to_string(port)), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("0 for any free one"), std::string::npos) << r.err;
+}
+
+TEST_F(ServeCommandTest, ASecondServeOnAPortInUseExitsWithStatus2SayingSo) {
+  // A first serve, on a port the system chose; its address says which.
+  write("web/index.html", "<!doctype html>");
+  const std::string web = (dir_ / "web").string();
+  const std::string out = (dir_ / "first").string();
+  const pid_t first = ::fork();
+  ASSERT_GE(first, 0);
+  if (first == 0) {
+    const int fd = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 1);
+    ::dup2(fd, 2);
+    ::execl(kExe.c_str(), kExe.c_str(), "serve", "--port", "0", "--web", web.c_str(), nullptr);
+    ::_exit(127);
+  }
+  const std::string said = "the lab at http://127.0.0.1:";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (test::read_text(out).find(said) == std::string::npos &&
+         std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const std::string first_said = test::read_text(out);
+  const auto at = first_said.find(said);
+  ASSERT_NE(at, std::string::npos) << first_said;
+  const std::string port = std::to_string(std::stoi(first_said.substr(at + said.size())));
+
+  // The second is told the port is in use and what to do, and leaves the first alone.
+  const auto second = test::run_command(kExe + " serve --port " + port + " --web " + web);
+  EXPECT_EQ(second.status, 2) << second.err;
+  EXPECT_NE(second.err.find("port " + port + " on 127.0.0.1 is in use"), std::string::npos)
+      << second.err;
+  EXPECT_NE(second.err.find("--port 0 for any free one"), std::string::npos) << second.err;
+  EXPECT_EQ(second.out.find("the lab at"), std::string::npos) << second.out;
+  int status = 0;
+  EXPECT_EQ(::waitpid(first, &status, WNOHANG), 0) << "the first serve ended";
+  ASSERT_EQ(::kill(first, SIGTERM), 0);
+  ASSERT_EQ(::waitpid(first, &status, 0), first);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << test::read_text(out);
 }
 
 TEST_F(ServeCommandTest, AMissingPageOrScenesFolderIsBadInput) {

@@ -1,6 +1,6 @@
 // Export: the finished run's files, a PNG of the 3D view, and a link to this set-up.
 import { byId, byTestId } from "./dom";
-import { fileUrl } from "./lab_client";
+import { fileUrl, type SessionHandle } from "./lab_client";
 
 const FILES = ["summary.json", "trajectory.csv", "hall.csv", "periods.csv"];
 
@@ -43,9 +43,9 @@ export class ExportPanel {
     }
   }
 
-  enableFiles(sessionId: string): void {
+  enableFiles(session: SessionHandle): void {
     for (const { name, anchor } of this.links) {
-      anchor.href = fileUrl(sessionId, name);
+      anchor.href = fileUrl(session, name);
       anchor.download = name;
       anchor.removeAttribute("aria-disabled");
     }

@@ -16,6 +16,9 @@ import type {
   Summary,
 } from "./lab_types";
 
+/** What a session's controls need: its id, and the key only this page holds. */
+export type SessionHandle = Pick<Session, "id" | "key">;
+
 /** The lab refused a set-up (400): every problem, by field. */
 export class SetupError extends Error {
   readonly problems: Problem[];
@@ -76,13 +79,27 @@ export interface StreamHandle {
 /** A shared server's token, from the page's own address (`?token=...`), sent with every call. */
 const token = new URLSearchParams(location.search).get("token");
 
-/** An API address, with the token when the page has one. */
-function api(path: string): string {
-  return token === null ? path : `${path}?token=${encodeURIComponent(token)}`;
+/** An API address, with the token when the page has one, and `extra` query parameters. */
+function api(path: string, extra: Record<string, string> = {}): string {
+  const query = new URLSearchParams(extra);
+  if (token !== null) query.set("token", token);
+  const text = query.toString();
+  return text === "" ? path : `${path}?${text}`;
 }
 
-function sessionPath(id: string): string {
-  return `/api/sessions/${encodeURIComponent(id)}`;
+function sessionPath(session: SessionHandle): string {
+  return `/api/sessions/${encodeURIComponent(session.id)}`;
+}
+
+/** A session's address that carries its key in the query: a stream's or a download's, which a
+ * browser opens without headers of the page's choosing. */
+function keyedUrl(session: SessionHandle, path: string): string {
+  return api(`${sessionPath(session)}${path}`, { key: session.key });
+}
+
+/** The header that carries a session's key with a fetch. */
+function keyHeader(session: SessionHandle): Record<string, string> {
+  return { "X-Session-Key": session.key };
 }
 
 async function readJson<T>(response: Response): Promise<T> {
@@ -160,7 +177,7 @@ const STREAM_RETRIES = 5;
 const STREAM_RETRY_MS = 2000;
 
 /** Listens to a session's events until close(). */
-export function stream(id: string, handlers: StreamHandlers): StreamHandle {
+export function stream(session: SessionHandle, handlers: StreamHandlers): StreamHandle {
   let source: EventSource;
   let retries = 0;
   let retryTimer = 0;
@@ -171,7 +188,7 @@ export function stream(id: string, handlers: StreamHandlers): StreamHandle {
     source.close();
   };
   const open = () => {
-    source = new EventSource(api(`${sessionPath(id)}/stream`));
+    source = new EventSource(keyedUrl(session, "/stream"));
     source.addEventListener("open", () => (retries = 0));
     source.addEventListener("state", (event) => {
       const state = parseEvent<LabState>(event);
@@ -210,26 +227,30 @@ export function stream(id: string, handlers: StreamHandlers): StreamHandle {
 }
 
 export async function control(
-  id: string,
+  session: SessionHandle,
   command: ControlAction | { speed: PlaybackSpeed },
 ): Promise<ControlReply> {
   const body = typeof command === "string" ? { action: command } : command;
-  const response = await fetch(api(`${sessionPath(id)}/control`), {
+  const response = await fetch(api(`${sessionPath(session)}/control`), {
     method: "POST",
-    headers: { "Content-Type": "application/json" },
+    headers: { "Content-Type": "application/json", ...keyHeader(session) },
     body: JSON.stringify(body),
   });
   return expectOk<ControlReply>(response);
 }
 
 /** Where a finished run's file is served (summary.json, trajectory.csv, hall.csv, ...). */
-export function fileUrl(id: string, name: string): string {
-  return api(`${sessionPath(id)}/files/${encodeURIComponent(name)}`);
+export function fileUrl(session: SessionHandle, name: string): string {
+  return keyedUrl(session, `/files/${encodeURIComponent(name)}`);
 }
 
-export async function endSession(id: string): Promise<void> {
+export async function endSession(session: SessionHandle): Promise<void> {
   try {
-    await fetch(api(sessionPath(id)), { method: "DELETE", keepalive: true });
+    await fetch(api(sessionPath(session)), {
+      method: "DELETE",
+      headers: keyHeader(session),
+      keepalive: true,
+    });
   } catch {
     // the session ends by itself when nobody streams from it
   }

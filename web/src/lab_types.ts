@@ -88,7 +88,10 @@ export interface Rig {
 }
 
 export interface Session {
+  /** Public: the class's table lists it. */
   id: string;
+  /** The session's secret: only requests that carry it control the session (docs/web-api.md). */
+  key: string;
   rig: Rig;
 }
 

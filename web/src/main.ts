@@ -110,7 +110,7 @@ const keeper = new SessionKeeper({
     readouts.setDone(headlineOf(summary));
     stopwatch.showEstimator();
     const session = keeper.current;
-    if (session) exportPanel.enableFiles(session.id);
+    if (session) exportPanel.enableFiles(session);
     showRun();
   },
   failed(failure) {

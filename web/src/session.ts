@@ -1,5 +1,6 @@
 // The page's one session at a time: starting one ends the one before (once the new one is
 // made, so a refused set-up leaves the running one alone), its stream, its playback commands.
+// The session's key stays here, in memory: every control sends it, and nothing else sees it.
 import {
   control,
   createSession,
@@ -37,7 +38,7 @@ export class SessionKeeper {
     const ticket = ++this.asked;
     const made = await createSession(scene, set, name);
     if (ticket !== this.asked) {
-      void endSession(made.id);
+      void endSession(made);
       throw new Superseded();
     }
     this.end();
@@ -50,14 +51,14 @@ export class SessionKeeper {
   async command(command: ControlAction | { speed: PlaybackSpeed }): Promise<ControlReply | null> {
     const session = this.session;
     if (!session) return null;
-    return control(session.id, command);
+    return control(session, command);
   }
 
   /** Stops listening and ends the session (the stream goes on after `done` until then). */
   end(): void {
     this.listening?.close();
     this.listening = null;
-    if (this.session) void endSession(this.session.id);
+    if (this.session) void endSession(this.session);
     this.session = null;
   }
 
@@ -71,6 +72,6 @@ export class SessionKeeper {
 
   private listen(): void {
     if (this.listening || !this.session) return;
-    this.listening = stream(this.session.id, this.handlers);
+    this.listening = stream(this.session, this.handlers);
   }
 }

@@ -57,6 +57,7 @@ function usage() {
   return { rss, cpu: ticks / 100 };
 }
 
+/** A playing session: its id and its key (docs/web-api.md). */
 async function start(scene) {
   const made = await (
     await fetch(`${base}/api/sessions`, {
@@ -66,14 +67,22 @@ async function start(scene) {
   ).json();
   await fetch(`${base}/api/sessions/${made.id}/control`, {
     method: "POST",
+    headers: { "X-Session-Key": made.key },
     body: JSON.stringify({ action: "play" }),
   });
-  return made.id;
+  return made;
+}
+
+async function endSession(session) {
+  await fetch(`${base}/api/sessions/${session.id}`, {
+    method: "DELETE",
+    headers: { "X-Session-Key": session.key },
+  });
 }
 
 /** Reads a session's stream for `ms`: the arrival time of each state event. */
-async function listen(id, ms) {
-  const response = await fetch(`${base}/api/sessions/${id}/stream`);
+async function listen(session, ms) {
+  const response = await fetch(`${base}/api/sessions/${session.id}/stream?key=${session.key}`);
   const reader = response.body.getReader();
   const decoder = new TextDecoder();
   const arrivals = [];
@@ -88,11 +97,11 @@ async function listen(id, ms) {
 }
 
 const idle = usage();
-const ids = [];
-for (let i = 0; i < sessions; i += 1) ids.push(await start("paper-rig"));
+const playing = [];
+for (let i = 0; i < sessions; i += 1) playing.push(await start("paper-rig"));
 const before = usage();
 const seconds = Number(options.seconds);
-const streams = await Promise.all(ids.map((id) => listen(id, seconds * 1000)));
+const streams = await Promise.all(playing.map((session) => listen(session, seconds * 1000)));
 const after = usage();
 const rates = [];
 const gaps = [];
@@ -117,7 +126,7 @@ console.log(
     `a session); resident ${idle.rss.toFixed(1)} MiB idle, ${after.rss.toFixed(1)} MiB with ` +
     `${sessions} sessions (${((after.rss - idle.rss) / sessions).toFixed(2)} MiB a session)`,
 );
-for (const id of ids) await fetch(`${base}/api/sessions/${id}`, { method: "DELETE" });
+for (const session of playing) await endSession(session);
 
 // Churn: sessions opened, streamed for a second and closed, three at a time, for `churn` seconds,
 // twice: the first round warms the server's threads (their stacks, their allocator caches), the
@@ -128,9 +137,9 @@ async function churn(seconds) {
   while (Date.now() < end) {
     await Promise.all(
       [0, 1, 2].map(async () => {
-        const id = await start("minimal");
-        await listen(id, 1000);
-        await fetch(`${base}/api/sessions/${id}`, { method: "DELETE" });
+        const session = await start("minimal");
+        await listen(session, 1000);
+        await endSession(session);
         opened += 1;
       }),
     );

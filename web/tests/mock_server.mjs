@@ -1,14 +1,18 @@
 // A stand-in for `frictionlab serve` for testing the page only (docs/web-api.md): serves a built
 // page, the LEGO parts, and fakes the lab's API with a harmonic plate, a fake rig on a fake
-// serial port and the class's table. Not the lab's physics, not its estimator, not its rules.
+// serial port and the class's table. Not the lab's physics, not its estimator, not its rules;
+// but, as the lab, it runs a session on the wall clock (simulated time = wall time x speed, however
+// often its stream ticks) and obeys only requests that carry the session's key.
 //
 //   node tests/mock_server.mjs [--port 8765] [--dist DIR]
 //
 // For the tests, beside the API: GET /__mock/log (the requests it was sent), /__mock/rig (the
 // fake rig's periods so far), /__mock/rig-unplug (the fake board goes away), /__mock/rig-shared
 // (may_choose false from now on, until /__mock/rig-shared?off), /__mock/refuse?path=P&count=N
-// (the next N requests to a path ending in P answer 429) and /__mock/close-streams (every stream gets
-// `event: closed`, as when the server stops).
+// (the next N requests to a path ending in P answer 429), /__mock/close-streams (every stream gets
+// `event: closed`, as when the server stops) and /__mock/streams?session=ID (how many streams of
+// that session are open).
+import { randomBytes } from "node:crypto";
 import { createServer } from "node:http";
 import { readFile } from "node:fs/promises";
 import { dirname, extname, join, normalize, resolve } from "node:path";
@@ -350,6 +354,11 @@ function makeRig(scene, set) {
       } else rig.plate.material = value;
     } else if (key === "friction.temperature") {
       temperature = Number(value.replace("K", ""));
+    } else if (key === "world.duration") {
+      const seconds = Number(value.replace(/\s*s$/, ""));
+      if (!(seconds > 0)) {
+        problems.push({ field: "set", value: entry, message: "expected a positive time" });
+      } else rig.duration = seconds;
     }
   }
   const material = MATERIALS.find((m) => m[0] === rig.plate.material);
@@ -367,11 +376,18 @@ class FakeRun {
     this.rig = rig;
     this.table = table; // the material's name in Table I, the temperature, the paper's mu_k
     this.name = name;
+    this.key = randomBytes(16).toString("hex"); // only requests that carry it control the run
     this.speed = 1;
     this.resets = 0;
     this.reset();
   }
+  /** Advances a playing run to the wall clock's `now` [ms], at its speed. */
+  catchUp(now) {
+    if (this.playing) this.advance((this.speed * (now - this.wallAt)) / 1000);
+    this.wallAt = now;
+  }
   reset() {
+    this.wallAt = performance.now();
     this.t = 0;
     this.playing = false;
     this.done = false;
@@ -389,7 +405,7 @@ class FakeRun {
   advance(dt) {
     if (this.done) return;
     const from = this.t;
-    const to = Math.min(DURATION, from + dt);
+    const to = Math.min(this.rig.duration, from + dt);
     const rig = this.rig;
     const T = (2 * Math.PI) / rig.omega;
     for (; this.nextSample <= to; this.nextSample += 0.001) {
@@ -414,7 +430,7 @@ class FakeRun {
       }
     }
     this.t = to;
-    if (this.t >= DURATION) {
+    if (this.t >= this.rig.duration) {
       this.done = true;
       this.playing = false;
     }
@@ -559,7 +575,7 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
   const sessions = new Map();
   const log = [];
   const rig = new FakeRig();
-  const streams = new Set(); // every open stream's response, for /__mock/close-streams
+  const streams = new Map(); // every open stream's response, and its session's id
   const refusals = new Map(); // path -> how many more requests answer 429
   let rigOpened = false; // /api/class's rig: null until a port was opened
   let nextId = 1;
@@ -584,11 +600,16 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
       }
       if (path === "/__mock/close-streams") {
         const message = "the lab stopped (the mock was told to): reload the page when it is back";
-        for (const stream of streams) {
+        for (const stream of streams.keys()) {
           stream.write(`event: closed\ndata: ${JSON.stringify({ message })}\n\n`);
           stream.end();
         }
         return json(res, 200, { closed: streams.size });
+      }
+      if (path === "/__mock/streams") {
+        const session = url.searchParams.get("session");
+        const open = [...streams.values()].filter((id) => id === session).length;
+        return json(res, 200, { open });
       }
       const refusing = [...refusals.keys()].find((p) => path.endsWith(p));
       const refused = refusals.get(refusing) ?? 0;
@@ -675,14 +696,27 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
           return json(res, 400, { error: `the set-up has ${problems.length} problem`, problems });
         }
         const id = String(nextId++);
-        sessions.set(id, new FakeRun(made, table, name));
-        return json(res, 201, { id, rig: made });
+        const run = new FakeRun(made, table, name);
+        sessions.set(id, run);
+        return json(res, 201, { id, key: run.key, rig: made });
       }
       const match = /^\/api\/sessions\/([^/]+)(\/.*)?$/.exec(path);
       if (match) {
         const [, id, rest = ""] = match;
         const run = sessions.get(id);
         if (!run) return json(res, 404, { error: `no session ${id}` });
+        // As the lab: the session's id is public, its key is the page's that opened it, in a
+        // header (in the address only for a GET: a stream, a download).
+        const key =
+          req.headers["x-session-key"] ??
+          (req.method === "GET" ? url.searchParams.get("key") : undefined);
+        if (key !== run.key) {
+          log.push({ refused: id, path: rest, method: req.method });
+          return json(res, 403, {
+            error: `session ${id} is controlled only by the page that opened it: this request ${key ? "carries another key" : "carries no session key"}`,
+            problems: [],
+          });
+        }
         if (rest === "" && req.method === "DELETE") {
           sessions.delete(id);
           log.push({ end: id });
@@ -692,6 +726,7 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
         if (rest === "/control" && req.method === "POST") {
           const body = JSON.parse(await readBody(req));
           log.push({ control: id, body });
+          run.catchUp(performance.now());
           if (body.action === "play") run.playing = !run.done;
           else if (body.action === "pause") run.playing = false;
           else if (body.action === "step") {
@@ -711,13 +746,13 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
           });
           let resetsSeen = run.resets;
           const rigCursor = {};
-          streams.add(res);
+          streams.set(res, id);
           const tick = setInterval(() => {
             if (run.resets !== resetsSeen) {
               resetsSeen = run.resets;
               res.write("event: reset\ndata: {}\n\n");
             }
-            if (run.playing) run.advance(run.speed / 30);
+            run.catchUp(performance.now());
             res.write(`event: state\ndata: ${JSON.stringify(run.state())}\n\n`);
             if (run.done && !run.doneSent) {
               run.doneSent = true;

@@ -61,9 +61,10 @@ const session = await (
 ).json();
 await fetch(`${base}/api/sessions/${session.id}/control`, {
   method: "POST",
+  headers: { "X-Session-Key": session.key },
   body: JSON.stringify({ action: "play" }),
 });
-const response = await fetch(`${base}/api/sessions/${session.id}/stream`);
+const response = await fetch(`${base}/api/sessions/${session.id}/stream?key=${session.key}`);
 const reader = response.body.getReader();
 const arrivals = [];
 let bytes = 0;

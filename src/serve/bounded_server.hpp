@@ -1,0 +1,33 @@
+// cpp-httplib's server with every request bounded, however it is sent. Debian 12's cpp-httplib
+// (0.11) reads a request line, its headers and a chunked or length-less body into memory without
+// limit (set_payload_max_length bounds a Content-Length only): one client could grow the server by
+// the gigabyte. This server reads each connection through its own stream, which gives a request
+// at most `most_head_bytes` for its line and headers and `most_body_bytes` (plus the chunks'
+// framing) for its body, and ends a connection whose request went past them or left its body
+// unread. The library's own parsing, routing and handlers are unchanged.
+#pragma once
+
+#include <cstddef>
+
+#include <httplib.h>
+
+namespace fl::serve {
+
+// Which bound the request being answered on this thread went past (none, its head, its body).
+enum class RequestBound { kWithin, kHeadTooLarge, kBodyTooLarge };
+
+class BoundedServer : public httplib::Server {
+ public:
+  BoundedServer(std::size_t most_head_bytes, std::size_t most_body_bytes);
+
+  // For the error handler, answering on the request's own thread.
+  static RequestBound bound_passed();
+
+ private:
+  bool process_and_close_socket(socket_t sock) override;
+
+  const std::size_t most_head_bytes_;
+  const std::size_t most_body_bytes_;
+};
+
+}  // namespace fl::serve

@@ -29,6 +29,7 @@
 #include "cli/option_quantity.hpp"
 #include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
+#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
@@ -135,7 +136,7 @@ int run_log_table(const EstimateOptions& o, const PreparedEstimate& p) {
     fmt::print("{}\n", result.json().dump(2));
   } else {
     print_log_table(result.rows);
-    if (!written.empty()) fmt::print("  written: {}\n", written);
+    if (!written.empty()) fmt::print("  written: {}\n", escape_invalid_utf8(written));
   }
   if (result.failed() > 0)
     fmt::print(stderr, "error: {} of {} logs gave no period (their rows say why)\n",

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/utf8.hpp"
 #include "io/json_value.hpp"
 
 namespace fl::cli {
@@ -16,7 +17,8 @@ std::string plural(int n, const char* one, const char* many) {
 
 // Where the columns and the time's unit came from.
 std::string columns_text(const HallLogReading& r) {
-  std::string names = r.time_column.empty() ? r.adc_column : r.time_column + ", " + r.adc_column;
+  std::string names = escape_invalid_utf8(
+      r.time_column.empty() ? r.adc_column : r.time_column + ", " + r.adc_column);
   std::string from = r.columns_from == "header"
                          ? fmt::format("from the header, line {}", r.header_line)
                      : r.columns_from == "columns" ? std::string("from --columns")
@@ -101,7 +103,7 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
                     const std::string& plot) {
   const fl_estimator::Stats& s = est.stats;
   const LogSetUp& set_up = est.set_up;
-  fmt::print("frictionlab estimate: {}\n", log.path);
+  fmt::print("frictionlab estimate: {}\n", escape_invalid_utf8(log.path));
   fmt::print("  log                  {}, {} samples over {:.3f} s at {:.0f} Hz\n", format_text(log),
              log.adc.size(), est.duration, est.sample_rate);
   fmt::print("                       {}\n", columns_text(log.reading));
@@ -123,12 +125,13 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
       "                       for l = {:.1f} +- {:.1f} mm, g = {:.3f} m/s^2, dT the "
       "standard deviation\n",
       set_up.spacing * 1e3, set_up.spacing_err * 1e3, set_up.gravity);
-  if (!plot.empty()) fmt::print("  plot                 {}\n", plot);
+  if (!plot.empty()) fmt::print("  plot                 {}\n", escape_invalid_utf8(plot));
 }
 
 nlohmann::json estimate_json(const HallLog& log, const LogEstimate& est, const std::string& plot) {
   nlohmann::json out = log_estimate_json(log, est);
-  out["plot"] = json_or_null(plot.empty() ? std::nullopt : std::optional<std::string>(plot));
+  out["plot"] = json_or_null(plot.empty() ? std::nullopt
+                                          : std::optional<std::string>(escape_invalid_utf8(plot)));
   return out;
 }
 

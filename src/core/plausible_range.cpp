@@ -14,4 +14,13 @@ std::optional<std::string> implausible(double value, const PlausibleRange& range
                   "), found ", value / range.per_unit, unit);
 }
 
+std::string plain_number_advice(double value, std::string_view text, const PlausibleRange& range) {
+  // Lengths the rig measures in millimetres, periods in milliseconds when not in seconds.
+  const bool length = range.unit == "mm";
+  const bool time = range.unit == "s";
+  if (!(length || time) || implausible(value * 1e-3, range)) return "";
+  return describe(": a plain number is SI, so ", text, " was read as ", text, length ? " m" : " s",
+                  "; write ", text, length ? "mm for millimetres" : "ms for milliseconds");
+}
+
 }  // namespace fl

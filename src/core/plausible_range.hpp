@@ -26,7 +26,36 @@ inline constexpr PlausibleRange kSpacingRange{
 inline constexpr PlausibleRange kMuKRange{"mu_k", 1e-3, 100.0, "", 1.0, "0.2 to 10"};
 inline constexpr PlausibleRange kHcRange{
     "the centre-of-mass height h_c", 0.0, 0.5, "mm", 1e-3, "a few mm"};
-inline constexpr PlausibleRange kPeriodRange{"the period T", 1e-3, 3600.0, "s", 1.0, "0.3 to 1 s"};
+
+namespace plausible_detail {
+// sqrt for the ranges below, at compile time (Newton's iteration from above).
+constexpr double root(double x) {
+  double r = x > 1.0 ? x : 1.0;
+  for (int i = 0; i < 200; ++i) r = 0.5 * (r + x / r);
+  return r;
+}
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kStandardGravity = 9.81;  // the lab's default g [m/s^2]
+// The thin plate's period T = pi sqrt(2 l / (mu_k g)) [s].
+constexpr double thin_period(double spacing, double mu_k) {
+  return kPi * root(2.0 * spacing / (mu_k * kStandardGravity));
+}
+}  // namespace plausible_detail
+
+// The periods the spacings and mu_k above give at g = 9.81 m/s^2: from the shortest spacing at
+// the largest mu_k (4.5 ms) to the longest at the smallest (63 s). A period beyond them is no
+// rig's at any spacing; a mu_k derived from a period within them is checked against kMuKRange
+// too, at the rig's own l and g.
+inline constexpr PlausibleRange kPeriodRange{
+    "the period T",
+    plausible_detail::thin_period(kSpacingRange.least, kMuKRange.most),
+    plausible_detail::thin_period(kSpacingRange.most, kMuKRange.least),
+    "s",
+    1.0,
+    "0.3 to 1 s"};
+// The plate's amplitude: beyond the longest spacing the plate has long left the rollers.
+inline constexpr PlausibleRange kAmplitudeRange{
+    "the amplitude A", 0.0, kSpacingRange.most, "mm", 1e-3, "20 mm"};
 inline constexpr PlausibleRange kGravityRange{"gravity g", 0.1, 100.0, "m/s^2", 1.0, "9.81 m/s^2"};
 inline constexpr PlausibleRange kRollerSpeedRange{"the rollers' speed",
                                                   0.0,
@@ -40,5 +69,10 @@ inline constexpr PlausibleRange kRollerRadiusRange{
 // Why `value` [SI] is beyond the range ("expected the roller spacing l from 1 to 2000 mm (the
 // paper's rig: 89 mm), found 89000 mm"), or nothing when it is within it. NaN is beyond it.
 std::optional<std::string> implausible(double value, const PlausibleRange& range);
+
+// For a plain number (SI) beyond the range, as written (`text`): the advice that the unit a rig
+// measures it in would bring it within (": a plain number is SI, so 790 was read as 790 s; write
+// 790ms for milliseconds"; millimetres for a length), or "" when that unit would not either.
+std::string plain_number_advice(double value, std::string_view text, const PlausibleRange& range);
 
 }  // namespace fl

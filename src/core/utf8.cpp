@@ -32,4 +32,23 @@ std::optional<Utf8Character> utf8_character_at(std::string_view text, std::size_
   return Utf8Character{c, extra + 1};
 }
 
+std::string escape_invalid_utf8(std::string_view text) {
+  constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  out.reserve(text.size());
+  std::size_t at = 0;
+  while (at < text.size()) {
+    if (const std::optional<Utf8Character> c = utf8_character_at(text, at)) {
+      out.append(text.substr(at, c->bytes));
+      at += c->bytes;
+      continue;
+    }
+    const auto byte = static_cast<unsigned char>(text[at++]);
+    out += "\\x";
+    out += kHex[byte >> 4];
+    out += kHex[byte & 15];
+  }
+  return out;
+}
+
 }  // namespace fl

@@ -3,13 +3,15 @@
 // mu_k +- d mu_k.
 //
 // Portable C++11 subset: no heap, no exceptions, no RTTI, no standard library containers; all
-// state is fixed in size by the template parameters. Arithmetic is 32-bit integer on the
-// per-sample path and single-precision float at pulse edges and periods, so the same code runs
-// on an 8-bit AVR (avr-gcc, where double is float) and on the host with the same results.
+// state is fixed in size by the template parameters. Arithmetic is integer on the per-sample path
+// (32-bit on the AVR, 64-bit on the host: see Level) and single-precision float at pulse edges
+// and periods, so the same code runs on an 8-bit AVR (avr-gcc, where double is float) and on the
+// host with the same results.
 //
 // Units: times are uint32_t microseconds on the caller's clock and may wrap around at 2^32 us
-// (71.6 min): only differences are used. ADC values are counts (10-bit: 0..1023; any uint16_t
-// works). Periods are in microseconds in the records and in seconds in Stats.
+// (71.6 min): only differences are used. ADC values are counts (10-bit: 0..1023; on the host any
+// uint16_t, 0..65535, works: see Level). Periods are in microseconds in the records and in seconds
+// in Stats.
 //
 // How it works (docs/estimator.md has the long version):
 //  1. Learning the signal: the estimator watches the values (through a median of three, so a
@@ -71,6 +73,17 @@
 #include <stdint.h>
 
 namespace fl_estimator {
+
+// The signal's levels and distances from the baseline, in counts << 16 (sixteen bits of fraction
+// for the baseline's slow average). The Uno's 10-bit ADC needs 27 bits, and the AVR computes them
+// in 32; a log of a 16-bit ADC (values up to 65535) needs 33 for a distance from the baseline and
+// a pulse's headroom above it, and the host computes in 64. The two give the same numbers, to the
+// bit, wherever 32 bits hold them: every ADC of up to 14 bits.
+#if defined(__AVR__)
+typedef int32_t Level;
+#else
+typedef int64_t Level;
+#endif
 
 // A time between two samples: whole microseconds on the caller's clock (wrapping with it) plus
 // frac/256 of a microsecond.
@@ -254,8 +267,8 @@ class BasicPeriodEstimator {
         events |= restart();
         events |= learn(t_us, adc);
       } else {
-        const int32_t d = (static_cast<int32_t>(adc) << 16) - base_;
-        const int32_t sd = polarity_ > 0 ? d : -d;
+        const Level d = (static_cast<Level>(adc) << 16) - base_;
+        const Level sd = polarity_ > 0 ? d : -d;
         if (phase_ == kIdle) {
           if (sd >= hi_) {
             start_pulse(t_us, sd);
@@ -360,18 +373,18 @@ class BasicPeriodEstimator {
   static const uint32_t kMaxStallUs = 16000000u;    // stay below 2^24 us (midpoint's range)
   static const uint32_t kBaselineTauUs = 2000000u;  // baseline time constant, about 2 s
 
-  float level(int32_t offset) const {
+  float level(Level offset) const {
     return static_cast<float>(base_ + (polarity_ > 0 ? offset : -offset)) * (1.0f / 65536.0f);
   }
 
   // Signed distance from the baseline in the pulses' direction [counts << 16].
-  int32_t signed_dev(uint16_t x) const {
-    const int32_t d = (static_cast<int32_t>(x) << 16) - base_;
+  Level signed_dev(uint16_t x) const {
+    const Level d = (static_cast<Level>(x) << 16) - base_;
     return polarity_ > 0 ? d : -d;
   }
 
   // Where the line through (t0, v0) and (t1, v1) reaches `level` (v0 and v1 on either side).
-  static Instant crossing(uint32_t t0, uint32_t t1, int32_t v0, int32_t v1, int32_t lvl) {
+  static Instant crossing(uint32_t t0, uint32_t t1, Level v0, Level v1, Level lvl) {
     const float frac = static_cast<float>(lvl - v0) / static_cast<float>(v1 - v0);
     const uint32_t dt_q8 = (t1 - t0) << 8;
     return instant_after(t0, static_cast<uint32_t>(frac * static_cast<float>(dt_q8) + 0.5f));
@@ -484,8 +497,8 @@ class BasicPeriodEstimator {
     polarity_ = static_cast<int8_t>(-resting_side);
     const uint32_t n = resting_side > 0 ? n_above_ : n_below_;
     const uint32_t sum = resting_side > 0 ? sum_above_ : sum_below_;
-    base_ = static_cast<int32_t>(static_cast<float>(sum) / static_cast<float>(n) * 65536.0f);
-    const int32_t extreme = static_cast<int32_t>(polarity_ > 0 ? learn_max_ : learn_min_) << 16;
+    base_ = static_cast<Level>(static_cast<float>(sum) / static_cast<float>(n) * 65536.0f);
+    const Level extreme = static_cast<Level>(polarity_ > 0 ? learn_max_ : learn_min_) << 16;
     amp_ = polarity_ > 0 ? extreme - base_ : base_ - extreme;
     width_ = 0;
     set_levels();
@@ -498,7 +511,7 @@ class BasicPeriodEstimator {
       ++shift;
     }
     base_shift_ = shift < 2 ? 2 : shift;
-    base_round_ = static_cast<int32_t>(1) << (base_shift_ - 1);
+    base_round_ = static_cast<Level>(1) << (base_shift_ - 1);
     phase_ = kArming;
     last_activity_us_ = t;
     stall_us_ = kLearnStallUs;
@@ -506,7 +519,7 @@ class BasicPeriodEstimator {
   }
 
   void set_levels() {
-    const int32_t minimum = static_cast<int32_t>(config_.min_amplitude) << 15;  // half the minimum
+    const Level minimum = static_cast<Level>(config_.min_amplitude) << 15;  // half the minimum
     if (amp_ < minimum) amp_ = minimum;
     hi_ = amp_ >> 1;
     lo_ = amp_ >> 2;
@@ -520,7 +533,7 @@ class BasicPeriodEstimator {
 
   // --- step 2: pulses ------------------------------------------------------------------------
 
-  void start_pulse(uint32_t t, int32_t sd) {
+  void start_pulse(uint32_t t, Level sd) {
     rise_ = crossing(prev_t_, t, signed_dev(prev_x_), sd, hi_);
     fall_ = rise_;
     peak_ = sd;
@@ -528,10 +541,10 @@ class BasicPeriodEstimator {
     last_activity_us_ = t;
   }
 
-  uint8_t pulse_sample(uint32_t t, int32_t sd) {
+  uint8_t pulse_sample(uint32_t t, Level sd) {
     if (sd > peak_) peak_ = sd;
     if (sd >= hi_) return kNoEvent;
-    const int32_t prev_sd = signed_dev(prev_x_);
+    const Level prev_sd = signed_dev(prev_x_);
     if (prev_sd >= hi_) fall_ = crossing(prev_t_, t, prev_sd, sd, hi_);
     if (sd >= lo_) return kNoEvent;
     // The pulse is over.
@@ -539,11 +552,11 @@ class BasicPeriodEstimator {
     p.rise = rise_;
     p.fall = fall_;
     p.time = midpoint(rise_, fall_);
-    const int32_t peak_counts = peak_ >> 16;
+    const Level peak_counts = peak_ >> 16;
     p.peak = static_cast<uint16_t>(peak_counts > 0xFFFF ? 0xFFFF : peak_counts);
     // The peak within 0.6875 = 1/2 + 1/8 + 1/16 and 1.4375 = 1 + 1/4 + 1/8 + 1/16 of the running
     // height, the width within 5/16 = 31 % of the running width.
-    const int32_t sixteenth = amp_ >> 4;
+    const Level sixteenth = amp_ >> 4;
     p.distorted = peak_ < hi_ + 3 * sixteenth || peak_ > amp_ + 7 * sixteenth;
     const int32_t width = static_cast<int32_t>(fall_.us - rise_.us);
     if (width_ == 0) width_ = width;
@@ -767,18 +780,18 @@ class BasicPeriodEstimator {
 
   Config config_;
 
-  // Signal model (values in counts << 16).
+  // Signal model (values in counts << 16: Level).
   uint8_t phase_;
   int8_t polarity_;
   uint8_t base_shift_;
-  int32_t base_round_;
+  Level base_round_;
   uint16_t prev_x_;
   uint32_t prev_t_;
-  int32_t base_;
-  int32_t amp_;
-  int32_t hi_;
-  int32_t lo_;
-  int32_t peak_;
+  Level base_;
+  Level amp_;
+  Level hi_;
+  Level lo_;
+  Level peak_;
   int32_t width_;  // running pulse width [us] (0: none yet)
   Instant rise_;
   Instant fall_;

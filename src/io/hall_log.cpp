@@ -65,21 +65,23 @@ void stamp_rig_clock(HallLog& log) {
   }
 }
 
-}  // namespace
-
-std::string decode_log_text(std::string_view bytes, std::string* encoding) {
+// The text as UTF-8 without a byte-order mark: a view into `bytes` for UTF-8 (no copy of a large
+// log), else into `storage`, which holds the text decoded from UTF-16.
+std::string_view decoded_text(std::string_view bytes, std::string* encoding, std::string* storage) {
   const auto starts = [&](std::string_view mark) { return bytes.substr(0, mark.size()) == mark; };
   if (starts("\xEF\xBB\xBF")) {
     *encoding = "utf-8 with BOM";
-    return std::string(bytes.substr(3));
+    return bytes.substr(3);
   }
   if (starts("\xFF\xFE")) {
     *encoding = "utf-16le";
-    return from_utf16(bytes.substr(2), true);
+    *storage = from_utf16(bytes.substr(2), true);
+    return *storage;
   }
   if (starts("\xFE\xFF")) {
     *encoding = "utf-16be";
-    return from_utf16(bytes.substr(2), false);
+    *storage = from_utf16(bytes.substr(2), false);
+    return *storage;
   }
   // UTF-16 without a byte-order mark (a Windows tool's "Unicode" text): the ASCII of a log puts a
   // zero in every other byte, the high one (the second in little-endian order).
@@ -93,15 +95,24 @@ std::string decode_log_text(std::string_view bytes, std::string* encoding) {
     }
     if (10 * zero_high >= 9 * pairs) {
       *encoding = "utf-16le (no BOM)";
-      return from_utf16(bytes, true);
+      *storage = from_utf16(bytes, true);
+      return *storage;
     }
     if (10 * zero_low >= 9 * pairs) {
       *encoding = "utf-16be (no BOM)";
-      return from_utf16(bytes, false);
+      *storage = from_utf16(bytes, false);
+      return *storage;
     }
   }
   *encoding = "utf-8";
-  return std::string(bytes);
+  return bytes;
+}
+
+}  // namespace
+
+std::string decode_log_text(std::string_view bytes, std::string* encoding) {
+  std::string storage;
+  return std::string(decoded_text(bytes, encoding, &storage));
 }
 
 HallLog parse_hall_log(std::string_view bytes, const std::string& name,
@@ -109,30 +120,46 @@ HallLog parse_hall_log(std::string_view bytes, const std::string& name,
   HallLog log;
   log.path = name;
   log.file = name;
-  const std::string text = decode_log_text(bytes, &log.encoding);
+  std::string decoded;
+  const std::string_view text = decoded_text(bytes, &log.encoding, &decoded);
   HallLogReader reader(name, options);
   // Lines end in "\n" (or "\r\n"); a text without any "\n" may end its lines in "\r" alone.
-  const char end_of_line = text.find('\n') == std::string::npos ? '\r' : '\n';
-  std::vector<LogSample> samples;
+  const char end_of_line = text.find('\n') == std::string_view::npos ? '\r' : '\n';
+  // The samples straight into the log, each with its run (a restarted board starts another).
+  std::vector<int> segment_of;
+  std::vector<LogSample> ready;
+  const auto keep = [&] {
+    reader.take(ready);
+    for (const LogSample& s : ready) {
+      log.t_s.push_back(s.t_s);
+      log.adc.push_back(s.adc);
+      log.line.push_back(s.line);
+      segment_of.push_back(s.segment);
+    }
+    ready.clear();
+  };
   int number = 0;
   std::size_t pos = 0;
   while (pos < text.size()) {
     std::size_t end = text.find(end_of_line, pos);
-    const bool unfinished = end == std::string::npos;
+    const bool unfinished = end == std::string_view::npos;
     if (unfinished) end = text.size();
-    reader.add_line(std::string_view(text).substr(pos, end - pos), ++number, unfinished);
+    ++number;
+    // A line no log has (a file without line ends), refused as reading a file refuses it.
+    const std::string_view line = text.substr(pos, end - pos);
+    if (line.size() > kMostLogLineBytes + 1)  // + 1: a "\r" before the "\n"
+      throw line_too_long(name, number, "the log", kMostLogLineBytes);
+    reader.add_line(line, number, unfinished);
     pos = end + 1;
-    std::vector<LogSample> more = reader.take();
-    samples.insert(samples.end(), more.begin(), more.end());
+    keep();
   }
   reader.finish();
-  std::vector<LogSample> more = reader.take();
-  samples.insert(samples.end(), more.begin(), more.end());
+  keep();
   log.reading = reader.reading();
 
   // Several runs (the board restarted): the longest is used.
   std::map<int, int> per_segment;
-  for (const LogSample& s : samples) ++per_segment[s.segment];
+  for (const int segment : segment_of) ++per_segment[segment];
   int longest = 0;
   int most = -1;
   for (const auto& [segment, count] : per_segment) {
@@ -142,14 +169,22 @@ HallLog parse_hall_log(std::string_view bytes, const std::string& name,
     }
   }
   log.segment = longest;
-  for (const LogSample& s : samples) {
-    if (s.segment != longest) {
-      ++log.segment_samples_left_out;
-      continue;
+  if (per_segment.size() > 1) {
+    // The others' samples left out, the longest run's kept in order.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < segment_of.size(); ++i) {
+      if (segment_of[i] != longest) {
+        ++log.segment_samples_left_out;
+        continue;
+      }
+      log.t_s[kept] = log.t_s[i];
+      log.adc[kept] = log.adc[i];
+      log.line[kept] = log.line[i];
+      ++kept;
     }
-    log.t_s.push_back(s.t_s);
-    log.adc.push_back(s.adc);
-    log.line.push_back(s.line);
+    log.t_s.resize(kept);
+    log.adc.resize(kept);
+    log.line.resize(kept);
   }
   if (log.t_s.empty())
     throw InputError(SourceLocation{name, log.reading.first_line, 0},
@@ -201,11 +236,17 @@ HallLog hall_log_from_samples(std::vector<double> t_s, const std::vector<double>
   return log;
 }
 
-LogText read_log_text(const std::string& path) {
-  if (path == "-") return {read_text_stream(std::cin, "<stdin>", "the log"), "<stdin>"};
+std::string log_file_of(const std::string& path) {
   std::error_code ec;
-  const std::string file = std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
-  return {read_text_file(file, "the log"), file};
+  return path != "-" && std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
+}
+
+LogText read_log_text(const std::string& path) {
+  if (path == "-")
+    return {read_text_stream(std::cin, "<stdin>", "the log", kMostTextFileBytes, kMostLogLineBytes),
+            "<stdin>"};
+  const std::string file = log_file_of(path);
+  return {read_text_file(file, "the log", kMostTextFileBytes, kMostLogLineBytes), file};
 }
 
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {

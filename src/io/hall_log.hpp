@@ -7,6 +7,7 @@
 // spreadsheet's "Unicode text"), and its lines may end in "\n", "\r\n" or "\r".
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -15,6 +16,11 @@
 #include "io/hall_log_reader.hpp"
 
 namespace fl {
+
+// The longest line a log may have [bytes]: its lines are a few dozen (a time and a value; a header
+// of many columns, a Serial Plotter line of many labels: a few hundred). A longer one (a file
+// without line ends, one number of megabytes) is refused as soon as it is read.
+inline constexpr std::size_t kMostLogLineBytes = 8192;
 
 struct HallLog {
   std::string path;                  // as given ("<stdin>" for standard input)
@@ -42,6 +48,10 @@ struct LogText {
   std::string file;
 };
 LogText read_log_text(const std::string& path);
+
+// The file read for `path`: a folder's log (its hall.csv, or its only log), else the path itself
+// ("-" as it is). Throws InputError, as reading does, for a folder without exactly one log.
+std::string log_file_of(const std::string& path);
 
 // The same from text in memory; `name` stands for the file in messages.
 HallLog parse_hall_log(std::string_view text, const std::string& name,

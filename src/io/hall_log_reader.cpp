@@ -380,39 +380,29 @@ void HallLogReader::data_line(std::string_view text, std::size_t offset, int num
                               bool unfinished) {
   const std::vector<LogField> fields = split_fields(text, delimiter_, offset);
   const bool timed_by_rate = options_.rate_hz > 0.0;
-  Problem problem;
+  // What is wrong with the line, if anything; its message is written for the first one only (a
+  // log of garbage has millions).
+  enum class Fault { kNone, kFields, kValueNotNumber, kValueRange, kTimeNotNumber };
+  Fault fault = Fault::kNone;
   double t = 0.0;
   double value = 0.0;
   int time_column = 0;
   if (fields.size() < layout_.fields) {
-    problem = {
-        number, 0,
-        "expected at least " + std::to_string(layout_.fields) + " fields (the " +
-            (layout_.time ? "time in field " + std::to_string(*layout_.time + 1) + " and the "
-                          : std::string()) +
-            "ADC value in field " + std::to_string(layout_.value + 1) + "), found " +
-            std::to_string(fields.size()) + ": " + quoted_for_message(trim(text))};
+    fault = Fault::kFields;
   } else {
     const LogField& vf = fields[layout_.value];
     if (!parse_log_number(vf.text, delimiter_, &value, &reading_.decimal_comma)) {
-      problem = {number, vf.column,
-                 "column " + quoted_for_message(layout_.value_name) +
-                     ": expected a number, found " + quoted_for_message(vf.text)};
+      fault = Fault::kValueNotNumber;
     } else if (value < 0.0 || value > 65535.0) {
-      problem = {number, vf.column,
-                 "column " + quoted_for_message(layout_.value_name) +
-                     ": expected an ADC value from 0 to 65535 counts, found " +
-                     shown_number(value)};
+      fault = Fault::kValueRange;
     } else if (layout_.time && !timed_by_rate) {
       const LogField& tf = fields[*layout_.time];
       time_column = tf.column;
       if (!parse_log_number(tf.text, delimiter_, &t, &reading_.decimal_comma))
-        problem = {number, tf.column,
-                   "column " + quoted_for_message(layout_.time_name) +
-                       ": expected a number, found " + quoted_for_message(tf.text)};
+        fault = Fault::kTimeNotNumber;
     }
   }
-  if (problem.line != 0) {
+  if (fault != Fault::kNone) {
     // A capture stopped in the middle of a line: its unfinished last line is left out.
     if (unfinished) {
       reading_.unfinished_last_line = true;
@@ -420,7 +410,40 @@ void HallLogReader::data_line(std::string_view text, std::size_t offset, int num
     }
     ++reading_.data_lines;
     reading_.corrupted.add(number);
-    if (first_corrupted_.line == 0) first_corrupted_ = problem;
+    if (first_corrupted_.line == 0) {
+      const LogField* vf = fields.size() > layout_.value ? &fields[layout_.value] : nullptr;
+      switch (fault) {
+        case Fault::kFields:
+          first_corrupted_ = {
+              number, 0,
+              "expected at least " + std::to_string(layout_.fields) + " fields (the " +
+                  (layout_.time ? "time in field " + std::to_string(*layout_.time + 1) + " and the "
+                                : std::string()) +
+                  "ADC value in field " + std::to_string(layout_.value + 1) + "), found " +
+                  std::to_string(fields.size()) + ": " + quoted_for_message(trim(text))};
+          break;
+        case Fault::kValueNotNumber:
+          first_corrupted_ = {number, vf->column,
+                              "column " + quoted_for_message(layout_.value_name) +
+                                  ": expected a number, found " + quoted_for_message(vf->text)};
+          break;
+        case Fault::kValueRange:
+          first_corrupted_ = {number, vf->column,
+                              "column " + quoted_for_message(layout_.value_name) +
+                                  ": expected an ADC value from 0 to 65535 counts, found " +
+                                  shown_number(value)};
+          break;
+        case Fault::kTimeNotNumber: {
+          const LogField& tf = fields[*layout_.time];
+          first_corrupted_ = {number, tf.column,
+                              "column " + quoted_for_message(layout_.time_name) +
+                                  ": expected a number, found " + quoted_for_message(tf.text)};
+          break;
+        }
+        case Fault::kNone:
+          break;
+      }
+    }
     if (timed_by_rate) ++rate_index_;  // the sample was taken, its line garbled
     return;
   }
@@ -448,6 +471,7 @@ void HallLogReader::timed(double reading, std::uint16_t adc, int line, int colum
   Raw s{reading + offset, reading, wrap_offset_, adc, line, column};
   if (!pending_) {
     pending_ = s;
+    lines_at_time_ = 1;
     if (offset != wrap_offset_) ++reading_.clock_wraps;
     wrap_offset_ = offset;
     return;
@@ -456,9 +480,11 @@ void HallLogReader::timed(double reading, std::uint16_t adc, int line, int colum
   if (s.t > pending_->t) {
     confirm(*pending_);
     pending_ = s;
+    lines_at_time_ = 1;
     if (offset != wrap_offset_) ++reading_.clock_wraps;
     wrap_offset_ = offset;
   } else if (s.t == pending_->t) {
+    ++lines_at_time_;
     reading_.repeated_times.add(line);
     if (first_repeated_.line == 0)
       first_repeated_ = {line, column,
@@ -503,6 +529,11 @@ void HallLogReader::confirm(const Raw& sample) {
 }
 
 void HallLogReader::emit(double t, std::uint16_t adc, int line) {
+  // The time the samples span, run by run (a restarted board's clock starts again).
+  if (emitted_ > 0 && last_segment_ == segment_) span_s_ += t - last_t_s_;
+  ++emitted_;
+  last_t_s_ = t;
+  last_segment_ = segment_;
   out_.push_back({t, adc, line, segment_});
 }
 
@@ -645,10 +676,12 @@ void HallLogReader::check_shares() const {
     const Problem& p = first_repeated_;
     // The rate the log's own clock gives: its lines over its span.
     std::vector<ReadingTry> tries;
-    std::string example = "2kHz";
-    if (out_.size() >= 2 && out_.back().t_s > out_.front().t_s) {
-      // To three significant digits: 2000Hz, 1990Hz.
-      const double hz = static_cast<double>(lines) / (out_.back().t_s - out_.front().t_s);
+    std::string example = "1kHz";
+    if (emitted_ >= 2 && span_s_ > 0.0 && lines > lines_at_time_) {
+      // The log's lines over the time its samples span, from the first time to the last (the
+      // lines at the last time come after it): the rate that gives the log's own clock's
+      // period. To three significant digits: 500Hz, 2000Hz.
+      const double hz = static_cast<double>(lines - lines_at_time_) / span_s_;
       const double digit = std::pow(10.0, std::floor(std::log10(hz)) - 2.0);
       const double rounded = std::round(hz / digit) * digit;
       std::ostringstream rate;
@@ -678,6 +711,11 @@ void HallLogReader::check_shares() const {
 
 std::vector<LogSample> HallLogReader::take() {
   return std::exchange(out_, {});
+}
+
+void HallLogReader::take(std::vector<LogSample>& into) {
+  into.insert(into.end(), out_.begin(), out_.end());
+  out_.clear();
 }
 
 }  // namespace fl

@@ -85,6 +85,8 @@ class HallLogReader {
   // Samples completed since the last call, in time order (a sample is held back until the next
   // one confirms its time, and while the time's unit is still being inferred).
   std::vector<LogSample> take();
+  // The same appended to `into` (a caller reading many lines keeps one buffer).
+  void take(std::vector<LogSample>& into);
 
   const HallLogReading& reading() const { return reading_; }
   const std::string& name() const { return name_; }
@@ -172,6 +174,12 @@ class HallLogReader {
   std::vector<Raw> held_;
 
   std::vector<LogSample> out_;
+  // The samples given so far and the time they span [s], for the rate the log's clock gives.
+  long long emitted_ = 0;
+  double span_s_ = 0.0;
+  int lines_at_time_ = 1;  // lines whose time is the last one read (it and its repeats)
+  double last_t_s_ = 0.0;
+  int last_segment_ = 0;
   int segment_ = 0;
   int segment_samples_ = 0;
 };

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
 
 namespace fl {
@@ -41,7 +42,10 @@ std::string without_location(std::string_view diagnostic) {
   return std::string(at == std::string_view::npos ? diagnostic : diagnostic.substr(at + 7));
 }
 
+// A file name that is not UTF-8 is shown escaped ("bad\xff.csv"): the message goes to JSON and
+// to Python, which take UTF-8 only.
 InputError::InputError(SourceLocation where, std::string_view what)
-    : std::runtime_error(format_diagnostic(where, what)), where_(std::move(where)) {}
+    : std::runtime_error(escape_invalid_utf8(format_diagnostic(where, what))),
+      where_(std::move(where)) {}
 
 }  // namespace fl

@@ -29,6 +29,7 @@ struct SourceLocation {
   static SourceLocation of_field(std::string path, std::string value);
 };
 
+// what() is the located message, its bytes that are not UTF-8 (a file's name) written as \xNN.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, std::string_view what);

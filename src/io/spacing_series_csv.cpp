@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/plausible_range.hpp"
 #include "core/text.hpp"
 #include "core/units.hpp"
 #include "io/csv_table.hpp"
@@ -145,6 +146,12 @@ std::vector<std::optional<SeriesColumn>> read_header(const std::vector<CsvCell>&
   return order;
 }
 
+bool plain_number(std::string_view text) {
+  double ignored = 0.0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), ignored);
+  return ec == std::errc{} && ptr == text.data() + text.size();
+}
+
 double read_value(const CsvCell& field, const ColumnInfo& c, const SourceLocation& where) {
   if (field.text.empty())
     throw InputError(where, fmt::format("{}: expected {} (e.g. \"{}\"), found an empty cell; fill "
@@ -173,6 +180,19 @@ double read_value(const CsvCell& field, const ColumnInfo& c, const SourceLocatio
                           "outweigh every other row)"
                     : error_column ? "give the uncertainty as a positive length"
                                    : "check the row's value and unit"));
+  // Beyond any bench (core/plausible_range.hpp): a slip of the unit, refused where it stands.
+  const PlausibleRange* range = c.column == SeriesColumn::kSpacing  ? &kSpacingRange
+                                : c.column == SeriesColumn::kPeriod ? &kPeriodRange
+                                                                    : nullptr;
+  if (range != nullptr) {
+    if (const std::optional<std::string> why = implausible(value, *range)) {
+      const std::string advice =
+          plain_number(field.text) ? plain_number_advice(value, field.text, *range) : "";
+      throw InputError(where,
+                       fmt::format("{}: {}{}", c.name, *why,
+                                   advice.empty() ? "; check the row's value and unit" : advice));
+    }
+  }
   return value;
 }
 
@@ -181,12 +201,6 @@ std::string warning_at(const SourceLocation& where, std::string_view what) {
   std::string out = format_diagnostic(where, what);
   out.replace(out.find("error: "), 7, "warning: ");
   return out;
-}
-
-bool plain_number(std::string_view text) {
-  double ignored = 0.0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), ignored);
-  return ec == std::errc{} && ptr == text.data() + text.size();
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // to be a character.
 #include <gtest/gtest.h>
 
+#include <string>
 #include <string_view>
 
 #include "core/utf8.hpp"
@@ -36,6 +37,20 @@ TEST(Utf8, WhatIsNotACharacterIsNothing) {
   EXPECT_FALSE(utf8_character_at("\xed\xa0\x80", 0));      // a surrogate, U+D800
   EXPECT_FALSE(utf8_character_at("\xf4\x90\x80\x80", 0));  // beyond U+10FFFF
   EXPECT_FALSE(utf8_character_at("\xff", 0));
+}
+
+// A file name that is not UTF-8, for a message or a JSON string: each byte that is not part of a
+// character as \xNN, every character kept.
+TEST(Utf8, BytesThatAreNoCharacterAreEscaped) {
+  EXPECT_EQ(escape_invalid_utf8("bad\xff.csv"), "bad\\xff.csv");
+  EXPECT_EQ(escape_invalid_utf8("a\xc2\xb1 \xe2\x82\x96"), "a\xc2\xb1 \xe2\x82\x96");  // kept
+  EXPECT_EQ(escape_invalid_utf8("\xe2\x82"), "\\xe2\\x82");                            // cut short
+  EXPECT_EQ(escape_invalid_utf8("\xc0\xaf/"), "\\xc0\\xaf/");                          // overlong
+  EXPECT_EQ(escape_invalid_utf8("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a surrogate
+  EXPECT_EQ(escape_invalid_utf8(""), "");
+  const std::string once = escape_invalid_utf8("x\x80y\xfe");
+  EXPECT_EQ(once, "x\\x80y\\xfe");
+  EXPECT_EQ(escape_invalid_utf8(once), once);  // the escaped text is UTF-8
 }
 
 }  // namespace

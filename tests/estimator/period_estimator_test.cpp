@@ -154,6 +154,35 @@ INSTANTIATE_TEST_SUITE_P(PeriodsAndGeometries, CleanSignal,
 // Longer periods: the estimator learns the signal only if it crosses the middle of its range
 // within 4.5 s (kLearnStallUs). At 1 kHz a one-pulse signal of 5 s still gives T; from 5.5 s
 // (the gap between pulses past 4.5 s) it gives no period at all, never a wrong one.
+// A 16-bit ADC's values (a log from another board, 0 to 65535): levels of counts << 16 and their
+// distances need 33 bits, and the host computes them in 64. The same signal scaled by 64 from a
+// 10-bit baseline of 512 (rising to about 45 600, and from 40 000 to about 52 900) gives the
+// period, each turning point within a sample interval of the 10-bit one's.
+TEST(PeriodEstimator, AdcValuesOfSixteenBitsGiveThePeriod) {
+  HallSignal s;
+  s.period_s = 0.79;
+  s.duration_s = 20.0;
+  const test::HallSamples ten_bit = test::generate(s);
+  const Outcome reference = estimate(ten_bit);
+  for (const double offset : {0.0, 40000.0 - 64.0 * 512.0}) {
+    test::HallSamples wide = ten_bit;
+    uint16_t highest = 0;
+    for (uint16_t& v : wide.adc) {
+      v = static_cast<uint16_t>(std::lround(std::min(65535.0, offset + 64.0 * v)));
+      highest = std::max(highest, v);
+    }
+    ASSERT_GT(highest, 45000) << offset;
+    const Outcome r = estimate(wide);
+    EXPECT_EQ(r.geometry, fl_estimator::kOnePulse) << offset;
+    EXPECT_LE(relative_error(r, s), 5e-4) << "T = " << r.period_s << ", offset " << offset;
+    EXPECT_EQ(r.stats.periods_used, reference.stats.periods_used) << offset;
+    EXPECT_EQ(r.stats.periods_discarded, 0u) << offset;
+    ASSERT_EQ(r.pulses.size(), reference.pulses.size()) << offset;
+    for (std::size_t i = 0; i < r.pulses.size(); ++i)
+      EXPECT_NEAR(seconds(r.pulses[i].time), seconds(reference.pulses[i].time), 1e-3) << i;
+  }
+}
+
 TEST(PeriodEstimator, PeriodsPastTheLearningWindowGiveNoPeriodNotAWrongOne) {
   for (const double period : {5.0, 5.5, 8.0}) {
     HallSignal s;

@@ -50,12 +50,28 @@ TEST(SpacingSeriesCsv, ColumnsInAnyOrderWithUnits) {
 }
 
 TEST(SpacingSeriesCsv, APlainSpacingOfMetresIsReadAsSIAndSaidAloud) {
-  const SpacingSeries s = parse("spacing,period,period_err\n89,0.79,0.01\n0.1,0.8,0.01\n");
-  EXPECT_DOUBLE_EQ(s.rows[0].measurement.spacing, 89.0);
+  const SpacingSeries s = parse("spacing,period,period_err\n2,2.8,0.01\n0.1,0.8,0.01\n");
+  EXPECT_DOUBLE_EQ(s.rows[0].measurement.spacing, 2.0);
   ASSERT_EQ(s.warnings.size(), 1u);
   EXPECT_EQ(s.warnings[0],
-            "s.csv:2:1: warning: spacing: 89 read as 89 m (a plain number is SI); write 89 mm for "
+            "s.csv:2:1: warning: spacing: 2 read as 2 m (a plain number is SI); write 2 mm for "
             "millimetres");
+}
+
+// Beyond any bench (core/plausible_range.hpp): a plain number of millimetres read as metres, a
+// period of milliseconds read as seconds, refused at the cell with the unit that was meant.
+TEST(SpacingSeriesCsv, AValueBeyondAnyRigIsRefusedAtItsCell) {
+  EXPECT_EQ(refusal("spacing,period,period_err\n89,0.79,0.01\n0.1,0.8,0.01\n"),
+            "s.csv:2:1: error: spacing: expected the roller spacing l from 1 to 2000 mm (the "
+            "paper's rig: 89 mm), found 89000 mm: a plain number is SI, so 89 was read as 89 m; "
+            "write 89mm for millimetres");
+  EXPECT_EQ(refusal("spacing,period,period_err\n60 mm,648,5 ms\n70 mm,0.7 s,5 ms\n"),
+            "s.csv:2:7: error: period: expected the period T from 0.0044857 to 63.4374 s (the "
+            "paper's rig: 0.3 to 1 s), found 648 s: a plain number is SI, so 648 was read as 648 "
+            "s; write 648ms for milliseconds");
+  EXPECT_EQ(refusal("spacing,period,period_err\n60 mm,1 h,5 ms\n70 mm,0.7 s,5 ms\n"),
+            "s.csv:2:7: error: period: expected the period T from 0.0044857 to 63.4374 s (the "
+            "paper's rig: 0.3 to 1 s), found 3600 s; check the row's value and unit");
 }
 
 TEST(SpacingSeriesCsv, RefusalsNameTheCellAndWhatToDo) {

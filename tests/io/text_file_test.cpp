@@ -83,6 +83,37 @@ TEST(TextFile, AFileLargerThanTheMostIsRefusedSayingHowLargeItMayBe) {
   EXPECT_EQ(read_text_stream(small, "<stdin>", "the log"), "t_us,adc\n0,512\n");
 }
 
+// A line longer than the most a line may have (a file without line ends, a number of megabytes)
+// is refused located at its line, counted by "\n", or by "\r" in a text without one.
+TEST(TextFile, ALineLongerThanTheMostIsRefusedAtItsLine) {
+  const fs::path dir = folder();
+  const auto error_with_bound = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name, std::ios::binary) << text;
+    try {
+      read_text_file((dir / name).string(), "the log", std::size_t{1} << 20, 100);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  const std::string long_line(101, '7');
+  const std::string path = (dir / "a.csv").string();
+  EXPECT_EQ(
+      error_with_bound("a.csv", "t,adc\r\n1,2\r\n" + long_line + "\r\n")
+          .rfind(path + ":3: error: line 3 of the log runs past 100 bytes without a line end", 0),
+      0u);
+  EXPECT_NE(error_with_bound("b.csv", "t,adc\r1,2\r" + long_line)
+                .find("b.csv:3: error: line 3 of the log"),
+            std::string::npos);
+  EXPECT_EQ(error_with_bound("c.csv", "t,adc\n" + std::string(100, '7') + "\n"), "");
+  // Without a bound, any line is read.
+  std::ofstream(dir / "d.csv", std::ios::binary) << long_line;
+  EXPECT_EQ(read_text_file((dir / "d.csv").string()), long_line);
+  std::istringstream stream("t,adc\n" + long_line);
+  EXPECT_THROW(read_text_stream(stream, "<stdin>", "the log", std::size_t{1} << 20, 100),
+               InputError);
+}
+
 TEST(TextFile, APipeIsReadLikeAFile) {
   const fs::path dir = folder();
   const std::string fifo = (dir / "log.fifo").string();

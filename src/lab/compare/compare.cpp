@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "core/plausible_range.hpp"
+#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -258,6 +260,17 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     row.spacing_err = m.spacing_err;
     row.duration = std::max(result.duration, options.min_periods * m.period.value);
     RowScene row_setup = build_row_scene(simulator, m, row.duration);
+    // The period at the row's own rig: mu_k from it within a rig's range, before any run.
+    const double mu_k_thin =
+        mu_k_from_period_thin(m.period.value, row_setup.scene.rollers.spacing, row_setup.gravity);
+    if (const std::optional<std::string> why = implausible(mu_k_thin, kMuKRange))
+      throw InputError(m.period_cell,
+                       fmt::format("row \"{}\": T = {:g} s at l = {:g} mm and g = {:g} m/s^2 "
+                                   "gives a mu_k no rig has, so it is no rig's period at this "
+                                   "spacing: {}; check the period and its unit, and the row's "
+                                   "spacing",
+                                   m.label, m.period.value, row_setup.scene.rollers.spacing * 1e3,
+                                   row_setup.gravity, *why));
     row.material = row_setup.scene.plate.material;
     row.temperature = row_setup.scene.friction.temperature;
     row.mu_k_simulated = row_setup.scene.friction.mu_k;
@@ -307,7 +320,7 @@ nlohmann::json compare_json(const CompareResult& r) {
                       {"regime", name_or_empty(run.regime)}});
     nlohmann::json keys = nlohmann::json::object();
     for (const SceneOverride& k : row.keys) keys[k.path] = k.value;
-    rows.push_back({{"label", row.label},
+    rows.push_back({{"label", escape_invalid_utf8(row.label)},
                     {"keys", keys},
                     {"material", row.material},
                     {"temperature_k", row.temperature},
@@ -348,8 +361,8 @@ nlohmann::json compare_json(const CompareResult& r) {
                     {"refit_note", row.refit_note},
                     {"runs", runs}});
   }
-  return nlohmann::json{{"scene", r.scene},
-                        {"measurements", r.measurements},
+  return nlohmann::json{{"scene", escape_invalid_utf8(r.scene)},
+                        {"measurements", escape_invalid_utf8(r.measurements)},
                         {"spacing_m", r.spacing},
                         {"spacing_err_m", json_or_null(r.spacing_err)},
                         {"h_c_m", r.h_c},

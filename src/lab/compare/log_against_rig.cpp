@@ -9,6 +9,7 @@
 
 #include "core/oscillation_tracker.hpp"
 #include "core/sample_summary.hpp"
+#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
@@ -245,8 +246,8 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
 
 nlohmann::json log_against_rig_json(const LogAgainstRig& r) {
   const CompareRow& row = r.fit.rows.front();
-  return {{"log", r.log},
-          {"scene", r.fit.scene},
+  return {{"log", escape_invalid_utf8(r.log)},
+          {"scene", escape_invalid_utf8(r.fit.scene)},
           {"spacing_m", row.spacing},
           {"spacing_err_m", json_or_null(row.spacing_err)},
           {"h_c_m", row.h_c},

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/plausible_range.hpp"
 #include "io/csv_table.hpp"
 #include "io/estimate_table_columns.hpp"
 #include "io/field_ref.hpp"
@@ -116,6 +117,13 @@ MeasuredRows parse_measured_rows(std::string_view text, const std::string& file)
     row.period = measured_cell(t, Dimension::kTime, "period");
     if (!(row.period.value > 0.0) || !std::isfinite(row.period.value))
       throw InputError(t.where, "period: expected a positive time, found \"" + t.text + "\"");
+    // Beyond any bench (core/plausible_range.hpp): refused here, before any simulation of it.
+    if (const std::optional<std::string> why = implausible(row.period.value, kPeriodRange)) {
+      const std::string advice = plain_number_advice(row.period.value, t.text, kPeriodRange);
+      throw InputError(t.where, "period: " + *why +
+                                    (advice.empty() ? "; check the value and its unit" : advice));
+    }
+    row.period_cell = t.where;
     if (period_err >= 0 && !cells[period_err].text.empty()) {
       if (t.text.find("+-") != std::string::npos || t.text.find("\xC2\xB1") != std::string::npos)
         throw InputError(cells[period_err].where,
@@ -134,6 +142,8 @@ MeasuredRows parse_measured_rows(std::string_view text, const std::string& file)
       if (!(m.value > 0.0) || !std::isfinite(m.value))
         throw InputError(cells[mu_k].where,
                          "mu_k: expected a positive number, found \"" + cells[mu_k].text + "\"");
+      if (const std::optional<std::string> why = implausible(m.value, kMuKRange))
+        throw InputError(cells[mu_k].where, "mu_k: " + *why + "; check the value");
       if (mu_k_err >= 0 && !cells[mu_k_err].text.empty()) {
         const Measured err =
             uncertainty_cell(cells[mu_k_err], Dimension::kDimensionless, "mu_k_err");

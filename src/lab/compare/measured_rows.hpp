@@ -26,6 +26,7 @@ struct MeasuredRow {
   std::optional<Measured> mu_k;           // the mu_k the measurement reports
   std::optional<double> spacing_err;      // dl [m]
   SourceLocation where;                   // the row's line
+  SourceLocation period_cell;             // where its period is written
 };
 
 // A row left out: `frictionlab estimate`'s table has a status column, and a log that gave no

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/json_value.hpp"
 
@@ -63,16 +64,17 @@ nlohmann::json spacing_fit_json(const SpacingFitReport& r) {
   for (std::size_t i = 0; i < r.series.rows.size(); ++i) {
     const SpacingSeriesRow& in = r.series.rows[i];
     const FitRow& out = f.rows[i];
-    nlohmann::json row{{"line", in.line},
-                       {"label", r.series.has_label ? nlohmann::json(in.label) : nullptr},
-                       {"spacing_m", in.measurement.spacing},
-                       {"spacing_err_m", json_or_null(in.measurement.spacing_err)},
-                       {"period_s", in.measurement.period},
-                       {"period_err_s", in.measurement.period_err},
-                       {"period_squared_err_s2", out.period_squared_err},
-                       {"period_fit_s", json_or_null(out.period_fit)},
-                       {"residual_sigma", out.residual_sigma},
-                       {"mu_k_thin", out.mu_k_thin}};
+    nlohmann::json row{
+        {"line", in.line},
+        {"label", r.series.has_label ? nlohmann::json(escape_invalid_utf8(in.label)) : nullptr},
+        {"spacing_m", in.measurement.spacing},
+        {"spacing_err_m", json_or_null(in.measurement.spacing_err)},
+        {"period_s", in.measurement.period},
+        {"period_err_s", in.measurement.period_err},
+        {"period_squared_err_s2", out.period_squared_err},
+        {"period_fit_s", json_or_null(out.period_fit)},
+        {"residual_sigma", out.residual_sigma},
+        {"mu_k_thin", out.mu_k_thin}};
     if (r.rig) {
       const FitThroughRigRow& rig = r.rig->rows[i];
       row["period_simulated_s"] = rig.period_simulated;
@@ -84,7 +86,7 @@ nlohmann::json spacing_fit_json(const SpacingFitReport& r) {
     }
     rows.push_back(std::move(row));
   }
-  return {{"file", r.series.file},
+  return {{"file", escape_invalid_utf8(r.series.file)},
           {"gravity_m_s2", r.gravity},
           {"rows_count", r.series.rows.size()},
           {"spacing_errors", r.series.has_spacing_err},

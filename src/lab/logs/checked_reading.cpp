@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -13,18 +14,34 @@
 namespace fl {
 namespace {
 
-// What one way of reading gives, or nothing when it gives no rig's estimate.
+// The first `most` bytes of a log's text, cut after a line's end (a UTF-16 one's two bytes), or
+// the whole text when it is no longer.
+std::string_view first_lines(std::string_view bytes, std::size_t most) {
+  if (bytes.size() <= most) return bytes;
+  std::size_t end = bytes.rfind('\n', most - 1);
+  if (end == std::string_view::npos) return bytes.substr(0, most);
+  ++end;
+  if (end < bytes.size() && bytes[end] == '\0' && end % 2 == 1) ++end;  // UTF-16LE's "\n\0"
+  return bytes.substr(0, end);
+}
+
+// What one way of reading gives, or nothing when it gives no rig's estimate. A long log is tried
+// on its first kTriedBytes, so that a dozen ways cost a few reads of that, not of the whole.
 std::optional<std::string> outcome_of(const LogText& text, const ReadingTry& reading,
                                       const LogSetUp& set_up) {
   try {
-    const HallLog log = parse_hall_log(text.bytes, text.file, reading.options);
+    const std::string_view tried = first_lines(text.bytes, kTriedBytes);
+    const HallLog log = parse_hall_log(tried, text.file, reading.options);
     const LogEstimate est = estimate_log(log, set_up, false);
     require_periods(log, est, "");
     require_plausible(log, est, "");
     const fl_estimator::Stats& s = est.stats;
-    return fmt::format("with {}: T = {:.4f} s, mu_k {:.3f} from {} period{}{}", reading.words,
+    return fmt::format("with {}: T = {:.4f} s, mu_k {:.3f} from {} period{}{}{}", reading.words,
                        static_cast<double>(s.period_s), static_cast<double>(s.mu_k), s.periods_used,
                        s.periods_used == 1 ? "" : "s",
+                       tried.size() < text.bytes.size()
+                           ? fmt::format(" in its first {} MiB", kTriedBytes >> 20)
+                           : std::string(),
                        reading.caveat.empty() ? "" : " (" + reading.caveat + ")");
   } catch (const InputError&) {
     return std::nullopt;

@@ -1,12 +1,13 @@
 #include "lab/logs/log_estimate.hpp"
 
-#include "core/plausible_range.hpp"
-
 #include <algorithm>
+#include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
 
+#include "core/plausible_range.hpp"
+#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
@@ -44,6 +45,14 @@ nlohmann::json verdict_json(const LogEstimate& estimate) {
           {"mu_k", static_cast<double>(s.mu_k)},
           {"mu_k_err_worst", static_cast<double>(s.mu_k_err_worst)},
           {"mu_k_err_quadrature", static_cast<double>(s.mu_k_err_quadrature)}};
+}
+
+// Enough accepted periods, no more discarded, scattering as a rig's do (require_periods' checks).
+bool periods_of_a_rig(const fl_estimator::Stats& s) {
+  return s.periods_used >= static_cast<std::uint32_t>(kLeastPeriods) &&
+         s.periods_discarded <= s.periods_used &&
+         static_cast<double>(s.period_std_s) <=
+             kMostPeriodScatter * static_cast<double>(s.period_s);
 }
 
 }  // namespace
@@ -132,7 +141,7 @@ std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
     const HallLog read_so = hall_log_from_samples(
         std::move(t_s), std::vector<double>(log.adc.begin(), log.adc.end()), log.path);
     const fl_estimator::Stats s = estimate_log(read_so, est.set_up, false).stats;
-    if (s.periods_used == 0 || implausible(s.period_s, kPeriodRange) ||
+    if (!periods_of_a_rig(s) || implausible(s.period_s, kPeriodRange) ||
         implausible(s.mu_k, kMuKRange))
       continue;
     return fmt::format(
@@ -235,28 +244,61 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                     "(alternating short and long, the short under 0.6 of the long); {}{}",
                     est.pulses.size(), intervals, advice, note));
   }
-  if (s.periods_used < 2)
+  // Periods that are a rig's oscillation: most of them kept, enough of them, and scattering as a
+  // rig's do (docs/estimator.md, "Periods that are no rig's").
+  const std::string counts = fmt::format(
+      "{} pulses gave {} period{}, {} accepted and {} discarded", s.pulses, est.periods.size(),
+      est.periods.size() == 1 ? "" : "s", s.periods_used, s.periods_discarded);
+  const std::string look =
+      field_ref("plot", "FILE.png") + " shows the pulses and why each period was discarded";
+  if (s.periods_discarded > s.periods_used)
     throw InputError(
         at_pulse,
-        fmt::format("{} pulses and {} periods, of which {} accepted and {} discarded: T +- dT "
-                    "needs at least two accepted periods{}",
-                    s.pulses, est.periods.size(), s.periods_used, s.periods_discarded, note));
+        fmt::format("{}: more discarded than accepted, so the pulses keep no steady period (a "
+                    "rig's estimator discards a period only at a missing, spurious or bent pulse, "
+                    "and accepts one within {:.0f} % of the running median, which intervals at "
+                    "random also fall within now and then); no T is computed{}: is the log "
+                    "the Hall sensor's, of a plate that oscillates? A plate that jumps more often "
+                    "than not needs a steadier rig; {}{}",
+                    counts, 100.0 * static_cast<double>(est.set_up.config().tolerance),
+                    s.periods_used == 0 ? std::string()
+                                        : fmt::format(" from the {} accepted", s.periods_used),
+                    look, note));
+  if (s.periods_used < static_cast<std::uint32_t>(kLeastPeriods))
+    throw InputError(at_pulse,
+                     fmt::format("{}: T +- dT needs at least {} accepted periods (the paper "
+                                 "averaged 10 to 100); record a longer log{}",
+                                 counts, kLeastPeriods, note));
+  const double scatter = static_cast<double>(s.period_std_s) / static_cast<double>(s.period_s);
+  if (scatter > kMostPeriodScatter)
+    throw InputError(
+        at_pulse,
+        fmt::format(
+            "{}: the accepted periods scatter by dT/T = {:.1f} % (dT = {:.4f} s about T "
+            "= {:.4f} s), beyond the {:.0f} % of any rig (the paper's periods: 0.5 to 8 %): "
+            "periods spread over the whole of the estimator's +-{:.0f} % window are no "
+            "oscillation's; is the log the Hall sensor's? {}{}",
+            counts, 100.0 * scatter, static_cast<double>(s.period_std_s),
+            static_cast<double>(s.period_s), 100.0 * kMostPeriodScatter,
+            100.0 * static_cast<double>(est.set_up.config().tolerance), look, note));
 }
 
 nlohmann::json log_reading_json(const HallLog& log) {
   const HallLogReading& r = log.reading;
   const auto lines = [](const LineTally& t) { return nlohmann::json(t.first); };
+  // The header's names as written, bytes that are not UTF-8 escaped (a Latin-1 "µs"): JSON's
+  // strings are UTF-8.
   const auto text_or_null = [](const std::string& s) {
-    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(s);
+    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(escape_invalid_utf8(s));
   };
   return {
-      {"log", log.path},
-      {"file", log.file},
+      {"log", escape_invalid_utf8(log.path)},
+      {"file", escape_invalid_utf8(log.file)},
       {"format", r.format},
       {"encoding", log.encoding},
       {"columns_from", r.columns_from},
       {"time_column", text_or_null(r.time_column)},
-      {"adc_column", r.adc_column},
+      {"adc_column", escape_invalid_utf8(r.adc_column)},
       {"time_unit", text_or_null(r.time_unit)},
       {"time_unit_from", r.time_unit_from},
       {"rate_hz", r.rate_hz > 0.0 ? nlohmann::json(r.rate_hz) : nlohmann::json(nullptr)},
@@ -335,7 +377,7 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
     baseline.push_back(json_or_null(static_cast<double>(est.baseline_trace[i])));
     level.push_back(json_or_null(static_cast<double>(est.level_trace[i])));
   }
-  data["log"] = log.path;
+  data["log"] = escape_invalid_utf8(log.path);
   data["t_s"] = std::move(t);
   data["adc"] = std::move(adc);
   data["baseline"] = std::move(baseline);

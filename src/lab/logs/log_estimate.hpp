@@ -50,10 +50,19 @@ struct LogEstimate {
 // Runs the estimator over the log; `traces` keeps the per-sample levels for a plot.
 LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces);
 
+// What a log's periods must show to be a rig's oscillation (docs/estimator.md, "Periods that are
+// no rig's"): at least kLeastPeriods accepted, no more discarded than accepted, and a scatter
+// dT/T of at most kMostPeriodScatter. The paper averaged 10 to 100 periods and its dT/T is 0.5
+// to 8 % (Table I); the estimator accepts a period within 20 % of the running median, and periods
+// spread evenly over that window scatter by 0.2 / sqrt(3) = 11.5 %.
+inline constexpr int kLeastPeriods = 5;
+inline constexpr double kMostPeriodScatter = 0.10;
+
 // Throws InputError, located at the log's line, saying what was found when the log gives no
 // T +- dT (no pulse and why, one pulse, too few to recognise the geometry, intervals that fit
-// neither geometry, fewer than two accepted periods): never a made-up period. `note` ends the
-// message (e.g. where a plot shows the signal).
+// neither geometry) or periods that are no rig's (fewer than kLeastPeriods accepted, more
+// discarded than accepted, a scatter beyond kMostPeriodScatter): never a made-up period. `note`
+// ends the message (e.g. where a plot shows the signal).
 void require_periods(const HallLog& log, const LogEstimate& estimate, const std::string& note);
 
 // Throws InputError when the estimate's T or mu_k is beyond any bench (core/plausible_range.hpp):

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -14,8 +15,9 @@
 namespace fl {
 namespace {
 
+// A text for JSON: a file name that is not UTF-8 escaped (core/utf8.hpp).
 nlohmann::json text_or_null(const std::string& text) {
-  return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(text);
+  return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(escape_invalid_utf8(text));
 }
 
 std::string number(const std::optional<double>& v) {
@@ -50,7 +52,8 @@ void apply_log_sidecar(const LogSidecar& side, LogSetUp& set_up) {
 LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& defaults) {
   LogTableRow row;
   row.log = log;
-  row.label = log == "-" ? "<stdin>" : std::filesystem::path(log).filename().string();
+  row.label =
+      log == "-" ? "<stdin>" : escape_invalid_utf8(std::filesystem::path(log).filename().string());
   row.set_up = defaults.set_up;
   row.material = defaults.material;
   row.temperature = defaults.temperature;
@@ -92,14 +95,16 @@ std::string log_table_csv(const std::vector<LogTableRow>& rows) {
       "period_err,period_std,periods_used,periods_discarded,mu_k,mu_k_err_worst,"
       "mu_k_err_quadrature,error\n";
   for (const LogTableRow& r : rows) {
-    csv += fmt::format(
-        "{},{},{},{} m,{} m,{},{},{},{},{},{},{},{},{},{},{}\n", csv_cell(r.label), csv_cell(r.log),
-        r.status, r.set_up.spacing, r.set_up.spacing_err, csv_cell(r.material.value_or("")),
-        r.temperature ? fmt::format("{} K", *r.temperature) : std::string(), number(r.period),
-        number(r.period_err), number(r.period_std),
-        r.periods_used ? std::to_string(*r.periods_used) : std::string(),
-        r.periods_discarded ? std::to_string(*r.periods_discarded) : std::string(), number(r.mu_k),
-        number(r.mu_k_err_worst), number(r.mu_k_err_quadrature), csv_cell(r.error));
+    csv += fmt::format("{},{},{},{} m,{} m,{},{},{},{},{},{},{},{},{},{},{}\n",
+                       csv_cell(escape_invalid_utf8(r.label)), csv_cell(escape_invalid_utf8(r.log)),
+                       r.status, r.set_up.spacing, r.set_up.spacing_err,
+                       csv_cell(r.material.value_or("")),
+                       r.temperature ? fmt::format("{} K", *r.temperature) : std::string(),
+                       number(r.period), number(r.period_err), number(r.period_std),
+                       r.periods_used ? std::to_string(*r.periods_used) : std::string(),
+                       r.periods_discarded ? std::to_string(*r.periods_discarded) : std::string(),
+                       number(r.mu_k), number(r.mu_k_err_worst), number(r.mu_k_err_quadrature),
+                       csv_cell(escape_invalid_utf8(r.error)));
   }
   return csv;
 }
@@ -110,8 +115,8 @@ nlohmann::json log_table_json(const std::vector<LogTableRow>& rows) {
     const auto maybe_int = [](const std::optional<int>& v) {
       return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
     };
-    out.push_back({{"label", r.label},
-                   {"log", r.log},
+    out.push_back({{"label", escape_invalid_utf8(r.label)},
+                   {"log", escape_invalid_utf8(r.log)},
                    {"sidecar", text_or_null(r.sidecar)},
                    {"status", r.status},
                    {"error", text_or_null(r.error)},

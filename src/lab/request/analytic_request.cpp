@@ -1,9 +1,11 @@
 #include "lab/request/analytic_request.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
+#include "core/analytic_model.hpp"
 #include "core/paper_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -31,6 +33,11 @@ AnalyticSetUp set_up_of(const AnalyticRequest& r, FieldChecks& checks) {
   checks.plausible(s.gravity, kGravityRange, "gravity", r.gravity);
   checks.plausible(s.roller_radius, kRollerRadiusRange, "roller_radius", r.roller_radius);
   checks.plausible(s.roller_speed, kRollerSpeedRange, "roller_speed", r.roller_speed);
+  checks.plausible(s.amplitude, kAmplitudeRange, "amplitude", r.amplitude);
+  if (!checks.has("amplitude") && !(std::isfinite(s.amplitude) && s.amplitude >= 0.0))
+    checks.problem("amplitude", quantity_input_text(r.amplitude),
+                   "expected the plate's amplitude as a length of 0 or more, found " +
+                       quantity_input_text(r.amplitude));
   if (const std::optional<FrictionLawKind> law = friction_law_kind_from_name(r.law))
     s.law = *law;
   else
@@ -96,6 +103,25 @@ AnalyticResult analyze(const AnalyticRequest& r) {
   const std::optional<double> period = checks.quantity(r.period, Dimension::kTime, "period");
   checks.plausible(mu_k, kMuKRange, "mu_k", r.mu_k);
   checks.plausible(period, kPeriodRange, "period", r.period);
+  // mu_k from the period, at the request's l, h_c and g: within a rig's too (a period of a rig
+  // at another spacing or g is none at these).
+  if (period && !checks.has("period") && !checks.has("spacing") && !checks.has("gravity") &&
+      !checks.has("h_c") && *period > 0.0) {
+    const double thin = mu_k_from_period_thin(*period, set_up.spacing, set_up.gravity);
+    const double thick =
+        mu_k_from_period_thick(*period, set_up.spacing, set_up.h_c, set_up.gravity);
+    for (const double derived : {thin, thick}) {
+      const std::optional<std::string> why = implausible(derived, kMuKRange);
+      if (!why) continue;
+      checks.problem(
+          "period", quantity_input_text(*r.period),
+          fmt::format("T = {:g} s at l = {:g} mm, h_c = {:g} mm and g = {:g} m/s^2 "
+                      "gives a mu_k no rig has, so it is no rig's period at this "
+                      "spacing: {}; check the period and its unit, and the spacing",
+                      *period, set_up.spacing * 1e3, set_up.h_c * 1e3, set_up.gravity, *why));
+      break;
+    }
+  }
   const double period_err =
       checks.quantity(r.period_err.value_or(std::string("0 s")), Dimension::kTime, "period_err");
   const double temperature = checks.quantity(r.temperature.value_or(std::string("300 K")),

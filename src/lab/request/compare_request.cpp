@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/paper_table.hpp"
+#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/hall_log.hpp"
@@ -125,6 +126,14 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
     options.overrides.push_back({"world.duration", quantity_input_text(*r.duration)});
     options.min_periods = 0;
   }
+  // Its files may replace none it reads.
+  refuse_overwriting_inputs(
+      r.out,
+      with_log ? std::vector<std::string>{"compare-log.json", "compare-log-traces.json",
+                                          "compare-log.png"}
+               : std::vector<std::string>{"compare.csv", "compare.json", "compare.png"},
+      "out",
+      {{r.measured, "the measurements"}, {r.log, "the log"}, {options.scene_file, "the scene"}});
   prepare_output_folder(r.out, "out");
   options.workers = r.jobs;
   options.refit = r.refit;
@@ -166,7 +175,9 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   // Rows of a table of logs whose log gave no period: left out, and said.
   nlohmann::json skipped = nlohmann::json::array();
   for (const SkippedRow& row : measured.skipped)
-    skipped.push_back({{"label", row.label}, {"line", row.where.line}, {"reason", row.reason}});
+    skipped.push_back({{"label", escape_invalid_utf8(row.label)},
+                       {"line", row.where.line},
+                       {"reason", escape_invalid_utf8(row.reason)}});
   result.json["skipped"] = skipped;
   const std::string csv = r.out + "/compare.csv";
   const std::string json = r.out + "/compare.json";

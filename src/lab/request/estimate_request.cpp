@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -104,6 +105,9 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     if (r.temperature)
       p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
     checks.throw_if_any();
+    std::vector<InputFile> inputs;
+    for (const std::string& log : p.logs) inputs.push_back({log, "a log"});
+    refuse_overwriting_inputs(r.out, {"estimates.csv", "estimates.json"}, "out", inputs);
     if (!r.out.empty()) prepare_output_folder(r.out, "out");
     p.out = r.out;
     p.warnings = checks.warnings();
@@ -138,6 +142,8 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     p.follow_raw_log = r.follow_raw_log;
     p.follow_duration = checks.quantity(r.follow_duration, Dimension::kTime, "follow.duration");
     checks.throw_if_any();
+    refuse_overwriting_inputs(r.plot, "plot",
+                              {{r.follow_raw_log, "the log of the lines received"}});
     if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
     if (!r.follow_raw_log.empty()) prepare_output_file(r.follow_raw_log, "follow.raw_log");
     p.plot = r.plot;
@@ -175,6 +181,19 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
     p.h_c_err = checks.not_negative(*r.h_c_err, Dimension::kLength, "h_c_err", "an uncertainty");
   checks.throw_if_any();
   // The plots' places are checked before any work; a plot that fails still leaves the results.
+  // Neither may replace the log (or a folder's log) nor the other plot.
+  std::vector<InputFile> inputs;
+  if (!r.logs.empty()) {
+    inputs.push_back({r.logs.front(), "the log"});
+    try {
+      if (r.logs.front() != "-") inputs.push_back({log_file_of(r.logs.front()), "the log"});
+    } catch (const InputError&) {
+      // A folder without one log: reading it says so.
+    }
+  }
+  refuse_overwriting_inputs(r.plot, "plot", inputs);
+  inputs.push_back({r.plot, "the plot of the signal"});
+  refuse_overwriting_inputs(r.mc_plot, "mc_plot", inputs);
   if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
   if (!r.mc_plot.empty()) prepare_output_file(r.mc_plot, "mc_plot");
   if (r.mc)
@@ -190,7 +209,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
 
 nlohmann::json OneLogEstimate::json() const {
   nlohmann::json j = log_estimate_json(log, estimate);
-  j["plot"] = plot.empty() ? nlohmann::json(nullptr) : nlohmann::json(plot);
+  j["plot"] = plot.empty() ? nlohmann::json(nullptr) : nlohmann::json(escape_invalid_utf8(plot));
   j["monte_carlo"] =
       monte_carlo ? monte_carlo_json(*monte_carlo->monte_carlo) : nlohmann::json(nullptr);
   j["paper"] = paper ? paper_comparison_json(*paper) : nlohmann::json(nullptr);

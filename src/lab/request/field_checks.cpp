@@ -98,6 +98,10 @@ void FieldChecks::plausible(double value, const PlausibleRange& range, std::stri
         warnings_.erase(warnings_.begin() + static_cast<std::ptrdiff_t>(i));
         warning_fields_.erase(warning_fields_.begin() + static_cast<std::ptrdiff_t>(i));
       }
+  } else if (text != nullptr && plain_number(*text) &&
+             !plain_number_advice(value, *text, range).empty()) {
+    // A period in milliseconds written as a plain number, which is seconds.
+    message += plain_number_advice(value, *text, range);
   } else {
     message += "; check the value and its unit";
   }

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "core/plausible_range.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -40,6 +41,13 @@ void require_physical(const SpacingFitReport& r) {
                     "mu_k fits these rows; check that the spacing and period columns hold what "
                     "their names say, in the units written",
                     f.slope, f.slope_err));
+  // Rows each within a rig's range can still lie on a line no rig gives.
+  if (const std::optional<std::string> why = implausible(*f.mu_k, kMuKRange))
+    throw InputError(SourceLocation{s.file, 0, 0},
+                     fmt::format("the fitted line's slope {:.4g} s^2/m gives a mu_k no rig has: "
+                                 "{}; check that the spacing and period columns hold what their "
+                                 "names say, in the units written",
+                                 f.slope, *why));
   for (std::size_t i = 0; i < f.rows.size(); ++i) {
     if (f.rows[i].period_fit) continue;
     throw InputError(
@@ -88,7 +96,12 @@ FitResult fit_series(const FitRequest& r) {
   const PaperTable& paper = paper_table_in(asset_dir(r.assets));
   const MaterialChoice material = read_material_fields(checks, paper, r.material, r.temperature);
   checks.throw_if_any();
-  // Output places are checked before any work; a plot that fails still leaves the results.
+  // Output places are checked before any work; a plot that fails still leaves the results. None
+  // may replace the series (nor the scene it is fitted through).
+  const std::vector<InputFile> inputs = {{r.series, "the series"},
+                                         {r.through_rig ? r.scene.file : "", "the scene"}};
+  refuse_overwriting_inputs(png, "plot", inputs);
+  refuse_overwriting_inputs(r.out, {"fit.csv", "fit.json"}, "out", inputs);
   if (!r.out.empty()) prepare_output_folder(r.out, "out");
   if (!png.empty()) prepare_output_file(png, "plot");
 

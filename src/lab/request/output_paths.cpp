@@ -36,7 +36,49 @@ std::string cannot_write_into(const fs::path& folder) {
   return "";
 }
 
+// Whether `a` and `b` are the one file: the same file on disk (links, other spellings), or the
+// same path once made canonical (a file not written yet).
+bool same_file(const fs::path& a, const fs::path& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec)) return true;
+  std::error_code ec_a;
+  std::error_code ec_b;
+  const fs::path canonical_a = fs::weakly_canonical(a, ec_a);
+  const fs::path canonical_b = fs::weakly_canonical(b, ec_b);
+  return !ec_a && !ec_b && canonical_a == canonical_b;
+}
+
+// The input `output` would overwrite, if any.
+const InputFile* overwritten(const fs::path& output, const std::vector<InputFile>& inputs) {
+  for (const InputFile& in : inputs)
+    if (!in.path.empty() && in.path != "-" && same_file(output, in.path)) return &in;
+  return nullptr;
+}
+
 }  // namespace
+
+void refuse_overwriting_inputs(const std::string& output, const std::string& field,
+                               const std::vector<InputFile>& inputs) {
+  if (output.empty()) return;
+  if (const InputFile* in = overwritten(output, inputs))
+    throw InputError(SourceLocation::of_field(field, output),
+                     "expected a file to write, found " + output + ", which is " + in->what +
+                         " this command reads (" + in->path +
+                         "): writing it would replace it; name another file");
+}
+
+void refuse_overwriting_inputs(const std::string& folder, const std::vector<std::string>& names,
+                               const std::string& field, const std::vector<InputFile>& inputs) {
+  if (folder.empty()) return;
+  for (const std::string& name : names) {
+    const fs::path output = fs::path(folder) / name;
+    if (const InputFile* in = overwritten(output, inputs))
+      throw InputError(SourceLocation::of_field(field, folder),
+                       "expected a folder whose files leave this command's inputs alone, found " +
+                           folder + ", where " + name + " would replace " + in->what + " (" +
+                           in->path + "); give another folder");
+  }
+}
 
 void prepare_output_folder(const std::string& folder, const std::string& field) {
   std::error_code ec;

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/analytic_model.hpp"
+#include "core/integrator_error.hpp"
 #include "io/field_ref.hpp"
 #include "lab/request/lab_data.hpp"
 #include "lab/request/output_paths.hpp"
@@ -112,7 +113,16 @@ PreparedRun prepare_run(const RunRequest& r) {
   const std::vector<SceneOverride> length = run_length_overrides(r.duration, r.seed, checks);
   overrides.insert(overrides.end(), length.begin(), length.end());
   std::optional<double> target;
-  if (r.accuracy) target = checks.quantity(*r.accuracy, Dimension::kDimensionless, "accuracy");
+  if (r.accuracy) {
+    target = checks.quantity(*r.accuracy, Dimension::kDimensionless, "accuracy");
+    // What the accuracy rule can honour (core/integrator_error.hpp), as a sweep's accuracy.
+    if (!checks.has("accuracy") && !(*target > 0.0 && *target <= kLoosestPeriodAccuracy))
+      checks.problem("accuracy", quantity_input_text(*r.accuracy),
+                     fmt::format("expected a period accuracy above 0 and at most {:g} % (e.g. "
+                                 "0.01%), found {}: a looser one would size a step of a quarter "
+                                 "of the period or more, which resolves no oscillation",
+                                 100.0 * kLoosestPeriodAccuracy, quantity_input_text(*r.accuracy)));
+  }
   checks.throw_if_any();
   // The captions file, then the scene: a mistake in either is located in its file.
   if (!r.captions.empty()) frames.captions = load_captions_file(r.captions);
@@ -158,6 +168,15 @@ PreparedRun prepare_run(const RunRequest& r) {
                    "no periods to plot; drop " +
                        field_ref("plot"));
   checks.throw_if_any();
+  // Outputs that would replace the scene or the captions read are refused before any is made.
+  const std::vector<InputFile> inputs = {{r.scene.file, "the scene"},
+                                         {r.captions, "the captions file"}};
+  refuse_overwriting_inputs(r.out,
+                            {"summary.json", "timing.json", "trajectory.csv", "hall.csv",
+                             "periods.csv", "cycles.csv", "jumps.csv", "periods.png"},
+                            "out", inputs);
+  refuse_overwriting_inputs(r.video, "video", inputs);
+  refuse_overwriting_inputs(r.still, "still", inputs);
   if (!r.out.empty()) prepare_output_folder(r.out, "out");
   if (!r.video.empty()) prepare_output_file(r.video, "video");
   if (!r.still.empty()) prepare_output_file(r.still, "still");

@@ -95,6 +95,8 @@ AccuracyResult study_accuracy(const AccuracyRequest& r) {
   SceneSource source = r.scene;
   source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
   const LoadedScene scene = load_scene_source(std::move(source));
+  refuse_overwriting_inputs(r.out, {"accuracy.csv", "accuracy.json", "accuracy.png"}, "out",
+                            {{r.scene.file, "the scene"}});
   prepare_output_folder(r.out, "out");
 
   AccuracyResult result;

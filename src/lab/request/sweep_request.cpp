@@ -48,6 +48,9 @@ PreparedSweep prepare_sweep(const SweepRequest& r) {
     set_sweep_accuracy(p.spec, *accuracy,
                        SourceLocation::of_field("accuracy", quantity_input_text(*r.accuracy)));
   p.options.out_dir = r.out.empty() ? "out/sweep/" + p.spec.name : r.out;
+  refuse_overwriting_inputs(p.options.out_dir,
+                            {"plan.json", "results.csv", "sweep.json", "timing.json"}, "out",
+                            {{r.file, "the sweep file"}});
   prepare_output_folder(p.options.out_dir, "out");
   p.options.workers = r.jobs.value_or(0);
   p.options.shard = shard;

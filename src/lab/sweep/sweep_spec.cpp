@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/integrator_error.hpp"
 #include "core/text.hpp"
 #include "core/units.hpp"
 #include "io/text_file.hpp"
@@ -304,7 +305,7 @@ bool is_key_path_problem(const InputError& e, const std::string& path) {
 
 // Why a sweep cannot take this accuracy, or empty when it can.
 std::string accuracy_problem(const SweepSpec& spec, double accuracy) {
-  if (!(accuracy > 0.0) || accuracy > 0.1)
+  if (!(accuracy > 0.0) || accuracy > kLoosestPeriodAccuracy)
     return fmt::format("expected a period accuracy above 0 and at most 10 % (e.g. 0.01%), found {}",
                        format_number(accuracy));
   const std::string step = "world.time_step";

@@ -120,7 +120,9 @@ TEST(RunRequest, TheAccuracyPicksAStepOfTheFormOneOverN) {
 }
 
 TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {
+  // A rig without a sensor: the trajectory's period alone, whose step only the accuracy sizes.
   RunRequest r = minimal_request();
+  r.scene.file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/mu-1.yaml";
   r.accuracy = QuantityInput{1e-17};
   try {
     prepare_run(r);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "io/field_ref.hpp"
@@ -117,6 +118,31 @@ TEST(RunRequest, TheAccuracyPicksAStepOfTheFormOneOverN) {
   ASSERT_TRUE(prepared.chosen_bias.has_value());
   EXPECT_LE(std::fabs(*prepared.chosen_bias), 1e-4);
   EXPECT_DOUBLE_EQ(prepared.rig->world.duration, 1.0);
+}
+
+// A run whose files the disk cannot hold is refused before it starts, saying how much they need:
+// 27 hours of 0.1 ms steps make up to 270 GB of trajectory.csv.
+TEST(RunRequest, FilesTheDiskCannotHoldAreRefusedBeforeTheRun) {
+  RunRequest r = minimal_request();
+  r.duration = QuantityInput{"99000 s"};
+  r.set = {"world.time_step=0.1ms"};
+  r.out = (std::filesystem::temp_directory_path() / "frictionlab-request-disk").string();
+  const std::filesystem::space_info space =
+      std::filesystem::space(std::filesystem::temp_directory_path());
+  if (space.available > 272e9) GTEST_SKIP() << "this disk holds even 272 GB";
+  try {
+    prepare_run(r);
+    FAIL() << "a run of 272 GB of files was taken";
+  } catch (const RequestError& e) {
+    EXPECT_EQ(e.where().field, "out");
+    const std::string m = e.what();
+    EXPECT_NE(m.find("expected a folder with room for the run's files, up to 274 GB for 9.9e+04 "
+                     "s of steps and samples, found "),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("B free there"), std::string::npos) << m;
+  }
+  std::filesystem::remove_all(r.out);
 }
 
 TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {

@@ -272,6 +272,18 @@ def test_accuracy_picks_the_commands_step():
     assert r.time_step == expected["time_step_s"] and r.steps == expected["steps"]
 
 
+def test_an_accuracy_the_sensor_cannot_meet_is_refused_as_the_command_refuses_it():
+    # The rig's estimator cannot time 10 s of the minimal plate to 0.001 %: both front ends refuse
+    # it before the run, with the same words, each spelling the field its own way.
+    err = cli("run", SCENES / "minimal.yaml", "--accuracy", "0.001%", status=2).stderr
+    assert "the rig's estimator times each turning point" in err
+    with pytest.raises(fl.InputError) as caught:
+        fl.run(SCENES / "minimal.yaml", accuracy="0.001%", record=False)
+    said = str(caught.value)
+    assert said.startswith("accuracy='0.001%': error: the rig's estimator times each turning point")
+    assert "ask for a duration of at least 79 s" in said and "--duration of at least 79 s" in err
+
+
 def test_str_is_the_commands_summary():
     text = cli("run", SCENES / "minimal.yaml", "--duration", "3s").stdout
     r = fl.run(SCENES / "minimal.yaml", duration="3s", record=False)

@@ -6,6 +6,7 @@
 #include "cli/commands.hpp"
 #include "cli/plot_failure.hpp"
 #include "cli/scene_options.hpp"
+#include "cli/stop_signals.hpp"
 #include "lab/request/study_requests.hpp"
 
 namespace fl::cli {
@@ -27,10 +28,12 @@ int run_accuracy(const AccuracyOptions& o, const GlobalOptions& global) {
   request.periods = o.periods;
   request.out = o.out;
   request.plot = o.plot;
-  const AccuracyResult result = study_accuracy(request);
+  const StopSignals signals;
+  const AccuracyResult result = study_accuracy(request, JobControl{&stop_requested(), {}});
   const AccuracyStudy& study = result.study;
   if (o.json) {
     fmt::print("{}\n", result.json().dump(2));
+    if (study.interrupted) return stop_exit_status();
     return plot_failure_status(result.plot_failure);
   }
   fmt::print("frictionlab accuracy: {} (thick-plate T = {:.6f} s, {} periods per point)\n",
@@ -51,6 +54,13 @@ int run_accuracy(const AccuracyOptions& o, const GlobalOptions& global) {
   std::string written;
   for (const std::string& w : result.written) written += (written.empty() ? "" : ", ") + w;
   fmt::print("  written: {}\n", written);
+  if (study.interrupted) {
+    fmt::print(stderr,
+               "frictionlab accuracy: interrupted after {} points; kept: those points above and "
+               "in {}\n",
+               study.points.size(), written);
+    return stop_exit_status();
+  }
   return plot_failure_status(result.plot_failure);
 }
 

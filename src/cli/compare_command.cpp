@@ -20,6 +20,7 @@
 #include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
 #include "cli/scene_options.hpp"
+#include "cli/stop_signals.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
@@ -185,15 +186,24 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   request.material = o.material;
   if (o.temperature) request.temperature = *o.temperature;
   const bool tty = isatty(2) == 1;
-  const CompareRequestResult result =
-      compare_measurements(request, [tty](std::size_t done, std::size_t total) {
+  const StopSignals signals;
+  const CompareRequestResult result = compare_measurements(
+      request,
+      [tty](std::size_t done, std::size_t total) {
         if (tty) {
           fmt::print(stderr, "\r\033[Kcompare: {}/{} rows", done, total);
           if (done == total) fmt::print(stderr, "\n");
         }
-      });
+      },
+      JobControl{&stop_requested(), {}});
   std::string written;
   for (const std::string& w : result.written) written += (written.empty() ? "" : ", ") + w;
+  if (result.log && result.log->interrupted) {
+    fmt::print(stderr,
+               "frictionlab compare: interrupted before the log's comparison was done; "
+               "nothing written\n");
+    return stop_exit_status();
+  }
   if (result.log) {
     if (o.json)
       fmt::print("{}\n", result.json.dump(2));
@@ -203,7 +213,7 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   }
   const CompareResult& table = *result.table;
   const int without = result.rows_without_result();
-  if (without > 0)
+  if (without > 0 && !result.interrupted)
     fmt::print(stderr, "error: {} of {} rows gave no {} (their rows say why)\n", without,
                table.rows.size(), request.refit ? "refitted mu_k" : "simulated period");
   if (o.json) {
@@ -219,7 +229,13 @@ int run_compare_command(const CompareCommandOptions& o, const GlobalOptions& glo
   }
   if (!result.plot_failure.empty())
     fmt::print(stderr, "error: no plot: {}; the results above are complete\n", result.plot_failure);
-  return exit_status(result.outcome());
+  if (result.interrupted)
+    fmt::print(stderr,
+               "frictionlab compare: interrupted; kept: the {} rows done above and in {} ({} "
+               "marked interrupted)\n",
+               table.rows.size() - static_cast<std::size_t>(table.rows_interrupted()), written,
+               table.rows_interrupted());
+  return exit_status(result.outcome(), stop_signal());
 }
 
 }  // namespace

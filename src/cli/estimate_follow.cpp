@@ -11,6 +11,7 @@
 #include "cli/estimate_report.hpp"
 #include "cli/stop_signals.hpp"
 #include "io/appending_file.hpp"
+#include "io/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
 #include "lab/logs/geometry_check.hpp"
@@ -149,6 +150,15 @@ int follow_rig(const FollowRequest& request) {
       take();
     }
     pending.erase(0, done);
+    // A line that never ends (a wrong baud rate gives bytes without newlines) is read as it
+    // stands once it passes a log line's limit: the reader leaves it out as a line that is no
+    // sample and counts it, and memory stays bounded.
+    if (pending.size() > kMostLogLineBytes) {
+      if (raw) raw->write(pending);
+      reader.add_line(pending, ++number);
+      take();
+      pending.clear();
+    }
   }
   if (!pending.empty()) {
     if (raw) raw->write(pending);

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.hpp"
+#include "cli/stop_signals.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/request/study_requests.hpp"
 
@@ -26,11 +27,12 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
   if (o.jobs != 0) request.jobs = o.jobs;
   request.out = o.out;
   request.assets = global.asset_dir;
-  const StabilityResult result = study_stability(request);
+  const StopSignals signals;
+  const StabilityResult result = study_stability(request, JobControl{&stop_requested(), {}});
   const std::vector<StabilityRow>& rows = result.rows;
   if (o.json) {
     fmt::print("{}\n", result.json().dump(2));
-    return exit_status(result.outcome());
+    return exit_status(result.outcome(), stop_signal());
   }
   fmt::print("frictionlab stability: {} cases from {}\n\n", rows.size(), result.dir);
   fmt::print(
@@ -55,7 +57,11 @@ int run_stability(const StabilityOptions& o, const GlobalOptions& global) {
       fmt::print("  {}: expected {} ({}), found {}: {}\n", r.name, regime_name(r.expected),
                  r.expected_reason, regime_name(r.found), r.evidence);
   }
-  return exit_status(result.outcome());
+  if (result.not_run > 0)
+    fmt::print(
+        stderr, "frictionlab stability: interrupted; kept: the {} cases above{}, {} not run\n",
+        rows.size(), result.written.empty() ? "" : " (and in " + o.out + "/)", result.not_run);
+  return exit_status(result.outcome(), stop_signal());
 }
 
 }  // namespace

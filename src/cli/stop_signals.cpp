@@ -24,8 +24,12 @@ const std::atomic<bool>& stop_requested() {
   return g_stop;
 }
 
+int stop_signal() {
+  return g_signal.load() == 0 ? SIGINT : g_signal.load();
+}
+
 int stop_exit_status() {
-  return 128 + (g_signal.load() == 0 ? SIGINT : g_signal.load());
+  return 128 + stop_signal();
 }
 
 StopSignals::StopSignals() {

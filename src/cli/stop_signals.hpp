@@ -9,6 +9,8 @@ namespace fl::cli {
 
 // Set by the first SIGINT or SIGTERM while a StopSignals lives.
 const std::atomic<bool>& stop_requested();
+// The signal that stopped the work (SIGINT when none has).
+int stop_signal();
 // The exit status for the signal that stopped the work: 130 for SIGINT, 143 for SIGTERM.
 int stop_exit_status();
 

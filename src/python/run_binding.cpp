@@ -21,6 +21,7 @@
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
 #include "python/field_spelling.hpp"
+#include "python/interrupt_watch.hpp"
 #include "python/json_values.hpp"
 #include "python/loaded_scene.hpp"
 #include "python/record_arrays.hpp"
@@ -70,37 +71,6 @@ void find_video_module() {
 
 // A frame size: "1280x720" or (1280, 720).
 using FrameSize = std::variant<std::string, std::array<int, 2>>;
-
-// Ctrl-C during a run: Python's own handler only notes the signal, and only the main thread with
-// the GIL can see it. Every 1000 steps the run takes the GIL and asks; the first time Python has
-// an exception (KeyboardInterrupt) the run is told to stop after its step, and the exception is
-// raised when the run has kept what it did.
-class InterruptWatch {
- public:
-  void check() {
-    if (interrupted_) return;
-    const py::gil_scoped_acquire gil;
-    if (PyErr_CheckSignals() != 0) {
-      error_ = std::make_unique<py::error_already_set>();
-      interrupted_ = true;
-      stop_.store(true);
-    }
-  }
-  const std::atomic<bool>* flag() const { return &stop_; }
-  // Raises what Python had (KeyboardInterrupt), if it had anything.
-  void raise() {
-    if (error_) {
-      error_->restore();
-      error_.reset();
-      throw py::error_already_set();
-    }
-  }
-
- private:
-  std::atomic<bool> stop_{false};
-  bool interrupted_ = false;
-  std::unique_ptr<py::error_already_set> error_;
-};
 
 PythonRunResult run(const SceneArgument& scene_to_run, const std::optional<Quantity>& duration,
                     std::optional<std::int64_t> seed, const std::optional<Path>& out_folder,

@@ -12,6 +12,7 @@
 #include "lab/request/study_requests.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/interrupt_watch.hpp"
 #include "python/json_values.hpp"
 #include "python/loaded_scene.hpp"
 
@@ -50,10 +51,13 @@ py::object compare(const std::optional<Path>& measured, const std::optional<Path
   r.material = material;
   r.temperature = temperature;
   CompareRequestResult result;
+  InterruptWatch watch;
   {
     const py::gil_scoped_release released;
-    result = compare_measurements(r, {});
+    result = compare_measurements(r, {}, watch.control());
   }
+  // Ctrl-C: the rows done are written; Python hears KeyboardInterrupt.
+  watch.raise();
   return python_value(result.json);
 }
 
@@ -66,10 +70,12 @@ py::object accuracy(const SceneArgument& scene, const py::object& set, int perio
   if (out) r.out = out->string();
   r.plot = plot;
   AccuracyResult result;
+  InterruptWatch watch;
   {
     const py::gil_scoped_release released;
-    result = study_accuracy(r);
+    result = study_accuracy(r, watch.control());
   }
+  watch.raise();
   return python_value(result.json());
 }
 
@@ -83,10 +89,12 @@ py::object stability(const std::optional<Path>& dir, const std::string& only,
   if (out) r.out = out->string();
   if (assets) r.assets = assets->string();
   StabilityResult result;
+  InterruptWatch watch;
   {
     const py::gil_scoped_release released;
-    result = study_stability(r);
+    result = study_stability(r, watch.control());
   }
+  watch.raise();
   return python_value(result.json());
 }
 
@@ -108,16 +116,19 @@ Returns the object `frictionlab compare --json` prints (compare.json or compare-
 written to out). A row of your own measurements that gives no result is in the rows, with its
 status and reason (the command exits 3 for it). With log=, material and temperature (or the
 log's sidecar) put the paper's value beside the refitted mu_k, as "paper". Raises InputError for
-bad input.)");
+bad input. Ctrl-C starts no more simulations: the rows done are written (the others marked
+"interrupted") and KeyboardInterrupt is raised.)");
   const AccuracyRequest a;
   m.def("accuracy", &accuracy, py::arg("scene"), py::kw_only(), py::arg("set") = py::none(),
         py::arg("periods") = a.periods, py::arg("out") = a.out, py::arg("plot") = false,
         R"(The work-precision study of a scene (period error against run time), as
-`frictionlab accuracy`; returns accuracy.json's object (written to out with accuracy.csv).)");
+`frictionlab accuracy`; returns accuracy.json's object (written to out with accuracy.csv). Ctrl-C
+keeps the points finished (written) and raises KeyboardInterrupt.)");
   m.def("stability", &stability, py::kw_only(), py::arg("dir") = py::none(), py::arg("only") = "",
         py::arg("jobs") = py::none(), py::arg("out") = py::none(), py::arg("assets") = py::none(),
         R"(The catalogue of stiff and extreme cases (scenes/extreme), each held to the regime
-theory expects, as `frictionlab stability`; returns {"cases": [...], "unexpected": N}.)");
+theory expects, as `frictionlab stability`; returns {"cases": [...], "unexpected": N}. Ctrl-C
+starts no more cases, finishes those running (written to out) and raises KeyboardInterrupt.)");
 }
 
 }  // namespace fl::python

@@ -15,6 +15,8 @@ namespace {
 
 const std::string kExe = FRICTIONLAB_EXE;
 const std::string kMinimal = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+// A rig without a sensor (mu_k = 1): the trajectory's period alone.
+const std::string kMuOne = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/mu-1.yaml";
 // Each test its own folder: ctest runs them in parallel.
 std::filesystem::path test_dir() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -59,8 +61,7 @@ TEST(CliRun, OutputsAreWrittenAndBitIdenticalAcrossRuns) {
 }
 
 TEST(CliRun, SetOverridesAndAccuracyChoosesTheStep) {
-  const auto r =
-      lab("run " + kMinimal + " --duration 4s --set friction.mu_k=1.0 --accuracy 0.001% --json");
+  const auto r = lab("run " + kMuOne + " --set friction.mu_k=1.0 --accuracy 0.001% --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_DOUBLE_EQ(j["mu_k_set"].get<double>(), 1.0);
@@ -118,7 +119,9 @@ TEST(CliRun, NonsenseIsRefusedBeforeAnyWork) {
                 "world.duration: must be at least one step of world.time_step"},
            Case{"run " + kMinimal + " --set world.time_step=0.3s",
                 "world.time_step: expected a step that resolves the oscillation"},
-           Case{"run " + kMinimal + " --accuracy 1e-20",
+           Case{"run " + kMinimal + " --accuracy 0.001%",
+                "--accuracy 0.001%: error: the rig's estimator times each turning point to"},
+           Case{"run " + kMuOne + " --accuracy 1e-20",
                 "--accuracy 1e-20: error: expected a time step the run can take"},
            Case{"run " + kMinimal + " --video " + test_dir().string(),
                 "--video " + test_dir().string() +

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -129,7 +130,9 @@ TEST(Experiment, AFastBoardClockLengthensEveryPeriodByItsError) {
 }
 
 TEST(StepChoice, TheChosenStepMeetsTheTargetAndTheNextLargerDoesNot) {
-  const Scene s = minimal_scene();
+  // The trajectory's period alone: no sensor's error to leave room for.
+  Scene s = minimal_scene();
+  s.sensor.reset();
   for (double target : {1e-3, 1e-4, 1e-5}) {
     Scene at = s;
     const StepChoice choice = step_for_accuracy(s, target);
@@ -147,6 +150,42 @@ TEST(StepChoice, TheChosenStepMeetsTheTargetAndTheNextLargerDoesNot) {
     const RunSummary r = run_experiment(at, {});
     EXPECT_LE(std::fabs(*r.period_trajectory / *r.period_thick - 1.0), target) << target;
   }
+}
+
+// A rig with a Hall sensor reports the estimator's period, which carries the sensor's timing error
+// whatever the step (sensor/hall_timing.hpp): the step's bias takes what that leaves of the
+// target, and a target the sensor alone cannot meet is refused, saying the run that would.
+TEST(StepChoice, AHallSensorsErrorTakesItsShareOfTheTarget) {
+  Scene s = minimal_scene({{"world.duration", "20 s"}});
+  const StepChoice choice = step_for_accuracy(s, 1e-4);
+  ASSERT_TRUE(choice.sensor_error.has_value());
+  EXPECT_GT(*choice.sensor_error, 0.0);
+  EXPECT_LT(*choice.sensor_error, kSensorShareOfAccuracy * 1e-4);
+  Scene at = s;
+  at.world.time_step = choice.time_step;
+  const double share = kIntegratorShareOfAccuracy * 1e-4 - *choice.sensor_error;
+  EXPECT_LE(std::fabs(predicted_integrator_bias(at)), share);
+  Scene coarser = at;
+  coarser.world.time_step = 1.0 / (1.0 / at.world.time_step - 1.0);
+  EXPECT_GT(std::fabs(predicted_integrator_bias(coarser)), share);
+  // Ten times tighter: 20 s of periods cannot time the plate that finely.
+  std::string message;
+  try {
+    step_for_accuracy(s, 1e-5);
+  } catch (const DomainError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("the rig's estimator times each turning point to +-"), std::string::npos)
+      << message;
+  std::smatch advice;
+  ASSERT_TRUE(
+      std::regex_search(message, advice, std::regex("ask for a ⟦duration⟧ of at least ([0-9]+) s")))
+      << message;
+  // The run it names meets it, and one a tenth shorter does not.
+  s.world.duration = std::stod(advice[1]);
+  EXPECT_NO_THROW(step_for_accuracy(s, 1e-5));
+  s.world.duration *= 0.9;
+  EXPECT_THROW(step_for_accuracy(s, 1e-5), DomainError);
 }
 
 // A law whose Stribeck drop is narrower than the bias's step, on rollers slow enough that the

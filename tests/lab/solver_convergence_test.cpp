@@ -23,6 +23,7 @@
 #include "lab/run/experiment.hpp"
 #include "physics/rig_world.hpp"
 #include "scene/scene_yaml.hpp"
+#include "support/close_rollers.hpp"
 
 namespace fl {
 namespace {
@@ -37,26 +38,8 @@ Scene scene_file(const std::string& name) {
       []() -> const assets::PartCatalog& { return parts; });
 }
 
-// The minimal plate on rollers 10 mm apart, released 2 mm off centre (T_thick = 0.243 s).
-Scene close_rollers() {
-  Scene s;
-  s.friction.mu_k = 0.29;
-  s.rollers.spacing = 0.010;
-  s.rollers.radius = 0.004;
-  s.plate.offset = 0.002;
-  s.world.duration = 3.0;
-  return s;
-}
-
-// The same rollers at 60 rpm: their surface (25 mm/s) is slower than the plate gets (omega A =
-// 52 mm/s), so at t = 0.020 s the plate catches roller 1's surface and moves with it for 70 ms.
-// A stuck contact's friction is static, not known before the solve: the solver starts it from
-// Bullet's own warm start and iterates to the balance, on a split as ill-conditioned as before.
-Scene stuck_on_close_rollers() {
-  Scene s = close_rollers();
-  s.rollers.speed = 60.0 * 2.0 * std::numbers::pi / 60.0;
-  return s;
-}
+using test::close_rollers;
+using test::stuck_on_close_rollers;
 
 // A plate at rest at the centre on both rollers, level: the balance needs m g / 2 on each. A
 // recorded split of m g / 2 +- d (with the velocities that split gives it through m and I) is

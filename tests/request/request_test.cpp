@@ -3,13 +3,18 @@
 // request refused by field before any work.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "io/field_ref.hpp"
+#include "lab/request/compare_request.hpp"
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/request/run_request.hpp"
+#include "lab/request/study_requests.hpp"
 
 namespace fl {
 namespace {
@@ -119,8 +124,35 @@ TEST(RunRequest, TheAccuracyPicksAStepOfTheFormOneOverN) {
   EXPECT_DOUBLE_EQ(prepared.rig->world.duration, 1.0);
 }
 
-TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {
+// A run whose files the disk cannot hold is refused before it starts, saying how much they need:
+// 27 hours of 0.1 ms steps make up to 270 GB of trajectory.csv.
+TEST(RunRequest, FilesTheDiskCannotHoldAreRefusedBeforeTheRun) {
   RunRequest r = minimal_request();
+  r.duration = QuantityInput{"99000 s"};
+  r.set = {"world.time_step=0.1ms"};
+  r.out = (std::filesystem::temp_directory_path() / "frictionlab-request-disk").string();
+  const std::filesystem::space_info space =
+      std::filesystem::space(std::filesystem::temp_directory_path());
+  if (space.available > 272e9) GTEST_SKIP() << "this disk holds even 272 GB";
+  try {
+    prepare_run(r);
+    FAIL() << "a run of 272 GB of files was taken";
+  } catch (const RequestError& e) {
+    EXPECT_EQ(e.where().field, "out");
+    const std::string m = e.what();
+    EXPECT_NE(m.find("expected a folder with room for the run's files, up to 274 GB for 9.9e+04 "
+                     "s of steps and samples, found "),
+              std::string::npos)
+        << m;
+    EXPECT_NE(m.find("B free there"), std::string::npos) << m;
+  }
+  std::filesystem::remove_all(r.out);
+}
+
+TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {
+  // A rig without a sensor: the trajectory's period alone, whose step only the accuracy sizes.
+  RunRequest r = minimal_request();
+  r.scene.file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme/mu-1.yaml";
   r.accuracy = QuantityInput{1e-17};
   try {
     prepare_run(r);
@@ -129,6 +161,77 @@ TEST(RunRequest, AStepTheRunCannotTakeIsRefusedAtTheAccuracy) {
     EXPECT_EQ(e.where().field, "accuracy");
     EXPECT_NE(std::string(e.what()).find("more than 1e9"), std::string::npos) << e.what();
   }
+}
+
+// A long job asked to stop (Ctrl-C in a front end) keeps what it finished and says so. Each stop
+// here comes at a point of the job's own progress, not of the clock.
+std::string temp_out(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("frictionlab-request-" + name + "-" + std::to_string(::getpid())))
+      .string();
+}
+
+long file_lines(const std::string& path) {
+  std::ifstream in(path);
+  long n = 0;
+  for (std::string line; std::getline(in, line);) ++n;
+  return n;
+}
+
+TEST(JobControl, ACompareAskedToStopKeepsTheRowsDone) {
+  CompareRequest r;
+  r.scene = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/paper-rig.yaml";
+  r.assets = FRICTIONLAB_TEST_ASSET_DIR;
+  r.duration = QuantityInput{"3 s"};
+  r.jobs = 1;
+  r.out = temp_out("compare");
+  std::atomic<bool> stop{false};
+  // Asked to stop once two rows are done: no row after those running then is simulated.
+  const CompareRequestResult result = compare_measurements(
+      r, [&stop](std::size_t done, std::size_t) { stop = stop || done >= 2; },
+      JobControl{&stop, {}});
+  ASSERT_TRUE(result.table.has_value());
+  const std::vector<CompareRow>& rows = result.table->rows;
+  ASSERT_EQ(rows.size(), 15u);
+  EXPECT_EQ(rows[0].status, "compared");
+  EXPECT_EQ(rows[1].status, "compared");
+  EXPECT_EQ(rows.back().status, "interrupted");
+  EXPECT_GE(result.table->rows_interrupted(), 12);
+  EXPECT_TRUE(result.interrupted);
+  EXPECT_EQ(result.outcome(), Outcome::kInterrupted);
+  EXPECT_EQ(file_lines(r.out + "/compare.csv"), 16);
+  std::filesystem::remove_all(r.out);
+}
+
+TEST(JobControl, AnAccuracyStudyAskedToStopKeepsItsFinishedPoints) {
+  AccuracyRequest r;
+  r.scene.file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
+  r.scene.asset_dir = FRICTIONLAB_TEST_ASSET_DIR;
+  r.out = temp_out("accuracy");
+  std::atomic<bool> stop{false};
+  int polls = 0;
+  // Every 1000 steps a poll: stop after 60 (the first points at 1/120 s and 1/240 s take 1 and 2).
+  const AccuracyResult result = study_accuracy(r, JobControl{&stop, [&] { stop = ++polls >= 60; }});
+  EXPECT_TRUE(result.study.interrupted);
+  EXPECT_EQ(result.outcome(), Outcome::kInterrupted);
+  ASSERT_GE(result.study.points.size(), 2u);
+  EXPECT_LT(result.study.points.size(), 28u);
+  EXPECT_DOUBLE_EQ(result.study.points[0].time_step, 1.0 / 120);
+  EXPECT_TRUE(result.study.points[0].valid);
+  EXPECT_EQ(file_lines(r.out + "/accuracy.csv"), static_cast<long>(result.study.points.size()) + 1);
+  std::filesystem::remove_all(r.out);
+}
+
+TEST(JobControl, AStabilityCatalogueAskedToStopBeforeItStartsRunsNoCase) {
+  StabilityRequest r;
+  r.dir = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/extreme";
+  r.assets = FRICTIONLAB_TEST_ASSET_DIR;
+  r.jobs = 2;
+  std::atomic<bool> stop{true};
+  const StabilityResult result = study_stability(r, JobControl{&stop, {}});
+  EXPECT_TRUE(result.rows.empty());
+  EXPECT_EQ(result.not_run, 28);
+  EXPECT_EQ(result.outcome(), Outcome::kInterrupted);
 }
 
 }  // namespace

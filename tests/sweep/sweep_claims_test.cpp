@@ -89,6 +89,24 @@ TEST(SweepClaims, AnAccuracySweepPutsEveryPointWithinItsAccuracy) {
   EXPECT_EQ(checked, 1251u);
 }
 
+// README: a sweep at 0.01 % whose periods are the rig's estimator's (the Hall sensor at the
+// board's 1 kHz, its noise and the ADC's step) keeps every one of them within 0.01 % of the
+// thick-plate curve: the step leaves room for the sensor's error (docs/physics.md).
+TEST(SweepClaims, AHallSweepAtAnAccuracyKeepsEveryEstimatorsPeriodWithinIt) {
+  const SweepSpec spec = load_sweep_file(kSource + "/scenes/sweeps/hall-accuracy.yaml", kInputs);
+  ASSERT_TRUE(spec.accuracy.has_value() && spec.hall);
+  const nlohmann::json rows = run_rows("hall-accuracy");
+  ASSERT_EQ(rows.size(), 153u);
+  for (const nlohmann::json& row : rows) {
+    const std::string where = row["params"].dump();
+    ASSERT_EQ(row["status"], "ok") << where << row["error"];
+    ASSERT_EQ(row["regime"], "oscillates") << where;
+    ASSERT_TRUE(row["period_s"].is_number()) << where;
+    const double error = row["period_s"].get<double>() / row["period_thick_s"].get<double>() - 1.0;
+    EXPECT_LT(std::fabs(error), *spec.accuracy) << where;
+  }
+}
+
 TEST(SweepClaims, RunoutSweepJumpsFromTheHopThresholdOn) {
   const nlohmann::json rows = run_rows("runout");
   ASSERT_EQ(rows.size(), 21u);

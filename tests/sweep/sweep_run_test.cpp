@@ -267,10 +267,10 @@ TEST(SweepRun, ShardsSharingOneFolderFinishIt) {
 // A sweep at a stated accuracy: each point steps at its own largest step (a whole fraction of a
 // second, its predicted bias within 90 % of the accuracy) and lands within the accuracy of the
 // thick-plate period and of the same point at the scene's 1 ms; asking for the trajectory's period
-// only leaves the estimator's columns null, and nothing else changes.
+// only leaves the estimator's columns null; with them, the estimator's period meets it too.
 TEST(SweepRun, AnAccuracySweepStepsEachPointAtItsOwnStepAndMeetsTheAccuracy) {
   const std::string axes =
-      "set:\n  world.duration: 12 s\n  plate.length: 300 mm\n  plate.offset: 10 mm\n"
+      "set:\n  world.duration: 20 s\n  plate.length: 300 mm\n  plate.offset: 10 mm\n"
       "  sensor.position: [105 mm, 0 mm, 15 mm]\n"
       "axes:\n"
       "  - material: [cardboard, rigid-foam]\n"
@@ -289,6 +289,7 @@ TEST(SweepRun, AnAccuracySweepStepsEachPointAtItsOwnStepAndMeetsTheAccuracy) {
   const nlohmann::json without = rows_of(trajectory, "trajectory");
   ASSERT_EQ(without.size(), 6u);
   std::set<double> steps;
+  int refused = 0;
   for (std::size_t i = 0; i < without.size(); ++i) {
     const nlohmann::json& row = without[i];
     const std::string where = row["params"].dump();
@@ -314,13 +315,28 @@ TEST(SweepRun, AnAccuracySweepStepsEachPointAtItsOwnStepAndMeetsTheAccuracy) {
     EXPECT_NEAR(row["mu_k_recovered_thick"].get<double>(), row["mu_k_set"].get<double>(),
                 2e-4 * row["mu_k_set"].get<double>())
         << where;
-    // With the Hall signal: the same trajectory, and the estimator's period as well.
-    EXPECT_EQ(with_hall[i]["period_trajectory_s"], row["period_trajectory_s"]) << where;
+    // With the Hall signal: a step no coarser (the sensor's error takes its share of the
+    // accuracy), and the estimator's period within the accuracy as well; or, where the sensor's
+    // error alone would take more than its share (cardboard's slow pulses at 180 mm, 12 periods),
+    // the point refused saying so.
+    if (with_hall[i]["status"] == "failed") {
+      EXPECT_NE(with_hall[i]["error"].get<std::string>().find(
+                    "the rig's estimator times each turning point"),
+                std::string::npos)
+          << where << with_hall[i]["error"];
+      ++refused;
+      continue;
+    }
+    ASSERT_EQ(with_hall[i]["status"], "ok") << where << with_hall[i]["error"];
+    EXPECT_LE(with_hall[i]["time_step_s"].get<double>(), dt) << where;
     ASSERT_TRUE(with_hall[i]["period_s"].is_number()) << where;
-    // Within the estimator's resolution: its 1 kHz samples, two per timed span of N periods.
-    const double span = with_hall[i]["periods_used"].get<double>() * t;
-    EXPECT_NEAR(with_hall[i]["period_s"].get<double>() / t, 1.0, 2e-3 / span) << where;
+    EXPECT_LT(std::fabs(with_hall[i]["period_s"].get<double>() /
+                            with_hall[i]["period_thick_s"].get<double>() -
+                        1.0),
+              1e-4)
+        << where;
   }
+  EXPECT_EQ(refused, 1);
   // Each point its own step: they span the grid's frequencies.
   EXPECT_EQ(steps.size(), 6u);
 }

@@ -215,9 +215,10 @@ TEST(SweepSpec, AKeyPathTheSceneDoesNotHaveIsLocatedInTheSweepFile) {
 }
 
 TEST(SweepSpec, SweepFilesInTheRepositoryLoad) {
-  for (const char* name : {"materials.yaml", "spacing.yaml", "roller-speed.yaml",
-                           "roller-speed-ramp.yaml", "runout.yaml", "materials-spacings.yaml",
-                           "skew.yaml", "tilt.yaml", "rolling-resistance.yaml"}) {
+  for (const char* name :
+       {"materials.yaml", "spacing.yaml", "roller-speed.yaml", "roller-speed-ramp.yaml",
+        "runout.yaml", "materials-spacings.yaml", "skew.yaml", "tilt.yaml",
+        "rolling-resistance.yaml", "hall-accuracy.yaml"}) {
     const SweepSpec spec = load_sweep_file(kSweeps + "/" + name, kInputs);
     EXPECT_GT(spec.point_count(), 1u) << name;
   }

@@ -21,6 +21,10 @@
 namespace fl {
 namespace {
 
+// Thrown by a simulation the comparison was asked not to start (not a std::exception: a row's
+// own failures are caught as those).
+struct RowInterrupted {};
+
 class RowSimulator {
  public:
   explicit RowSimulator(const CompareOptions& options)
@@ -39,6 +43,7 @@ class RowSimulator {
   // The rig's estimator's period; the trajectory's (without a spread) where it accepted none,
   // and the row says so.
   SimulatedPeriod simulate(const Scene& scene) {
+    if (options_.control.stopping()) throw RowInterrupted{};
     ++simulations_;
     return simulate_period(scene);
   }
@@ -287,12 +292,21 @@ CompareResult run_compare(const MeasuredRows& measured, const CompareOptions& op
     WorkPool<std::pair<std::size_t, CompareRow>> pool(
         std::max(1, std::min<int>(result.workers, static_cast<int>(rows.size()))),
         [&](std::size_t i) {
-          return std::make_pair(i, compare_row(simulator, rows[i], row_scenes[i], options));
+          try {
+            return std::make_pair(i, compare_row(simulator, rows[i], row_scenes[i], options));
+          } catch (const RowInterrupted&) {
+            CompareRow row = rows[i];
+            row.status = "interrupted";
+            row.reason = "the comparison was stopped (Ctrl-C or SIGTERM) before this row was done";
+            row.refit_note = "not fitted: interrupted";
+            return std::make_pair(i, std::move(row));
+          }
         });
     for (std::size_t i = 0; i < rows.size(); ++i) pool.push(i);
     pool.close();
     std::size_t done = 0;
     while (!pool.finished()) {
+      options.control.poll_stopping();
       for (auto& [i, row] : pool.take(std::chrono::milliseconds(250))) {
         result.rows[i] = std::move(row);
         ++done;
@@ -427,6 +441,11 @@ int CompareResult::rows_without_result(bool refit) const {
   for (const CompareRow& row : rows)
     if (row.status != "compared" || (refit && !row.mu_k_refit)) ++n;
   return n;
+}
+
+int CompareResult::rows_interrupted() const {
+  return static_cast<int>(std::count_if(
+      rows.begin(), rows.end(), [](const CompareRow& row) { return row.status == "interrupted"; }));
 }
 
 }  // namespace fl

@@ -18,6 +18,7 @@
 #include "core/paper_table.hpp"
 #include "core/regime.hpp"
 #include "lab/compare/measured_rows.hpp"
+#include "lab/run/job_control.hpp"
 #include "scene/scene_yaml.hpp"
 
 namespace fl {
@@ -40,6 +41,9 @@ struct CompareOptions {
   int min_periods = 15;
   // Called on the calling thread as rows finish: (rows done, rows).
   std::function<void(std::size_t, std::size_t)> progress;
+  // Asked to stop, no row starts another simulation: the rows finished are kept, the others are
+  // "interrupted".
+  JobControl control;
 };
 
 // One simulation of the refit.
@@ -64,7 +68,8 @@ struct CompareRow {
   double gravity = 9.81;
   double duration = 0.0;  // s simulated per run
   // "compared": simulated (and refitted); "no oscillation": the row's mu_k gives no Coulomb
-  // oscillation in this rig (reason says why; not fitted); "failed": a run failed (reason).
+  // oscillation in this rig (reason says why; not fitted); "failed": a run failed (reason);
+  // "interrupted": the comparison was asked to stop before the row was done.
   std::string status;
   std::string reason;
 
@@ -110,6 +115,8 @@ struct CompareResult {
   // The rows that gave no result: not simulated to a period ("no oscillation", ...), or, with a
   // refit asked, compared but not refitted.
   int rows_without_result(bool refit) const;
+  // Rows left "interrupted".
+  int rows_interrupted() const;
 };
 
 // Throws InputError if the scene cannot be read, or a row's keys do not make a rig (located at the

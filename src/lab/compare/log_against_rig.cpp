@@ -194,6 +194,10 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
   rows.rows.push_back(row);
   r.fit = run_compare(rows, options);
   const CompareRow& fitted = r.fit.rows.front();
+  if (fitted.status == "interrupted") {
+    r.interrupted = true;
+    return r;
+  }
   if (fitted.status != "compared")
     throw InputError({options.scene_file, 0, 0},
                      "the scene gives no period to set beside the log's at its own mu_k (" +
@@ -210,8 +214,13 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
   const Scene scene = load_scene_file(options.scene_file, overrides, options.paper, options.parts);
   RunOptions run;
   run.record_hall = true;
+  run.stop = options.control.stop;
   RunRecording recording;
   const RunSummary summary = run_experiment(scene, run, &recording);
+  if (summary.interrupted_at) {
+    r.interrupted = true;
+    return r;
+  }
   if (summary.failure) throw std::runtime_error("the simulation failed: " + *summary.failure);
   std::vector<double> t_s, adc;
   for (const HallSample& s : recording.hall) {

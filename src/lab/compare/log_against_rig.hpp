@@ -44,6 +44,8 @@ struct TraceFacts {
 
 struct LogAgainstRig {
   std::string log;
+  // Asked to stop (CompareOptions::control) before it was done: nothing below is measured.
+  bool interrupted = false;
   CompareResult fit;  // the refit (one row)
   double mu_k = 0.0;  // the mu_k the second simulation used: the refit's, else the row's
   TraceFacts measured;

@@ -44,13 +44,15 @@ int CompareRequestResult::rows_without_result() const {
 }
 
 Outcome CompareRequestResult::outcome() const {
+  if (interrupted) return Outcome::kInterrupted;
   if (rows_without_result() > 0) return Outcome::kFailed;
   if (!plot_failure.empty()) return Outcome::kIncomplete;
   return Outcome::kDone;
 }
 
 CompareRequestResult compare_measurements(const CompareRequest& r,
-                                          std::function<void(std::size_t, std::size_t)> progress) {
+                                          std::function<void(std::size_t, std::size_t)> progress,
+                                          const JobControl& control) {
   FieldChecks checks;
   const bool with_log = !r.log.empty();
   if (!with_log && (!r.geometry.empty() || !r.columns.empty() || r.rate || !r.time_unit.empty()))
@@ -138,12 +140,17 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   options.workers = r.jobs;
   options.refit = r.refit;
   options.progress = std::move(progress);
+  options.control = control;
 
   if (with_log) {
     const HallLog log = read_hall_log_checked(r.log, reading, LogSetUp{});
     // The sidecar's material (checked against the paper's table) when the request names none.
     const std::optional<LogSidecar> sidecar = read_log_sidecar(log.file, &paper);
     result.log = compare_log_with_rig(log, *geometry, options);
+    if (result.log->interrupted) {
+      result.interrupted = true;
+      return result;
+    }
     result.json = log_against_rig_json(*result.log);
     const CompareRow& row = result.log->fit.rows.front();
     if (row.mu_k_refit && row.mu_k_refit_err_quadrature)
@@ -170,6 +177,7 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
     return result;
   }
   result.table = run_compare(measured, options);
+  result.interrupted = result.table->rows_interrupted() > 0;
   result.skipped = measured.skipped;
   result.json = compare_json(*result.table);
   // Rows of a table of logs whose log gave no period: left out, and said.
@@ -184,7 +192,7 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   write_file_atomic(csv, compare_csv(*result.table));
   write_file_atomic(json, result.json.dump(1) + "\n");
   result.written = {csv, json};
-  if (r.plot) {
+  if (r.plot && !result.interrupted) {
     const std::string png = r.out + "/compare.png";
     try {
       run_plot_script("plot_compare.py", {json, png});

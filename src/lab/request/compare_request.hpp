@@ -51,6 +51,9 @@ struct CompareRequestResult {
   std::optional<LogAgainstRig> log;    // or the log against its simulation
   // With a log: the paper's value for its material beside the refitted mu_k, when both are known.
   std::optional<PaperComparison> paper_value;
+  // Asked to stop: the rows finished are kept (the others "interrupted"); a log's comparison
+  // not finished leaves nothing written.
+  bool interrupted = false;
   nlohmann::json json;  // compare.json's or compare-log.json's object
   std::vector<std::string> written;
   std::string plot_failure;
@@ -61,7 +64,9 @@ struct CompareRequestResult {
 };
 
 // `progress` (rows done, rows in all) as the comparison's options have it; may be empty.
+// `control` may ask it to stop (CompareOptions::control).
 CompareRequestResult compare_measurements(const CompareRequest& request,
-                                          std::function<void(std::size_t, std::size_t)> progress);
+                                          std::function<void(std::size_t, std::size_t)> progress,
+                                          const JobControl& control = {});
 
 }  // namespace fl

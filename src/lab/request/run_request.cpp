@@ -14,6 +14,7 @@
 #include "lab/request/lab_data.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
+#include "lab/run/run_files.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "lab/run/step_choice.hpp"
 #include "lab/video/video_recorder.hpp"
@@ -177,7 +178,28 @@ PreparedRun prepare_run(const RunRequest& r) {
                             "out", inputs);
   refuse_overwriting_inputs(r.video, "video", inputs);
   refuse_overwriting_inputs(r.still, "still", inputs);
-  if (!r.out.empty()) prepare_output_folder(r.out, "out");
+  if (!r.out.empty()) {
+    prepare_output_folder(r.out, "out");
+    // The files stream to the disk as the run goes: a run they would not fit is refused now, not
+    // after minutes of simulation.
+    const double needed = run_files_bytes_at_most(scene.output, rig);
+    std::error_code ec;
+    const std::filesystem::space_info space = std::filesystem::space(r.out, ec);
+    if (!ec && static_cast<double>(space.available) < needed) {
+      const auto size = [](double bytes) {
+        return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9)
+                            : fmt::format("{:.3g} MB", bytes / 1e6);
+      };
+      checks.problem(
+          "out", r.out,
+          fmt::format("expected a folder with room for the run's files, up to {} for "
+                      "{:.4g} s of steps and samples, found {} free there; free some, "
+                      "write elsewhere, shorten the {} or leave out output.trajectory",
+                      size(needed), rig.world.duration, size(static_cast<double>(space.available)),
+                      field_ref("duration")));
+      checks.throw_if_any();
+    }
+  }
   if (!r.video.empty()) prepare_output_file(r.video, "video");
   if (!r.still.empty()) prepare_output_file(r.still, "still");
   if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
@@ -228,12 +250,25 @@ RunResult execute_run(const PreparedRun& run, const RunControl& control) {
   RunResult result;
   result.chosen_time_step = run.chosen_time_step;
   const CompiledRig& rig = *run.rig;
+  // `out` without `record`: the steps and samples stream to their files, none kept in memory.
+  std::optional<RunFiles> files;
+  if (!run.out.empty() && !run.record) {
+    files.emplace(run.out, run.output, rig);
+    RunOptions streamed = files->options();
+    streamed.observer = std::move(options.observer);
+    streamed.stop = options.stop;
+    streamed.progress = options.progress;
+    options = std::move(streamed);
+  }
   result.summary = run_experiment(rig, options, &result.recording);
   // The video up to its last frame, playable, even when the run was interrupted.
   if (recorder)
     result.video =
         recorder->finish(VideoEnding{result.summary.failure.value_or(""), result.summary.duration});
-  if (!run.out.empty()) {
+  if (files) {
+    files->finish(result.summary, result.recording);
+    result.out = run.out;
+  } else if (!run.out.empty()) {
     write_run_outputs(run.out, run.output, rig, result.summary, result.recording);
     result.out = run.out;
   }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -69,10 +71,11 @@ nlohmann::json AccuracyResult::json() const {
 }
 
 Outcome AccuracyResult::outcome() const {
+  if (study.interrupted) return Outcome::kInterrupted;
   return plot_failure.empty() ? Outcome::kDone : Outcome::kIncomplete;
 }
 
-AccuracyResult study_accuracy(const AccuracyRequest& r) {
+AccuracyResult study_accuracy(const AccuracyRequest& r, const JobControl& control) {
   FieldChecks checks;
   // The study sets each point's length (periods), step and solver iterations itself.
   if (r.duration)
@@ -104,13 +107,13 @@ AccuracyResult study_accuracy(const AccuracyRequest& r) {
   result.periods = r.periods;
   AccuracyGrid grid;
   grid.periods = r.periods;
-  result.study = run_accuracy_study(*scene.scene, grid);
+  result.study = run_accuracy_study(*scene.scene, grid, control);
   const std::string csv = r.out + "/accuracy.csv";
   const std::string json = r.out + "/accuracy.json";
   write_file_atomic(csv, accuracy_csv(result.study));
   result.written = {csv, json};
   write_file_atomic(json, result.json().dump(2) + "\n");
-  if (r.plot) {
+  if (r.plot && !result.study.interrupted) {
     const std::string png = r.out + "/accuracy.png";
     try {
       run_plot_script("plot_accuracy.py", {csv, json, png});
@@ -138,10 +141,11 @@ nlohmann::json StabilityResult::json() const {
 }
 
 Outcome StabilityResult::outcome() const {
-  return unexpected() == 0 ? Outcome::kDone : Outcome::kFailed;
+  const Outcome cases = unexpected() == 0 ? Outcome::kDone : Outcome::kFailed;
+  return not_run > 0 ? worse(cases, Outcome::kInterrupted) : cases;
 }
 
-StabilityResult study_stability(const StabilityRequest& r) {
+StabilityResult study_stability(const StabilityRequest& r, const JobControl& control) {
   FieldChecks checks;
   if (r.jobs && *r.jobs < 1)
     checks.problem("jobs", std::to_string(*r.jobs),
@@ -170,19 +174,32 @@ StabilityResult study_stability(const StabilityRequest& r) {
     scenes.push_back(load_scene_file(file, {}, inputs.paper, inputs.parts));
   if (!r.out.empty()) prepare_output_folder(r.out, "out");
 
-  // Cases are independent: share them among workers.
-  result.rows.resize(scenes.size());
+  // Cases are independent: share them among workers; asked to stop, they take no more.
+  std::vector<std::optional<StabilityRow>> rows(scenes.size());
   std::atomic<std::size_t> next{0};
-  const unsigned workers =
-      std::max(1u, r.jobs ? static_cast<unsigned>(*r.jobs) : std::thread::hardware_concurrency());
+  const unsigned workers = static_cast<unsigned>(std::min<std::size_t>(
+      std::max(1u, r.jobs ? static_cast<unsigned>(*r.jobs) : std::thread::hardware_concurrency()),
+      scenes.size()));
+  std::atomic<unsigned> finished{0};
   {
     std::vector<std::jthread> pool;
-    for (unsigned w = 0; w < std::min<std::size_t>(workers, scenes.size()); ++w) {
+    for (unsigned w = 0; w < workers; ++w) {
       pool.emplace_back([&] {
-        for (std::size_t i = next++; i < scenes.size(); i = next++)
-          result.rows[i] = run_stability_case(scenes[i]);
+        for (std::size_t i = next++; i < scenes.size() && !control.stopping(); i = next++)
+          rows[i] = run_stability_case(scenes[i]);
+        ++finished;
       });
     }
+    while (finished.load() < workers) {
+      control.poll_stopping();
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  for (std::optional<StabilityRow>& row : rows) {
+    if (row)
+      result.rows.push_back(std::move(*row));
+    else
+      ++result.not_run;
   }
   if (!r.out.empty()) {
     std::string csv =

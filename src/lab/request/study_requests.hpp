@@ -37,10 +37,11 @@ struct AccuracyResult {
   std::string plot_failure;
 
   nlohmann::json json() const;  // accuracy.json's object
-  Outcome outcome() const;
+  Outcome outcome() const;      // interrupted when the study was asked to stop
 };
 
-AccuracyResult study_accuracy(const AccuracyRequest& request);
+// Asked to stop (control), it writes the points finished and ends interrupted.
+AccuracyResult study_accuracy(const AccuracyRequest& request, const JobControl& control = {});
 
 struct StabilityRequest {
   std::string dir;          // "dir": the catalogue's folder (the source tree's scenes/extreme)
@@ -52,15 +53,18 @@ struct StabilityRequest {
 
 struct StabilityResult {
   std::string dir;
-  std::vector<StabilityRow> rows;
+  std::vector<StabilityRow> rows;  // the cases run, in the catalogue's order
   std::vector<std::string> written;
+  int not_run = 0;  // cases left when the catalogue was asked to stop
 
   int unexpected() const;       // cases that ended in another regime than theory's
   nlohmann::json json() const;  // {"cases": [...], "unexpected": N}
   Outcome outcome() const;
 };
 
-StabilityResult study_stability(const StabilityRequest& request);
+// Asked to stop (control), it starts no more cases, finishes those running, writes them and ends
+// interrupted.
+StabilityResult study_stability(const StabilityRequest& request, const JobControl& control = {});
 
 // The catalogue's folder when a request names none.
 std::string default_stability_dir();

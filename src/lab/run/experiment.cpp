@@ -190,11 +190,21 @@ void decide_headline(RunSummary& out) {
 
 struct RunLoop::Impl {
   Impl(const CompiledRig& r, const RunOptions& o, RunRecording* rec)
-      : rig(r), options(o), recording(rec), world(r), regime(r), convergence(r) {}
+      : rig(r), options(o), recording(rec), world(r), regime(r), convergence(r) {
+    if (rec != nullptr) memory.emplace(*rec);
+    if (o.stream != nullptr)
+      keep = o.stream;
+    else if (memory)
+      keep = &*memory;
+  }
 
   const CompiledRig& rig;
   const RunOptions& options;
   RunRecording* recording;
+  // Where the trajectory and the Hall samples asked for go: the options' stream, else the
+  // recording.
+  std::optional<RecordingSink> memory;
+  RecordSink* keep = nullptr;
   std::chrono::steady_clock::time_point wall_start = std::chrono::steady_clock::now();
   RigWorld world;
   // The monitors, only those the scene and the options name; the loop knows none by name.
@@ -230,13 +240,13 @@ RunLoop::RunLoop(const CompiledRig& rig, const RunOptions& options, RunRecording
   if (rig.rollers.skew != 0.0) r.monitors.push_back(&r.drift.emplace(0.5 * rig.world.duration));
   if (options.observer) r.observer.emplace(options.observer, &r.regime.monitor());
   if (rig.sensor && !rig.magnets.empty()) {
-    r.hall.emplace(rig, options.record_hall && recording != nullptr ? &recording->hall : nullptr,
+    r.hall.emplace(rig, options.record_hall ? r.keep : nullptr,
                    r.observer ? r.observer->new_samples() : nullptr);
     r.monitors.push_back(&*r.hall);
     if (r.observer) r.observer->set_estimator(&r.hall->estimator());
   }
-  if (options.record_trajectory && recording != nullptr)
-    r.monitors.push_back(&r.trajectory.emplace(recording->trajectory));
+  if (options.record_trajectory && r.keep != nullptr)
+    r.monitors.push_back(&r.trajectory.emplace(*r.keep));
   if (r.observer) r.monitors.push_back(&*r.observer);
   r.monitors.push_back(&r.extremes);
   if (rig.drive) r.monitors.push_back(&r.drive.emplace(rig));
@@ -408,6 +418,7 @@ RunSummary run_experiment(const CompiledRig& rig, const RunOptions& options,
     }
     iterations = *retry.iterations;
     if (recording != nullptr) *recording = RunRecording{};
+    if (options.stream != nullptr) options.stream->restart();
     unconverged.reset();
     out = run_once(with_solver_iterations(rig, iterations), options, recording, unconverged);
     if (!unconverged)

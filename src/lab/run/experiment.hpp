@@ -41,6 +41,17 @@ struct RunRecording {
 
 class HallEstimator;
 
+// Where a run's step-by-step records go: into a RunRecording, or into a run's files as it goes
+// (lab/run/run_files.hpp), which keeps no step in memory.
+class RecordSink {
+ public:
+  virtual ~RecordSink() = default;
+  virtual void trajectory_row(const TrajectoryRow& row) = 0;
+  virtual void hall_sample(const HallSample& sample) = 0;
+  // The run starts again from t = 0 (at more solver iterations): what came so far is forgotten.
+  virtual void restart() = 0;
+};
+
 // What a run looks like after each step, for an observer (the video renderer): everything needed
 // to draw the rig and its overlays at any instant between two steps.
 struct StepView {
@@ -60,6 +71,9 @@ struct RunOptions {
   bool record_trajectory = false;
   bool record_hall = false;
   bool record_cycles = false;
+  // When set, the trajectory and Hall samples asked for go here, not into the recording (whose
+  // cycles, periods and jumps are kept as before).
+  RecordSink* stream = nullptr;
   // Called after every step (and once at t = 0) when set.
   std::function<void(const StepView&)> observer;
   // When set and true, the run ends after its current step (RunSummary::interrupted_at); the

@@ -34,18 +34,18 @@ std::optional<RunFailure> ConvergenceGuard::check(const StepContext& step) {
                                 rig_.world.solver_iterations, unconverged_->describe())};
 }
 
-HallChannel::HallChannel(const CompiledRig& rig, std::vector<HallSample>* recording,
+HallChannel::HallChannel(const CompiledRig& rig, RecordSink* keep,
                          std::vector<HallSample>* view_samples)
     : hall_(rig),
       estimator_(rig.rollers.spacing, rig.world.gravity),
-      recording_(recording),
+      keep_(keep),
       view_samples_(view_samples) {}
 
 void HallChannel::record(const StepContext& step) {
   hall_.sample_between(pose_of(step.t_previous, step.previous), pose_of(step.t, step.plate),
                        [this](const HallSample& sample) {
                          estimator_.add(sample);
-                         if (recording_ != nullptr) recording_->push_back(sample);
+                         if (keep_ != nullptr) keep_->hall_sample(sample);
                          if (view_samples_ != nullptr) view_samples_->push_back(sample);
                        });
 }
@@ -59,11 +59,11 @@ void CycleRecorder::record(const StepContext& step) {
 }
 
 void TrajectoryRecorder::start(const RigWorld& world, const PlateState& plate) {
-  rows_.push_back({0.0, plate, world.contacts()});
+  keep_.trajectory_row({0.0, plate, world.contacts()});
 }
 
 void TrajectoryRecorder::record(const StepContext& step) {
-  rows_.push_back({step.t, step.plate, step.contacts});
+  keep_.trajectory_row({step.t, step.plate, step.contacts});
 }
 
 void RampSpeedAverage::record(const StepContext& step) {

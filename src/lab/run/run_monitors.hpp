@@ -74,15 +74,15 @@ class ConvergenceGuard final : public RunMonitor {
 // recording and the video's view when they want it).
 class HallChannel final : public RunMonitor {
  public:
-  HallChannel(const CompiledRig& rig, std::vector<HallSample>* recording,
-              std::vector<HallSample>* view_samples);
+  // `keep` (when not null) receives every sample, as does `view_samples`.
+  HallChannel(const CompiledRig& rig, RecordSink* keep, std::vector<HallSample>* view_samples);
   void record(const StepContext& step) override;
   const HallEstimator& estimator() const { return estimator_; }
 
  private:
   HallSignal hall_;
   HallEstimator estimator_;
-  std::vector<HallSample>* recording_;
+  RecordSink* keep_;
   std::vector<HallSample>* view_samples_;
 };
 
@@ -100,12 +100,24 @@ class CycleRecorder final : public RunMonitor {
 // Every step's state (trajectory.csv).
 class TrajectoryRecorder final : public RunMonitor {
  public:
-  explicit TrajectoryRecorder(std::vector<TrajectoryRow>& rows) : rows_(rows) {}
+  explicit TrajectoryRecorder(RecordSink& keep) : keep_(keep) {}
   void start(const RigWorld& world, const PlateState& plate) override;
   void record(const StepContext& step) override;
 
  private:
-  std::vector<TrajectoryRow>& rows_;
+  RecordSink& keep_;
+};
+
+// A run's records kept in memory.
+class RecordingSink final : public RecordSink {
+ public:
+  explicit RecordingSink(RunRecording& recording) : recording_(recording) {}
+  void trajectory_row(const TrajectoryRow& row) override { recording_.trajectory.push_back(row); }
+  void hall_sample(const HallSample& sample) override { recording_.hall.push_back(sample); }
+  void restart() override { recording_ = RunRecording{}; }
+
+ private:
+  RunRecording& recording_;
 };
 
 // The ramped rollers' speed, averaged over the run's steps [rad/s].

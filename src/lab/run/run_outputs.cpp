@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include "core/units.hpp"
@@ -220,23 +221,26 @@ std::string summary_text(const RunSummary& s) {
   return out;
 }
 
+void append_trajectory_row(std::string& out, const TrajectoryRow& row) {
+  fmt::format_to(std::back_inserter(out), FMT_COMPILE("{},{},{},{},{},{},{},{},{},{},{}\n"), row.t,
+                 row.plate.x, row.plate.z, row.plate.pitch, row.plate.vx, row.plate.vz,
+                 row.plate.pitch_rate, row.rollers[0].normal_force, row.rollers[0].friction_force,
+                 row.rollers[1].normal_force, row.rollers[1].friction_force);
+}
+
+void append_hall_row(std::string& out, const HallSample& sample) {
+  fmt::format_to(std::back_inserter(out), FMT_COMPILE("{},{}\n"), sample.t_us, sample.adc);
+}
+
 std::string trajectory_csv(const RunRecording& r) {
-  std::string out =
-      "t_s,x_m,z_m,pitch_rad,vx_m_s,vz_m_s,pitch_rate_rad_s,normal0_n,friction0_n,normal1_n,"
-      "friction1_n\n";
-  for (const TrajectoryRow& row : r.trajectory) {
-    fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{},{},{},{}\n", row.t,
-                   row.plate.x, row.plate.z, row.plate.pitch, row.plate.vx, row.plate.vz,
-                   row.plate.pitch_rate, row.rollers[0].normal_force, row.rollers[0].friction_force,
-                   row.rollers[1].normal_force, row.rollers[1].friction_force);
-  }
+  std::string out(kTrajectoryCsvHeader);
+  for (const TrajectoryRow& row : r.trajectory) append_trajectory_row(out, row);
   return out;
 }
 
 std::string hall_csv(const RunRecording& r) {
-  std::string out = "t_us,adc\n";
-  for (const HallSample& s : r.hall)
-    fmt::format_to(std::back_inserter(out), "{},{}\n", s.t_us, s.adc);
+  std::string out(kHallCsvHeader);
+  for (const HallSample& s : r.hall) append_hall_row(out, s);
   return out;
 }
 
@@ -270,11 +274,15 @@ RunOptions recording_for(const OutputDesc& output) {
 std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
                                                                   const CompiledRig& rig,
                                                                   const RunSummary& summary,
-                                                                  const RunRecording& recording) {
+                                                                  const RunRecording& recording,
+                                                                  StepFiles steps) {
   std::vector<std::pair<std::string, std::string>> files;
   if (output.cycles) files.emplace_back("cycles.csv", cycles_csv(rig, recording.cycles));
-  if (output.trajectory) files.emplace_back("trajectory.csv", trajectory_csv(recording));
-  if (output.hall && rig.sensor) files.emplace_back("hall.csv", hall_csv(recording));
+  // The steps and samples, unless they were streamed to their files (lab/run/run_files.hpp).
+  if (steps == StepFiles::kFromRecording) {
+    if (output.trajectory) files.emplace_back("trajectory.csv", trajectory_csv(recording));
+    if (output.hall && rig.sensor) files.emplace_back("hall.csv", hall_csv(recording));
+  }
   if (output.periods && output.hall && rig.sensor)
     files.emplace_back("periods.csv", periods_csv(recording));
   if (output.jumps && !recording.jumps.empty())

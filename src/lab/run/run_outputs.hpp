@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,14 @@ namespace fl {
 // What the run cost on this machine (wall time, real-time factor, steps per second).
 nlohmann::json timing_json(const RunSummary& summary);
 std::string summary_text(const RunSummary& summary);
+inline constexpr std::string_view kTrajectoryCsvHeader =
+    "t_s,x_m,z_m,pitch_rad,vx_m_s,vz_m_s,pitch_rate_rad_s,normal0_n,friction0_n,normal1_n,"
+    "friction1_n\n";
+inline constexpr std::string_view kHallCsvHeader = "t_us,adc\n";
+// One row of trajectory.csv, of hall.csv, appended to `out` (each number the shortest text that
+// reads back to it).
+void append_trajectory_row(std::string& out, const TrajectoryRow& row);
+void append_hall_row(std::string& out, const HallSample& sample);
 std::string trajectory_csv(const RunRecording& recording);
 std::string hall_csv(const RunRecording& recording);
 // Each period the rig's estimator judged: start, end, length [s] and whether it was accepted.
@@ -29,11 +38,14 @@ std::string jumps_csv(const RunRecording& recording);
 // cycles the scene's output part names (`run --out` and a live session ask the same).
 RunOptions recording_for(const OutputDesc& output);
 
+// Whether trajectory.csv and hall.csv are made from the recording, or were streamed to their
+// files as the run went (lab/run/run_files.hpp) and are left out here.
+enum class StepFiles { kFromRecording, kStreamed };
+
 // The files of a run, by name, as the scene's output part asks: what write_run_outputs writes.
-std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDesc& output,
-                                                                  const CompiledRig& rig,
-                                                                  const RunSummary& summary,
-                                                                  const RunRecording& recording);
+std::vector<std::pair<std::string, std::string>> run_output_files(
+    const OutputDesc& output, const CompiledRig& rig, const RunSummary& summary,
+    const RunRecording& recording, StepFiles steps = StepFiles::kFromRecording);
 
 // Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
 // the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file

@@ -29,6 +29,9 @@ struct StepChoice {
   double time_step = 0.0;  // s, of the form 1/N s (N whole) unless the scene's own
   StepBasis basis = StepBasis::kIntegratorBias;
   std::string reason;  // the numbers behind it
+  // What the rig's estimator adds to the Hall period's error, whatever the step (relative, its
+  // bound: sensor/hall_timing.hpp); none without a sensor or a pulse to time.
+  std::optional<double> sensor_error;
 };
 
 // The share of an accuracy target the integrator's predicted bias may take; the rest is kept for
@@ -36,10 +39,17 @@ struct StepChoice {
 // spacing sweeps at the full target measured errors up to 1.0003e-4).
 inline constexpr double kIntegratorShareOfAccuracy = 0.9;
 
+// The most of an accuracy target the Hall period's own error (the sensor's and the estimator's
+// timing, which no step changes) may take, leaving the integrator at least a tenth; beyond it the
+// target is refused.
+inline constexpr double kSensorShareOfAccuracy = 0.8;
+
 // The largest step of the form 1/N s (N whole) whose predicted |bias| is at most
-// kIntegratorShareOfAccuracy * `target` (relative, e.g. 1e-4) and that resolves the friction law
-// where theory expects the plate to use it (its sticks, its growth: lab/run/regime_theory.hpp).
-// Throws DomainError if the rig has no oscillation or target <= 0.
+// kIntegratorShareOfAccuracy * `target` (relative, e.g. 1e-4) less the rig's sensor error (a rig
+// with a Hall sensor reports the estimator's period, which carries both), and that resolves the
+// friction law where theory expects the plate to use it (its sticks, its growth:
+// lab/run/regime_theory.hpp). Throws DomainError if the rig has no oscillation, target <= 0, or the
+// sensor's error alone exceeds kSensorShareOfAccuracy of the target (saying what would meet it).
 StepChoice step_for_accuracy(const CompiledRig& rig, double target);
 // The same for a scene, compiled first.
 StepChoice step_for_accuracy(const Scene& scene, double target);

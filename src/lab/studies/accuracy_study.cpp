@@ -12,7 +12,8 @@
 
 namespace fl {
 
-AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid) {
+AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid,
+                                 const JobControl& control) {
   AccuracyStudy study;
   const CompiledRig rig = compile_rig(base);
   if (!rig.period_thick)
@@ -32,10 +33,15 @@ AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid) {
       tracker.add(0.0, s.x, s.vx);
       const long long steps = std::llround(seconds / dt);
       for (long long i = 0; i < steps; ++i) {
+        if (i % 1000 == 0 && control.poll_stopping()) {
+          study.interrupted = true;
+          break;
+        }
         world.step();
         s = world.plate();
         tracker.add(world.time(), s.x, s.vx);
       }
+      if (study.interrupted) break;
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       AccuracyPoint p;
@@ -51,6 +57,7 @@ AccuracyStudy run_accuracy_study(const Scene& base, const AccuracyGrid& grid) {
       }
       study.points.push_back(p);
     }
+    if (study.interrupted) break;
   }
   study.law = fit_error_law(study.points, study.omega);
   return study;

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "lab/run/job_control.hpp"
 #include "scene/scene.hpp"
 
 namespace fl {
@@ -35,6 +36,7 @@ struct AccuracyStudy {
   double omega = 0.0;         // rad/s
   std::vector<AccuracyPoint> points;
   std::optional<ErrorLaw> law;
+  bool interrupted = false;  // asked to stop: `points` are those finished, the grid's order
 };
 
 struct AccuracyGrid {
@@ -44,7 +46,9 @@ struct AccuracyGrid {
   int periods = 10;  // simulated per point
 };
 
-AccuracyStudy run_accuracy_study(const Scene& scene, const AccuracyGrid& grid);
+// Asked to stop (control), it keeps the points finished and drops the one it was running.
+AccuracyStudy run_accuracy_study(const Scene& scene, const AccuracyGrid& grid,
+                                 const JobControl& control = {});
 
 // Fits the error law to the points with the most solver iterations at each step whose |error| is
 // above `floor`; nullopt with fewer than 3 such points.

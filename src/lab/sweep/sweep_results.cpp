@@ -74,13 +74,14 @@ PointResult run_sweep_point(const SweepSpec& spec, const SweepPoint& point,
     out.row["seed"] = scene->world.seed;
     try {
       CompiledRig rig = compile_rig(*scene);
+      // Only the trajectory's period asked for: no Hall signal to simulate (nor its error to
+      // leave room for in the step).
+      if (!spec.hall) rig.sensor.reset();
       if (spec.accuracy) {
         const StepChoice step = step_for_accuracy_or_scene(rig, *spec.accuracy);
         rig = with_time_step(std::move(rig), step.time_step);
         out.row["time_step_basis"] = step_basis_name(step.basis);
       }
-      // Only the trajectory's period asked for: no Hall signal to simulate.
-      if (!spec.hall) rig.sensor.reset();
       RunOptions options;
       options.record_cycles = spec.cycles;
       RunRecording recording;

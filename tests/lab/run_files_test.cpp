@@ -1,0 +1,91 @@
+// A run's files streamed as the run goes (lab/run/run_files.hpp) are byte for byte the files made
+// from a run kept in memory: for the minimal scene (every file), and for a run that starts again
+// at more solver iterations (what came before the restart is forgotten). The run keeps none of
+// its steps or samples in memory while it streams them.
+#include "lab/run/run_files.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "lab/run/run_outputs.hpp"
+#include "support/close_rollers.hpp"
+#include "support/scene_fixture.hpp"
+#include "support/temp_folder.hpp"
+
+namespace fl {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class RunFilesTest : public test::TempFolderTest {
+ protected:
+  RunFilesTest() : TempFolderTest("frictionlab-run-files") {}
+
+  // Runs `scene` both ways into dir/streamed and dir/kept; the streamed run's summary.
+  RunSummary run_both(const Scene& scene) {
+    const CompiledRig rig = compile_rig(scene);
+    const std::string streamed = (dir_ / "streamed").string();
+    RunFiles files(streamed, scene.output, rig);
+    RunRecording small;
+    const RunSummary summary = run_experiment(rig, files.options(), &small);
+    EXPECT_TRUE(small.trajectory.empty());
+    EXPECT_TRUE(small.hall.empty());
+    files.finish(summary, small);
+
+    RunRecording kept;
+    const RunSummary again = run_experiment(rig, recording_for(scene.output), &kept);
+    EXPECT_FALSE(kept.trajectory.empty());
+    write_run_outputs((dir_ / "kept").string(), scene.output, rig, again, kept);
+    return summary;
+  }
+
+  void expect_same_files() {
+    std::size_t compared = 0;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir_ / "kept")) {
+      const std::string name = e.path().filename().string();
+      if (name == "timing.json") continue;  // the run's cost differs
+      EXPECT_EQ(read(dir_ / "streamed" / name), read(e.path())) << name;
+      ++compared;
+    }
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "streamed"), {}),
+              std::distance(fs::directory_iterator(dir_ / "kept"), {}));
+    EXPECT_GE(compared, 2u);
+  }
+};
+
+TEST_F(RunFilesTest, EveryFileOfTheMinimalSceneIsTheRecordingsFile) {
+  Scene scene =
+      test::scene_file("minimal.yaml", std::vector<SceneOverride>{{"world.duration", "5 s"}});
+  scene.output.cycles = true;
+  run_both(scene);
+  expect_same_files();
+  for (const char* name :
+       {"trajectory.csv", "hall.csv", "periods.csv", "cycles.csv", "summary.json"})
+    EXPECT_TRUE(fs::exists(dir_ / "streamed" / name)) << name;
+}
+
+TEST_F(RunFilesTest, ARunThatStartsAgainStreamsOnlyTheRunItEndsWith) {
+  Scene scene = test::stuck_on_close_rollers();
+  scene.output.trajectory = true;
+  const RunSummary summary = run_both(scene);
+  ASSERT_TRUE(summary.solver_iterations_raised.has_value());
+  expect_same_files();
+  // One header, and one row per step of the run it ended with.
+  const std::string trajectory = read(dir_ / "streamed" / "trajectory.csv");
+  EXPECT_EQ(static_cast<long long>(std::count(trajectory.begin(), trajectory.end(), '\n')),
+            summary.steps + 2);
+}
+
+}  // namespace
+}  // namespace fl

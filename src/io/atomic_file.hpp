@@ -1,5 +1,6 @@
 // Writes a file so that readers see either the old content or the whole new one, never a part:
-// the content goes to a temporary file in the same folder, is flushed to disk, then renamed.
+// the content goes to a temporary file in the same folder, is flushed to disk, then renamed (a
+// StreamedFile written at once, io/streamed_file.hpp).
 #pragma once
 
 #include <string>

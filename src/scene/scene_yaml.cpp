@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/utf8.hpp"
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
@@ -282,8 +283,9 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
   Scene scene;
-  scene.name = name;
-  if (auto v = root.find("name")) scene.name = v->text();
+  // The name goes into every output (JSON among them): bytes that are not UTF-8 are shown escaped.
+  scene.name = escape_invalid_utf8(name);
+  if (auto v = root.find("name")) scene.name = escape_invalid_utf8(v->text());
   if (auto expect = root.find("expect")) {
     expect->allow_keys({"regime"});
     const YamlNode regime = expect->at("regime");

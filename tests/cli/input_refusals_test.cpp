@@ -343,6 +343,18 @@ TEST_F(InputRefusals, AFileNameThatIsNotUtf8IsShownEscaped) {
   EXPECT_EQ(missing.err, "nope\\xfe.csv: error: cannot open the log: No such file or directory\n");
 }
 
+// A scene whose file name is not UTF-8 and which names itself nothing: the run's name is its file
+// stem, escaped, in the summary and the JSON (it ended --json in an internal error).
+TEST_F(InputRefusals, ASceneFileNameThatIsNotUtf8IsShownEscaped) {
+  std::string scene =
+      test::read_text(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml");
+  scene.erase(scene.find("name: minimal\n"), std::string("name: minimal\n").size());
+  write("rig\xff.yaml", scene);
+  const test::CommandResult r = lab("run rig\xff.yaml --duration 1s --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["scene"], "rig\\xff");
+}
+
 // 11. What the log reader's fuzzer (tests/fuzz/hall_log_fuzzer.cpp) found: a header that is not
 // UTF-8 (a Latin-1 "µ" after a column's name) ended `--json` in an internal error.
 TEST_F(InputRefusals, AHeaderThatIsNotUtf8IsShownEscaped) {

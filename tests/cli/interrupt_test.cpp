@@ -21,13 +21,6 @@ std::filesystem::path test_dir() {
          ("frictionlab-cli-interrupt-" + std::to_string(::getpid()));
 }
 
-std::string read(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 long lines(const std::string& text) {
   return static_cast<long>(std::count(text.begin(), text.end(), '\n'));
 }
@@ -48,7 +41,7 @@ TEST(Interrupt, AccuracyKeepsTheFinishedPointsAndExits130) {
   ASSERT_NE(at, std::string::npos) << r.err;
   const long points = std::stol(r.err.substr(at + said.size()));
   // The points finished, each whole, and nothing of the one running.
-  EXPECT_EQ(lines(read(out / "accuracy.csv")), points + 1);
+  EXPECT_EQ(lines(fl::test::read_text(out / "accuracy.csv")), points + 1);
   EXPECT_LT(points, 28);
   std::filesystem::remove_all(out);
 }
@@ -58,7 +51,7 @@ TEST(Interrupt, StabilityFinishesTheCasesRunningAndExits143OnSigterm) {
   // each here): twenty cases take far longer than a second.
   const std::filesystem::path dir = test_dir() / "catalogue";
   std::filesystem::create_directories(dir);
-  const std::string scene = read(kSource + "/scenes/extreme/stribeck-drop.yaml");
+  const std::string scene = fl::test::read_text(kSource + "/scenes/extreme/stribeck-drop.yaml");
   for (int i = 0; i < 20; ++i)
     std::ofstream(dir / ("case-" + std::to_string(i) + ".yaml")) << scene;
   const std::filesystem::path out = test_dir() / "stability";
@@ -68,7 +61,7 @@ TEST(Interrupt, StabilityFinishesTheCasesRunningAndExits143OnSigterm) {
   EXPECT_NE(r.err.find("frictionlab stability: interrupted; kept: the "), std::string::npos)
       << r.err;
   // The case running when the signal came is finished and kept; the others are not run.
-  const long kept = lines(read(out / "stability.csv")) - 1;
+  const long kept = lines(fl::test::read_text(out / "stability.csv")) - 1;
   EXPECT_GE(kept, 1);
   EXPECT_LT(kept, 20);
   EXPECT_NE(r.err.find(std::to_string(20 - kept) + " not run"), std::string::npos) << r.err;
@@ -81,7 +74,7 @@ TEST(Interrupt, CompareKeepsTheRowsDoneAndMarksTheRest) {
   EXPECT_NE(r.out.find("status 130"), std::string::npos) << r.out << r.err;
   EXPECT_NE(r.err.find("frictionlab compare: interrupted; kept: the "), std::string::npos) << r.err;
   // Every row of Table I is in the file, each compared or marked interrupted.
-  const std::string csv = read(out / "compare.csv");
+  const std::string csv = fl::test::read_text(out / "compare.csv");
   EXPECT_EQ(lines(csv), 16);
   EXPECT_NE(csv.find(",interrupted,"), std::string::npos) << csv;
   std::filesystem::remove_all(out);

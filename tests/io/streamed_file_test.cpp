@@ -9,19 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include "support/run_command.hpp"
+
 #include "assets/temp_dir.hpp"
 
 namespace fl {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Writes `lines` numbered lines through `file`, a piece per line.
 std::string write_lines(StreamedFile& file, int lines) {
@@ -47,9 +42,9 @@ TEST(StreamedFile, AFileLargerThanItsPiecesIsWholeOnlyOnceCommitted) {
   // Several pieces of 256 KiB reach the disk before the commit.
   const std::string expected = write_lines(file, 40000);
   ASSERT_GT(expected.size(), 1u << 20);
-  EXPECT_EQ(read(path), "the old file\n");
+  EXPECT_EQ(test::read_text(path), "the old file\n");
   file.commit();
-  EXPECT_EQ(read(path), expected);
+  EXPECT_EQ(test::read_text(path), expected);
   EXPECT_EQ(entries(dir.path()), 1u);  // no temporary file left
   EXPECT_EQ(fs::status(path).permissions() & fs::perms::others_read, fs::perms::others_read);
 }
@@ -62,7 +57,7 @@ TEST(StreamedFile, AFileNeverCommittedLeavesNothingAndTheOldFileAsItWas) {
     StreamedFile file(path.string());
     write_lines(file, 40000);
   }
-  EXPECT_EQ(read(path), "t_us,adc\n0,512\n");
+  EXPECT_EQ(test::read_text(path), "t_us,adc\n0,512\n");
   EXPECT_EQ(entries(dir.path()), 1u);
   {
     StreamedFile fresh((dir.path() / "new.csv").string());
@@ -80,7 +75,7 @@ TEST(StreamedFile, ARestartForgetsWhatWasWritten) {
   file.restart();
   const std::string expected = write_lines(file, 7);
   file.commit();
-  EXPECT_EQ(read(path), expected);
+  EXPECT_EQ(test::read_text(path), expected);
 }
 
 TEST(StreamedFile, AFolderThatCannotHoldItIsNamed) {

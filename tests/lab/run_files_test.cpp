@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/run_command.hpp"
+
 #include "lab/run/run_outputs.hpp"
 #include "support/close_rollers.hpp"
 #include "support/scene_fixture.hpp"
@@ -20,13 +22,6 @@ namespace fl {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 class RunFilesTest : public test::TempFolderTest {
  protected:
@@ -55,7 +50,7 @@ class RunFilesTest : public test::TempFolderTest {
     for (const fs::directory_entry& e : fs::directory_iterator(dir_ / "kept")) {
       const std::string name = e.path().filename().string();
       if (name == "timing.json") continue;  // the run's cost differs
-      EXPECT_EQ(read(dir_ / "streamed" / name), read(e.path())) << name;
+      EXPECT_EQ(test::read_text(dir_ / "streamed" / name), test::read_text(e.path())) << name;
       ++compared;
     }
     EXPECT_EQ(std::distance(fs::directory_iterator(dir_ / "streamed"), {}),
@@ -82,7 +77,7 @@ TEST_F(RunFilesTest, ARunThatStartsAgainStreamsOnlyTheRunItEndsWith) {
   ASSERT_TRUE(summary.solver_iterations_raised.has_value());
   expect_same_files();
   // One header, and one row per step of the run it ended with.
-  const std::string trajectory = read(dir_ / "streamed" / "trajectory.csv");
+  const std::string trajectory = test::read_text(dir_ / "streamed" / "trajectory.csv");
   EXPECT_EQ(static_cast<long long>(std::count(trajectory.begin(), trajectory.end(), '\n')),
             summary.steps + 2);
 }

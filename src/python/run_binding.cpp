@@ -41,15 +41,37 @@ struct PythonRunResult : RunSummary {
 };
 
 // An estimator's value that needs `n` accepted periods, or None with fewer (never 0).
-std::optional<double> with_periods(const EstimatorReport& e, int n, double value) {
-  return e.periods_used >= n ? std::optional<double>(value) : std::nullopt;
+// The estimator's mean (from one accepted period) and its spreads (from two:
+// EstimatorReport::has_spread), None below.
+std::optional<double> with_mean(const EstimatorReport& e, double value) {
+  return e.periods_used >= 1 ? std::optional<double>(value) : std::nullopt;
+}
+std::optional<double> with_spread(const EstimatorReport& e, double value) {
+  return e.has_spread() ? std::optional<double>(value) : std::nullopt;
 }
 
-// A top-level value copied from the estimator (mu_k_estimator and its uncertainties): None where
-// the estimator accepted too few periods to measure it.
-std::optional<double> from_estimator(const RunSummary& s, int n, const std::optional<double>& v) {
-  if (!v || !s.estimator || s.estimator->periods_used < n) return std::nullopt;
-  return v;
+// A field's value as Python holds it: None, a float (infinity kept), an int, a bool, a str, or
+// a dict for a nested object.
+py::object python_field(const FieldValue& field) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>)
+          return py::none();
+        else if constexpr (std::is_same_v<T, nlohmann::json>)
+          return python_value(v);
+        else
+          return py::cast(v);
+      },
+      field.value());
+}
+
+// A plain field's docstring: its unit, what it means, when it is None (lab/run/summary_fields).
+std::string field_doc(const SummaryField& f) {
+  std::string doc = std::string(f.unit).empty() ? "" : std::string(f.unit) + ", ";
+  doc += f.meaning;
+  if (f.null_when != nullptr) doc += "; None when " + std::string(f.null_when);
+  return doc;
 }
 
 // The video module beside this Python module (an installed copy), else the build's: where the
@@ -143,25 +165,25 @@ void bind_reports(py::module_& m) {
       .def_readonly("periods_discarded", &EstimatorReport::periods_discarded)
       .def_readonly("pulses", &EstimatorReport::pulses)
       .def_property_readonly(
-          "period", [](const EstimatorReport& e) { return with_periods(e, 1, e.period); },
+          "period", [](const EstimatorReport& e) { return with_mean(e, e.period); },
           "s, the mean period")
       .def_property_readonly(
-          "period_std", [](const EstimatorReport& e) { return with_periods(e, 2, e.period_std); },
+          "period_std", [](const EstimatorReport& e) { return with_spread(e, e.period_std); },
           "s, standard deviation of the periods")
       .def_property_readonly(
           "period_std_error",
-          [](const EstimatorReport& e) { return with_periods(e, 2, e.period_std_error); },
+          [](const EstimatorReport& e) { return with_spread(e, e.period_std_error); },
           "s, standard error of the mean")
       .def_property_readonly(
-          "mu_k", [](const EstimatorReport& e) { return with_periods(e, 1, e.mu_k); },
+          "mu_k", [](const EstimatorReport& e) { return with_mean(e, e.mu_k); },
           "from the mean period, thin formula (the paper's)")
       .def_property_readonly(
           "mu_k_err_worst",
-          [](const EstimatorReport& e) { return with_periods(e, 2, e.mu_k_err_worst); },
+          [](const EstimatorReport& e) { return with_spread(e, e.mu_k_err_worst); },
           "mu_k (dl/l + 2 dT/T)")
       .def_property_readonly(
           "mu_k_err_quadrature",
-          [](const EstimatorReport& e) { return with_periods(e, 2, e.mu_k_err_quadrature); },
+          [](const EstimatorReport& e) { return with_spread(e, e.mu_k_err_quadrature); },
           "mu_k sqrt((dl/l)^2 + (2 dT/T)^2)");
 
   py::class_<DriveReport>(m, "DriveReport", "The motor and gears over the run (SI, means).")
@@ -220,125 +242,29 @@ void bind_reports(py::module_& m) {
 
 void bind_summary(py::module_& m) {
   using S = RunSummary;
-  py::class_<S>(m, "RunSummary", R"(What one run found (lab/run/run_summary.hpp), SI throughout.
+  py::class_<S> summary(m, "RunSummary",
+                        R"(What one run found (lab/run/run_summary.hpp), SI throughout.
 
 A value the run did not measure is None, never 0. str(summary) is the summary
-`frictionlab run` prints; summary.json() the object `frictionlab run --json` prints.)")
-      .def_readonly("scene", &S::scene)
-      .def_readonly("seed", &S::seed)
-      .def_readonly("spacing", &S::spacing, "l [m]")
-      .def_readonly("mu_k_set", &S::mu_k_set, "the scene's mu_k")
-      .def_readonly("h_c", &S::h_c, "m, the centre of mass above the contact line")
-      .def_readonly("plate_mass", &S::plate_mass, "kg")
-      .def_readonly("gravity", &S::gravity, "m/s^2")
-      .def_readonly("temperature", &S::temperature, "K, of the rollers")
-      .def_readonly("clock_error", &S::clock_error, "the sensor board's clock error, or None")
-      .def_readonly("runout", &S::runout, "m, the rollers' run-out, or None for true rollers")
-      .def_readonly("runout_threshold", &S::runout_threshold,
-                    "m, the run-out above which theory has the plate hop, or None")
-      .def_readonly("warming", &S::warming, "rollers warming over the run, or None")
-      .def_readonly("time_step", &S::time_step, "s")
-      .def_readonly("solver_iterations", &S::solver_iterations, "the iterations the run ended with")
-      .def_readonly("solver_iterations_raised", &S::solver_iterations_raised,
-                    "from what, to what and why the run raised them, or None")
-      .def_readonly("duration", &S::duration, "s simulated")
-      .def_readonly("steps", &S::steps)
-      .def_property_readonly(
-          "paper_material",
-          [](const S& s) {
-            return s.paper_material.empty() ? std::nullopt : std::optional(s.paper_material);
-          },
-          "the Table I key the scene took mu_k from, or None")
-      .def_readonly("paper_period", &S::paper_period, "T +- dT the paper measured [s], or None")
-      .def_readonly("paper_mu_k", &S::paper_mu_k, "mu_k +- d mu_k the paper printed, or None")
-      .def_readonly("period_thin", &S::period_thin, "s, the paper's formula")
-      .def_readonly("period_thick", &S::period_thick, "s; None without a restoring force")
-      .def_readonly("predicted_integrator_bias", &S::predicted_integrator_bias,
-                    "relative, -(omega dt)^2 / 24")
-      .def_readonly("slip_threshold", &S::slip_threshold, "rad/s, roller speed for full slip")
-      .def_readonly("regime", &S::regime, "the regime the run diagnosed")
-      .def_readonly("regime_since", &S::regime_since, "s, when it began")
-      .def_readonly("regime_evidence", &S::regime_evidence, "why")
-      .def_readonly("clip_time", &S::clip_time, "s, clipped: when the first stick began")
-      .def_readonly("amplitude_before_clip", &S::amplitude_before_clip, "m, clipped")
-      .def_readonly("amplitude_clipped", &S::amplitude_clipped, "m, clipped: the steady amplitude")
-      .def_readonly("stick_slip_period", &S::stick_slip_period, "s, stick-slip")
-      .def_readonly("stick_slip_amplitude", &S::stick_slip_amplitude, "m, stick-slip")
-      .def_readonly("stick_duration", &S::stick_duration, "s, stick-slip: one stick phase")
-      .def_readonly("growth_rate", &S::growth_rate, "1/s, grows or decays: d ln A / dt")
-      .def_readonly("e_folding_time", &S::e_folding_time, "s, grows or decays")
-      .def_readonly("jumps", &S::jumps, "lift-offs and landings, or None if it never left")
-      .def_readonly("first_jump_time", &S::first_jump_time, "s")
-      .def_readonly("longest_jump", &S::longest_jump, "s")
-      .def_readonly("highest_jump", &S::highest_jump, "m, the largest gap under the plate")
+`frictionlab run` prints; summary.json() the object `frictionlab run --json` prints.)");
+  // Every plain value from the one declaration of a run's fields (lab/run/summary_fields.hpp); the
+  // typed ones (enums and reports) below.
+  for (const SummaryField& f : summary_fields()) {
+    if (f.python == nullptr || f.python_type != nullptr) continue;
+    const auto get = f.get;
+    summary.def_property_readonly(
+        f.python, [get](const S& s) { return python_field(get(s)); }, field_doc(f).c_str());
+  }
+  summary.def_readonly("regime", &S::regime, "the regime the run diagnosed")
       .def_readonly("regime_theory", &S::regime_theory,
                     "the regime the closed forms give, where the run has numbers to hold "
                     "against them")
-      .def_readonly("amplitude_clipped_theory", &S::amplitude_clipped_theory, "m, v_r / Omega")
-      .def_readonly("stick_slip_period_theory", &S::stick_slip_period_theory, "s")
-      .def_readonly("stick_slip_amplitude_theory", &S::stick_slip_amplitude_theory, "m")
-      .def_readonly("stick_duration_theory", &S::stick_duration_theory, "s")
-      .def_readonly("growth_rate_theory", &S::growth_rate_theory, "1/s")
-      .def_readonly("period", &S::period,
-                    "s, the headline period (the rig's estimator); None but for a harmonic "
-                    "oscillation (period_withheld says why)")
-      .def_readonly("mu_k_recovered", &S::mu_k_recovered, "from the period, thin formula")
-      .def_readonly("mu_k_recovered_thick", &S::mu_k_recovered_thick,
-                    "from the period, thick formula with the rig's h_c")
       .def_readonly("mu_k_source", &S::mu_k_source, "where mu_k comes from")
-      .def_readonly("period_withheld", &S::period_withheld, "why there is no period, or None")
-      .def_property_readonly(
-          "mu_k_estimator", [](const S& s) { return from_estimator(s, 1, s.mu_k_estimator); },
-          "the estimator's own mu_k (thin formula), harmonic oscillations only")
-      .def_property_readonly(
-          "mu_k_err_worst", [](const S& s) { return from_estimator(s, 2, s.mu_k_err_worst); },
-          "its uncertainty, worst case")
-      .def_property_readonly(
-          "mu_k_err_quadrature",
-          [](const S& s) { return from_estimator(s, 2, s.mu_k_err_quadrature); },
-          "its uncertainty, in quadrature")
       .def_readonly("estimator", &S::estimator, "the estimator's report, or None without a sensor")
-      .def_readonly("period_trajectory", &S::period_trajectory,
-                    "s, the trajectory's own period (crossings of x = 0), harmonic only")
-      .def_readonly("period_trajectory_err", &S::period_trajectory_err, "s, its standard error")
-      .def_readonly("oscillation_centre", &S::oscillation_centre,
-                    "m, the mean of the midpoints of successive turning points")
-      .def_readonly("oscillation_centre_theory", &S::oscillation_centre_theory,
-                    "m, a tilted rig's x_eq (0 on a level one)")
-      .def_readonly("tilt", &S::tilt, "rad, world.tilt")
-      .def_readonly("drift_speed", &S::drift_speed,
-                    "m/s along +y, skewed axes' sideways drift over the run's second half; None "
-                    "without skew")
-      .def_readonly("drift_speed_theory", &S::drift_speed_theory,
-                    "m/s, v_r sin(skew / 2); None without skew or with unequal speeds")
-      .def_readonly("estimator_disagreement", &S::estimator_disagreement,
-                    "the estimator's period against the trajectory's, beyond both "
-                    "uncertainties, or None")
-      .def_readonly("amplitude_start", &S::amplitude_start,
-                    "m, first turning point; None when the run reached none")
-      .def_readonly("amplitude_end", &S::amplitude_end,
-                    "m, last turning point; None when the run reached none")
-      .def_readonly("amplitude_drift_per_period", &S::amplitude_drift_per_period, "relative")
-      .def_readonly("roller_speed", &S::roller_speed,
-                    "rad/s, roller 0's (mean when driven or ramped)")
-      .def_readonly("roller_speed_1", &S::roller_speed_1,
-                    "rad/s, roller 1's (mean when driven or ramped)")
       .def_readonly("drive", &S::drive, "the motor and gears, or None for the ideal drive")
-      .def_readonly("plate_speed_max", &S::plate_speed_max, "m/s")
-      .def_readonly("slip_margin", &S::slip_margin, "roller surface speed / plate's largest speed")
-      .def_readonly("min_normal_force", &S::min_normal_force, "N, over the run")
-      .def_readonly("max_penetration", &S::max_penetration, "m")
-      .def_readonly("failure", &S::failure, "what stopped the run, or None")
-      .def_readonly("interrupted_at", &S::interrupted_at,
-                    "s: where an interrupt ended the run before its duration, or None")
-      .def_readonly("condition_period", &S::condition_period, "d ln mu / d ln T (thick formula)")
-      .def_readonly("condition_spacing", &S::condition_spacing, "d ln mu / d ln l")
-      .def_readonly("condition_h_c", &S::condition_h_c, "d ln mu / d ln h_c")
-      .def_readonly("wall_s", &S::wall_s, "s of wall time")
-      .def_readonly("real_time_factor", &S::real_time_factor)
-      .def_readonly("steps_per_second", &S::steps_per_second)
-      .def_property_readonly("harmonic", &S::harmonic,
-                             "an oscillation whose period the paper's formula reads")
+      .def_readonly("warming", &S::warming, "rollers warming over the run, or None")
+      .def_readonly("paper_period", &S::paper_period, "T +- dT the paper measured [s], or None")
+      .def_readonly("paper_mu_k", &S::paper_mu_k, "mu_k +- d mu_k the paper printed, or None")
       .def(
           "json",
           [](const S& s) {
@@ -357,7 +283,7 @@ A value the run did not measure is None, never 0. str(summary) is the summary
             const auto it = j.find(key);
             if (it == j.end()) {
               for (const SummaryField& f : summary_fields())
-                if (f.summary_key != nullptr && key == f.summary_key) return py::object(py::none());
+                if (f.json != nullptr && key == f.json) return py::object(py::none());
               throw py::key_error("summary.json has no key \"" + key +
                                   "\" (docs/cli.md lists them)");
             }

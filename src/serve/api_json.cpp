@@ -109,7 +109,7 @@ json estimate_json(const std::optional<EstimatorReport>& report) {
   // The spreads and mu_k's uncertainty from two periods on, as the summary gives them: one
   // period has none (null, never 0).
   const EstimatorReport& e = *report;
-  const bool spread = e.periods_used >= 2;
+  const bool spread = e.has_spread();
   const auto measured = [spread](double v) { return spread ? json(v) : json(nullptr); };
   return {{"periods_used", e.periods_used},
           {"periods_discarded", e.periods_discarded},

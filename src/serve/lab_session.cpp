@@ -105,7 +105,7 @@ SessionStanding LabSession::standing() const {
   const std::lock_guard lock(mutex_);
   SessionStanding out;
   out.t = run_->time();
-  const bool spread = estimate_ && estimate_->periods_used >= 2;
+  const bool spread = estimate_ && estimate_->has_spread();
   if (run_->ended() && done_sent_) {
     // The summary the page was sent: the run's headline values.
     const RunSummary& s = run_->summary();
@@ -113,8 +113,7 @@ SessionStanding LabSession::standing() const {
     if (s.period) {
       out.period = s.period;
       out.period_from = "sensor";
-      if (s.estimator && s.estimator->periods_used >= 2)
-        out.period_err = s.estimator->period_std_error;
+      if (s.estimator && s.estimator->has_spread()) out.period_err = s.estimator->period_std_error;
     } else if (s.period_trajectory) {
       // A rig without a Hall sensor: the period fitted to the plate's trajectory.
       out.period = s.period_trajectory;

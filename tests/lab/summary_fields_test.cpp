@@ -6,6 +6,8 @@
 #include <numbers>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -20,14 +22,60 @@ Scene minimal_scene(std::vector<SceneOverride> overrides = {}) {
 }
 
 TEST(SummaryFields, NamesAreUniqueAndEveryFieldIsWrittenSomewhere) {
-  std::set<std::string> keys, columns;
+  std::set<std::string> keys, columns, attributes;
   for (const SummaryField& f : summary_fields()) {
-    EXPECT_TRUE(f.summary_key != nullptr || f.sweep_column != nullptr);
-    if (f.summary_key != nullptr) {
-      EXPECT_TRUE(keys.insert(f.summary_key).second) << f.summary_key;
+    EXPECT_TRUE(f.json != nullptr || f.sweep != nullptr || f.python != nullptr);
+    EXPECT_NE(std::string(f.meaning), "");
+    EXPECT_NE(f.get, nullptr);
+    if (f.json != nullptr) {
+      EXPECT_TRUE(keys.insert(f.json).second) << f.json;
     }
-    if (f.sweep_column != nullptr) {
-      EXPECT_TRUE(columns.insert(f.sweep_column).second) << f.sweep_column;
+    if (f.sweep != nullptr) {
+      EXPECT_TRUE(columns.insert(f.sweep).second) << f.sweep;
+    }
+    if (f.python != nullptr) {
+      EXPECT_TRUE(attributes.insert(f.python).second) << f.python;
+    }
+    // A key left out when null says when.
+    if (f.omit_when_null) {
+      EXPECT_NE(f.null_when, nullptr) << f.json;
+    }
+  }
+}
+
+// A field that says it is never null is never null, and its unit is what its key's suffix says
+// (`_s` seconds, `_m` metres, ...): over runs that reach every regime's fields.
+TEST(SummaryFields, NullRulesAndUnitsHoldOverRunsOfEveryKind) {
+  std::vector<RunSummary> runs;
+  runs.push_back(run_experiment(minimal_scene({{"world.duration", "3 s"}}), {}));
+  runs.push_back(run_experiment(minimal_scene({{"world.duration", "3 s"},
+                                               {"rollers.speed", "200 rpm"},
+                                               {"plate.offset", "30 mm"},
+                                               {"friction.mu_s", "0.348"}}),
+                                {}));
+  Scene bare = minimal_scene({{"world.duration", "3 s"}});
+  bare.sensor.reset();
+  runs.push_back(run_experiment(bare, {}));
+  const std::vector<std::pair<std::string, std::string>> suffixes = {
+      {"_m_s2", "m/s^2"}, {"_rad_s", "rad/s"}, {"_m_s", "m/s"}, {"_per_s", "1/s"},
+      {"_rad", "rad"},    {"_kg", "kg"},       {"_n", "N"},     {"temperature_k", "K"},
+      {"_m", "m"},        {"_s", "s"}};
+  for (const SummaryField& f : summary_fields()) {
+    for (const RunSummary& r : runs) {
+      if (f.null_when == nullptr) {
+        EXPECT_FALSE(f.get(r).is_none()) << (f.json ? f.json : f.python);
+      }
+    }
+    const std::string name = f.json ? f.json : (f.sweep ? f.sweep : "");
+    std::string unit;
+    for (const auto& [suffix, u] : suffixes)
+      if (name.size() >= suffix.size() &&
+          name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+        unit = u;
+        break;
+      }
+    if (f.type == FieldType::kNumber && !name.empty() && name != "steps_per_second") {
+      EXPECT_EQ(unit, f.unit) << name;
     }
   }
 }

@@ -151,7 +151,7 @@ void decide_headline(RunSummary& out) {
     // The estimator's mu_k from one accepted period on; its uncertainty, from the periods'
     // spread, from two.
     if (out.estimator && out.estimator->periods_used > 0) out.mu_k_estimator = out.estimator->mu_k;
-    if (out.estimator && out.estimator->periods_used >= 2) {
+    if (out.estimator && out.estimator->has_spread()) {
       out.mu_k_err_worst = out.estimator->mu_k_err_worst;
       out.mu_k_err_quadrature = out.estimator->mu_k_err_quadrature;
     }

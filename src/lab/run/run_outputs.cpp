@@ -12,12 +12,6 @@
 
 namespace fl {
 
-nlohmann::json timing_json(const RunSummary& s) {
-  return nlohmann::json{{"wall_s", s.wall_s},
-                        {"real_time_factor", s.real_time_factor},
-                        {"steps_per_second", s.steps_per_second}};
-}
-
 namespace {
 
 // The gear train's line: the ratio and senses are measured over the steps in which the motor and

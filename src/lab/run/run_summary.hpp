@@ -27,6 +27,10 @@ struct EstimatorReport {
   double mu_k = 0.0;              // from the mean period, thin formula (the paper's)
   double mu_k_err_worst = 0.0;
   double mu_k_err_quadrature = 0.0;
+
+  // A spread (dT, the standard error, d mu_k) needs two accepted periods: below that it is not
+  // measured, and every output gives it as null, never 0. The one place that says so.
+  bool has_spread() const { return periods_used >= 2; }
 };
 
 // The motor and gears over the run (scenes with a drive).

@@ -1,8 +1,17 @@
-// The one table of a run's result fields: each field's name in summary.json, its column in a
-// sweep's rows (results.csv and results.json), and how to read it from a RunSummary. The JSON
-// summary and the sweep rows are both generated from it, so a new field is added here, once.
+// The one declaration of a run's result fields: each field's name in every output that carries
+// it (summary.json and `run --json`, timing.json, a sweep's rows, the Python module's RunSummary),
+// its type, its unit, what it means and when it is null, and how to read it from a RunSummary.
+// summary.json, timing.json and the sweep rows are written from it; the Python attributes of plain
+// values are bound from it; docs/cli.md's and docs/sweep-format.md's key tables, the .pyi stub's
+// RunSummary and the page's TypeScript type are generated from it (tools/generate-fields) and a
+// test fails when one of them is not what it gives. A new field is one entry here plus its
+// computation.
 #pragma once
 
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -11,18 +20,79 @@
 
 namespace fl {
 
-struct SummaryField {
-  const char* summary_key;                   // in summary.json; nullptr: not there
-  const char* sweep_column;                  // in a sweep's rows; nullptr: not there
-  nlohmann::json (*get)(const RunSummary&);  // null where the run has no such value
-  bool omit_when_null = false;               // summary.json leaves the key out instead
+// A field's value as the run holds it: none (the run did not measure it), a number, a whole
+// number, a yes or no, a text, or a nested object (JSON).
+class FieldValue {
+ public:
+  using Value = std::variant<std::monostate, double, std::int64_t, std::uint64_t, bool, std::string,
+                             nlohmann::json>;
+  FieldValue() = default;
+  static FieldValue number(double v) { return FieldValue(v); }
+  static FieldValue number(const std::optional<double>& v) {
+    return v ? FieldValue(*v) : FieldValue();
+  }
+  static FieldValue whole(std::int64_t v) { return FieldValue(v); }
+  static FieldValue whole(std::uint64_t v) { return FieldValue(v); }
+  static FieldValue whole(const std::optional<int>& v) {
+    return v ? FieldValue(std::int64_t{*v}) : FieldValue();
+  }
+  static FieldValue flag(bool v) { return FieldValue(v); }
+  static FieldValue text(std::string v) { return FieldValue(std::move(v)); }
+  static FieldValue text(const char* v) { return FieldValue(std::string(v)); }
+  static FieldValue text(const std::optional<std::string>& v) {
+    return v ? FieldValue(*v) : FieldValue();
+  }
+  // A nested object; JSON null for none.
+  static FieldValue object(nlohmann::json v) {
+    return v.is_null() ? FieldValue() : FieldValue(std::move(v));
+  }
+
+  const Value& value() const { return value_; }
+  bool is_none() const { return std::holds_alternative<std::monostate>(value_); }
+  // The JSON value: null for none, and for a number that is not finite (JSON holds none).
+  nlohmann::json json() const;
+
+ private:
+  template <typename T>
+  explicit FieldValue(T v) : value_(std::move(v)) {}
+  Value value_;
 };
 
-// In the order of a sweep's columns (the summary's keys are written sorted).
+// What a field's values are, for the typed front ends (the .pyi stub, the page's TypeScript).
+enum class FieldType {
+  kNumber,   // a real number (float; JSON number)
+  kInteger,  // a whole number
+  kText,     // a text
+  kFlag,     // yes or no
+  kObject,   // a nested object (its keys in `meaning`)
+};
+
+struct SummaryField {
+  const char* json = nullptr;    // key in summary.json and `run --json`; nullptr: not there
+  const char* sweep = nullptr;   // column of a sweep's rows; nullptr: not there
+  const char* python = nullptr;  // attribute of the Python RunSummary; nullptr: not there
+  // The Python attribute's type where it is not the plain value (an enum or a class the binding
+  // makes by hand: "Regime", "DriveReport"); nullptr: the plain value, bound from `get`.
+  const char* python_type = nullptr;
+  FieldType type = FieldType::kNumber;
+  const char* unit = "";     // SI ("s", "m", "rad/s", "kg", "N", "K", "1/s"); "" for none
+  const char* meaning = "";  // one sentence for the docs and the stubs
+  // When the value is null (JSON) or None (Python); nullptr: never.
+  const char* null_when = nullptr;
+  FieldValue (*get)(const RunSummary&) = nullptr;
+  bool omit_when_null = false;  // summary.json leaves the key out instead of writing null
+  bool timing = false;          // this machine's cost: timing.json (and `run --json`), never
+                                // summary.json, whose bytes must not depend on the machine
+};
+
+// Every field, in the order of a sweep's columns (the summary's keys are written sorted).
 const std::vector<SummaryField>& summary_fields();
 
-// summary.json's object: every field with a summary key.
+// summary.json's object: every field with a JSON key but the timing ones.
 nlohmann::json summary_json(const RunSummary& summary);
+
+// timing.json's object: the timing fields (wall time, real-time factor, steps per second).
+nlohmann::json timing_json(const RunSummary& summary);
 
 // A sweep row's columns from a run: every field with a sweep column.
 void fill_sweep_columns(nlohmann::json& row, const RunSummary& summary);

@@ -282,33 +282,54 @@ class VideoReport:
     finish_seconds: float
 
 class RunSummary:
+    # generated: run-summary-attributes (tools/generate-fields, from src/lab/run/summary_fields.cpp)
     scene: str
     seed: int
-    spacing: float
+    regime: Regime
+    regime_since: float
+    period_withheld: Optional[str]
+    failure: Optional[str]
+    interrupted_at: Optional[float]
+    estimator_disagreement: Optional[str]
+    condition_period: float
+    condition_spacing: float
+    condition_h_c: float
+    period: Optional[float]
+    period_trajectory: Optional[float]
+    period_trajectory_err: Optional[float]
+    oscillation_centre: Optional[float]
+    oscillation_centre_theory: Optional[float]
+    drift_speed: Optional[float]
+    drift_speed_theory: Optional[float]
+    tilt: float
+    period_thin: float
+    period_thick: Optional[float]
     mu_k_set: float
-    h_c: float
-    plate_mass: float
-    gravity: float
-    temperature: float
+    mu_k_recovered: Optional[float]
+    mu_k_source: Optional[PeriodSource]
+    mu_k_recovered_thick: Optional[float]
+    mu_k_estimator: Optional[float]
+    mu_k_err_worst: Optional[float]
+    mu_k_err_quadrature: Optional[float]
+    estimator: Optional[EstimatorReport]
+    predicted_integrator_bias: Optional[float]
     clock_error: Optional[float]
     runout: Optional[float]
     runout_threshold: Optional[float]
-    warming: Optional[WarmingReport]
-    time_step: float
-    solver_iterations: int
-    solver_iterations_raised: Optional[str]
-    duration: float
-    steps: int
-    paper_material: Optional[str]
-    paper_period: Optional[Measured]
-    paper_mu_k: Optional[Measured]
-    period_thin: float
-    period_thick: Optional[float]
-    predicted_integrator_bias: Optional[float]
+    spacing: float
+    h_c: float
+    plate_mass: float
+    temperature: float
+    gravity: float
+    roller_speed: float
+    roller_speed_1: float
+    drive: Optional[DriveReport]
+    plate_speed_max: float
+    slip_margin: float
     slip_threshold: Optional[float]
-    regime: Regime
-    regime_since: float
-    regime_evidence: str
+    amplitude_start: Optional[float]
+    amplitude_end: Optional[float]
+    amplitude_drift_per_period: Optional[float]
     clip_time: Optional[float]
     amplitude_before_clip: Optional[float]
     amplitude_clipped: Optional[float]
@@ -327,42 +348,23 @@ class RunSummary:
     stick_slip_amplitude_theory: Optional[float]
     stick_duration_theory: Optional[float]
     growth_rate_theory: Optional[float]
-    period: Optional[float]
-    mu_k_recovered: Optional[float]
-    mu_k_recovered_thick: Optional[float]
-    mu_k_source: Optional[PeriodSource]
-    period_withheld: Optional[str]
-    mu_k_estimator: Optional[float]
-    mu_k_err_worst: Optional[float]
-    mu_k_err_quadrature: Optional[float]
-    estimator: Optional[EstimatorReport]
-    period_trajectory: Optional[float]
-    period_trajectory_err: Optional[float]
-    oscillation_centre: Optional[float]
-    oscillation_centre_theory: Optional[float]
-    drift_speed: Optional[float]
-    drift_speed_theory: Optional[float]
-    tilt: float
-    estimator_disagreement: Optional[str]
-    amplitude_start: Optional[float]
-    amplitude_end: Optional[float]
-    amplitude_drift_per_period: Optional[float]
-    roller_speed: float
-    roller_speed_1: float
-    drive: Optional[DriveReport]
-    plate_speed_max: float
-    slip_margin: float
+    warming: Optional[WarmingReport]
+    paper_material: Optional[str]
+    paper_period: Optional[Measured]
+    paper_mu_k: Optional[Measured]
     min_normal_force: float
     max_penetration: float
-    failure: Optional[str]
-    interrupted_at: Optional[float]
-    condition_period: float
-    condition_spacing: float
-    condition_h_c: float
+    time_step: float
+    solver_iterations: int
+    solver_iterations_raised: Optional[str]
+    duration: float
+    steps: int
+    regime_evidence: str
+    harmonic: bool
     wall_s: float
     real_time_factor: float
     steps_per_second: float
-    harmonic: bool
+    # end generated
     def __getitem__(self, key: str) -> Any: ...
     def json(self) -> dict[str, Any]: ...
 

@@ -1,5 +1,6 @@
 // The shapes of the lab's web API (docs/web-api.md). Lengths in metres, times in seconds,
 // angles in radians unless a key's name says otherwise (_mm, _rpm, _K); null: not measured.
+import type { RunSummaryJson } from "./run_summary";
 
 export interface SceneEntry {
   name: string;
@@ -143,7 +144,8 @@ export interface LabState {
 /** The run's summary (the same object as its summary.json); its keys are the CLI's (the
  * headline: period_s, period_std_s, period_std_error_s, mu_k_recovered, mu_k_err_quadrature,
  * regime). */
-export type Summary = Record<string, unknown>;
+/** A finished run's summary: summary.json's object, typed from the lab's declaration of its fields. */
+export type Summary = RunSummaryJson;
 
 export interface Failure {
   message: string;

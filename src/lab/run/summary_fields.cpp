@@ -109,10 +109,13 @@ const std::vector<SummaryField>& summary_fields() {
        .meaning = "the scene's name (its `name:`, else its file's)",
        .get = [](S s) { return V::text(s.scene); }},
       {.json = "seed", .sweep = "seed", .python = "seed", .type = T::kInteger,
-       .meaning = "`world.seed`: the sensor's noise and jitter",
+       .meaning = "`world.seed`, which draws the sensor's noise and jitter: `frictionlab run` with "
+                  "a sweep point's overrides (its `set` in sweep.json) and this seed replays it",
        .get = [](S s) { return V::whole(s.seed); }},
       {.sweep = "status", .type = T::kText,
-       .meaning = "`ok`, or `failed` when a guard stopped the run or its regime is `numerically failed`",
+       .meaning = "`ok`; `failed` when a guard stopped the run, its regime is `numerically "
+                  "failed` or it threw (a run of it alone exits 3); `invalid` when the scene "
+                  "refused the point's overrides",
        .get = [](S s) { return V::text(s.failed() ? "failed" : "ok"); }},
       {.json = "regime", .sweep = "regime", .python = "regime", .python_type = "Regime",
        .type = T::kText,
@@ -341,8 +344,8 @@ const std::vector<SummaryField>& summary_fields() {
        .meaning = "the plate's largest speed over the run",
        .get = [](S s) { return V::number(s.plate_speed_max); }},
       {.json = "slip_margin", .sweep = "slip_margin", .python = "slip_margin",
-       .meaning = "the rollers' surface speed over the plate's largest speed",
-       .null_when = "the plate never moved (JSON: infinite; Python: inf)",
+       .meaning = "the rollers' surface speed over the plate's largest speed: infinite (JSON: "
+                  "null) when the plate never moved",
        .get = [](S s) { return V::number(s.slip_margin); }},
       {.sweep = "slip_threshold_rad_s", .python = "slip_threshold", .unit = "rad/s",
        .meaning = "the rollers' speed at which their surface keeps up with the plate's largest "
@@ -500,8 +503,10 @@ const std::vector<SummaryField>& summary_fields() {
       {.json = "regime_evidence", .sweep = "regime_detail", .python = "regime_evidence",
        .type = T::kText, .meaning = "what showed the regime (which force, which speed)",
        .get = [](S s) { return V::text(s.regime_evidence); }},
-      {.sweep = "error", .type = T::kText, .meaning = "the guard's message when one stopped the run",
-       .null_when = "no guard stopped the run",
+      {.sweep = "error", .type = T::kText,
+       .meaning = "why a failed or invalid point has no result (a guard's message, the scene's "
+                  "refusal)",
+       .null_when = "the point is `ok`",
        .get = [](S s) { return V::text(s.failure); }},
       {.python = "harmonic", .type = T::kFlag,
        .meaning = "an oscillation whose period the paper's formula reads (`oscillates`, "

@@ -156,7 +156,7 @@ struct RigFrames {
       MotionStripState strip;
       strip.t = t;
       strip.simulated = motion;
-      strip.theory = ThickPlateCurve{0.03, 0.0, w};
+      strip.theory = fl::HarmonicMotion{0.03, 0.0, w};
       strip.theory_label = "theory: thick plate, \xce\xbc\xe2\x82\x96 = 0.29, T = 0.7766 s";
       strip.turning_points = pulses;
       state.motion = strip;

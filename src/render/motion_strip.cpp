@@ -19,15 +19,6 @@ using palette::kWhite;
 
 }  // namespace
 
-double ThickPlateCurve::at(double t) const {
-  return centre + x0 * std::cos(omega * t) +
-         (omega > 0.0 ? v0 / omega * std::sin(omega * t) : v0 * t);
-}
-
-double ThickPlateCurve::velocity_at(double t) const {
-  return omega > 0.0 ? -x0 * omega * std::sin(omega * t) + v0 * std::cos(omega * t) : v0;
-}
-
 std::optional<double> position_at(std::span<const Eigen::Vector2d> simulated, double t) {
   if (simulated.empty()) return std::nullopt;
   if (t <= simulated.front().x()) return simulated.front().y();

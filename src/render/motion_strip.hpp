@@ -10,28 +10,17 @@
 
 #include <Eigen/Core>
 
+#include "core/harmonic_motion.hpp"
 #include "render/overlay.hpp"
 
 namespace fl::render {
-
-// x(t) of the harmonic oscillator the thick-plate formula describes: released at x0 with speed
-// v0 at t = 0, angular frequency omega = 2 pi / T_thick, about x = 0.
-struct ThickPlateCurve {
-  double x0 = 0.0;      // m, from the centre
-  double v0 = 0.0;      // m/s
-  double omega = 0.0;   // rad/s
-  double centre = 0.0;  // m, what the plate oscillates about (a tilted rig's x_eq)
-
-  double at(double t) const;           // m
-  double velocity_at(double t) const;  // m/s, dx/dt
-};
 
 struct MotionStripState {
   double t = 0.0;       // s, now: the strip's right end
   double window = 2.5;  // s the strip spans
   // The plate's centre of mass, (t [s], x [m]) in time order.
   std::span<const Eigen::Vector2d> simulated;
-  std::optional<ThickPlateCurve> theory;   // none when the rollers do not restore the plate
+  std::optional<HarmonicMotion> theory;    // none when the rollers do not restore the plate
   std::string theory_label;                // "thick plate, μₖ = 0.29"
   std::span<const double> turning_points;  // s
   double x_range = 0.03;                   // m: the strip shows -x_range .. +x_range

@@ -28,7 +28,7 @@ PhaseAxes phase_axes(const PhasePortraitState& state) {
   axes.x_range = std::max(1e-6, state.x_range);
   double top = 1e-3;
   if (state.theory) {
-    const ThickPlateCurve& c = *state.theory;
+    const HarmonicMotion& c = *state.theory;
     top = std::max(top, std::hypot(c.x0 * c.omega, c.v0));
   }
   for (const Eigen::Vector3d& p : state.simulated)

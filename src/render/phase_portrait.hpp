@@ -21,9 +21,9 @@ struct PhasePortraitState {
   double window = 2.5;  // s of the trace drawn
   // The plate's centre of mass, (t [s], x [m], v [m/s]) in time order.
   std::span<const Eigen::Vector3d> simulated;
-  std::optional<ThickPlateCurve> theory;  // none when the rollers do not restore the plate
-  double slip_speed = 0.0;                // v_r [m/s]: the rollers' surface speed
-  double x_range = 0.03;                  // m: the portrait shows -x_range .. +x_range
+  std::optional<HarmonicMotion> theory;  // none when the rollers do not restore the plate
+  double slip_speed = 0.0;               // v_r [m/s]: the rollers' surface speed
+  double x_range = 0.03;                 // m: the portrait shows -x_range .. +x_range
 };
 
 // What the portrait's axes span: x from -x_range to +x_range, v from -v_range to +v_range.

@@ -138,6 +138,7 @@ json frame_json(const LiveFrame& f, bool playing, double speed) {
   return {
       {"t", f.t},
       {"x", f.plate.x},
+      {"x_theory", json_or_null(f.x_theory)},
       {"y", f.plate.y},
       {"z", f.plate.z},
       {"pitch", f.plate.pitch},

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "lab/run/run_outputs.hpp"
@@ -103,6 +104,50 @@ TEST(LiveRun, NoFilesBeforeTheEnd) {
   EXPECT_FALSE(live.ended());
   EXPECT_THROW(live.summary(), std::logic_error);
   EXPECT_THROW(live.file("summary.json"), std::logic_error);
+}
+
+// The theory a live frame carries (the page draws it as sent): on a rig tilted by 3 degrees it
+// starts where the plate does and oscillates about x_eq, down the slope, not about the middle;
+// and the simulated plate follows it to within the integrator's phase error over three periods.
+TEST(LiveRun, FramesCarryTheTheoryAboutATiltedRigsCentre) {
+  const Scene scene = test::scene_file(
+      "minimal.yaml",
+      std::vector<SceneOverride>{{"world.tilt", "3 deg"}, {"world.duration", "3 s"}});
+  const std::shared_ptr<const CompiledRig> rig = rig_of(scene);
+  ASSERT_TRUE(rig->oscillation_centre && rig->omega);
+  const double centre = *rig->oscillation_centre;
+  EXPECT_LT(centre, -1e-3);  // x_eq = -(l - 2 mu_k h_c) tan(alpha) / (2 mu_k): millimetres
+  LiveRun live(rig, scene.output);
+  LiveFrame first = live.advance_to(0.0);
+  ASSERT_TRUE(first.x_theory.has_value());
+  EXPECT_NEAR(*first.x_theory, first.plate.x, 1e-12);
+  double lowest = 1.0, highest = -1.0, worst = 0.0;
+  for (double t = 0.01; !live.ended(); t += 0.01) {
+    const LiveFrame f = live.advance_to(t);
+    ASSERT_TRUE(f.x_theory.has_value());
+    lowest = std::min(lowest, *f.x_theory);
+    highest = std::max(highest, *f.x_theory);
+    worst = std::max(worst, std::fabs(f.plate.x - *f.x_theory));
+  }
+  // Its turning points straddle x_eq symmetrically (sampled every 10 ms: within omega^2 A dt^2).
+  EXPECT_NEAR(0.5 * (lowest + highest), centre, 2e-5);
+  // The simulated plate lags theory by the semi-implicit Euler step's half step, omega dt / 2 of
+  // phase from its start at rest (A omega dt / 2 of position, A = |x0 - x_eq|), plus its
+  // (omega dt)^2 / 24 of period over the run: nothing else.
+  const double amplitude = std::fabs(first.plate.x - centre);
+  const double omega = *rig->omega, dt = rig->world.time_step;
+  EXPECT_LT(worst, 1.05 * amplitude * omega * dt / 2.0 +
+                       amplitude * omega * 3.0 * omega * dt * omega * dt / 24.0)
+      << worst;
+}
+
+// A rig whose rollers turn outward restores nothing: no theory to draw.
+TEST(LiveRun, RollersTurningOutwardHaveNoTheory) {
+  const Scene scene = test::scene_file(
+      "minimal.yaml",
+      std::vector<SceneOverride>{{"rollers.sense", "outward"}, {"world.duration", "0.1 s"}});
+  LiveRun live(rig_of(scene), scene.output);
+  EXPECT_FALSE(live.advance_to(0.05).x_theory.has_value());
 }
 
 }  // namespace

@@ -336,11 +336,11 @@ TEST(ForceOverlay, ArrowsPointAlongTheirForcesToOneScale) {
 // between its samples.
 TEST(MotionStrip, TheTheoryIsTheThickPlatesHarmonicMotion) {
   const double omega = 2.0 * kPi / 0.7766;
-  const ThickPlateCurve released{0.03, 0.0, omega};
+  const HarmonicMotion released{0.03, 0.0, omega};
   EXPECT_NEAR(released.at(0.7766), 0.03, 1e-12);
   EXPECT_NEAR(released.at(0.7766 / 2.0), -0.03, 1e-12);
   EXPECT_NEAR(released.at(0.7766 / 4.0), 0.0, 1e-12);
-  const ThickPlateCurve pushed{0.0, 0.2, omega};
+  const HarmonicMotion pushed{0.0, 0.2, omega};
   EXPECT_NEAR(pushed.at(0.7766 / 4.0), 0.2 / omega, 1e-12);  // its amplitude v0 / omega
   const std::vector<Eigen::Vector2d> samples{{0.0, 0.01}, {0.1, 0.02}, {0.2, 0.0}};
   EXPECT_NEAR(*position_at(samples, 0.05), 0.015, 1e-12);
@@ -354,7 +354,7 @@ TEST(MotionStrip, TheTheoryIsTheThickPlatesHarmonicMotion) {
 // the trace, and the slip limit when it is near.
 TEST(PhasePortrait, TheEllipseIsTheCurvesDerivativeAndTheAxesHoldIt) {
   const double omega = 2.0 * kPi / 0.7766;
-  const ThickPlateCurve c{0.03, 0.05, omega};
+  const HarmonicMotion c{0.03, 0.05, omega};
   for (const double t : {0.0, 0.1, 0.37, 0.9}) {
     // A central difference: independent of the closed form.
     const double h = 1e-6;

@@ -127,6 +127,9 @@ export type PlaybackSpeed = 1 | 0.25 | 0.0625;
 export interface LabState {
   t: number;
   x: number;
+  /** Where the thick plate's theory has the plate now [m], from where the run started; null
+   * when the rollers do not restore the plate. The page draws it as sent: no formula of its own. */
+  x_theory: number | null;
   z: number;
   pitch: number;
   vx: number;

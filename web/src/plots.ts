@@ -1,6 +1,6 @@
-// Live plots (uPlot) over a sliding window: the plate's x(t) with the thick-plate theory
-// x_th(t) = A cos(omega t) from the rig's offset, and the Hall sensor's ADC counts with the
-// estimator's pulse times marked.
+// Live plots (uPlot) over a sliding window: the plate's x(t) with the thick-plate theory the
+// lab sends beside it (x_theory: about a tilted rig's centre, from where the run started), and
+// the Hall sensor's ADC counts with the estimator's pulse times marked.
 import uPlot from "uplot";
 import type { LabState, Rig } from "./lab_types";
 import { SlidingWindow } from "./sliding_window";
@@ -68,12 +68,10 @@ export class LiveChart {
   }
 }
 
-/** x(t) in mm, with the theory curve where the rig has an omega. */
+/** x(t) in mm, with the lab's theory curve where the rig has one. */
 export class PositionPlot {
   private readonly data = new SlidingWindow(3, WINDOW_S);
   private readonly live: LiveChart;
-  private amplitudeMm = 0;
-  private omega: number | null = null;
 
   constructor(box: HTMLElement) {
     this.live = new LiveChart(
@@ -83,7 +81,7 @@ export class PositionPlot {
           x: { time: false, range: () => windowRange(this.data.lastTime) },
           y: {
             range: (_u, min, max) => {
-              const reach = Math.max(Math.abs(min || 0), Math.abs(max || 0), this.amplitudeMm, 1);
+              const reach = Math.max(Math.abs(min || 0), Math.abs(max || 0), 1);
               return [-1.1 * reach, 1.1 * reach];
             },
           },
@@ -108,8 +106,6 @@ export class PositionPlot {
   }
 
   setRig(rig: Rig): void {
-    this.amplitudeMm = rig.offset * 1000;
-    this.omega = rig.omega;
     this.live.chart.setSeries(2, { show: rig.omega !== null });
     this.clear();
   }
@@ -123,7 +119,7 @@ export class PositionPlot {
     const last = this.data.lastTime;
     if (last !== null && state.t < last) this.data.clear();
     if (last !== null && state.t === last) return;
-    const theory = this.omega === null ? NaN : this.amplitudeMm * Math.cos(this.omega * state.t);
+    const theory = state.x_theory === null ? NaN : state.x_theory * 1000;
     this.data.push([state.t, state.x * 1000, theory]);
     this.live.scheduleRedraw();
   }

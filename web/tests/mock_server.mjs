@@ -462,6 +462,8 @@ class FakeRun {
     const state = {
       t: this.t,
       x,
+      // The mock's plate moves as theory has it: its theory is its own motion.
+      x_theory: x,
       z: rig.plate.h_c,
       pitch: 0.002 * Math.sin(rig.omega * this.t),
       vx: -rig.offset * rig.omega * Math.sin(rig.omega * this.t),

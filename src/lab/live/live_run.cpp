@@ -6,6 +6,7 @@
 #include "lab/run/regime_monitor.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "lab/run/solver_convergence.hpp"
+#include "scene/theory_motion.hpp"
 
 namespace fl {
 
@@ -20,6 +21,8 @@ struct LiveRun::Impl {
   std::size_t periods_seen = 0;              // and its judged periods
   double next_regime_t = 0.0;                // s, when the diagnosis is read again
   const HallEstimator* estimator = nullptr;  // the run's, live (none without a sensor)
+  std::optional<HarmonicMotion> theory;      // from the plate at the start (scene/theory_motion)
+  bool started = false;
   std::optional<RunSummary> summary;
   std::vector<std::pair<std::string, std::string>> files;
 
@@ -28,8 +31,13 @@ struct LiveRun::Impl {
 };
 
 void LiveRun::Impl::observe(const StepView& view) {
+  if (!started) {
+    started = true;
+    theory = theory_motion(*rig, view.plate.x, view.plate.vx);
+  }
   frame.t = view.t;
   frame.plate = view.plate;
+  if (theory) frame.x_theory = theory->at(view.t);
   frame.roller_angles = view.roller_angles;
   frame.contacts = view.contacts;
   frame.hall.insert(frame.hall.end(), view.new_samples.begin(), view.new_samples.end());

@@ -22,6 +22,9 @@ namespace fl {
 struct LiveFrame {
   double t = 0.0;  // s, simulated
   PlateState plate;
+  // m: where the thick plate's theory has the plate now (scene/theory_motion.hpp), from where the
+  // run started; none when the rollers do not restore the plate.
+  std::optional<double> x_theory;
   std::array<double, 2> roller_angles{};  // rad about +y since the start
   std::array<RollerContact, 2> contacts{};
   std::vector<HallSample> hall;             // the Hall samples taken since the last frame

@@ -25,6 +25,7 @@
 #include "render/rig_overlay.hpp"
 #include "render/rig_view.hpp"
 #include "render/video.hpp"
+#include "scene/theory_motion.hpp"
 
 namespace fl {
 namespace {
@@ -123,7 +124,7 @@ struct RigVideo final : public VideoEngine {
   bool force_arrows = true;
   // x(t): the steps' (t, x), the theory from the first step, the estimator's turning points.
   std::vector<Eigen::Vector2d> motion;
-  std::optional<render::ThickPlateCurve> theory;
+  std::optional<HarmonicMotion> theory;
   std::string theory_label;
   double x_range = 0.0;
   std::vector<double> turning_points;
@@ -295,10 +296,7 @@ void RigVideo::take_motion(const VideoStep& step) {
       Eigen::Vector3f(static_cast<float>(step.plate_x), near_y, static_cast<float>(step.plate_z));
   if (motion.empty()) {
     // The theory starts where the run does.
-    if (rig.restoring && rig.rollers.sense == RollerSense::kInward && rig.omega)
-      theory =
-          render::ThickPlateCurve{step.plate_x - rig.oscillation_centre.value_or(0.0),
-                                  step.plate_vx, *rig.omega, rig.oscillation_centre.value_or(0.0)};
+    theory = theory_motion(rig, step.plate_x, step.plate_vx);
     theory_label =
         theory && rig.period_thick
             ? fmt::format("theory: thick plate, \xce\xbc\xe2\x82\x96 = {:.3g}, T = {:.4f} s",

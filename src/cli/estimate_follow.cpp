@@ -93,10 +93,6 @@ class LiveEstimate {
 }  // namespace
 
 int follow_rig(const FollowRequest& request) {
-  if (!(request.baud >= 1.0) || request.baud > 4e6 || request.baud != std::floor(request.baud))
-    throw InputError({}, "--baud: expected a whole positive baud rate, such as 250000");
-  if (request.duration_s && !(*request.duration_s > 0.0))
-    throw InputError({}, "--duration: expected a positive time, such as 30s");
   SerialPort port(request.port, static_cast<int>(request.baud));
   // The lines received, each written whole as it comes (io/appending_file.hpp).
   std::optional<AppendingFile> raw;

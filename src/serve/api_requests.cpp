@@ -25,17 +25,15 @@ std::variant<json, BodyRefusal> object_of(std::string_view body) {
   return parsed;
 }
 
-// A name for the class's table: letters (ASCII, and the UTF-8 characters of U+00C0 to U+07FF and
-// U+0800 to U+DFFF but U+2000 to U+2FFF: Latin, Greek, Cyrillic, Arabic, Indic and CJK letters, no
-// punctuation, symbols, direction marks or emoji; the JSON reader has checked the sequences),
-// digits, spaces and . - _ ', beginning with a letter or digit (so that no spreadsheet reads the
-// class's CSV cell as a formula).
-bool is_name(const std::string& name) {
+}  // namespace
+
+bool is_student_name(const std::string& name) {
   std::size_t characters = 0;
   for (std::size_t i = 0; i < name.size(); ++i) {
     const auto c = static_cast<unsigned char>(name[i]);
     if ((c & 0xC0) == 0x80) continue;  // a continuation byte: part of the character before
     ++characters;
+    // Lead bytes C3 to ED but E2: U+00C0 to U+DFFF but U+2000 to U+2FFF.
     const bool letter_or_digit =
         (c >= 0xC3 && c <= 0xED && c != 0xE2) || (c < 0x80 && std::isalnum(c) != 0);
     if (characters == 1 && !letter_or_digit) return false;
@@ -43,8 +41,6 @@ bool is_name(const std::string& name) {
   }
   return characters >= 1 && characters <= kMostNameCharacters;
 }
-
-}  // namespace
 
 std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) {
   auto parsed = object_of(text);
@@ -68,7 +64,7 @@ std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) 
     }
   }
   if (const auto name = body.find("name"); name != body.end() && !name->is_null()) {
-    if (!name->is_string() || !is_name(name->get<std::string>()))
+    if (!name->is_string() || !is_student_name(name->get<std::string>()))
       return BodyRefusal{"expected a name of up to " + std::to_string(kMostNameCharacters) +
                              " letters, digits, spaces and . - _ ', beginning with a letter or "
                              "digit, found " +

@@ -1,14 +1,18 @@
 // Who runs the page's sessions, for the class's table: a name kept in this browser
 // (localStorage) and sent with the next session the page starts (docs/web-api.md: up to 40
-// letters, digits, spaces and . - _ '). A name the page or the lab refuses is shown beside the
-// field and left out: the lab runs without it.
+// letters, digits, spaces and . - _ ', by the server's rule). A name the page or the lab refuses
+// is shown beside the field and left out: the lab runs without it.
 import { byId, byTestId, setText } from "./dom";
 
 const STORED = "frictionlab.student-name";
 const MOST_CHARACTERS = 40;
-/** Letters of any script and digits, spaces and . - _ ', beginning with a letter or digit (the
- * server's rule, so that no spreadsheet reads the class's CSV cell as a formula). */
-const ALLOWED = /^[\p{L}\p{Nd}][\p{L}\p{Nd} .\-_']*$/u;
+
+/** A letter or digit by the server's rule: ASCII letters and digits, and U+00C0 to U+DFFF but
+ * U+2000 to U+2FFF (the letters of Latin, Greek, Cyrillic, Arabic, Indic and CJK scripts). */
+function letterOrDigit(codePoint: number): boolean {
+  if (codePoint < 0x80) return /[A-Za-z0-9]/.test(String.fromCodePoint(codePoint));
+  return codePoint >= 0xc0 && codePoint <= 0xdfff && !(codePoint >= 0x2000 && codePoint <= 0x2fff);
+}
 
 function stored(): string {
   try {
@@ -27,14 +31,23 @@ function store(name: string): void {
   }
 }
 
-/** Why the name cannot be sent, or null when it can (or is empty). */
-function problemOf(name: string): string | null {
+/**
+ * Why the name cannot be sent, or null when it can (or is empty): the server's rule
+ * (src/serve/api_requests.hpp, is_student_name), both held to tests/data/student_names.json.
+ * Letters and digits, spaces and . - _ ', beginning with a letter or digit (so that no
+ * spreadsheet reads the class's CSV cell as a formula).
+ */
+export function problemOf(name: string): string | null {
   if (name === "") return null;
-  if ([...name].length > MOST_CHARACTERS) return `at most ${MOST_CHARACTERS} characters`;
-  if (!ALLOWED.test(name)) {
-    return "only letters, digits, spaces and . - _ ', beginning with a letter or digit";
-  }
-  return null;
+  const characters = [...name];
+  if (characters.length > MOST_CHARACTERS) return `at most ${MOST_CHARACTERS} characters`;
+  const allowed = characters.every((character, i) => {
+    const codePoint = character.codePointAt(0) ?? 0;
+    return letterOrDigit(codePoint) || (i > 0 && " .-_'".includes(character));
+  });
+  return allowed
+    ? null
+    : "only letters, digits, spaces and . - _ ', beginning with a letter or digit";
 }
 
 export class StudentName {

@@ -578,6 +578,12 @@ class PaperTable:
     def find(self, key: str) -> Optional[PaperMaterial]: ...
 
 def paper_table(*, assets: Optional[PathLike] = None) -> PaperTable: ...
+def table(
+    *,
+    gravity: Quantity = "9.81 m/s^2",
+    h_c: Quantity = "0 mm",
+    assets: Optional[PathLike] = None,
+) -> dict[str, Any]: ...
 
 # ---- sweeps ----
 
@@ -596,6 +602,9 @@ def sweep(
     assets: Optional[PathLike] = None,
     accuracy: Optional[Quantity] = None,
 ) -> dict[str, SweepColumn]: ...
+def merge(
+    dirs: list[PathLike], *, out: Optional[PathLike] = None, plot: bool = False
+) -> dict[str, Any]: ...
 
 # ---- a spacing series' fit ----
 

@@ -45,7 +45,7 @@ struct CompareCommandOptions {
   std::vector<std::string> overrides;
   std::string duration;
   int workers = 0;
-  std::string out = "out/compare";
+  std::string out = CompareRequest{}.out;
   bool plot = false;
   bool json = false;
   bool no_refit = false;

@@ -57,7 +57,7 @@ struct EstimateOptions {
   std::string plot;
   bool json = false;
   std::string follow;
-  std::string baud = "250000";
+  std::string baud = std::to_string(kFirmwareBaud);
   std::string raw_log;
   std::string duration;
   std::string material;

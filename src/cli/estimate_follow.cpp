@@ -11,10 +11,12 @@
 #include "cli/estimate_report.hpp"
 #include "cli/stop_signals.hpp"
 #include "io/appending_file.hpp"
+#include "io/field_ref.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "io/serial_port.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "lab/logs/live_capture.hpp"
 #include "lab/logs/live_log_estimate.hpp"
 
 namespace fl::cli {
@@ -93,16 +95,12 @@ class LiveEstimate {
 }  // namespace
 
 int follow_rig(const FollowRequest& request) {
-  if (!(request.baud >= 1.0) || request.baud > 4e6 || request.baud != std::floor(request.baud))
-    throw InputError({}, "--baud: expected a whole positive baud rate, such as 250000");
-  if (request.duration_s && !(*request.duration_s > 0.0))
-    throw InputError({}, "--duration: expected a positive time, such as 30s");
   SerialPort port(request.port, static_cast<int>(request.baud));
   // The lines received, each written whole as it comes (io/appending_file.hpp).
   std::optional<AppendingFile> raw;
   if (!request.raw_log.empty()) raw.emplace(request.raw_log, "the raw log (--log)");
   // Messages locate lines in the raw log, which holds them as received.
-  HallLogReader reader(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
+  LiveCapture capture(request.raw_log.empty() ? request.port : request.raw_log, request.reading);
   LiveEstimate live(request.set_up, request.json);
   // Ctrl-C (or SIGTERM) ends the capture, and the summary follows: the normal end, exit 0.
   const StopSignals stop;
@@ -112,27 +110,22 @@ int follow_rig(const FollowRequest& request) {
                request.baud, request.raw_log.empty() ? "" : ", raw log " + request.raw_log);
     std::fflush(stdout);
   }
-  // Every sample of the run being received, for the summary.
-  std::vector<LogSample> samples;
-  int segment = 0;
-  const auto take = [&] {
-    for (const LogSample& s : reader.take()) {
-      if (s.segment != segment) {
-        segment = s.segment;
-        samples.clear();
-        live.reset();
-        if (!request.json)
-          fmt::print("  {:<20}  a new run from line {}\n", "board restarted", s.line);
-      }
-      samples.push_back(s);
-      live.add(s);
+  const LiveCapture::LineSink keep = [&raw](std::string_view line) {
+    if (raw) raw->write(line);
+    return true;
+  };
+  const LiveCapture::SampleSink estimate = [&](const LogSample& s, bool new_run) {
+    if (new_run) {
+      live.reset();
+      if (!request.json)
+        fmt::print("  {:<20}  a new run from line {}\n", "board restarted", s.line);
     }
+    live.add(s);
   };
 
   const auto start = std::chrono::steady_clock::now();
-  std::string pending;  // bytes of a line not yet complete
+  std::string bytes;
   std::size_t received = 0;
-  int number = 0;
   bool open = true;
   while (open && !stop_requested()) {
     if (request.duration_s) {
@@ -140,47 +133,29 @@ int follow_rig(const FollowRequest& request) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (elapsed >= *request.duration_s) break;
     }
-    const std::size_t before = pending.size();
-    open = port.read_some(&pending, 100);
-    received += pending.size() - before;
-    std::size_t done = 0;
-    for (std::size_t end; (end = pending.find('\n', done)) != std::string::npos; done = end + 1) {
-      if (raw) raw->write(std::string_view(pending).substr(done, end + 1 - done));
-      reader.add_line(std::string_view(pending).substr(done, end - done), ++number);
-      take();
-    }
-    pending.erase(0, done);
-    // A line that never ends (a wrong baud rate gives bytes without newlines) is read as it
-    // stands once it passes a log line's limit: the reader leaves it out as a line that is no
-    // sample and counts it, and memory stays bounded.
-    if (pending.size() > kMostLogLineBytes) {
-      if (raw) raw->write(pending);
-      reader.add_line(pending, ++number);
-      take();
-      pending.clear();
-    }
+    bytes.clear();
+    open = port.read_some(&bytes, 100);
+    received += bytes.size();
+    capture.add(bytes, false, keep, estimate);
   }
-  if (!pending.empty()) {
-    if (raw) raw->write(pending);
-    reader.add_line(pending, ++number, true);
-  }
+  capture.add("", true, keep, estimate);
   if (received == 0)
     throw InputError(
         SourceLocation{request.port, 0, 0},
         fmt::format("nothing came from the port in {:.1f} s: is the rig's firmware "
-                    "running, and sending at {:.0f} baud (--baud)?",
+                    "running, and sending at {:.0f} baud ({})?",
                     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                    request.baud));
+                    request.baud, field_ref("follow.baud")));
   if (!request.json) {
     fmt::print("  {:<20}  {} lines received\n",
                stop_requested() ? "stopped"
                : open           ? "time up"
                                 : "port closed",
-               number);
+               capture.lines());
     std::fflush(stdout);
   }
-  reader.finish();
-  take();
+  capture.finish(estimate);
+  const std::vector<LogSample>& samples = capture.samples();
 
   // The summary: the same as `estimate LOG` on the lines received.
   // Messages locate lines in the raw log, which holds them as received.
@@ -188,8 +163,8 @@ int follow_rig(const FollowRequest& request) {
   log.path = request.raw_log.empty() ? request.port : request.raw_log;
   log.file = log.path;
   log.encoding = "utf-8";
-  log.reading = reader.reading();
-  log.segment = segment;
+  log.reading = capture.reading();
+  log.segment = capture.run();
   for (const LogSample& s : samples) {
     log.t_s.push_back(s.t_s);
     log.adc.push_back(s.adc);

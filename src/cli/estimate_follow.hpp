@@ -10,13 +10,14 @@
 #include <string>
 
 #include "io/hall_log.hpp"
+#include "io/serial_port.hpp"
 #include "lab/logs/log_estimate.hpp"
 
 namespace fl::cli {
 
 struct FollowRequest {
   std::string port;
-  double baud = 250000.0;
+  double baud = kFirmwareBaud;
   std::string raw_log;               // --log: the lines received ("" : none)
   std::optional<double> duration_s;  // --duration
   LogSetUp set_up;

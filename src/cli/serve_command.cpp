@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/stop_signals.hpp"
 #include "io/input_error.hpp"
+#include "io/serial_port.hpp"
 #include "lab/request/lab_data.hpp"
 
 #if FRICTIONLAB_WITH_SERVE
@@ -32,7 +33,7 @@ struct ServeCommandOptions {
   int max_sessions = 30;
   std::string token;
   std::string serial;
-  double baud = 250000.0;
+  double baud = kFirmwareBaud;
   std::string record;
   double rate = 20.0;
 };
@@ -61,9 +62,8 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   options.version = std::string("frictionlab ") + FRICTIONLAB_VERSION;
   options.max_sessions = o.max_sessions;
   options.token = o.token;
-  if (o.baud != std::floor(o.baud))
-    throw InputError(SourceLocation::of_field("baud", fmt::format("{:g}", o.baud)),
-                     "expected a whole baud rate, such as 250000 (the firmware's)");
+  if (const std::optional<std::string> why = baud_problem(o.baud))
+    throw InputError(SourceLocation::of_field("baud", fmt::format("{:g}", o.baud)), *why);
   options.requests_per_second = o.rate;
   options.serial_port = o.serial;
   options.serial_baud = static_cast<int>(o.baud);

@@ -207,28 +207,26 @@ struct MergeCommandOptions {
 };
 
 int run_merge_command(const MergeCommandOptions& o) {
-  const std::string out = o.out.empty() ? o.dirs.front() : o.out;
-  prepare_output_folder(out, "out");
-  const MergeOutcome outcome = merge_sweeps(o.dirs, out);
-  std::vector<std::string> pngs;
-  if (o.plot) pngs = plot_sweep(out);
+  MergeRequest request;
+  request.dirs = o.dirs;
+  request.out = o.out;
+  request.plot = o.plot;
+  const MergeResult result = merge_shards(request);
+  const MergeOutcome& outcome = result.outcome;
   if (o.json) {
-    fmt::print("{}\n", nlohmann::json{{"out", out},
-                                      {"points", outcome.points},
-                                      {"status", outcome.status},
-                                      {"files", outcome.files},
-                                      {"plots", pngs}}
-                           .dump(2));
+    fmt::print("{}\n", result.json().dump(2));
   } else {
     fmt::print("frictionlab merge: {} folder{} -> {} ({} points; {})\n", o.dirs.size(),
-               o.dirs.size() == 1 ? "" : "s", out, outcome.points, counts_text(outcome.status));
+               o.dirs.size() == 1 ? "" : "s", result.out, outcome.points,
+               counts_text(outcome.status));
     for (const std::string& f : outcome.files) fmt::print("  written: {}\n", f);
-    for (const std::string& f : pngs) fmt::print("  plot: {}\n", f);
+    for (const std::string& f : result.plots) fmt::print("  plot: {}\n", f);
   }
-  return exit_status(report_failed_points("merge", outcome.status, outcome.points, outcome.files) >
-                             0
-                         ? Outcome::kFailed
-                         : Outcome::kDone);
+  report_failed_points("merge", outcome.status, outcome.points, outcome.files);
+  if (!result.plot_failure.empty())
+    fmt::print(stderr, "error: no plots: {}; the results above are complete\n",
+               result.plot_failure);
+  return exit_status(result.outcome_of());
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "io/serial_port.hpp"
 
+#include <cmath>
+
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/ioctl.h>
@@ -15,6 +17,12 @@
 #include "io/input_error.hpp"
 
 namespace fl {
+
+std::optional<std::string> baud_problem(double baud) {
+  if (baud >= 1.0 && baud <= 4e6 && baud == std::floor(baud)) return std::nullopt;
+  return "expected a whole baud rate from 1 to 4000000, such as " + std::to_string(kFirmwareBaud) +
+         " (the firmware's)";
+}
 namespace {
 
 std::string why_not(int error) {

@@ -6,9 +6,16 @@
 // the firmware's header.
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace fl {
+
+// The firmware's baud rate (tools/arduino): what a port is opened at when nothing else is said.
+inline constexpr int kFirmwareBaud = 250000;
+
+// Why `baud` is no rate a port can be opened at (a whole number from 1 to 4 000 000), or nothing.
+std::optional<std::string> baud_problem(double baud);
 
 class SerialPort {
  public:

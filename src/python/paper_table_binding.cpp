@@ -6,8 +6,10 @@
 #include <string>
 
 #include "core/paper_table.hpp"
+#include "lab/request/table_request.hpp"
 #include "python/arguments.hpp"
 #include "python/bindings.hpp"
+#include "python/json_values.hpp"
 #include "python/lab_data.hpp"
 
 namespace fl::python {
@@ -54,6 +56,20 @@ for material in table.materials: for row in material.measurements: row.period.va
       [](const std::optional<Path>& assets) { return paper_table_in(asset_dir(assets)); },
       py::kw_only(), py::arg("assets") = py::none(),
       "The paper's Table I, as `frictionlab table` reads it (assets/paper/table1.yaml).");
+  const TableRequest defaults;
+  m.def(
+      "table",
+      [](const Quantity& gravity, const Quantity& h_c, const std::optional<Path>& assets) {
+        TableRequest r;
+        r.gravity = gravity;
+        r.h_c = h_c;
+        if (assets) r.assets = assets->string();
+        return python_value(paper_table_recomputed(r).json());
+      },
+      py::kw_only(), py::arg("gravity") = defaults.gravity, py::arg("h_c") = defaults.h_c,
+      py::arg("assets") = py::none(),
+      "The paper's Table I with mu_k recomputed from each period (thin formula at g, thick at "
+      "h_c), as `frictionlab table --json` prints it.");
 }
 
 }  // namespace fl::python

@@ -130,9 +130,31 @@ py::dict sweep(const Path& file, std::optional<int> jobs, const std::optional<Pa
   return columns;
 }
 
+py::object merge(const std::vector<Path>& dirs, const std::optional<Path>& out, bool plot) {
+  MergeRequest r;
+  for (const Path& d : dirs) r.dirs.push_back(d.string());
+  if (out) r.out = out->string();
+  r.plot = plot;
+  MergeResult result;
+  {
+    const py::gil_scoped_release released;
+    result = merge_shards(r);
+  }
+  if (!result.plot_failure.empty())
+    PyErr_WarnEx(PyExc_UserWarning, ("no plots: " + result.plot_failure).c_str(), 1);
+  return python_value(result.json());
+}
+
 }  // namespace
 
 void bind_sweep(py::module_& m) {
+  m.def("merge", &merge, py::arg("dirs"), py::kw_only(), py::arg("out") = py::none(),
+        py::arg("plot") = false,
+        R"(Joins the shards of a sweep (the folders runs with shard="K/N" wrote), as
+`frictionlab merge`: into out (default the first folder), results.csv and sweep.json as the
+whole sweep run in one go would write them. Returns the object `frictionlab merge --json`
+prints (out, points, status, files, plots); a plot that fails warns. Raises InputError for a
+folder that is no sweep's or shards of different sweeps.)");
   m.def("sweep", &sweep, py::arg("file"), py::kw_only(), py::arg("jobs") = py::none(),
         py::arg("out") = py::none(), py::arg("fresh") = false, py::arg("shard") = py::none(),
         py::arg("plot") = false, py::arg("progress") = py::none(), py::arg("assets") = py::none(),

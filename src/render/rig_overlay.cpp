@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/units.hpp"
+#include "io/plus_minus.hpp"
 #include "render/overlay_palette.hpp"
 
 namespace fl::render {
@@ -218,17 +219,21 @@ ResultsText results_text(const RigOverlayState& state) {
     out.period = "no sensor: no period measured";
     return out;
   }
-  // One period has no spread: T alone, never "± 0".
-  const auto value = [](double mean, std::optional<double> spread, int n) {
-    return n >= 2 ? format_plus_minus(mean, spread.value_or(0.0)) : fmt::format("{:.3f}", mean);
+  // T +- dT as every front end shows it (io/plus_minus.hpp); one period has no spread: T alone,
+  // never "± 0".
+  const auto with_spread = [](double mean, std::optional<double> spread) {
+    return spread && *spread > 0.0 ? plus_minus(mean, *spread, 0, "\xc2\xb1")
+                                   : fmt::format("{:.3f}", mean);
+  };
+  const auto value = [&](double mean, std::optional<double> spread, int n) {
+    return with_spread(mean, n >= 2 ? spread : std::nullopt);
   };
   if (e.period && e.periods > 0) {
     out.period = "T = " + value(*e.period, e.period_std, e.periods) + " s";
     out.note = e.periods_discarded > 0
                    ? fmt::format("(N = {}, {} discarded)", e.periods, e.periods_discarded)
                    : fmt::format("(N = {})", e.periods);
-    if (e.mu_k)
-      out.detail = "\xce\xbc\xe2\x82\x96 = " + format_plus_minus(*e.mu_k, e.mu_k_err.value_or(0.0));
+    if (e.mu_k) out.detail = "\xce\xbc\xe2\x82\x96 = " + with_spread(*e.mu_k, e.mu_k_err);
     return out;
   }
   if (e.provisional_period && e.provisional_periods > 0) {
@@ -300,17 +305,6 @@ void draw_value_axis(Overlay& o, const Rect& area, float s, double bottom, doubl
     o.text(tick.label, Eigen::Vector2f(area.x - 3 * s, y - 5.5f * s), text_size, kSoft,
            TextAlign::kRight);
   }
-}
-
-std::string format_plus_minus(double value, double uncertainty) {
-  int decimals = 3;
-  if (uncertainty > 0.0 && std::isfinite(uncertainty)) {
-    // One significant digit, after rounding (0.00096 is 0.001, not 0.0010).
-    double exponent = std::floor(std::log10(uncertainty));
-    if (std::round(uncertainty / std::pow(10.0, exponent)) >= 10.0) exponent += 1.0;
-    decimals = std::clamp(static_cast<int>(-exponent), 0, 6);
-  }
-  return fmt::format("{:.{}f} \xc2\xb1 {:.{}f}", value, decimals, uncertainty, decimals);
 }
 
 TitleCard make_title_card(const CompiledRig& rig, const std::string& material, double slow_motion,

@@ -154,8 +154,4 @@ void draw_rig_overlay(Overlay& overlay, int width, int height, const RigOverlayS
 // before it shows through. A title wider than the frame is drawn smaller to fit.
 void draw_title_card(Overlay& overlay, int width, int height, const TitleCard& card, float opacity);
 
-// "0.794 ± 0.006": the uncertainty to one significant digit, the value to the same decimals, as
-// numbers are shown to a class (T = 1.2645 ± 0.0002 s, not 1.26449 ± 0.00018).
-std::string format_plus_minus(double value, double uncertainty);
-
 }  // namespace fl::render

@@ -23,7 +23,7 @@ json paper_json(const CompiledRig& rig, const PaperTable& table) {
   const PaperMaterial* row = table.find(*source.paper_material);
   return {{"material", row != nullptr ? row->name : *source.paper_material},
           {"key", *source.paper_material},
-          {"temperature_K", source.temperature},
+          {"temperature_k", source.temperature},
           {"period", source.paper_period->value},
           {"period_err", source.paper_period->uncertainty},
           {"mu_k", source.paper_mu_k->value},
@@ -41,7 +41,7 @@ json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable& table,
     json temperatures = json::array({m.room.temperature});
     if (m.cold) temperatures.push_back(m.cold->temperature);
     out["materials"].push_back(
-        {{"key", m.key}, {"name", m.name}, {"temperatures_K", temperatures}});
+        {{"key", m.key}, {"name", m.name}, {"temperatures_k", temperatures}});
   }
   return out;
 }
@@ -95,7 +95,7 @@ json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable
       {"gravity", rig.world.gravity},
       {"friction_law", rig.friction.depends_on_slip() ? "slip-dependent" : "coulomb"},
       {"mu_k", rig.friction.mu_k},
-      {"temperature_K", rig.friction_source.temperature},
+      {"temperature_k", rig.friction_source.temperature},
       {"period_thin", rig.period_thin},
       {"period_thick", json_or_null(rig.period_thick)},
       {"omega", json_or_null(rig.omega)},

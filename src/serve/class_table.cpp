@@ -28,7 +28,7 @@ json row_json(const ClassRow& row, const PaperTable& table) {
           {"name", row.name.empty() ? json(nullptr) : json(row.name)},
           {"scene", row.scene},
           {"material", paper != nullptr ? json(paper->name) : json(nullptr)},
-          {"temperature_K", rig.friction_source.temperature},
+          {"temperature_k", rig.friction_source.temperature},
           {"spacing", rig.rollers.spacing},
           {"h_c", rig.plate.h_c},
           {"state", s.state},
@@ -56,7 +56,7 @@ json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
 std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table) {
   static const char* const kColumns[] = {
       "session",       "name",       "scene",          "material",
-      "temperature_K", "spacing_mm", "h_c_mm",         "state",
+      "temperature_k", "spacing_mm", "h_c_mm",         "state",
       "t_s",           "period_s",   "period_err_s",   "period_from",
       "mu_k",          "mu_k_err",   "paper_period_s", "paper_mu_k"};
   std::string out;
@@ -71,7 +71,7 @@ std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table
     const json r = row_json(row, table);
     out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(r["session"]),
                        cell(r["name"]), cell(r["scene"]), cell(r["material"]),
-                       cell(r["temperature_K"]), cell(r["spacing"], 1e3), cell(r["h_c"], 1e3),
+                       cell(r["temperature_k"]), cell(r["spacing"], 1e3), cell(r["h_c"], 1e3),
                        cell(r["state"]), cell(r["t"]), cell(r["period"]), cell(r["period_err"]),
                        cell(r["period_from"]), cell(r["mu_k"]), cell(r["mu_k_err"]),
                        cell(r["paper_period"]), cell(r["paper_mu_k"]));

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "io/serial_port.hpp"
+
 namespace fl::serve {
 
 struct ServeOptions {
@@ -36,7 +38,7 @@ struct ServeOptions {
   // The rig live (docs/web-api.md): a serial port read from the start ("" : none), its baud
   // rate, and a folder the rig's raw log is written into as it comes ("" : kept in memory only).
   std::string serial_port;
-  int serial_baud = 250000;
+  int serial_baud = kFirmwareBaud;
   std::string record_dir;
   // Whether a page may open a serial port itself (one the server lists): on a server for this
   // machine only. Set by the server from `host` unless given.

@@ -26,7 +26,7 @@ std::tm local_now() {
 RigFeed::RigFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes)
     : most_log_bytes_(most_log_bytes),
       record_dir_(std::move(record_dir)),
-      reader_(port, HallLogOptions{}) {
+      capture_(port, HallLogOptions{}) {
   status_.port = port;
   status_.baud = baud;
   status_.state = "waiting";
@@ -59,10 +59,11 @@ void RigFeed::close() {
 }
 
 void RigFeed::read_port() {
-  std::string pending;
+  std::string bytes;
   while (!stop_) {
-    const bool open = port_->read_some(&pending, 100);
-    if (!lines_in(&pending, !open)) {
+    bytes.clear();
+    const bool open = port_->read_some(&bytes, 100);
+    if (!lines_in(bytes, !open)) {
       const std::lock_guard lock(mutex_);
       end("full", fmt::format("the log reached its {} MB (about {} minutes at the firmware's "
                               "1 kHz): the port is closed and the log kept; connect again to "
@@ -82,45 +83,24 @@ void RigFeed::read_port() {
   port_.reset();
 }
 
-bool RigFeed::lines_in(std::string* pending, bool ended) {
+bool RigFeed::lines_in(std::string_view bytes, bool ended) {
   const std::lock_guard lock(mutex_);
-  std::size_t done = 0;
-  const auto line = [&](std::string_view text, bool unfinished) {
+  const LiveCapture::LineSink keep = [this](std::string_view text) {
     if (log_.size() + text.size() > most_log_bytes_) return false;
     if (status_.log_name.empty())
       status_.log_name = fmt::format("rig-{:%Y%m%d-%H%M%S}.log", local_now());
     log_.append(text);
     record(text);
     ++status_.lines;
-    status_.state = reading_lines_ ? "receiving" : "failed";
-    if (!reading_lines_) return true;
-    std::string_view content = text;
-    if (content.ends_with('\n')) content.remove_suffix(1);
-    try {
-      reader_.add_line(content, status_.lines, unfinished);
-      for (LogSample& s : reader_.take()) {
-        if (s.segment != run_) {
-          run_ = s.segment;
-          samples_.clear();
-        }
-        samples_.push_back(s);
-      }
-    } catch (const InputError& e) {
-      // The lines are kept; the page says why they give no samples.
-      reading_lines_ = false;
-      status_.state = "failed";
-      status_.message = std::string(e.what());
-    }
+    if (status_.state != "failed") status_.state = "receiving";
     return true;
   };
-  for (std::size_t end; (end = pending->find('\n', done)) != std::string::npos; done = end + 1)
-    if (!line(std::string_view(*pending).substr(done, end + 1 - done), false)) return false;
-  pending->erase(0, done);
-  if (ended && !pending->empty()) {
-    if (!line(*pending, true)) return false;
-    pending->clear();
-  }
-  return true;
+  // The lines are kept when they give no samples; the page says why.
+  const LiveCapture::ErrorSink refused = [this](const InputError& e) {
+    status_.state = "failed";
+    status_.message = std::string(e.what());
+  };
+  return capture_.add(bytes, ended, keep, {}, refused);
 }
 
 // The record file is made with the first line (io/appending_file.hpp: each line written whole as
@@ -169,9 +149,10 @@ std::string RigFeed::record_path() const {
 RigFeed::Slice RigFeed::samples_from(int run, std::size_t from) const {
   const std::lock_guard lock(mutex_);
   Slice out;
-  out.run = run_;
-  out.first = run == run_ ? std::min(from, samples_.size()) : 0;
-  out.samples.assign(samples_.begin() + static_cast<std::ptrdiff_t>(out.first), samples_.end());
+  const std::vector<LogSample>& samples = capture_.samples();
+  out.run = capture_.run();
+  out.first = run == out.run ? std::min(from, samples.size()) : 0;
+  out.samples.assign(samples.begin() + static_cast<std::ptrdiff_t>(out.first), samples.end());
   return out;
 }
 

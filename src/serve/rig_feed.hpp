@@ -17,6 +17,7 @@
 #include "io/appending_file.hpp"
 #include "io/hall_log_reader.hpp"
 #include "io/serial_port.hpp"
+#include "lab/logs/live_capture.hpp"
 
 namespace fl::serve {
 
@@ -63,9 +64,9 @@ class RigFeed {
 
  private:
   void read_port();
-  // The complete lines of `pending` (all of it when the port `ended`) into the log, the record
-  // and the reader; false when the log is full.
-  bool lines_in(std::string* pending, bool ended);
+  // The bytes a read gave into the log, the record and the capture (lab/logs/live_capture.hpp:
+  // complete lines; all of them when the port `ended`); false when the log is full.
+  bool lines_in(std::string_view bytes, bool ended);
   void record(std::string_view bytes);
   void end(const std::string& state, std::optional<std::string> message);
 
@@ -77,10 +78,7 @@ class RigFeed {
   std::string record_path_;
   std::unique_ptr<AppendingFile> record_;
   bool record_failed_ = false;
-  HallLogReader reader_;
-  bool reading_lines_ = true;  // false once the lines proved not to be a Hall log
-  int run_ = 0;
-  std::vector<LogSample> samples_;  // of the current run
+  LiveCapture capture_;  // the lines read into samples (the current run's kept)
   std::unique_ptr<SerialPort> port_;
   std::atomic<bool> stop_{false};
   std::thread thread_;

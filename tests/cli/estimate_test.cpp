@@ -132,7 +132,7 @@ TEST_F(Estimate, OneLogBesideThePapersValueForItsMaterial) {
   const nlohmann::json j = json(log + " --material lego --temperature 77K");
   const nlohmann::json& paper = j["paper"];
   EXPECT_EQ(paper["material"], "LEGO blocks");
-  EXPECT_EQ(paper["temperature_K"], 77.0);
+  EXPECT_EQ(paper["temperature_k"], 77.0);
   EXPECT_EQ(paper["mu_k"], 0.20);
   EXPECT_EQ(paper["mu_k_err"], 0.01);
   const double mu = j["mu_k"];

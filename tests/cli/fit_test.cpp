@@ -151,7 +151,7 @@ TEST_F(Fit, TheFittedMuKBesideThePapersValueForItsMaterial) {
   const nlohmann::json j = json("fit " + series + " --material lego --temperature 77K");
   const nlohmann::json& paper = j["paper"];
   EXPECT_EQ(paper["material"], "LEGO blocks");
-  EXPECT_EQ(paper["temperature_K"], 77.0);
+  EXPECT_EQ(paper["temperature_k"], 77.0);
   EXPECT_EQ(paper["mu_k"], 0.20);
   const double mu = j["mu_k"], err = j["mu_k_err"];
   EXPECT_NEAR(paper["difference_standard_errors"].get<double>(),

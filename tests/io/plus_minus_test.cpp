@@ -1,22 +1,30 @@
-// A value and its uncertainty as the lab prints them: never "+- 0.0000" for an uncertainty that
-// is not zero.
+// A value and its uncertainty as the lab prints them, against the cases the page is held to as
+// well (tests/data/plus_minus_cases.json): never "+- 0.0000" for an uncertainty that is not zero,
+// one significant digit or two where it is a 1.
 #include "io/plus_minus.hpp"
 
+#include <fstream>
 #include <limits>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace fl {
 namespace {
 
-TEST(PlusMinus, TheUncertaintyAlwaysShowsTwoSignificantDigits) {
-  EXPECT_EQ(plus_minus(0.2948, 0.0021, 4), "0.2948 +- 0.0021");
-  EXPECT_EQ(plus_minus(0.29482314, 0.0000134, 4), "0.294823 +- 0.000013");
-  EXPECT_EQ(plus_minus(0.7967, 0.00004, 4), "0.796700 +- 0.000040");
-  // Larger uncertainties keep the decimals asked for.
-  EXPECT_EQ(plus_minus(1.7001, 0.038, 4), "1.7001 +- 0.0380");
-  // An exact value (0) and a missing one (NaN) print as they are.
-  EXPECT_EQ(plus_minus(0.3, 0.0, 4), "0.3000 +- 0.0000");
+TEST(PlusMinus, EveryFrontEndsCases) {
+  std::ifstream in(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/tests/data/plus_minus_cases.json");
+  const nlohmann::json cases = nlohmann::json::parse(in)["cases"];
+  ASSERT_GE(cases.size(), 10u);
+  for (const nlohmann::json& c : cases)
+    EXPECT_EQ(plus_minus(c["value"], c["uncertainty"], c["min_decimals"]), c["text"]) << c.dump();
+}
+
+TEST(PlusMinus, AFrameSpellsItsSignAsTheFontHasIt) {
+  EXPECT_EQ(plus_minus(0.7912, 0.0038, 3, "\u00b1"), "0.791 \u00b1 0.004");
+}
+
+TEST(PlusMinus, AMissingUncertaintyPrintsAsItIs) {
   EXPECT_EQ(plus_minus(0.3, std::numeric_limits<double>::quiet_NaN(), 2), "0.30 +- nan");
 }
 

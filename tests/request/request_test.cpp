@@ -11,6 +11,7 @@
 
 #include "io/field_ref.hpp"
 #include "lab/request/compare_request.hpp"
+#include "lab/request/estimate_request.hpp"
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/request/run_request.hpp"
@@ -232,6 +233,28 @@ TEST(JobControl, AStabilityCatalogueAskedToStopBeforeItStartsRunsNoCase) {
   EXPECT_TRUE(result.rows.empty());
   EXPECT_EQ(result.not_run, 28);
   EXPECT_EQ(result.outcome(), Outcome::kInterrupted);
+}
+
+// A live capture's port settings are checked by the request, by field, whichever front end asks:
+// a baud rate a port cannot take, a capture of no duration.
+TEST(EstimateRequest, ALiveCapturesBaudAndDurationAreCheckedByField) {
+  EstimateRequest r;
+  r.follow_port = "/dev/ttyACM0";
+  r.follow_baud = QuantityInput{"1.5"};
+  r.follow_duration = QuantityInput{"0 s"};
+  try {
+    prepare_estimate(r);
+    FAIL() << "a baud rate of 1.5 was taken";
+  } catch (const RequestError& e) {
+    ASSERT_EQ(e.problems().size(), 2u);
+    EXPECT_EQ(e.problems()[0].field, "follow.baud");
+    EXPECT_NE(e.problems()[0].message.find("expected a whole baud rate from 1 to 4000000"),
+              std::string::npos);
+    EXPECT_EQ(e.problems()[1].field, "follow.duration");
+  }
+  r.follow_baud = QuantityInput{static_cast<double>(kFirmwareBaud)};
+  r.follow_duration = QuantityInput{"30 s"};
+  EXPECT_DOUBLE_EQ(prepare_estimate(r).follow_baud, 250000.0);
 }
 
 }  // namespace

@@ -40,8 +40,8 @@ TEST_F(LabServerTest, OffersTheFoldersScenesByNameAndThePapersMaterials) {
   // Table I: LEGO blocks at 300 K and 77 K, iron at 300 K only.
   bool lego = false, iron = false;
   for (const json& m : lab["materials"]) {
-    if (m["key"] == "lego") lego = m["temperatures_K"] == json::array({300.0, 77.0});
-    if (m["key"] == "iron") iron = m["temperatures_K"] == json::array({300.0});
+    if (m["key"] == "lego") lego = m["temperatures_k"] == json::array({300.0, 77.0});
+    if (m["key"] == "iron") iron = m["temperatures_k"] == json::array({300.0});
   }
   EXPECT_TRUE(lego);
   EXPECT_TRUE(iron);
@@ -343,7 +343,7 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
   std::vector<std::string> header;
   for (const CsvCell& c : rows.header) header.push_back(c.text);
   EXPECT_EQ(header, (std::vector<std::string>{"session", "name", "scene", "material",
-                                              "temperature_K", "spacing_mm", "h_c_mm", "state",
+                                              "temperature_k", "spacing_mm", "h_c_mm", "state",
                                               "t_s", "period_s", "period_err_s", "period_from",
                                               "mu_k", "mu_k_err", "paper_period_s", "paper_mu_k"}));
   ASSERT_EQ(rows.rows.size(), 2u);

@@ -28,7 +28,7 @@ function cellsOf(row: ClassRow): string[] {
     row.name ?? NONE,
     row.scene,
     row.material ?? NONE,
-    row.temperature_K === null ? NONE : trimmed(row.temperature_K, 1),
+    row.temperature_k === null ? NONE : trimmed(row.temperature_k, 1),
     trimmed(row.spacing * 1000, 1),
     row.state,
     fixed(row.t, 2),

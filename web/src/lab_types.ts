@@ -1,5 +1,5 @@
 // The shapes of the lab's web API (docs/web-api.md). Lengths in metres, times in seconds,
-// angles in radians unless a key's name says otherwise (_mm, _rpm, _K); null: not measured.
+// angles in radians unless a key's name says otherwise (_mm, _rpm, _k for kelvin); null: not measured.
 import type { RunSummaryJson } from "./run_summary";
 
 export interface SceneEntry {
@@ -10,7 +10,7 @@ export interface SceneEntry {
 export interface MaterialEntry {
   key: string;
   name: string;
-  temperatures_K: number[];
+  temperatures_k: number[];
 }
 
 export interface Lab {
@@ -214,7 +214,7 @@ export interface ClassRow {
   scene: string;
   /** The plate's material in the paper's Table I; null for a mu_k given as a number. */
   material: string | null;
-  temperature_K: number | null;
+  temperature_k: number | null;
   spacing: number;
   h_c: number | null;
   state: "paused" | "playing" | "done";

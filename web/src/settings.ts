@@ -164,7 +164,7 @@ export class MaterialSetting implements Setting {
   populate(lab: Lab): void {
     this.select.replaceChildren();
     for (const material of lab.materials) {
-      for (const kelvin of material.temperatures_K) {
+      for (const kelvin of material.temperatures_k) {
         const option = document.createElement("option");
         option.value = `${material.key}@${kelvin}`;
         option.textContent = `${material.name}, ${kelvin} K`;
@@ -208,9 +208,9 @@ export class MaterialSetting implements Setting {
 
   adopt(rig: Rig): void {
     if (this.touched || this.linkKeys.size > 0) return;
-    const extra = rig as unknown as { temperature_K?: unknown };
+    const extra = rig as unknown as { temperature_k?: unknown };
     this.sceneMaterial = rig.plate.material;
-    this.sceneTemperature = typeof extra.temperature_K === "number" ? extra.temperature_K : null;
+    this.sceneTemperature = typeof extra.temperature_k === "number" ? extra.temperature_k : null;
     this.choose(rig.plate.material, this.sceneTemperature ?? 300);
   }
 

@@ -26,7 +26,7 @@ std::optional<PaperComparison> compare_with_paper(const PaperTable& table,
 nlohmann::json paper_comparison_json(const PaperComparison& c) {
   return {{"material", c.name},
           {"key", c.key},
-          {"temperature_K", c.temperature},
+          {"temperature_k", c.temperature},
           {"period_s", c.period.value},
           {"period_err_s", c.period.uncertainty},
           {"mu_k", c.mu_k.value},

@@ -29,7 +29,7 @@ std::optional<PaperComparison> compare_with_paper(const PaperTable& table,
                                                   const std::string& material, double temperature,
                                                   double mu_k, double mu_k_err);
 
-// {"material", "key", "temperature_K", "period_s", "period_err_s", "mu_k", "mu_k_err",
+// {"material", "key", "temperature_k", "period_s", "period_err_s", "mu_k", "mu_k_err",
 //  "difference_standard_errors"} (the last null when it has none).
 nlohmann::json paper_comparison_json(const PaperComparison& c);
 

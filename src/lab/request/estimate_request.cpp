@@ -15,6 +15,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/log_files.hpp"
+#include "io/serial_port.hpp"
 #include "lab/logs/checked_reading.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
@@ -137,10 +138,18 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
                          "\" and \"" + (r.logs.empty() ? "" : r.logs.front()) +
                          "\" (give one: a log, or " + field_ref("follow.port") + ")");
     p.follow_port = r.follow_port;
-    if (r.follow_baud)
+    if (r.follow_baud) {
       p.follow_baud = checks.quantity(*r.follow_baud, Dimension::kDimensionless, "follow.baud");
+      if (const std::optional<std::string> why = baud_problem(p.follow_baud))
+        checks.problem("follow.baud", quantity_input_text(*r.follow_baud),
+                       *why + ", found " + quantity_input_text(*r.follow_baud));
+    }
     p.follow_raw_log = r.follow_raw_log;
     p.follow_duration = checks.quantity(r.follow_duration, Dimension::kTime, "follow.duration");
+    if (p.follow_duration && !(*p.follow_duration > 0.0))
+      checks.problem("follow.duration", quantity_input_text(*r.follow_duration),
+                     "expected a positive time, such as 30s, found " +
+                         quantity_input_text(*r.follow_duration));
     checks.throw_if_any();
     refuse_overwriting_inputs(r.plot, "plot",
                               {{r.follow_raw_log, "the log of the lines received"}});

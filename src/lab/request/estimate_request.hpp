@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/hall_log.hpp"
+#include "io/serial_port.hpp"
 #include "lab/analytic/analytic_report.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -74,7 +75,7 @@ struct PreparedEstimate {
   MaterialChoice material;
   const PaperTable* paper = nullptr;
   std::string follow_port;
-  double follow_baud = 250000.0;
+  double follow_baud = kFirmwareBaud;
   std::string follow_raw_log;
   std::optional<double> follow_duration;  // s
   std::vector<std::string> warnings;      // field_ref mentions, for the front end to spell

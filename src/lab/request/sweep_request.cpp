@@ -59,12 +59,20 @@ PreparedSweep prepare_sweep(const SweepRequest& r) {
   return p;
 }
 
-int SweepResult::points_without_result() const {
-  if (!outcome.complete) return 0;
+namespace {
+
+// Failed and invalid points: those that gave no result.
+int without_result(const std::map<std::string, int>& status) {
   int n = 0;
   for (const char* key : {"failed", "invalid"})
-    if (const auto it = outcome.status.find(key); it != outcome.status.end()) n += it->second;
+    if (const auto it = status.find(key); it != status.end()) n += it->second;
   return n;
+}
+
+}  // namespace
+
+int SweepResult::points_without_result() const {
+  return outcome.complete ? without_result(outcome.status) : 0;
 }
 
 Outcome SweepResult::outcome_of() const {
@@ -84,6 +92,45 @@ SweepResult execute_sweep(const PreparedSweep& sweep, const std::atomic<bool>* s
   if (sweep.plot && result.outcome.root && result.outcome.complete) {
     try {
       result.plots = plot_sweep(options.out_dir);
+    } catch (const std::runtime_error& e) {
+      result.plot_failure = e.what();
+    }
+  }
+  return result;
+}
+
+int MergeResult::points_without_result() const {
+  return without_result(outcome.status);
+}
+
+Outcome MergeResult::outcome_of() const {
+  if (points_without_result() > 0) return Outcome::kFailed;
+  if (!plot_failure.empty()) return Outcome::kIncomplete;
+  return Outcome::kDone;
+}
+
+nlohmann::json MergeResult::json() const {
+  return {{"out", out},
+          {"points", outcome.points},
+          {"status", outcome.status},
+          {"files", outcome.files},
+          {"plots", plots}};
+}
+
+MergeResult merge_shards(const MergeRequest& r) {
+  FieldChecks checks;
+  if (r.dirs.empty())
+    checks.problem("dirs", "",
+                   "expected the folders of a sweep's shards (each written by a run with " +
+                       field_ref("shard", "K/N") + "), found none; name them");
+  checks.throw_if_any();
+  MergeResult result;
+  result.out = r.out.empty() ? r.dirs.front() : r.out;
+  prepare_output_folder(result.out, "out");
+  result.outcome = merge_sweeps(r.dirs, result.out);
+  if (r.plot) {
+    try {
+      result.plots = plot_sweep(result.out);
     } catch (const std::runtime_error& e) {
       result.plot_failure = e.what();
     }

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "lab/request/field_checks.hpp"
 #include "lab/request/outcome.hpp"
 #include "lab/sweep/sweep_run.hpp"
@@ -55,5 +57,29 @@ std::vector<std::string> plot_sweep(const std::string& dir);
 // Runs what was prepared; `stop` and `progress` as SweepRunOptions has them.
 SweepResult execute_sweep(const PreparedSweep& sweep, const std::atomic<bool>* stop,
                           std::function<void(const SweepProgress&)> progress);
+
+// The shards of a sweep joined (`frictionlab merge`, frictionlab.merge): the folders `--shard`
+// runs wrote, into one folder (the first, unless `out` names another) holding results.csv and
+// sweep.json as the whole sweep run in one go would.
+struct MergeRequest {
+  std::vector<std::string> dirs;  // "dirs": the shards' folders
+  std::string out;                // "out": where the joined results go (the first folder)
+  bool plot = false;              // "plot": the results' plots
+};
+
+struct MergeResult {
+  std::string out;  // the folder written
+  MergeOutcome outcome;
+  std::vector<std::string> plots;  // the PNGs drawn
+  std::string plot_failure;        // why they could not be drawn (the results stand)
+
+  int points_without_result() const;  // failed and invalid points
+  Outcome outcome_of() const;
+  nlohmann::json json() const;  // `merge --json`'s object
+};
+
+// Reads and checks the fields (problems by field), then joins; throws InputError for a folder that
+// is no sweep's, or shards of different sweeps.
+MergeResult merge_shards(const MergeRequest& request);
 
 }  // namespace fl

@@ -32,7 +32,6 @@
 #include "serve/rate_limit.hpp"
 #include "serve/rig_feed.hpp"
 #include "serve/rig_watch.hpp"
-#include "serve/scene_folder.hpp"
 #include "serve/session_key.hpp"
 
 namespace fl::serve {
@@ -118,7 +117,6 @@ struct LabServer::Impl {
   const bool may_choose_port;
   RateLimit rate;
   BoundedServer server{kMostHead, kMostBody};
-  const SceneFolder scenes{options.scenes_dir};
   PathScrubber public_paths;
   // An open session and its key: only a request that carries the key controls it.
   struct OpenSession {
@@ -266,7 +264,8 @@ std::vector<ClassRow> LabServer::Impl::class_rows() const {
 void LabServer::Impl::routes() {
   server.Get("/api/lab", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200,
-              lab_json(scenes.list(), paper_table_in(options.asset_dir), options.version));
+              lab_json(list_scenes(options.scenes_dir), paper_table_in(options.asset_dir),
+                       options.version));
   });
   server.Post("/api/sessions",
               [this](const httplib::Request& req, httplib::Response& res) { create(req, res); });
@@ -373,7 +372,6 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
   if (full()) return refuse_full(res);
   try {
     // Only a scene inside the folder is read: a link leading outside is as if absent.
-    scenes.check(request.scene);
     PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
     // A session keeps every step and Hall sample for its files (about 0.6 MB a simulated second):
     // a longer run keeps its summary, cycles and nothing step by step, so that no set-up grows

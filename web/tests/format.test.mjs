@@ -1,22 +1,13 @@
 // The page's numbers against the lab's: withErrorSign (web/src/format.ts) gives, for every case
 // of tests/data/plus_minus_cases.json, the text the C++ plus_minus gives (tests/io/
 // plus_minus_test.cpp holds that one to the same file): one rule for a value with its uncertainty.
-import { build } from "esbuild";
 import { readFile } from "node:fs/promises";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
+import { importTs } from "./import_ts.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
-const bundled = await build({
-  entryPoints: [join(here, "../src/format.ts")],
-  bundle: true,
-  format: "esm",
-  write: false,
-  logLevel: "warning",
-});
-const format = await import(
-  "data:text/javascript;base64," + Buffer.from(bundled.outputFiles[0].text).toString("base64")
-);
+const format = await importTs(join(here, "../src/format.ts"));
 const { cases } = JSON.parse(
   await readFile(join(here, "../../tests/data/plus_minus_cases.json"), "utf8"),
 );

@@ -1,23 +1,13 @@
 // The page's rule for a student's name against the server's: problemOf (web/src/student_name.ts)
 // accepts and refuses the names of tests/data/student_names.json as the server's is_student_name
 // does (tests/serve/lab_server_test.cpp holds that one to the same file).
-import { build } from "esbuild";
 import { readFile } from "node:fs/promises";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
+import { importTs } from "./import_ts.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
-// The module alone: its DOM helpers are not called by problemOf.
-const bundled = await build({
-  entryPoints: [join(here, "../src/student_name.ts")],
-  bundle: true,
-  format: "esm",
-  write: false,
-  logLevel: "warning",
-});
-const module = await import(
-  "data:text/javascript;base64," + Buffer.from(bundled.outputFiles[0].text).toString("base64")
-);
+const module = await importTs(join(here, "../src/student_name.ts"));
 const cases = JSON.parse(await readFile(join(here, "../../tests/data/student_names.json"), "utf8"));
 let failed = 0;
 for (const name of cases.accepted) {

@@ -29,14 +29,36 @@ std::string first_comment(const std::filesystem::path& file) {
   return "";
 }
 
+// Whether `path`, every link followed, is a regular file inside `root` (itself resolved): a
+// scene that is a link leading outside the folder is neither listed nor read.
+bool is_file_inside(const std::filesystem::path& path, const std::filesystem::path& root) {
+  std::error_code error;
+  const std::filesystem::path resolved = std::filesystem::canonical(path, error);
+  if (error || !std::filesystem::is_regular_file(resolved, error)) return false;
+  const auto [in_root, in_resolved] =
+      std::mismatch(root.begin(), root.end(), resolved.begin(), resolved.end());
+  return in_root == root.end() && in_resolved != resolved.end();
+}
+
+// Whether the folder offers the scene `name`: a file's stem directly in it (no separator, no
+// leading dot) whose file, links followed, lies inside it.
+bool offers(const std::string& folder, const std::string& name) {
+  if (name.empty() || name.front() == '.' || name.find_first_of("/\\") != std::string::npos)
+    return false;
+  std::error_code error;
+  const std::filesystem::path root = std::filesystem::canonical(folder, error);
+  return !error && is_file_inside(std::filesystem::path(folder) / (name + ".yaml"), root);
+}
+
 }  // namespace
 
 std::vector<SceneEntry> list_scenes(const std::string& folder) {
   std::vector<SceneEntry> out;
   std::error_code error;
-  if (!std::filesystem::is_directory(folder, error)) return out;
+  const std::filesystem::path root = std::filesystem::canonical(folder, error);
+  if (error || !std::filesystem::is_directory(root, error)) return out;
   for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    if (!entry.is_regular_file(error) || entry.path().extension() != ".yaml") continue;
+    if (entry.path().extension() != ".yaml" || !is_file_inside(entry.path(), root)) continue;
     out.push_back({entry.path().stem().string(), first_comment(entry.path())});
   }
   std::sort(out.begin(), out.end(),
@@ -47,14 +69,9 @@ std::vector<SceneEntry> list_scenes(const std::string& folder) {
 PreparedSession prepare_session(const SessionRequest& request, const std::string& folder,
                                 const std::string& asset_dir) {
   // The scene by name only: nothing a client sends names a path on the server. A name is a
-  // file's stem in the folder itself (no separator, no leading dot); the folder is listed only
-  // to say which names there are.
-  const std::string& name = request.scene;
-  std::error_code error;
-  const bool offered =
-      !name.empty() && name.front() != '.' && name.find_first_of("/\\") == std::string::npos &&
-      std::filesystem::is_regular_file(std::filesystem::path(folder) / (name + ".yaml"), error);
-  if (!offered) {
+  // file's stem in the folder itself (no separator, no leading dot) that, links followed, lies
+  // inside it; the folder is listed only to say which names there are.
+  if (!offers(folder, request.scene)) {
     std::vector<std::string> names;
     for (const SceneEntry& s : list_scenes(folder)) names.push_back(s.name);
     FieldChecks checks;

@@ -19,7 +19,9 @@ struct SceneEntry {
   std::string title;
 };
 
-// The `*.yaml` files directly in `folder`, by name; none when it is not a folder.
+// The `*.yaml` files directly in `folder` whose path, links followed, stays inside it, by name;
+// none when it is not a folder. A file or link leading outside is neither listed nor read: asked
+// for, it is refused as a name not there.
 std::vector<SceneEntry> list_scenes(const std::string& folder);
 
 struct SessionRequest {

@@ -1,7 +1,8 @@
 // A stand-in for `frictionlab serve` for testing the page only (docs/web-api.md): serves a built
 // page, the LEGO parts, and fakes the lab's API with a harmonic plate, a fake rig on a fake
-// serial port and the class's table. Not the lab's physics, not its estimator, not its rules;
-// but, as the lab, it runs a session on the wall clock (simulated time = wall time x speed, however
+// serial port and the class's table. Not the lab's physics, nor its estimator; but the paper's
+// Table I is the lab's own file and a student's name is checked by the page's copy of the server's
+// rule (both held to one list of cases), and, as the lab, it runs a session on the wall clock (simulated time = wall time x speed, however
 // often its stream ticks) and obeys only requests that carry the session's key.
 //
 //   node tests/mock_server.mjs [--port 8765] [--dist DIR]
@@ -17,6 +18,7 @@ import { createServer } from "node:http";
 import { readFile } from "node:fs/promises";
 import { dirname, extname, join, normalize, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
+import { importTs } from "./import_ts.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const partsDir = resolve(here, "../../assets/lego");
@@ -29,22 +31,28 @@ const SCENES = [
   { name: "stribeck-drop", title: "Stability catalogue: stribeck-drop" },
 ];
 
-const MATERIALS = [
-  ["lego", "LEGO blocks", 0.29, 0.2],
-  ["paper", "Paper", 0.36, null],
-  ["polished-wood", "Polished wood", 0.33, 0.113],
-  ["construction-wood", "Construction wood", 0.31, 0.052],
-  ["iron", "Iron", 0.42, null],
-  ["plexiglas", "Plexiglas", 0.28, 0.111],
-  ["brass", "Brass", 0.31, null],
-  ["cardboard", "Cardboard", 0.2, null],
-  ["rigid-foam", "Polyurethane rigid foam", 1.7, null],
-  ["flexible-foam", "Polyurethane flexible foam", 10, 0.34],
-];
+/** The paper's Table I as the lab reads it (assets/paper/table1-measured.csv, the file `frictionlab
+ * compare` reads): [key, name, mu_k at 300 K, mu_k at 77 K or null], no copy of its own. */
+const MATERIALS = await (async () => {
+  const text = await readFile(resolve(here, "../../assets/paper/table1-measured.csv"), "utf8");
+  const lines = text.split("\n").filter((l) => l.trim() !== "" && !l.startsWith("#"));
+  const header = lines[0].split(",");
+  const column = (name) => header.indexOf(name);
+  const byKey = new Map();
+  for (const line of lines.slice(1)) {
+    const cells = line.split(",");
+    const key = cells[column("plate.material")];
+    const kelvin = Number.parseFloat(cells[column("friction.temperature")]);
+    const muK = Number(cells[column("mu_k")]);
+    const entry = byKey.get(key) ?? [key, cells[column("label")], null, null];
+    entry[kelvin < 100 ? 3 : 2] = muK;
+    byKey.set(key, entry);
+  }
+  return [...byKey.values()];
+})();
 
-/** A name for the class's table (docs/web-api.md): up to 40 letters, digits, spaces and . - _ ',
- * beginning with a letter or digit. */
-const NAME = /^[\p{L}\p{Nd}][\p{L}\p{Nd} .\-_']{0,39}$/u;
+/** A name for the class's table: the server's rule, as the page keeps it (web/src/student_name.ts). */
+const { problemOf: nameProblem } = await importTs(resolve(here, "../src/student_name.ts"));
 
 // The fake rig: a stand-in for the rig's Arduino on a serial port, for testing the page only.
 // Once its port is opened it "samples" a Hall sensor at 1 kHz as wall-clock time passes, a pulse
@@ -687,7 +695,10 @@ export function startMockServer({ port = 0, dist = resolve(here, "../dist") } = 
         }
         const { rig: made, problems, table } = makeRig(body.scene, body.set ?? []);
         const name = body.name ?? null;
-        if (name !== null && (typeof name !== "string" || !NAME.test(name))) {
+        if (
+          name !== null &&
+          (typeof name !== "string" || name === "" || nameProblem(name) !== null)
+        ) {
           problems.push({
             field: "name",
             value: String(name),

@@ -1,9 +1,11 @@
-// The page: wires the lab's session to the 3D view, the plots, the readouts and the controls.
+// The page's controller: the lab's session and the user's commands write the model (lab_model.ts);
+// the 3D view, the plots, the readouts, the stopwatch and the playback buttons follow it.
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
 import { getLab, LabFullError, pageUrl, RateLimitedError, SetupError } from "./lab_client";
-import type { Lab, LabState, PlaybackSpeed, Rig, Summary } from "./lab_types";
+import { LabModel } from "./lab_model";
+import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
 import { HallPlot, PositionPlot } from "./plots";
@@ -18,9 +20,7 @@ import { RigView } from "./view3d";
 const DEFAULT_SCENE = "paper-rig";
 
 let lab: Lab | null = null;
-let lastState: LabState | null = null;
-let playing = false;
-let done = false;
+const model = new LabModel();
 
 const view = new RigView(byId("view"));
 const nearSide = byId<HTMLInputElement>("near-side");
@@ -44,10 +44,7 @@ const readouts = new Readouts();
 const exportPanel = new ExportPanel(() => view.toPng());
 const pageProblem = byId("page-problem");
 const refused = byId("refused");
-const stopwatch = new Stopwatch(
-  () => lastState?.t ?? null,
-  () => readouts.currentPeriod,
-);
+const stopwatch = new Stopwatch(model);
 const studentName = new StudentName();
 byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
 const rigPanel = new RigPanel({ connected: () => void runBesideRig() });
@@ -62,62 +59,71 @@ function showPageProblem(error: unknown): void {
 }
 
 function showRun(): void {
-  playback.show({ playing, done, ready: keeper.current !== null });
+  playback.show({
+    playing: model.playing.value,
+    done: model.done.value,
+    ready: keeper.current !== null,
+  });
 }
 
-/** Back to t = 0 of the same rig: empty plots, periods and estimate. */
-function clearRun(): void {
-  lastState = null;
-  done = false;
-  positionPlot.clear();
-  hallPlot.clear();
-  periods.clear();
-  readouts.reset();
-  exportPanel.disableFiles();
-}
-
-function showRig(rig: Rig): void {
+// The views follow the model.
+model.rig.lazyLink((rig) => {
+  if (!rig) return;
   view.setRig(rig);
   positionPlot.setRig(rig);
   if (lab) readouts.setRig(rig, lab);
   hallNote.hidden = rig.sensor !== null;
-  clearRun();
-  playing = false;
+});
+model.state.lazyLink((state) => {
+  if (state === null) {
+    // Back to t = 0: empty plots, periods and estimate.
+    positionPlot.clear();
+    hallPlot.clear();
+    periods.clear();
+    readouts.reset();
+    exportPanel.disableFiles();
+    return;
+  }
+  view.setState(state);
+  positionPlot.push(state);
+  hallPlot.push(state);
+  periods.add(state.periods);
+  readouts.setState(state);
+  playback.showSpeed(state.speed);
+});
+model.playing.lazyLink((playing) => {
+  if (!model.done.value) readouts.setStatus(playing ? "playing" : "paused");
+  showRun();
+});
+model.done.lazyLink((done) => {
+  if (done) {
+    readouts.setDone(model.headline.value);
+    const session = keeper.current;
+    if (session) exportPanel.enableFiles(session);
+  }
+  showRun();
+});
+
+function showRig(rig: Rig): void {
+  model.rig.value = rig;
+  model.clearRun();
+  model.playing.value = false;
   readouts.setStatus("paused");
   showRun();
 }
 
 const keeper = new SessionKeeper({
   state(state) {
-    if (lastState && state.t < lastState.t - 1e-9) clearRun();
-    lastState = state;
-    view.setState(state);
-    positionPlot.push(state);
-    hallPlot.push(state);
-    periods.add(state.periods);
-    readouts.setState(state);
-    stopwatch.showEstimator();
-    playback.showSpeed(state.speed);
-    if (state.playing !== playing) {
-      playing = state.playing;
-      showRun();
-    }
+    model.setState(state);
   },
   done(summary: Summary) {
-    if (done) return;
-    done = true;
-    playing = false;
-    readouts.setDone(headlineOf(summary));
-    stopwatch.showEstimator();
-    const session = keeper.current;
-    if (session) exportPanel.enableFiles(session);
-    showRun();
+    if (!model.done.value) model.finish(headlineOf(summary));
   },
   failed(failure) {
     readouts.setFailure(failure.message);
   },
   reset() {
-    clearRun();
+    model.clearRun();
     readouts.setStatus("paused");
     showRun();
   },
@@ -128,7 +134,7 @@ const keeper = new SessionKeeper({
     // The server is stopping: its message in the page's problem line, nothing more asked.
     keeper.drop();
     rigPanel.stop();
-    playing = false;
+    model.playing.value = false;
     readouts.setStatus("no session");
     setText(pageProblem, message);
     showRun();
@@ -139,8 +145,7 @@ async function command(action: Parameters<SessionKeeper["command"]>[0]): Promise
   try {
     const reply = await keeper.command(action);
     if (!reply) return;
-    playing = reply.playing;
-    if (!done) readouts.setStatus(playing ? "playing" : "paused");
+    model.playing.value = reply.playing;
     showRun();
   } catch (error) {
     showPageProblem(error);
@@ -149,15 +154,15 @@ async function command(action: Parameters<SessionKeeper["command"]>[0]): Promise
 
 async function reset(): Promise<void> {
   await command("reset");
-  clearRun();
+  model.clearRun();
   readouts.setStatus("paused");
   showRun();
 }
 
 const playback = new Playback({
   toggle: () => {
-    if (done) void reset().then(() => command("play"));
-    else void command(playing ? "pause" : "play");
+    if (model.done.value) void reset().then(() => command("play"));
+    else void command(model.playing.value ? "pause" : "play");
   },
   step: () => void command("step"),
   reset: () => void reset(),
@@ -212,10 +217,10 @@ function isNameRefusal(error: SetupError): boolean {
 }
 
 const controls = new SetupControls({
-  setupChanged: () => void openSetup(controls.scene, controls.entries(), playing),
+  setupChanged: () => void openSetup(controls.scene, controls.entries(), model.playing.value),
   sceneChanged: (scene) => {
     controls.forgetChanges();
-    void openSetup(scene, [], playing);
+    void openSetup(scene, [], model.playing.value);
   },
 });
 

@@ -3,7 +3,7 @@
 // changes (once per accepted period), never at the stream's 30 Hz.
 import { byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
-import type { Estimate, Lab, LabState, Rig } from "./lab_types";
+import type { Lab, LabState, Rig } from "./lab_types";
 import type { Headline } from "./summary";
 
 export type RunStatus = "connecting" | "paused" | "playing" | "done" | "no session";
@@ -21,8 +21,6 @@ export class Readouts {
   private readonly material = byTestId("material");
   private readonly theory = byTestId("theory");
   private lastEstimateKey = "";
-  private estimate: Estimate | null = null;
-  private headlinePeriod: number | null = null;
   private finished = false;
 
   setRig(rig: Rig, lab: Lab): void {
@@ -49,8 +47,6 @@ export class Readouts {
   /** Back to t = 0: no estimate, no regime yet. */
   reset(): void {
     this.finished = false;
-    this.estimate = null;
-    this.headlinePeriod = null;
     this.lastEstimateKey = "";
     setText(this.time, "t = 0.000 s");
     setText(this.period, "T = — s");
@@ -69,11 +65,6 @@ export class Readouts {
     setText(this.failure, `The run stopped: ${message}`);
   }
 
-  /** The period shown: the run's result once done, else the estimator's (null before one). */
-  get currentPeriod(): number | null {
-    return this.headlinePeriod ?? this.estimate?.period ?? null;
-  }
-
   setState(state: LabState): void {
     setText(this.time, `t = ${state.t.toFixed(3)} s`);
     if (this.finished) return;
@@ -83,7 +74,6 @@ export class Readouts {
     const key = e ? `${e.periods_used}:${e.period}:${e.period_sd}` : "";
     if (!e || key === this.lastEstimateKey) return;
     this.lastEstimateKey = key;
-    this.estimate = e;
     setText(this.period, `T = ${withError(e.period, e.period_sd, 4)} s`);
     this.period.dataset["periodS"] = String(e.period);
     const periods = `${e.periods_used} period${e.periods_used === 1 ? "" : "s"}`;
@@ -101,7 +91,6 @@ export class Readouts {
     this.finished = true;
     setText(this.status, "done");
     if (headline) {
-      this.headlinePeriod = headline.period;
       setText(this.period, `T = ${withError(headline.period, headline.periodSd, 4)} s`);
       // The full value, for a test to hold against `frictionlab run`'s period_s.
       this.period.dataset["periodS"] = String(headline.period);

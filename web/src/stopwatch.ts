@@ -3,6 +3,7 @@
 // the presses, so it measures the plate's period in slow motion too.
 import { byId, setText } from "./dom";
 import { fixed } from "./format";
+import type { LabModel } from "./lab_model";
 
 const PERIODS_TIMED = 10;
 
@@ -26,10 +27,9 @@ export class Stopwatch {
   private running = false;
   private frame = 0;
 
-  constructor(
-    private readonly simTime: () => number | null,
-    private readonly estimatorPeriod: () => number | null,
-  ) {
+  /** It reads the model (the run's time, the estimator's period), never another view. */
+  constructor(private readonly model: LabModel) {
+    model.period.lazyLink(() => this.showEstimator());
     this.toggleButton.addEventListener("click", () => this.toggle());
     this.clearButton.addEventListener("click", () => this.clear());
     document.addEventListener("keydown", (event) => {
@@ -95,9 +95,13 @@ export class Stopwatch {
     this.showEstimator();
   }
 
+  private simTime(): number | null {
+    return this.model.state.value?.t ?? null;
+  }
+
   /** Shows the estimator's period beside the hand-timed one. */
-  showEstimator(): void {
-    const period = this.estimatorPeriod();
+  private showEstimator(): void {
+    const period = this.model.period.value;
     setText(this.estimator, period === null ? "—" : `${fixed(period, 4)} s`);
   }
 }

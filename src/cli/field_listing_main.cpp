@@ -1,5 +1,6 @@
 // frictionlab-fields FILE...: writes the listings of a run's fields (lab/run/field_listing.hpp)
-// into each file's generated blocks; @LIST names a file that lists the files, one a line. With
+// and of the web API's bodies (api/api_listing.hpp) into each file's generated blocks; @LIST names
+// a file that lists the files, one a line. With
 // --check, writes nothing and exits 1 naming each file whose blocks are not what the declaration
 // gives (tools/generate-fields mends them).
 #include <cstdio>
@@ -7,14 +8,18 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "api/api_listing.hpp"
 #include "io/atomic_file.hpp"
 #include "lab/run/field_listing.hpp"
 
 int main(int argc, char** argv) {
   bool check = false;
   int stale = 0;
-  const std::vector<fl::FieldListing> listings = fl::field_listings();
+  std::vector<fl::FieldListing> listings = fl::field_listings();
+  for (fl::FieldListing& listing : fl::api::api_listings()) listings.push_back(std::move(listing));
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -49,8 +54,8 @@ int main(int argc, char** argv) {
     if (*written == text.str()) continue;
     if (check) {
       std::fprintf(stderr,
-                   "%s: error: its lists of a run's fields are not what "
-                   "src/lab/run/summary_fields.cpp declares; run tools/generate-fields\n",
+                   "%s: error: its lists of fields are not what src/lab/run/summary_fields.cpp "
+                   "and src/api/api_fields.cpp declare; run tools/generate-fields\n",
                    file.c_str());
       ++stale;
     } else {

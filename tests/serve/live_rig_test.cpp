@@ -19,6 +19,7 @@
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include "api/api_contract.hpp"
 #include "io/hall_log.hpp"
 #include "lab/live/live_run.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -189,6 +190,13 @@ TEST_F(LiveRigTest, ThePagesPeriodsAreWhatEstimateFindsInTheRecordedLog) {
     const std::lock_guard lock(mutex_);
     events = rig_events_;
   }
+  // Each event is what the web API declares (api/api_fields.hpp), and the port's status too.
+  for (const json& e : events)
+    EXPECT_EQ(api::contract_problems(e, "RigEvent", "rig").size(), 0u) << e;
+  const auto status = client_->Get("/api/rig");
+  ASSERT_TRUE(status);
+  EXPECT_EQ(api::contract_problems(json::parse(status->body), "LiveRig", "status").size(), 0u)
+      << status->body;
   const json& last = events.back();
   EXPECT_NE(last["message"].get<std::string>().find("kept"), std::string::npos) << last;
   EXPECT_EQ(last["lines"], static_cast<int>(samples.size()) + 2);

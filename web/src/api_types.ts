@@ -1,0 +1,416 @@
+// The shapes of the lab's web API (docs/web-api.md): every object the server sends, written by
+// tools/generate-fields from the lab's one declaration of them (src/api/api_fields.cpp), which
+// serve's C++ and the page's mock server are both held to; a test fails when this file is not what
+// the declaration gives. Lengths in metres, times in seconds, angles in radians unless a key's
+// name says otherwise (_mm, _rpm, _deg, _k for kelvin); null: not measured, or the rig has none.
+import type { RunSummaryJson } from "./run_summary";
+
+/** `event: done`: the run's summary, summary.json's object. */
+export type Summary = RunSummaryJson;
+
+// generated: web-api-types
+/** One period as the estimator judged it: [start, end, period, accepted], in seconds. */
+export type PeriodRow = [number, number, number, boolean];
+
+/** One Hall sample: [t, adc], t in seconds from the run's first sample. */
+export type HallPoint = [number, number];
+
+/** How fast simulated time runs against the wall's. */
+export type PlaybackSpeed = 1 | 0.25 | 0.0625;
+
+/** The live rig's serial port: none open, open with nothing yet, lines coming, gone, failed, or its log full. */
+export type RigPortState = "closed" | "waiting" | "receiving" | "unplugged" | "failed" | "full";
+
+/** How many Hall pulses the magnets give per period, as the rig's estimator recognised it. */
+export type PulseGeometry = "one-pulse" | "pair" | "unknown";
+
+/** Where a session's run stands. */
+export type SessionState = "paused" | "playing" | "done";
+
+/** Where a period comes from: the Hall sensor's estimator, or the fit to the plate's motion. */
+export type PeriodFrom = "sensor" | "trajectory";
+
+/** A scene the lab offers (`GET /api/lab`). */
+export interface SceneEntry {
+  /** the name a session asks for */
+  name: string;
+  /** the scene's title */
+  title: string;
+}
+
+/** A material of the paper's Table I (`GET /api/lab`). */
+export interface MaterialEntry {
+  /** `plate.material`'s value for it */
+  key: string;
+  /** its name in Table I */
+  name: string;
+  /** [K] the temperatures Table I measured it at */
+  temperatures_k: number[];
+}
+
+/** `GET /api/lab`: what the page is offered. */
+export interface Lab {
+  /** the scenes, by name */
+  scenes: SceneEntry[];
+  /** the paper's Table I */
+  materials: MaterialEntry[];
+  /** the lab's version */
+  version: string;
+}
+
+/** A LEGO part on the plate. */
+export interface PlateBlock {
+  /** the part, served as /parts/NAME.glb */
+  part: string;
+  /** [m] its centre along the plate from the plate's centre */
+  x: number;
+  /** [m] its centre across the plate */
+  y: number;
+  /** its turn about the vertical, in degrees */
+  turn_deg: number;
+}
+
+/** The friction plate. */
+export interface Plate {
+  /** [m] along the rollers' spacing */
+  length: number;
+  /** [m] along the rollers' axes */
+  width: number;
+  /** [m] the plate's own, blocks not included */
+  thickness: number;
+  /** [kg] with its blocks and magnets */
+  mass: number;
+  /** [m] its centre of mass above the rollers' contact line */
+  h_c: number;
+  /** the plate's material (`plate.material`) */
+  material: string;
+  /** the LEGO parts on it */
+  blocks: PlateBlock[];
+}
+
+/** A magnet on the plate. */
+export interface Magnet {
+  /** [m] its centre along the plate from the plate's centre */
+  x: number;
+  /** [m] its bottom face above the plate's top face */
+  height: number;
+  /** [m] its diameter */
+  diameter: number;
+  /** [m] its thickness */
+  thickness: number;
+}
+
+/** Where the Hall sensor sits. */
+export interface HallSensor {
+  /** [m] along the plate's motion from the rollers' midpoint */
+  x: number;
+  /** [m] across */
+  y: number;
+  /** [m] up */
+  z: number;
+}
+
+/** A LEGO part of the rig's frame. */
+export interface FramePart {
+  /** the part, served as /parts/NAME.glb */
+  part: string;
+  /** [m] its position */
+  position: [number, number, number];
+  /** its turn about z after the position, in degrees */
+  turn_deg: number;
+  /** red, green, blue from 0 to 1 */
+  color: [number, number, number];
+}
+
+/** What the paper measured for the rig's material (its Table I row). */
+export interface PaperValues {
+  /** the material's name in Table I */
+  material: string;
+  /** `plate.material`'s value for it */
+  key: string;
+  /** [K] the rollers' temperature of the row */
+  temperature_k: number;
+  /** [s] the period the paper measured */
+  period: number;
+  /** [s] its uncertainty */
+  period_err: number;
+  /** the paper's mu_k */
+  mu_k: number;
+  /** its uncertainty */
+  mu_k_err: number;
+}
+
+/** A session's rig as compiled from its set-up (`POST /api/sessions`). */
+export interface Rig {
+  /** the scene's name */
+  scene: string;
+  /** [m] l, between the rollers' axes */
+  spacing: number;
+  /** [m] the rollers' radius */
+  roller_radius: number;
+  /** [m] the rollers' length */
+  roller_length: number;
+  /** whether the rollers' tops turn toward each other (restoring) or apart */
+  roller_sense: "inward" | "outward";
+  /** the rollers' nominal speed, in rpm */
+  roller_speed_rpm: number;
+  /** whether a motor and gearbox drive the rollers */
+  drive: boolean;
+  /** the motor's duty; null without a drive */
+  motor_duty: number | null;
+  /** [m] the rollers' run-out */
+  runout: number;
+  /** the friction plate */
+  plate: Plate;
+  /** the magnets on the plate */
+  magnets: Magnet[];
+  /** the Hall sensor; null for a rig without one */
+  sensor: HallSensor | null;
+  /** the LEGO frame's parts (none for a bare rig) */
+  frame: FramePart[];
+  /** [m] where the plate starts, from the rollers' midpoint */
+  offset: number;
+  /** [s] the run's simulated length */
+  duration: number;
+  /** [s] the physics step */
+  time_step: number;
+  /** `world.seed`, which draws the sensor's noise */
+  seed: number;
+  /** [m/s^2] g */
+  gravity: number;
+  /** whether mu depends on the slip speed */
+  friction_law: "slip-dependent" | "coulomb";
+  /** the kinetic friction coefficient set */
+  mu_k: number;
+  /** [K] the rollers' temperature at the start */
+  temperature_k: number;
+  /** [s] the paper's period, pi sqrt(2 l / (mu_k g)) */
+  period_thin: number;
+  /** [s] the period with the plate's thickness; null when the rollers do not restore it */
+  period_thick: number | null;
+  /** [rad/s] 2 pi / period_thick; null likewise */
+  omega: number | null;
+  /** [m] the amplitude beyond which the plate tips off a roller; null likewise */
+  tipping_amplitude: number | null;
+  /** what the paper measured; null when the friction is not a Table I row */
+  paper: PaperValues | null;
+}
+
+/** `POST /api/sessions`'s answer (201). */
+export interface Session {
+  /** the session's public id; the class's table lists it */
+  id: string;
+  /** the session's secret: only requests that carry it control the session */
+  key: string;
+  /** the compiled rig */
+  rig: Rig;
+}
+
+/** One problem of a request the lab refused, by field. */
+export interface Problem {
+  /** the request's key (`scene`, `set`, `name`) */
+  field: string | null;
+  /** the entry at fault (a `set` entry) */
+  value: string | null;
+  /** what was expected, what was found, what to do */
+  message: string;
+}
+
+/** A 4xx's body. */
+export interface ErrorBody {
+  /** what went wrong, in a line */
+  error: string;
+  /** each problem by field (none for the API's own) */
+  problems: Problem[];
+  /** true when the lab is full (503); absent otherwise */
+  refused?: boolean;
+}
+
+/** A roller's contact with the plate. */
+export interface ContactForce {
+  /** [N] the normal force on the plate */
+  normal: number;
+  /** [N] the friction force on the plate, along its motion */
+  friction: number;
+}
+
+/** The rig's estimator's statistics of the accepted periods. */
+export interface Estimate {
+  /** N, the accepted periods */
+  periods_used: number;
+  /** the periods it rejected */
+  periods_discarded: number;
+  /** the Hall pulses it detected */
+  pulses: number;
+  /** [s] the mean period */
+  period: number;
+  /** [s] the periods' standard deviation; null below two */
+  period_sd: number | null;
+  /** [s] the standard error of their mean; null below two */
+  period_se: number | null;
+  /** mu_k through the paper's formula */
+  mu_k: number;
+  /** mu_k sqrt((dl/l)^2 + (2 dT/T)^2), dl = 2 mm; null below two periods */
+  mu_k_err: number | null;
+  /** the paper's worst case, mu_k (dl/l + 2 dT/T); null below two periods */
+  mu_k_err_worst: number | null;
+}
+
+/** `event: state`: the run now, and what came since the last event. */
+export interface LabState {
+  /** [s] the simulated time */
+  t: number;
+  /** [m] the plate's centre along its motion */
+  x: number;
+  /** [m] where the thick plate's theory has the plate now, from where the run started; null when the rollers do not restore the plate */
+  x_theory: number | null;
+  /** [m] the plate's centre across */
+  y: number;
+  /** [m] its height */
+  z: number;
+  /** [rad] its tilt about the rollers' axes */
+  pitch: number;
+  /** [rad] its turn about the vertical */
+  yaw: number;
+  /** [m/s] its speed along its motion */
+  vx: number;
+  /** [rad] the rollers' angles */
+  roller_angles: [number, number];
+  /** the two rollers' contacts */
+  contacts: ContactForce[];
+  /** the Hall samples since the last event */
+  hall: HallPoint[];
+  /** [s] the pulses detected since the last event */
+  pulses: number[];
+  /** the periods judged since the last event */
+  periods: PeriodRow[];
+  /** the estimate so far; null before a period */
+  estimate: Estimate | null;
+  /** the diagnosis so far */
+  regime: string;
+  /** whether the run plays */
+  playing: boolean;
+  /** its playback speed */
+  speed: PlaybackSpeed;
+}
+
+/** `POST /api/sessions/ID/control`'s answer. */
+export interface ControlReply {
+  /** [s] the simulated time */
+  t: number;
+  /** whether the run plays */
+  playing: boolean;
+  /** its playback speed */
+  speed: PlaybackSpeed;
+}
+
+/** `event: closed`: the server is stopping; the stream ends after it. */
+export interface Closed {
+  /** what happened and what to do */
+  message: string;
+}
+
+/** `event: failed`: a guard stopped the run (its summary follows as `done`). */
+export interface Failure {
+  /** the guard's message */
+  message: string;
+}
+
+/** `GET /api/rig`: the serial ports the server sees and the one open (or last open). */
+export interface LiveRig {
+  /** the ports a page may open (none on a shared server) */
+  ports: string[];
+  /** whether this page may open or close a port */
+  may_choose: boolean;
+  /** the port open or last open; null before one */
+  port: string | null;
+  /** its baud rate; null before a port */
+  baud: number | null;
+  /** the port's state */
+  state: RigPortState;
+  /** what happened and what to do; null while all is well */
+  message: string | null;
+  /** the lines received */
+  lines: number;
+  /** the raw log's download name; null before a line */
+  log_name: string | null;
+}
+
+/** `event: rig`: what the live rig sent since the last event, through the rig's estimator with the session's spacing. */
+export interface RigEvent {
+  /** the port */
+  port: string | null;
+  /** the port's state */
+  state: RigPortState;
+  /** what happened and what to do; null while all is well */
+  message: string | null;
+  /** the lines received */
+  lines: number;
+  /** the board's restarts: a new value starts the rig's plot and periods again */
+  run: number;
+  /** the samples since the last event (the last 10 s at most) */
+  hall: HallPoint[];
+  /** the periods judged since the last event */
+  periods: PeriodRow[];
+  /** the estimate so far; null before a period */
+  estimate: Estimate | null;
+  /** the pulses per period recognised */
+  geometry: PulseGeometry;
+  /** [m] the l mu_k is computed with: the session's rig's */
+  spacing: number;
+}
+
+/** One session's row of `GET /api/class` (and of class.csv): its set-up and result so far. */
+export interface ClassRow {
+  /** the session's id */
+  session: string;
+  /** who runs it; null when not given */
+  name: string | null;
+  /** the scene's name */
+  scene: string;
+  /** the plate's material in Table I; null for a mu_k given as a number */
+  material: string | null;
+  /** [K] the rollers' temperature at the start */
+  temperature_k: number;
+  /** [m] l */
+  spacing: number;
+  /** [m] the plate's centre of mass above the contact line */
+  h_c: number;
+  /** where the run stands */
+  state: SessionState;
+  /** [s] the simulated time reached */
+  t: number;
+  /** [s] the mean accepted period; null before one */
+  period: number | null;
+  /** [s] the standard error of that mean (or of the fit); null below two periods */
+  period_err: number | null;
+  /** where the period comes from */
+  period_from: PeriodFrom | null;
+  /** through the paper's formula; null before a period */
+  mu_k: number | null;
+  /** in quadrature; null below two periods */
+  mu_k_err: number | null;
+  /** [s] the paper's period for the material */
+  paper_period: number | null;
+  /** the paper's mu_k for the material */
+  paper_mu_k: number | null;
+}
+
+/** The live rig as the class's table shows it. */
+export interface ClassRig {
+  /** the port */
+  port: string | null;
+  /** the port's state */
+  state: RigPortState;
+  /** the lines received */
+  lines: number;
+}
+
+/** `GET /api/class`: every open session, and the live rig. */
+export interface ClassTable {
+  /** one row a session */
+  sessions: ClassRow[];
+  /** the live rig; null when no port was opened */
+  rig: ClassRig | null;
+}
+// end generated

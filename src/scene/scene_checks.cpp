@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "core/analytic_model.hpp"
 #include "core/describe.hpp"
@@ -24,17 +26,22 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   const auto need = [&](bool ok, const char* key, std::string message) {
     if (!ok) problems.push_back({key, std::move(message)});
   };
-  const auto positive = [&](double v, const char* key) {
-    need(finite_positive(v), key, describe("must be positive, found ", v));
+  // A value that must be positive, in its SI unit; a length also in millimetres, as a student
+  // gives it.
+  const auto positive = [&](double v, const char* key, const char* unit = "") {
+    const std::string as_given =
+        std::string_view(unit) == "m" && std::isfinite(v) ? describe(" (", v * 1e3, " mm)") : "";
+    need(finite_positive(v), key,
+         describe("must be positive, found ", v, unit[0] != '\0' ? " " : "", unit, as_given));
   };
-  positive(s.world.gravity, "world.gravity");
+  positive(s.world.gravity, "world.gravity", "m/s^2");
   // A rig tilted beyond 30 degrees is no bench's slip of the level; at 90 the rollers carry
   // nothing.
   need(std::isfinite(s.world.tilt) && std::fabs(s.world.tilt) <= kPi / 6.0, "world.tilt",
        describe("must be between -30 and 30 degrees, found ", s.world.tilt * 180.0 / kPi,
                 " deg (an angle without a unit is in radians)"));
-  positive(s.world.time_step, "world.time_step");
-  positive(s.world.duration, "world.duration");
+  positive(s.world.time_step, "world.time_step", "s");
+  positive(s.world.duration, "world.duration", "s");
   need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
        "world.solver_iterations",
        describe("must be between 1 and 10000, found ", s.world.solver_iterations));
@@ -57,10 +64,10 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
          describe("needs ", s.world.duration / s.world.time_step,
                   " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
-  positive(s.rollers.spacing, "rollers.spacing");
-  positive(s.rollers.radius, "rollers.radius");
+  positive(s.rollers.spacing, "rollers.spacing", "m");
+  positive(s.rollers.radius, "rollers.radius", "m");
   if (s.rollers.radius_roller_1) {
-    positive(*s.rollers.radius_roller_1, "rollers.radius");
+    positive(*s.rollers.radius_roller_1, "rollers.radius", "m");
     need(!s.drive, "rollers.radius",
          "two radii go with the ideal drive only (the drive's gear train is laid out for one "
          "roller size); give one radius or drop the drive");
@@ -99,13 +106,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
                 " mm), found ", 1e3 * s.rollers.runout, " mm"));
   for (const double phase : s.rollers.runout_phase)
     need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
-  positive(s.rollers.length, "rollers.length");
+  positive(s.rollers.length, "rollers.length", "m");
   if (const std::optional<WarmingDesc>& w = s.friction.warming) {
     need(std::isfinite(w->room_temperature) && w->room_temperature > s.friction.temperature,
          "friction.warming.room",
          describe("must be warmer than the rollers' start (friction.temperature, ",
                   s.friction.temperature, " K), found ", w->room_temperature, " K"));
-    positive(w->time_constant, "friction.warming.time_constant");
+    positive(w->time_constant, "friction.warming.time_constant", "s");
     need(std::isfinite(w->hold) && w->hold >= 0.0, "friction.warming.hold",
          describe("must be >= 0, found ", w->hold, " s"));
     if (w->mu_k_room) positive(*w->mu_k_room, "friction.warming.mu_k_room");
@@ -160,13 +167,13 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
          describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
                   " mm is not more than their radii's sum ", 1e3 * (s.rollers.radius + radius_1),
                   " mm"));
-  positive(s.plate.length, "plate.length");
-  positive(s.plate.width, "plate.width");
-  positive(s.plate.thickness, "plate.thickness");
+  positive(s.plate.length, "plate.length", "m");
+  positive(s.plate.width, "plate.width", "m");
+  positive(s.plate.thickness, "plate.thickness", "m");
   if (s.plate.mass)
-    positive(*s.plate.mass, "plate.mass");
+    positive(*s.plate.mass, "plate.mass", "kg");
   else
-    positive(s.plate.density, "plate.density");
+    positive(s.plate.density, "plate.density", "kg/m^3");
   need(std::isfinite(s.plate.payload.mass) && s.plate.payload.mass >= 0.0, "plate.payload.mass",
        "must be >= 0");
   need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
@@ -241,9 +248,9 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
     const SensorDesc& sensor = *s.sensor;
     const double norm = std::hypot(sensor.axis[0], sensor.axis[1], sensor.axis[2]);
     need(std::isfinite(norm) && norm > 0.0, "sensor.axis", "must be a non-zero vector");
-    positive(sensor.sensitivity, "sensor.sensitivity");
-    positive(sensor.supply, "sensor.supply");
-    positive(sensor.sample_rate, "sensor.sample_rate");
+    positive(sensor.sensitivity, "sensor.sensitivity", "V/T");
+    positive(sensor.supply, "sensor.supply", "V");
+    positive(sensor.sample_rate, "sensor.sample_rate", "Hz");
     need(sensor.adc_bits >= 1 && sensor.adc_bits <= 16, "sensor.adc_bits",
          describe("must be between 1 and 16, found ", sensor.adc_bits));
     need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise", "must be >= 0");

@@ -1,7 +1,10 @@
 #include "serve/class_table.hpp"
 
+#include <string_view>
+
 #include <fmt/format.h>
 
+#include "api/api_fields.hpp"
 #include "io/csv_table.hpp"
 #include "io/json_value.hpp"
 
@@ -54,27 +57,28 @@ json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
 }
 
 std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table) {
-  static const char* const kColumns[] = {
-      "session",       "name",       "scene",          "material",
-      "temperature_k", "spacing_mm", "h_c_mm",         "state",
-      "t_s",           "period_s",   "period_err_s",   "period_from",
-      "mu_k",          "mu_k_err",   "paper_period_s", "paper_mu_k"};
+  // The columns the web API declares for a class row (api/api_fields.hpp), in its order.
+  std::vector<const api::ApiKey*> columns;
+  for (const api::ApiObject& o : api::api_declaration().objects)
+    if (std::string_view(o.name) == "ClassRow")
+      for (const api::ApiKey& k : o.keys)
+        if (k.csv != nullptr) columns.push_back(&k);
   std::string out;
-  for (const char* column : kColumns) out += std::string(out.empty() ? "" : ",") + column;
+  for (const api::ApiKey* k : columns) out += std::string(out.empty() ? "" : ",") + k->csv;
   out += '\n';
-  const auto cell = [](const json& v, double scale = 1.0) -> std::string {
+  const auto cell = [](const json& v, double scale) -> std::string {
     if (v.is_null()) return "";
     if (v.is_number()) return fmt::format("{:.10g}", v.get<double>() * scale);
     return csv_cell(v.get<std::string>());
   };
   for (const ClassRow& row : rows) {
     const json r = row_json(row, table);
-    out += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", cell(r["session"]),
-                       cell(r["name"]), cell(r["scene"]), cell(r["material"]),
-                       cell(r["temperature_k"]), cell(r["spacing"], 1e3), cell(r["h_c"], 1e3),
-                       cell(r["state"]), cell(r["t"]), cell(r["period"]), cell(r["period_err"]),
-                       cell(r["period_from"]), cell(r["mu_k"]), cell(r["mu_k_err"]),
-                       cell(r["paper_period"]), cell(r["paper_mu_k"]));
+    std::string line;
+    for (const api::ApiKey* k : columns) {
+      if (k != columns.front()) line += ',';
+      line += cell(r.at(k->name), k->csv_scale);
+    }
+    out += line + '\n';
   }
   return out;
 }

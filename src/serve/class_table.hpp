@@ -39,7 +39,8 @@ struct ClassRow {
 nlohmann::json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
                           const std::optional<RigFeedStatus>& rig);
 
-// The columns docs/web-api.md lists; an empty cell for a value that is null in the JSON.
+// The columns the web API declares for a class row (api/api_fields.hpp, docs/web-api.md), in its
+// order; an empty cell for a value that is null in the JSON.
 std::string class_csv(const std::vector<ClassRow>& rows, const PaperTable& table);
 
 }  // namespace fl::serve

@@ -44,7 +44,6 @@ std::optional<json> RigWatch::next(const std::shared_ptr<const RigFeed>& feed) {
   const std::vector<EstimatedPeriod>& periods = live_->host().periods();
   if (hall.empty() && periods.size() == periods_sent_ && sent == status_sent_) return std::nullopt;
   status_sent_ = sent;
-  const fl_estimator::PeriodEstimator& estimator = live_->host().estimator();
   json out{{"port", status.port},
            {"state", status.state},
            {"message", status.message ? json(*status.message) : json(nullptr)},
@@ -52,11 +51,16 @@ std::optional<json> RigWatch::next(const std::shared_ptr<const RigFeed>& feed) {
            {"run", run_},
            {"hall", std::move(hall)},
            {"periods", periods_json(periods, periods_sent_)},
-           {"estimate", estimate_json(estimator_report(estimator.stats()))},
-           {"geometry", geometry_name(estimator.geometry())},
            {"spacing", set_up_.spacing}};
+  out.update(rig_reading_json(*live_));
   periods_sent_ = periods.size();
   return out;
+}
+
+json rig_reading_json(const LiveLogEstimate& live) {
+  const fl_estimator::PeriodEstimator& estimator = live.host().estimator();
+  return {{"estimate", estimate_json(estimator_report(estimator.stats()))},
+          {"geometry", geometry_name(estimator.geometry())}};
 }
 
 }  // namespace fl::serve

@@ -36,4 +36,7 @@ class RigWatch {
   std::string status_sent_;  // the last event's state, message and lines
 };
 
+// What a `rig` event says of the rig's estimator now: {"estimate", "geometry"}.
+nlohmann::json rig_reading_json(const LiveLogEstimate& live);
+
 }  // namespace fl::serve

@@ -45,7 +45,8 @@ def test_trajectory_units_agree_with_each_other():
 
 def test_the_plate_stays_within_the_analytic_amplitude():
     # Released at rest at x = A0 with both rollers slipping: x(t) = A0 cos(Omega t), |x| <= A0,
-    # to the integrator's drift (below 1e-5 of the amplitude per period at 1 ms, README).
+    # to the integrator's drift (below 1e-5 of the amplitude per period at 1 ms,
+    # docs/researchers.md).
     scene = fl.load_scene(SCENES / "minimal.yaml")
     r = fl.run(scene)
     a0 = scene["plate.offset"]

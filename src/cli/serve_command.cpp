@@ -83,7 +83,7 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
                      "--web DIR");
   // Each stream runs on its own thread, and glibc gives threads their own malloc arenas, which
   // keep what a closed session freed: opening and closing sessions for a minute grew the
-  // resident size 6-fold. Two arenas return it (web/tests/load_bench.mjs; README's table).
+  // resident size 6-fold. Two arenas return it (web/tests/load_bench.mjs; bench/README.md's table).
   mallopt(M_ARENA_MAX, 2);
   serve::LabServer server(options);
   int port = 0;

@@ -102,9 +102,9 @@ TEST(Cli, BadInputExitsWithStatusTwoAndSaysWhy) {
       << speed.err;
 }
 
-// README's claims on flexible foam (mu_k = 10): the minimal plate, released at 20 mm, beyond
-// l/2 - mu_k h_c = 18.7 mm, tips; a plate 10 mm thick (h_c above 4.45 mm) has no restoring force
-// and the loader refuses it.
+// docs/using-the-lab.md's claims on flexible foam (mu_k = 10): the minimal plate, released at
+// 20 mm, beyond l/2 - mu_k h_c = 18.7 mm, tips; a plate 10 mm thick (h_c above 4.45 mm) has no
+// restoring force and the loader refuses it.
 TEST(Cli, FlexibleFoamTipsTheMinimalPlateAndAThickPlateIsRefused) {
   const std::string minimal = std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes/minimal.yaml";
   const auto tips =

@@ -1,5 +1,5 @@
-// scenes/roller-ramp.yaml (2000 rpm down to 50 rpm and back up over 660 s), the run README
-// describes, under two laws and against theory:
+// scenes/roller-ramp.yaml (2000 rpm down to 50 rpm and back up over 660 s), the run that
+// docs/researchers.md describes, under two laws and against theory:
 //  - ideal coulomb (mu_s = mu_k): the start amplitude A0 above the slip threshold A0 Omega / a;
 //    the first stick where the ramp crosses it; below, the amplitude clipped to the speeds met;
 //    back up, the amplitude the clip left at the slowest speed, for good, which at a step dt is
@@ -70,7 +70,7 @@ TEST(RampRoundTrip, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipFo
   ASSERT_NEAR(a0, 0.020, 1e-12);
   // The slip threshold: the roller speed whose surface speed is the plate's top speed A0 Omega.
   const double threshold = a0 * omega / a;
-  EXPECT_NEAR(threshold / kRpm, 154.0, 0.5) << "README's 154 rpm";
+  EXPECT_NEAR(threshold / kRpm, 154.0, 0.5) << "docs/researchers.md's 154 rpm";
 
   // Down to the threshold: A0, slipping throughout.
   const CycleRecord* first_stuck = nullptr;
@@ -94,7 +94,7 @@ TEST(RampRoundTrip, IdealCoulombKeepsTwentyMillimetresToTheThresholdAndTheClipFo
   // clip's settled value at this step.
   const Slowest low = slowest(r.scene.rollers.speed_ramp);
   const double settled = (low.speed * a - lag) / omega;
-  EXPECT_NEAR(settled, 6.3e-3, 0.05e-3) << "README's 6.3 mm";
+  EXPECT_NEAR(settled, 6.3e-3, 0.05e-3) << "docs/researchers.md's 6.3 mm";
   int after = 0;
   for (const CycleRecord& c : r.cycles) {
     if (c.start < low.to) continue;
@@ -127,8 +127,8 @@ TEST(RampRoundTrip, WithStaticFrictionTheStickSlipCycleFollowsTheSpeedUpToTippin
     (below ? low : high) = mid;
   }
   const double tipping_speed = low;
-  EXPECT_NEAR(tipping_speed / kRpm, 340.0, 10.0) << "README's 'from about 340 rpm'";
-  EXPECT_NEAR(tipping_offset, 44e-3, 0.5e-3) << "README's 44 mm";
+  EXPECT_NEAR(tipping_speed / kRpm, 340.0, 10.0) << "docs/researchers.md's 'from about 340 rpm'";
+  EXPECT_NEAR(tipping_offset, 44e-3, 0.5e-3) << "docs/researchers.md's 44 mm";
 
   // The plate tips where the ramp, on its way up, reaches that speed: within one period's
   // change of the speed (1.2 %).

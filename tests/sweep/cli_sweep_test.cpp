@@ -405,10 +405,10 @@ TEST(CliCompare, ALogAgainstItsSimulation) {
   EXPECT_NE(refused.err.find("give one"), std::string::npos) << refused.err;
 }
 
-// README's worked example: the example spacing series estimated into a table, the table compared
-// with the paper's rig it was simulated from. The thin mu_k each log reports falls with l (the
-// thick plate's bias 2 mu_k h_c / l); the refit through the rig finds the truth, 0.29, in every
-// row.
+// docs/students.md's worked example: the example spacing series estimated into a table, the table
+// compared with the paper's rig it was simulated from. The thin mu_k each log reports falls with l
+// (the thick plate's bias 2 mu_k h_c / l); the refit through the rig finds the truth, 0.29, in
+// every row.
 TEST(CliCompare, TheExampleSeriesRefitsToTheTruth) {
   const fs::path out = folder("series");
   const std::string series =

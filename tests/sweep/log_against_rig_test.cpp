@@ -106,7 +106,8 @@ TEST(LogAgainstRig, WarmingRollersShowAsTheDriftTheirWarmingGives) {
   const LogAgainstRig r = against(log, "paper-rig-77K.yaml");
   EXPECT_TRUE(found(r, "drift:")) << (r.disagreements.empty() ? "" : r.disagreements.front());
   // Warming rollers raise mu_k from 0.20 toward 0.29: the period falls, by what the warming law
-  // and the thick plate's period give (README: about -112 ms a minute over the first minute).
+  // and the thick plate's period give (docs/students.md: about -112 ms a minute over the first
+  // minute).
   ASSERT_TRUE(r.measured.period_drift && r.measured.period_drift_err);
   const CompiledRig rig = compile_rig(test::scene_file("imperfect/rollers-warming.yaml"));
   ASSERT_TRUE(rig.warming);

@@ -46,7 +46,8 @@ nlohmann::json run_rows(const std::string& name) {
   return nlohmann::json::parse(s.str())["rows"];
 }
 
-// README: every point within 0.0071 % of the thick-plate curve; asserted within 0.01 %.
+// docs/researchers.md: every point within 0.0071 % of the thick-plate curve; asserted within
+// 0.01 %.
 TEST(SweepClaims, SpacingSweepFollowsTheThickCurveWithinAHundredthOfAPercent) {
   const nlohmann::json rows = run_rows("spacing");
   ASSERT_EQ(rows.size(), 120u);
@@ -60,9 +61,9 @@ TEST(SweepClaims, SpacingSweepFollowsTheThickCurveWithinAHundredthOfAPercent) {
   }
 }
 
-// README: the 10 008-point sweep at 0.01 % (each point at its own step, the trajectory's period
-// only) puts every point within 0.01 % of the thick-plate curve. One shard in eight, spread over
-// the whole grid (every eighth point), is run here.
+// docs/researchers.md: the 10 008-point sweep at 0.01 % (each point at its own step, the
+// trajectory's period only) puts every point within 0.01 % of the thick-plate curve. One shard in
+// eight, spread over the whole grid (every eighth point), is run here.
 TEST(SweepClaims, AnAccuracySweepPutsEveryPointWithinItsAccuracy) {
   const SweepSpec spec =
       load_sweep_file(kSource + "/scenes/sweeps/materials-spacings.yaml", kInputs);
@@ -89,8 +90,8 @@ TEST(SweepClaims, AnAccuracySweepPutsEveryPointWithinItsAccuracy) {
   EXPECT_EQ(checked, 1251u);
 }
 
-// README: a sweep at 0.01 % whose periods are the rig's estimator's (the Hall sensor at the
-// board's 1 kHz, its noise and the ADC's step) keeps every one of them within 0.01 % of the
+// docs/researchers.md: a sweep at 0.01 % whose periods are the rig's estimator's (the Hall sensor
+// at the board's 1 kHz, its noise and the ADC's step) keeps every one of them within 0.01 % of the
 // thick-plate curve: the step leaves room for the sensor's error (docs/physics.md).
 TEST(SweepClaims, AHallSweepAtAnAccuracyKeepsEveryEstimatorsPeriodWithinIt) {
   const SweepSpec spec = load_sweep_file(kSource + "/scenes/sweeps/hall-accuracy.yaml", kInputs);

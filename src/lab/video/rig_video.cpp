@@ -208,7 +208,7 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
       options.replace_existing = true;
       // Encoded on a pool of threads beside the drawing (render/png.hpp): one per core with a
       // GPU drawing; one with a software rasteriser, which draws on every core itself (a pool of
-      // two there only competed with it; README's performance table).
+      // two there only competed with it; bench/README.md's performance table).
       const std::string drawn_by = context->description();
       const bool software = drawn_by.find("llvmpipe") != std::string::npos ||
                             drawn_by.find("softpipe") != std::string::npos;

@@ -1,4 +1,4 @@
-// frictionlab-fields FILE...: writes the listings of a run's fields (lab/run/field_listing.hpp)
+// frictionlab-fields FILE...: writes the listings of a run's fields (lab/fields/field_listing.hpp)
 // and of the web API's bodies (api/api_listing.hpp) into each file's generated blocks; @LIST names
 // a file that lists the files, one a line. With
 // --check, writes nothing and exits 1 naming each file whose blocks are not what the declaration
@@ -13,7 +13,7 @@
 
 #include "api/api_listing.hpp"
 #include "io/atomic_file.hpp"
-#include "lab/run/field_listing.hpp"
+#include "lab/fields/field_listing.hpp"
 
 int main(int argc, char** argv) {
   bool check = false;

@@ -1,6 +1,8 @@
 #include "lab/logs/log_table.hpp"
 
 #include <filesystem>
+#include <type_traits>
+#include <variant>
 
 #include <fmt/format.h>
 
@@ -11,20 +13,9 @@
 #include "io/json_value.hpp"
 #include "lab/logs/checked_reading.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "lab/logs/log_table_fields.hpp"
 
 namespace fl {
-namespace {
-
-// A text for JSON: a file name that is not UTF-8 escaped (core/utf8.hpp).
-nlohmann::json text_or_null(const std::string& text) {
-  return text.empty() ? nlohmann::json(nullptr) : nlohmann::json(escape_invalid_utf8(text));
-}
-
-std::string number(const std::optional<double>& v) {
-  return v ? fmt::format("{}", *v) : std::string();
-}
-
-}  // namespace
 
 LogSetUp set_up_for_log(const std::string& log_file, const LogSetUp& set_up, std::string* note,
                         std::optional<LogSidecar>* sidecar, const PaperTable* materials) {
@@ -90,21 +81,34 @@ LogTableRow estimate_log_row(const std::string& log, const LogTableDefaults& def
 }
 
 std::string log_table_csv(const std::vector<LogTableRow>& rows) {
-  std::string csv =
-      "label,log,status,rollers.spacing,spacing_err,plate.material,friction.temperature,period,"
-      "period_err,period_std,periods_used,periods_discarded,mu_k,mu_k_err_worst,"
-      "mu_k_err_quadrature,error\n";
+  std::string csv;
+  for (const LogTableField& f : log_table_fields())
+    if (f.csv != nullptr) csv += std::string(csv.empty() ? "" : ",") + f.csv;
+  csv += '\n';
   for (const LogTableRow& r : rows) {
-    csv += fmt::format("{},{},{},{} m,{} m,{},{},{},{},{},{},{},{},{},{},{}\n",
-                       csv_cell(escape_invalid_utf8(r.label)), csv_cell(escape_invalid_utf8(r.log)),
-                       r.status, r.set_up.spacing, r.set_up.spacing_err,
-                       csv_cell(r.material.value_or("")),
-                       r.temperature ? fmt::format("{} K", *r.temperature) : std::string(),
-                       number(r.period), number(r.period_err), number(r.period_std),
-                       r.periods_used ? std::to_string(*r.periods_used) : std::string(),
-                       r.periods_discarded ? std::to_string(*r.periods_discarded) : std::string(),
-                       number(r.mu_k), number(r.mu_k_err_worst), number(r.mu_k_err_quadrature),
-                       csv_cell(escape_invalid_utf8(r.error)));
+    std::string line;
+    bool first = true;
+    for (const LogTableField& f : log_table_fields()) {
+      if (f.csv == nullptr) continue;
+      if (!first) line += ',';
+      first = false;
+      line += std::visit(
+          [&f](const auto& v) -> std::string {
+            using V = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<V, std::monostate>)
+              return "";
+            else if constexpr (std::is_same_v<V, double>)
+              return fmt::format("{}{}", v, f.csv_unit);
+            else if constexpr (std::is_same_v<V, std::string>)
+              return csv_cell(v);
+            else if constexpr (std::is_same_v<V, std::int64_t> || std::is_same_v<V, std::uint64_t>)
+              return std::to_string(v);
+            else
+              return nlohmann::json(v).dump();
+          },
+          f.get(r).value());
+    }
+    csv += line + '\n';
   }
   return csv;
 }
@@ -112,28 +116,10 @@ std::string log_table_csv(const std::vector<LogTableRow>& rows) {
 nlohmann::json log_table_json(const std::vector<LogTableRow>& rows) {
   nlohmann::json out = nlohmann::json::array();
   for (const LogTableRow& r : rows) {
-    const auto maybe_int = [](const std::optional<int>& v) {
-      return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-    };
-    out.push_back({{"label", escape_invalid_utf8(r.label)},
-                   {"log", escape_invalid_utf8(r.log)},
-                   {"sidecar", text_or_null(r.sidecar)},
-                   {"status", r.status},
-                   {"error", text_or_null(r.error)},
-                   {"spacing_m", r.set_up.spacing},
-                   {"spacing_err_m", r.set_up.spacing_err},
-                   {"gravity_m_s2", r.set_up.gravity},
-                   {"material", text_or_null(r.material.value_or(""))},
-                   {"temperature_k", json_or_null(r.temperature)},
-                   {"geometry", text_or_null(r.geometry)},
-                   {"periods_used", maybe_int(r.periods_used)},
-                   {"periods_discarded", maybe_int(r.periods_discarded)},
-                   {"period_s", json_or_null(r.period)},
-                   {"period_err_s", json_or_null(r.period_err)},
-                   {"period_std_s", json_or_null(r.period_std)},
-                   {"mu_k", json_or_null(r.mu_k)},
-                   {"mu_k_err_worst", json_or_null(r.mu_k_err_worst)},
-                   {"mu_k_err_quadrature", json_or_null(r.mu_k_err_quadrature)}});
+    nlohmann::json row = nlohmann::json::object();
+    for (const LogTableField& f : log_table_fields())
+      if (f.json != nullptr) row[f.json] = f.get(r).json();
+    out.push_back(std::move(row));
   }
   return out;
 }

@@ -11,12 +11,13 @@
 
 #include "lab/run/experiment.hpp"
 #include "lab/run/summary_fields.hpp"
+#include "lab/run/summary_text.hpp"
 
 namespace fl {
 
 // summary_json (everything a run found, deterministic: the same scene and seed give the same
-// bytes) and timing_json (what the run cost on this machine) are in lab/run/summary_fields.hpp.
-std::string summary_text(const RunSummary& summary);
+// bytes) and timing_json (what the run cost on this machine) are in lab/run/summary_fields.hpp;
+// summary_text (for a person) in lab/run/summary_text.hpp.
 inline constexpr std::string_view kTrajectoryCsvHeader =
     "t_s,x_m,z_m,pitch_rad,vx_m_s,vz_m_s,pitch_rate_rad_s,normal0_n,friction0_n,normal1_n,"
     "friction1_n\n";

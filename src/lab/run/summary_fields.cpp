@@ -81,20 +81,6 @@ FieldValue warming_value(const RunSummary& s) {
 
 }  // namespace
 
-json FieldValue::json() const {
-  return std::visit(
-      [](const auto& v) -> nlohmann::json {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::monostate>)
-          return nullptr;
-        else if constexpr (std::is_same_v<T, double>)
-          return json_or_null(v);
-        else
-          return nlohmann::json(v);
-      },
-      value_);
-}
-
 const std::vector<SummaryField>& summary_fields() {
   using S = const RunSummary&;
   using V = FieldValue;

@@ -1,7 +1,8 @@
-#include "lab/run/field_listing.hpp"
+#include "lab/fields/field_listing.hpp"
 
 #include <fmt/format.h>
 
+#include "lab/logs/log_table_fields.hpp"
 #include "lab/run/summary_fields.hpp"
 
 namespace fl {
@@ -79,10 +80,23 @@ std::string typescript_summary() {
   return out;
 }
 
+std::string log_table_columns() {
+  std::string out =
+      "| column of estimates.csv | key of estimates.json | unit | meaning | empty or null when |\n"
+      "| --- | --- | --- | --- | --- |\n";
+  for (const LogTableField& f : log_table_fields()) {
+    const auto name = [](const char* n) { return n != nullptr ? fmt::format("`{}`", n) : "—"; };
+    out += fmt::format("| {} | {} | {} | {} | {} |\n", name(f.csv), name(f.json), f.unit,
+                       cell(f.meaning), f.null_when == nullptr ? "never" : cell(f.null_when));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<FieldListing> field_listings() {
   return {{"run-json-keys", json_keys_table()},
+          {"log-table-columns", log_table_columns()},
           {"sweep-run-columns", sweep_columns_table()},
           {"run-summary-attributes", pyi_attributes()},
           {"run-summary-json", typescript_summary()}};

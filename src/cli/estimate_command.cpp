@@ -201,7 +201,7 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& global) {
                   "Draw the signal with the pulses and the rejected periods to this PNG");
   sub->add_flag("--json", options->json, "Print one JSON object (SI units) instead of the table");
   sub->add_option("--follow", options->follow,
-                  "Read the rig live from this serial port (/dev/ttyACM0): each period as it "
+                  "Read the live rig from this serial port (/dev/ttyACM0): each period as it "
                   "comes, the summary at Ctrl-C");
   sub->add_option("--baud", options->baud, "With --follow: the port's baud rate (the firmware's)")
       ->capture_default_str();

@@ -1,4 +1,4 @@
-// frictionlab estimate --follow PORT: the rig live. Reads the firmware's serial output (or any
+// frictionlab estimate --follow PORT: the live rig. Reads the firmware's serial output (or any
 // sketch's lines the log reader reads) from the port as it comes, runs the rig's estimator on
 // each sample, prints each period as it is judged with the running T +- dT and mu_k, and writes
 // the lines received to --log FILE as they come; at Ctrl-C (or --duration, or the port going

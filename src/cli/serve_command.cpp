@@ -98,7 +98,7 @@ int run_serve(const ServeCommandOptions& o, const GlobalOptions& global) {
   fmt::print("  the class's table at http://{}:{}/class.html{}\n", shown, port,
              o.token.empty() ? "" : "?token=" + o.token);
   if (!o.serial.empty())
-    fmt::print("  the rig live from {} at {:.0f} baud{}\n", o.serial, o.baud,
+    fmt::print("  the live rig from {} at {:.0f} baud{}\n", o.serial, o.baud,
                o.record.empty() ? "" : ", its log written into " + o.record);
   std::fflush(stdout);
   StopSignals signals;

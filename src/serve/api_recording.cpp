@@ -17,9 +17,9 @@
 #include "lab/logs/live_log_estimate.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
+#include "serve/board_watch.hpp"
 #include "serve/class_table.hpp"
 #include "serve/lab_session.hpp"
-#include "serve/rig_watch.hpp"
 
 namespace fl::serve {
 namespace {
@@ -158,7 +158,7 @@ json board_reading(const BoardSamples& board, double spacing, double gravity) {
   for (std::size_t i = 0; i < board.adc.size(); ++i) {
     live.add(LogSample{
         .t_s = board.t_us[i] * 1e-6, .adc = board.adc[i], .line = static_cast<int>(i) + 3});
-    const json reading = rig_reading_json(live);
+    const json reading = board_reading_json(live);
     const std::vector<EstimatedPeriod>& periods = live.host().periods();
     if (periods.size() == sent && reading["geometry"] == geometry) continue;
     json change{{"samples", i + 1}, {"periods", periods_json(periods, sent)}};

@@ -3,7 +3,7 @@
 // run's `state` events at the server's frame interval with the class's row at each, its summary;
 // and a board for the live rig: the Hall lines of a simulated run and what the rig's estimator
 // judges in them, for each spacing a session may have. Every body is made by the functions the
-// server answers with (serve/api_json.hpp, LabSession, RigWatch's reading), so the mock holds no
+// server answers with (serve/api_json.hpp, LabSession, BoardWatch's reading), so the mock holds no
 // physics and no table of its own.
 #pragma once
 

@@ -48,7 +48,7 @@ json row_json(const ClassRow& row, const PaperTable& table) {
 }  // namespace
 
 json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
-                const std::optional<RigFeedStatus>& rig) {
+                const std::optional<BoardFeedStatus>& rig) {
   json sessions = json::array();
   for (const ClassRow& row : rows) sessions.push_back(row_json(row, table));
   json live = nullptr;

@@ -11,7 +11,7 @@
 
 #include "core/paper_table.hpp"
 #include "scene/compiled_rig.hpp"
-#include "serve/rig_feed.hpp"
+#include "serve/board_feed.hpp"
 
 namespace fl::serve {
 
@@ -37,7 +37,7 @@ struct ClassRow {
 };
 
 nlohmann::json class_json(const std::vector<ClassRow>& rows, const PaperTable& table,
-                          const std::optional<RigFeedStatus>& rig);
+                          const std::optional<BoardFeedStatus>& rig);
 
 // The columns the web API declares for a class row (api/api_fields.hpp, docs/web-api.md), in its
 // order; an empty cell for a value that is null in the JSON.

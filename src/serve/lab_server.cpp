@@ -25,13 +25,13 @@
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
+#include "serve/board_feed.hpp"
+#include "serve/board_watch.hpp"
 #include "serve/bounded_server.hpp"
 #include "serve/class_table.hpp"
 #include "serve/lab_session.hpp"
 #include "serve/path_scrubber.hpp"
 #include "serve/rate_limit.hpp"
-#include "serve/rig_feed.hpp"
-#include "serve/rig_watch.hpp"
 #include "serve/session_key.hpp"
 
 namespace fl::serve {
@@ -131,17 +131,17 @@ struct LabServer::Impl {
   std::atomic<int> streams{0};
   // The live rig: the port open or last open (replaced when a page opens another).
   mutable std::mutex rig_mutex;
-  std::shared_ptr<RigFeed> rig;
+  std::shared_ptr<BoardFeed> rig;
 
-  std::shared_ptr<RigFeed> current_rig() const {
+  std::shared_ptr<BoardFeed> current_board() const {
     const std::lock_guard lock(rig_mutex);
     return rig;
   }
   // Opens `port`, closing the one open (outside the lock: its reader stops within 0.1 s).
   void open_rig(const std::string& port) {
-    auto feed = std::make_shared<RigFeed>(port, options.serial_baud, options.record_dir,
-                                          options.most_rig_log_bytes);
-    std::shared_ptr<RigFeed> old;
+    auto feed = std::make_shared<BoardFeed>(port, options.serial_baud, options.record_dir,
+                                            options.most_rig_log_bytes);
+    std::shared_ptr<BoardFeed> old;
     {
       const std::lock_guard lock(rig_mutex);
       old = std::exchange(rig, std::move(feed));
@@ -225,7 +225,7 @@ struct LabServer::Impl {
 };
 
 json LabServer::Impl::rig_status_json() const {
-  const std::shared_ptr<RigFeed> feed = current_rig();
+  const std::shared_ptr<BoardFeed> feed = current_board();
   json out{{"ports", may_choose_port ? json(ports()) : json::array()},
            {"may_choose", may_choose_port},
            {"port", nullptr},
@@ -235,7 +235,7 @@ json LabServer::Impl::rig_status_json() const {
            {"lines", 0},
            {"log_name", nullptr}};
   if (feed) {
-    const RigFeedStatus s = feed->status();
+    const BoardFeedStatus s = feed->status();
     out["port"] = s.port;
     out["state"] = s.state;
     out["message"] = s.message ? json(*s.message) : json(nullptr);
@@ -313,7 +313,7 @@ void LabServer::Impl::routes() {
           error_json("this server is shared: a page may neither open nor close its serial "
                      "ports; the rig's port is the one its --serial names"));
     if (command.action == RigCommand::Action::kClose) {
-      if (const auto feed = current_rig()) feed->close();
+      if (const auto feed = current_board()) feed->close();
       return send_json(res, 200, rig_status_json());
     }
     const std::vector<std::string> known = ports();
@@ -329,18 +329,18 @@ void LabServer::Impl::routes() {
     send_json(res, 200, rig_status_json());
   });
   server.Get("/api/rig/log", [this](const httplib::Request&, httplib::Response& res) {
-    const std::shared_ptr<RigFeed> feed = current_rig();
-    const RigFeedStatus status = feed ? feed->status() : RigFeedStatus{};
+    const std::shared_ptr<BoardFeed> feed = current_board();
+    const BoardFeedStatus status = feed ? feed->status() : BoardFeedStatus{};
     if (!feed || status.lines == 0)
       return send_json(res, 404, error_json("no rig log yet: no line has come from a serial port"));
     res.set_header("Content-Disposition", "attachment; filename=\"" + status.log_name + "\"");
     res.set_content(feed->raw_log(), "text/plain; charset=utf-8");
   });
   server.Get("/api/class", [this](const httplib::Request&, httplib::Response& res) {
-    const std::shared_ptr<RigFeed> feed = current_rig();
+    const std::shared_ptr<BoardFeed> feed = current_board();
     send_json(res, 200,
               class_json(class_rows(), paper_table_in(options.asset_dir),
-                         feed ? std::optional<RigFeedStatus>(feed->status()) : std::nullopt));
+                         feed ? std::optional<BoardFeedStatus>(feed->status()) : std::nullopt));
   });
   server.Get("/api/class.csv", [this](const httplib::Request&, httplib::Response& res) {
     res.set_header("Content-Disposition", "attachment; filename=\"class.csv\"");
@@ -411,11 +411,11 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
   res.set_header("Cache-Control", "no-cache");
   struct StreamState {
     explicit StreamState(const CompiledRig& rig)
-        : rig_watch(LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
-                             fl_estimator::kAutoGeometry}) {}
+        : board_watch(LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
+                               fl_estimator::kAutoGeometry}) {}
     std::optional<int> generation;
     Clock::time_point next = Clock::now();
-    RigWatch rig_watch;  // the live rig with this session's spacing
+    BoardWatch board_watch;  // the live rig with this session's spacing
   };
   auto state = std::make_shared<StreamState>(session->rig());
   ++streams;
@@ -446,8 +446,8 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
             out += event("failed", {{"message", *failure}});
           out += event("done", *tick.done);
         }
-        if (const std::shared_ptr<RigFeed> feed = current_rig())
-          if (const std::optional<json> watched = state->rig_watch.next(feed))
+        if (const std::shared_ptr<BoardFeed> feed = current_board())
+          if (const std::optional<json> watched = state->board_watch.next(feed))
             out += event("rig", *watched);
         // A client that has gone: the write fails and the stream ends; the session stays for
         // its idle time (the page may come back).
@@ -632,7 +632,7 @@ void LabServer::stop() {
   const auto deadline = Clock::now() + 4 * kFrameInterval;
   while (first && impl_->streams > 0 && Clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  if (const std::shared_ptr<RigFeed> feed = impl_->current_rig()) feed->close();
+  if (const std::shared_ptr<BoardFeed> feed = impl_->current_board()) feed->close();
   while (impl_->listening) {
     impl_->server.stop();
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -640,7 +640,7 @@ void LabServer::stop() {
 }
 
 std::optional<std::string> LabServer::rig_record_path() const {
-  const std::shared_ptr<RigFeed> feed = impl_->current_rig();
+  const std::shared_ptr<BoardFeed> feed = impl_->current_board();
   if (!feed || feed->record_path().empty()) return std::nullopt;
   return feed->record_path();
 }

@@ -35,7 +35,7 @@ struct ServeOptions {
   // API requests a client (by address) may make a second, on average; three times as many at
   // once. A stream counts once, when it opens.
   double requests_per_second = 20.0;
-  // The rig live (docs/web-api.md): a serial port read from the start ("" : none), its baud
+  // The live rig (docs/web-api.md): a serial port read from the start ("" : none), its baud
   // rate, and a folder the rig's raw log is written into as it comes ("" : kept in memory only).
   std::string serial_port;
   int serial_baud = kFirmwareBaud;

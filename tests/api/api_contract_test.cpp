@@ -56,8 +56,8 @@ TEST(ApiContract, NullIsTakenOnlyWhereTheKeyIsNullable) {
 TEST(ApiContract, UnionsAndTuplesAreCheckedByValueAndLength) {
   EXPECT_TRUE(contract_problems(0.25, "PlaybackSpeed", "speed").empty());
   EXPECT_EQ(contract_problems(0.5, "PlaybackSpeed", "speed").size(), 1u);
-  EXPECT_TRUE(contract_problems("receiving", "RigPortState", "state").empty());
-  EXPECT_EQ(contract_problems("listening", "RigPortState", "state").size(), 1u);
+  EXPECT_TRUE(contract_problems("receiving", "BoardPortState", "state").empty());
+  EXPECT_EQ(contract_problems("listening", "BoardPortState", "state").size(), 1u);
   EXPECT_TRUE(contract_problems(json::array({0.1, 0.9, 0.8, true}), "PeriodRow", "p").empty());
   EXPECT_EQ(contract_problems(json::array({0.1, 0.9, 0.8}), "PeriodRow", "p").size(), 1u);
   EXPECT_EQ(contract_problems(json::array({0.1, 0.9, 0.8, 1}), "PeriodRow", "p").size(), 1u);

@@ -1,4 +1,4 @@
-// The rig live in the server (docs/web-api.md, "The rig live"), end to end on a pseudo-terminal:
+// The live rig in the server (docs/web-api.md, "The live rig"), end to end on a pseudo-terminal:
 // a simulated run's Hall samples sent in the rig firmware's format at real speed (1 kHz), read by
 // the server as `estimate --follow` reads a port, streamed to a page as `rig` events. The page's
 // periods are those `estimate` finds in the recorded log, the log is what was sent, an unplugged
@@ -192,7 +192,7 @@ TEST_F(LiveRigTest, ThePagesPeriodsAreWhatEstimateFindsInTheRecordedLog) {
   }
   // Each event is what the web API declares (api/api_fields.hpp), and the port's status too.
   for (const json& e : events)
-    EXPECT_EQ(api::contract_problems(e, "RigEvent", "rig").size(), 0u) << e;
+    EXPECT_EQ(api::contract_problems(e, "LiveRigEvent", "rig").size(), 0u) << e;
   const auto status = client_->Get("/api/rig");
   ASSERT_TRUE(status);
   EXPECT_EQ(api::contract_problems(json::parse(status->body), "LiveRig", "status").size(), 0u)

@@ -138,7 +138,7 @@ TEST_F(ServeCommandTest, SigtermEndsItWithTheRigsLogWritten) {
     ::_exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (test::read_text(out).find("the rig live from") == std::string::npos &&
+  while (test::read_text(out).find("the live rig from") == std::string::npos &&
          std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   std::string sent = "t_us,adc\r\n";

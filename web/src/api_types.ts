@@ -19,7 +19,7 @@ export type HallPoint = [number, number];
 export type PlaybackSpeed = 1 | 0.25 | 0.0625;
 
 /** The live rig's serial port: none open, open with nothing yet, lines coming, gone, failed, or its log full. */
-export type RigPortState = "closed" | "waiting" | "receiving" | "unplugged" | "failed" | "full";
+export type BoardPortState = "closed" | "waiting" | "receiving" | "unplugged" | "failed" | "full";
 
 /** How many Hall pulses the magnets give per period, as the rig's estimator recognised it. */
 export type PulseGeometry = "one-pulse" | "pair" | "unknown";
@@ -327,7 +327,7 @@ export interface LiveRig {
   /** its baud rate; null before a port */
   baud: number | null;
   /** the port's state */
-  state: RigPortState;
+  state: BoardPortState;
   /** what happened and what to do; null while all is well */
   message: string | null;
   /** the lines received */
@@ -337,11 +337,11 @@ export interface LiveRig {
 }
 
 /** `event: rig`: what the live rig sent since the last event, through the rig's estimator with the session's spacing. */
-export interface RigEvent {
+export interface LiveRigEvent {
   /** the port */
   port: string | null;
   /** the port's state */
-  state: RigPortState;
+  state: BoardPortState;
   /** what happened and what to do; null while all is well */
   message: string | null;
   /** the lines received */
@@ -397,11 +397,11 @@ export interface ClassRow {
 }
 
 /** The live rig as the class's table shows it. */
-export interface ClassRig {
+export interface ClassLiveRig {
   /** the port */
   port: string | null;
   /** the port's state */
-  state: RigPortState;
+  state: BoardPortState;
   /** the lines received */
   lines: number;
 }
@@ -411,6 +411,6 @@ export interface ClassTable {
   /** one row a session */
   sessions: ClassRow[];
   /** the live rig; null when no port was opened */
-  rig: ClassRig | null;
+  rig: ClassLiveRig | null;
 }
 // end generated

@@ -67,7 +67,7 @@ function showTable(table: ClassTable): void {
   if (rig !== null) {
     setText(
       rigLine,
-      `The rig live: ${rig.port ?? "no port"}, ${rig.state}, ${rig.lines} line${rig.lines === 1 ? "" : "s"} received`,
+      `The live rig: ${rig.port ?? "no port"}, ${rig.state}, ${rig.lines} line${rig.lines === 1 ? "" : "s"} received`,
     );
   }
 }

@@ -11,7 +11,7 @@ import type {
   LiveRig,
   PlaybackSpeed,
   Problem,
-  RigEvent,
+  LiveRigEvent,
   Session,
   Summary,
 } from "./lab_types";
@@ -65,7 +65,7 @@ export interface StreamHandlers {
   /** The session was started again from t = 0 (the page clears its plots). */
   reset: () => void;
   /** The live rig's samples, periods and estimate since the last event (`event: rig`). */
-  rig?: (event: RigEvent) => void;
+  rig?: (event: LiveRigEvent) => void;
   /** The server is stopping (`event: closed`): the stream is closed, nothing more comes. */
   closed?: (message: string) => void;
   /** The connection dropped (EventSource retries by itself until closed). */
@@ -204,7 +204,7 @@ export function stream(session: SessionHandle, handlers: StreamHandlers): Stream
     });
     source.addEventListener("reset", () => handlers.reset());
     source.addEventListener("rig", (event) => {
-      const rig = parseEvent<RigEvent>(event);
+      const rig = parseEvent<LiveRigEvent>(event);
       if (rig) handlers.rig?.(rig);
     });
     source.addEventListener("closed", (event) => {

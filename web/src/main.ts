@@ -10,7 +10,7 @@ import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
 import { HallPlot, PositionPlot } from "./plots";
 import { Readouts } from "./readouts";
-import { RigPanel } from "./rig_panel";
+import { RigPanel } from "./live_rig_panel";
 import { SessionKeeper, Superseded } from "./session";
 import { Stopwatch } from "./stopwatch";
 import { StudentName } from "./student_name";

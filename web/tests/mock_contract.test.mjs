@@ -154,7 +154,12 @@ try {
       seen.some(([name]) => name === "done") &&
       seen.some(([name, data]) => name === "rig" && data.estimate !== null),
   );
-  const types = { state: "LabState", done: "RunSummaryJson", failed: "Failure", rig: "RigEvent" };
+  const types = {
+    state: "LabState",
+    done: "RunSummaryJson",
+    failed: "Failure",
+    rig: "LiveRigEvent",
+  };
   for (const [name, data] of events) {
     if (name in types) hold(data, types[name], `event: ${name}`);
     else expect(name === "reset", `an event the API has not: ${name}`);

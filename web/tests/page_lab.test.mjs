@@ -2,7 +2,7 @@
 // WebGL): it loads without console errors, a set-up from a link runs and its period is the one
 // `frictionlab run` gives for it (the same number, to the last bit), changing the spacing and
 // the material changes the period as the thick-plate theory says, an invalid value shows its
-// message beside its control, a screenshot is written, a shared server's limits, and the rig live
+// message beside its control, a screenshot is written, a shared server's limits, and the live rig
 // on a pseudo-terminal (its periods in the page are `estimate`'s on the log it downloads).
 //
 //   node tests/page_lab.test.mjs --exe build/release/src/cli/frictionlab
@@ -194,7 +194,7 @@ await check("a shared server answers only its token's pages and refuses one too 
   }
 });
 
-await check("the rig live: the page's periods are estimate's on the log it downloads", async () => {
+await check("the live rig: the page's periods are estimate's on the log it downloads", async () => {
   // A simulated run of the paper's rig with a rigid-foam plate (T = 0.30 s: enough periods in a
   // few seconds), sent in the firmware's format at real speed on a pseudo-terminal.
   const folder = mkdtempSync(join(tmpdir(), "fl-rig-page-"));

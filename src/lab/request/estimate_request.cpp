@@ -123,7 +123,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
   if (follow && (r.material || r.temperature))
     checks.problem(r.material ? "material" : "temperature",
                    field_ref("material") + " and " + field_ref("temperature") +
-                       " go with a log or several; the rig live is estimated without them");
+                       " go with a log or several; the live rig is estimated without them");
   if (!follow) {
     // One log's material: the paper's value is printed beside its result.
     const PaperTable& paper = paper_table_in(asset_dir(r.assets));

@@ -1,4 +1,4 @@
-#include "serve/rig_feed.hpp"
+#include "serve/board_feed.hpp"
 
 #include <chrono>
 #include <ctime>
@@ -23,7 +23,7 @@ std::tm local_now() {
 
 }  // namespace
 
-RigFeed::RigFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes)
+BoardFeed::BoardFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes)
     : most_log_bytes_(most_log_bytes),
       record_dir_(std::move(record_dir)),
       capture_(port, HallLogOptions{}) {
@@ -40,11 +40,11 @@ RigFeed::RigFeed(std::string port, int baud, std::string record_dir, std::size_t
   thread_ = std::thread([this] { read_port(); });
 }
 
-RigFeed::~RigFeed() {
+BoardFeed::~BoardFeed() {
   close();
 }
 
-void RigFeed::close() {
+void BoardFeed::close() {
   stop_ = true;
   if (thread_.joinable()) thread_.join();
   const std::lock_guard lock(mutex_);
@@ -58,7 +58,7 @@ void RigFeed::close() {
   }
 }
 
-void RigFeed::read_port() {
+void BoardFeed::read_port() {
   std::string bytes;
   while (!stop_) {
     bytes.clear();
@@ -83,7 +83,7 @@ void RigFeed::read_port() {
   port_.reset();
 }
 
-bool RigFeed::lines_in(std::string_view bytes, bool ended) {
+bool BoardFeed::lines_in(std::string_view bytes, bool ended) {
   const std::lock_guard lock(mutex_);
   const LiveCapture::LineSink keep = [this](std::string_view text) {
     if (log_.size() + text.size() > most_log_bytes_) return false;
@@ -105,7 +105,7 @@ bool RigFeed::lines_in(std::string_view bytes, bool ended) {
 
 // The record file is made with the first line (io/appending_file.hpp: each line written whole as
 // it comes, so it holds everything received however the server ends). Under the lock.
-void RigFeed::record(std::string_view bytes) {
+void BoardFeed::record(std::string_view bytes) {
   if (record_dir_.empty() || record_failed_) return;
   try {
     if (!record_) {
@@ -126,27 +126,27 @@ void RigFeed::record(std::string_view bytes) {
 }
 
 // Under the lock.
-void RigFeed::end(const std::string& state, std::optional<std::string> message) {
+void BoardFeed::end(const std::string& state, std::optional<std::string> message) {
   status_.state = state;
   status_.message = std::move(message);
 }
 
-RigFeedStatus RigFeed::status() const {
+BoardFeedStatus BoardFeed::status() const {
   const std::lock_guard lock(mutex_);
   return status_;
 }
 
-std::string RigFeed::raw_log() const {
+std::string BoardFeed::raw_log() const {
   const std::lock_guard lock(mutex_);
   return log_;
 }
 
-std::string RigFeed::record_path() const {
+std::string BoardFeed::record_path() const {
   const std::lock_guard lock(mutex_);
   return record_path_;
 }
 
-RigFeed::Slice RigFeed::samples_from(int run, std::size_t from) const {
+BoardFeed::Slice BoardFeed::samples_from(int run, std::size_t from) const {
   const std::lock_guard lock(mutex_);
   Slice out;
   const std::vector<LogSample>& samples = capture_.samples();

@@ -1,8 +1,9 @@
-// The rig live (docs/web-api.md, "The rig live"): one serial port read on its own thread as
+// The live rig (docs/web-api.md, "The live rig"): the rig's board, an Arduino sending Hall samples
+// over one serial port, read on its own thread as
 // `frictionlab estimate --follow` reads it. Every line received is kept as received (the raw log
 // the page downloads, and written line by line into a record folder when the server has one),
 // and read as a Hall log; the samples of the board's current run are kept for the pages, each of
-// which runs the rig's estimator on them with its own spacing (serve/rig_watch.hpp).
+// which runs the rig's estimator on them with its own spacing (serve/board_watch.hpp).
 #pragma once
 
 #include <atomic>
@@ -21,7 +22,7 @@
 
 namespace fl::serve {
 
-struct RigFeedStatus {
+struct BoardFeedStatus {
   std::string port;
   int baud = 0;
   // "waiting" (open, nothing yet), "receiving", "unplugged" (the port went away), "failed" (it
@@ -33,21 +34,21 @@ struct RigFeedStatus {
   std::string log_name;  // the raw log's name for its download ("" before a line came)
 };
 
-class RigFeed {
+class BoardFeed {
  public:
   // Opens `port` at `baud` and reads it until close() or the port going away. `record_dir`: a
   // folder the raw log is also written into, line by line as it comes ("" : none). A port that
   // cannot be opened gives a feed in state "failed" saying why. `most_log_bytes` bounds the log
   // kept (and so the samples): past it the feed closes the port, saying so.
-  RigFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes);
-  ~RigFeed();
-  RigFeed(const RigFeed&) = delete;
-  RigFeed& operator=(const RigFeed&) = delete;
+  BoardFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes);
+  ~BoardFeed();
+  BoardFeed(const BoardFeed&) = delete;
+  BoardFeed& operator=(const BoardFeed&) = delete;
 
   // Stops reading and closes the port and the record file; the log and samples stay.
   void close();
 
-  RigFeedStatus status() const;
+  BoardFeedStatus status() const;
   // Every line received, as received.
   std::string raw_log() const;
   // Where the raw log is being written ("" : nowhere).
@@ -71,7 +72,7 @@ class RigFeed {
   void end(const std::string& state, std::optional<std::string> message);
 
   mutable std::mutex mutex_;
-  RigFeedStatus status_;
+  BoardFeedStatus status_;
   std::string log_;
   std::size_t most_log_bytes_;
   std::string record_dir_;

@@ -1,15 +1,15 @@
-// The rig live (docs/web-api.md, "The rig live"): the real rig's Arduino on a serial port of the
+// The live rig (docs/web-api.md, "The live rig"): the real rig's Arduino on a serial port of the
 // lab's computer, its Hall signal, its periods and its T and mu_k by the rig's estimator with
 // this session's spacing, beside the simulation of the same set-up. GET /api/rig gives the
 // ports and the port's state, asked every 2 s while no rig events come; the rig events on the
-// session's stream bring the samples, the periods and the estimate. A lab without the rig live
+// session's stream bring the samples, the periods and the estimate. A lab without the live rig
 // (404) hides the panel.
 import { byId, byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
 import { closeRig, getRig, LabError, openRig, rigLogUrl } from "./lab_client";
-import type { Estimate, LiveRig, PulseGeometry, RigEvent, RigPortState } from "./lab_types";
+import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
-import { RigPlot } from "./rig_plot";
+import { RigPlot } from "./live_rig_plot";
 
 const POLL_MS = 2000;
 
@@ -21,7 +21,7 @@ export interface RigPanelActions {
 /** The port's state, from GET /api/rig or a rig event, whichever came last. */
 interface PortStatus {
   port: string | null;
-  state: RigPortState;
+  state: BoardPortState;
   message: string | null;
   lines: number;
 }
@@ -140,7 +140,7 @@ export class RigPanel {
   }
 
   /** A rig event from the session's stream. */
-  showEvent(event: RigEvent): void {
+  showEvent(event: LiveRigEvent): void {
     this.lastEventAt = performance.now();
     if (this.run !== null && event.run !== this.run) this.clearRun();
     this.run = event.run;
@@ -169,7 +169,7 @@ export class RigPanel {
       setText(this.problem, "");
     } catch (error) {
       if (error instanceof LabError && error.status === 404) {
-        // A lab without the rig live: nothing to show, nothing to ask again.
+        // A lab without the live rig: nothing to show, nothing to ask again.
         this.stop();
         this.section.hidden = true;
         return;

@@ -1,4 +1,4 @@
-// A page's view of the live rig (serve/rig_feed.hpp): the rig's samples run through the rig's
+// A page's view of the live rig (serve/board_feed.hpp): the board's samples run through the rig's
 // estimator with the page's own spacing, and what the next `rig` event carries
 // (docs/web-api.md): the samples, periods and state since the last one.
 #pragma once
@@ -11,23 +11,23 @@
 #include <nlohmann/json.hpp>
 
 #include "lab/logs/live_log_estimate.hpp"
-#include "serve/rig_feed.hpp"
+#include "serve/board_feed.hpp"
 
 namespace fl::serve {
 
-class RigWatch {
+class BoardWatch {
  public:
   // l, dl, g and the pulses per period the estimate is made with.
-  explicit RigWatch(const LogSetUp& set_up);
+  explicit BoardWatch(const LogSetUp& set_up);
 
   // The next `rig` event of `feed`, or nothing when nothing changed since the last. A feed other
   // than the last one watched (a port opened again) starts the view again, as does the board
   // restarting; `run` counts these starts, so the page knows to clear its plots.
-  std::optional<nlohmann::json> next(const std::shared_ptr<const RigFeed>& feed);
+  std::optional<nlohmann::json> next(const std::shared_ptr<const BoardFeed>& feed);
 
  private:
   LogSetUp set_up_;
-  std::shared_ptr<const RigFeed> feed_;
+  std::shared_ptr<const BoardFeed> feed_;
   int feed_run_ = -1;  // the board's run the estimate is on
   int run_ = -1;       // the runs shown so far, less one
   std::size_t next_sample_ = 0;
@@ -37,6 +37,6 @@ class RigWatch {
 };
 
 // What a `rig` event says of the rig's estimator now: {"estimate", "geometry"}.
-nlohmann::json rig_reading_json(const LiveLogEstimate& live);
+nlohmann::json board_reading_json(const LiveLogEstimate& live);
 
 }  // namespace fl::serve

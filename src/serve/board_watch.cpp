@@ -1,4 +1,4 @@
-#include "serve/rig_watch.hpp"
+#include "serve/board_watch.hpp"
 
 #include "lab/run/hall_estimator.hpp"
 #include "serve/api_json.hpp"
@@ -12,11 +12,11 @@ constexpr double kShownSeconds = 10.0;  // of samples an event carries at most
 
 }  // namespace
 
-RigWatch::RigWatch(const LogSetUp& set_up) : set_up_(set_up) {}
+BoardWatch::BoardWatch(const LogSetUp& set_up) : set_up_(set_up) {}
 
-std::optional<json> RigWatch::next(const std::shared_ptr<const RigFeed>& feed) {
-  const RigFeedStatus status = feed->status();
-  RigFeed::Slice slice = feed->samples_from(feed_run_, next_sample_);
+std::optional<json> BoardWatch::next(const std::shared_ptr<const BoardFeed>& feed) {
+  const BoardFeedStatus status = feed->status();
+  BoardFeed::Slice slice = feed->samples_from(feed_run_, next_sample_);
   if (feed != feed_ || slice.run != feed_run_ || !live_) {
     feed_ = feed;
     feed_run_ = slice.run;
@@ -52,12 +52,12 @@ std::optional<json> RigWatch::next(const std::shared_ptr<const RigFeed>& feed) {
            {"hall", std::move(hall)},
            {"periods", periods_json(periods, periods_sent_)},
            {"spacing", set_up_.spacing}};
-  out.update(rig_reading_json(*live_));
+  out.update(board_reading_json(*live_));
   periods_sent_ = periods.size();
   return out;
 }
 
-json rig_reading_json(const LiveLogEstimate& live) {
+json board_reading_json(const LiveLogEstimate& live) {
   const fl_estimator::PeriodEstimator& estimator = live.host().estimator();
   return {{"estimate", estimate_json(estimator_report(estimator.stats()))},
           {"geometry", geometry_name(estimator.geometry())}};

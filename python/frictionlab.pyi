@@ -403,23 +403,25 @@ def run(
 # ---- the rig's estimator ----
 
 class Estimate:
+    # generated: estimate-attributes (tools/generate-fields, from src/lab/logs/estimate_fields.cpp)
+    duration: float
+    sample_rate: float
+    polarity: int
+    baseline: float
+    geometry: str
+    periods_used: int
+    periods_discarded: int
+    outliers: int
     period: float
     period_std: float
     period_std_error: float
-    periods_used: int
-    periods_discarded: int
     mu_k: float
     mu_k_err_worst: float
     mu_k_err_quadrature: float
-    geometry: str
-    polarity: int
-    baseline: float
-    outliers: int
-    duration: float
-    sample_rate: float
     spacing: float
     spacing_err: float
     gravity: float
+    # end generated
     pulses: npt.NDArray[np.void]
     periods: npt.NDArray[np.void]
     def json(self) -> dict[str, Any]: ...

@@ -10,6 +10,7 @@
 
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
+#include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/logs/paper_comparison.hpp"
@@ -76,51 +77,24 @@ py::array pulses_array(std::vector<EstimatedPulse> pulses) {
 
 void bind_estimate(py::module_& m) {
   using E = Estimate;
-  const auto stat = [](auto member) {
-    return [member](const E& e) { return static_cast<double>(e.estimate.stats.*member); };
-  };
-  py::class_<E>(m, "Estimate", R"(What the rig's estimator found in a Hall signal (SI).
+  py::class_<E> estimate(m, "Estimate", R"(What the rig's estimator found in a Hall signal (SI).
 
 The period T +- dT (dT the standard deviation of the accepted periods) and mu_k +- d mu_k
 through the paper's formula, as `frictionlab estimate` reports them; the estimator holds them
 in single precision, as the rig's Arduino does. json() is the object
-`frictionlab estimate --json` prints (without "plot").)")
-      .def_property_readonly("period", stat(&fl_estimator::Stats::period_s), "s, the mean")
-      .def_property_readonly("period_std", stat(&fl_estimator::Stats::period_std_s),
-                             "s, the standard deviation of the accepted periods")
-      .def_property_readonly("period_std_error", stat(&fl_estimator::Stats::period_sem_s),
-                             "s, the standard error of the mean")
-      .def_property_readonly(
-          "periods_used", [](const E& e) { return e.estimate.stats.periods_used; }, "accepted")
-      .def_property_readonly(
-          "periods_discarded", [](const E& e) { return e.estimate.stats.periods_discarded; },
-          "outliers and periods at broken turning points")
-      .def_property_readonly("mu_k", stat(&fl_estimator::Stats::mu_k),
-                             "2 pi^2 l / (g T^2), the paper's formula")
-      .def_property_readonly("mu_k_err_worst", stat(&fl_estimator::Stats::mu_k_err_worst),
-                             "mu_k (dl/l + 2 dT/T), the paper's form")
-      .def_property_readonly("mu_k_err_quadrature", stat(&fl_estimator::Stats::mu_k_err_quadrature),
-                             "mu_k sqrt((dl/l)^2 + (2 dT/T)^2)")
-      .def_property_readonly(
-          "geometry", [](const E& e) { return std::string(geometry_name(e.estimate.geometry)); },
-          "\"one-pulse\" or \"pair\" (pulses per period)")
-      .def_property_readonly(
-          "polarity", [](const E& e) { return e.estimate.polarity; }, "+1 or -1")
-      .def_property_readonly(
-          "baseline", [](const E& e) { return e.estimate.baseline; }, "counts, at the end")
-      .def_property_readonly(
-          "outliers", [](const E& e) { return e.estimate.outliers; },
-          "periods rejected as too far from the running median")
-      .def_property_readonly(
-          "duration", [](const E& e) { return e.estimate.duration; }, "s, first to last sample")
-      .def_property_readonly(
-          "sample_rate", [](const E& e) { return e.estimate.sample_rate; }, "Hz, mean")
-      .def_property_readonly(
-          "spacing", [](const E& e) { return e.estimate.set_up.spacing; }, "l [m]")
-      .def_property_readonly(
-          "spacing_err", [](const E& e) { return e.estimate.set_up.spacing_err; }, "dl [m]")
-      .def_property_readonly(
-          "gravity", [](const E& e) { return e.estimate.set_up.gravity; }, "g [m/s^2]")
+`frictionlab estimate --json` prints (without "plot").)");
+  // Every plain value from the one declaration of an estimate's keys (lab/logs/estimate_fields).
+  for (const EstimateField& f : estimate_fields()) {
+    if (f.python == nullptr) continue;
+    const auto get = f.get;
+    estimate.def_property_readonly(
+        f.python,
+        [get](const E& e) {
+          return python_field(get({e.log, e.estimate}));
+        },
+        field_doc(f.unit, f.meaning, f.null_when).c_str());
+  }
+  estimate
       .def_property_readonly(
           "pulses", [](const E& e) { return pulses_array(e.estimate.pulses); },
           "structured array, shape (pulses,): time_s (the turning point, for one pulse per\n"

@@ -1,6 +1,8 @@
 #include "python/json_values.hpp"
 
 #include <string>
+#include <type_traits>
+#include <variant>
 
 namespace fl::python {
 
@@ -34,6 +36,27 @@ py::object python_value(const nlohmann::json& value) {
       break;
   }
   throw py::type_error("a JSON value of a type Python has no value for");
+}
+
+py::object python_field(const FieldValue& field) {
+  return std::visit(
+      [](const auto& v) -> py::object {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>)
+          return py::none();
+        else if constexpr (std::is_same_v<T, nlohmann::json>)
+          return python_value(v);
+        else
+          return py::cast(v);
+      },
+      field.value());
+}
+
+std::string field_doc(const char* unit, const char* meaning, const char* null_when) {
+  std::string doc = std::string(unit).empty() ? "" : std::string(unit) + ", ";
+  doc += meaning;
+  if (null_when != nullptr) doc += "; None when " + std::string(null_when);
+  return doc;
 }
 
 }  // namespace fl::python

@@ -50,30 +50,6 @@ std::optional<double> with_spread(const EstimatorReport& e, double value) {
   return e.has_spread() ? std::optional<double>(value) : std::nullopt;
 }
 
-// A field's value as Python holds it: None, a float (infinity kept), an int, a bool, a str, or
-// a dict for a nested object.
-py::object python_field(const FieldValue& field) {
-  return std::visit(
-      [](const auto& v) -> py::object {
-        using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, std::monostate>)
-          return py::none();
-        else if constexpr (std::is_same_v<T, nlohmann::json>)
-          return python_value(v);
-        else
-          return py::cast(v);
-      },
-      field.value());
-}
-
-// A plain field's docstring: its unit, what it means, when it is None (lab/run/summary_fields).
-std::string field_doc(const SummaryField& f) {
-  std::string doc = std::string(f.unit).empty() ? "" : std::string(f.unit) + ", ";
-  doc += f.meaning;
-  if (f.null_when != nullptr) doc += "; None when " + std::string(f.null_when);
-  return doc;
-}
-
 // The video module beside this Python module (an installed copy), else the build's: where the
 // recorder looks when $FRICTIONLAB_VIDEO_MODULE does not say (it would look beside the running
 // executable, which is python3).
@@ -253,7 +229,8 @@ A value the run did not measure is None, never 0. str(summary) is the summary
     if (f.python == nullptr || f.python_type != nullptr) continue;
     const auto get = f.get;
     summary.def_property_readonly(
-        f.python, [get](const S& s) { return python_field(get(s)); }, field_doc(f).c_str());
+        f.python, [get](const S& s) { return python_field(get(s)); },
+        field_doc(f.unit, f.meaning, f.null_when).c_str());
   }
   summary.def_readonly("regime", &S::regime, "the regime the run diagnosed")
       .def_readonly("regime_theory", &S::regime_theory,

@@ -7,9 +7,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "io/field_ref.hpp"
+#include "lab/logs/estimate_fields.hpp"
 #include "lab/request/compare_request.hpp"
 #include "lab/request/estimate_request.hpp"
 #include "lab/request/field_checks.hpp"
@@ -255,6 +257,25 @@ TEST(EstimateRequest, ALiveCapturesBaudAndDurationAreCheckedByField) {
   r.follow_baud = QuantityInput{static_cast<double>(kFirmwareBaud)};
   r.follow_duration = QuantityInput{"30 s"};
   EXPECT_DOUBLE_EQ(prepare_estimate(r).follow_baud, 250000.0);
+}
+
+// One log's answer (what `estimate --json` prints and Python's json() gives) holds exactly the keys
+// the declaration names (lab/logs/estimate_fields.hpp), those the request adds included: a key
+// added anywhere without its line there fails here.
+TEST(EstimateRequest, OneLogsAnswerHoldsExactlyTheDeclaredKeys) {
+  std::set<std::string> declared;
+  for (const EstimateField& f : estimate_fields()) EXPECT_TRUE(declared.insert(f.json).second);
+  EstimateRequest r;
+  r.logs = {std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+            "/assets/examples/spacing-series/lego-l089.csv"};
+  r.mc = 20;
+  const nlohmann::json answer = estimate_one_log(prepare_estimate(r)).json();
+  std::set<std::string> keys;
+  for (auto it = answer.begin(); it != answer.end(); ++it) keys.insert(it.key());
+  for (const std::string& key : keys) EXPECT_TRUE(declared.contains(key)) << key << ": undeclared";
+  // raw_log is a live capture's (the front end's --follow adds it); every other key is here.
+  for (const std::string& key : declared)
+    EXPECT_TRUE(keys.contains(key) || key == "raw_log") << key << ": declared, not in the answer";
 }
 
 }  // namespace

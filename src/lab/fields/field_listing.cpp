@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/log_table_fields.hpp"
 #include "lab/run/summary_fields.hpp"
 
@@ -92,14 +93,36 @@ std::string log_table_columns() {
   return out;
 }
 
+std::string estimate_json_keys() {
+  std::string out = "| key | unit | meaning | null when |\n| --- | --- | --- | --- |\n";
+  for (const EstimateField& f : estimate_fields())
+    out += fmt::format("| `{}` | {} | {} | {} |\n", f.json, f.unit, cell(f.meaning),
+                       f.null_when == nullptr ? "never" : cell(f.null_when));
+  return out;
+}
+
+std::string estimate_attributes() {
+  std::string out;
+  for (const EstimateField& f : estimate_fields()) {
+    if (f.python == nullptr) continue;
+    const char* type = f.type == FieldType::kInteger ? "int"
+                       : f.type == FieldType::kText  ? "str"
+                       : f.type == FieldType::kFlag  ? "bool"
+                                                     : "float";
+    out += fmt::format("    {}: {}{}\n", f.python, f.null_when != nullptr ? "Optional[" : "",
+                       std::string(type) + (f.null_when != nullptr ? "]" : ""));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<FieldListing> field_listings() {
-  return {{"run-json-keys", json_keys_table()},
-          {"log-table-columns", log_table_columns()},
-          {"sweep-run-columns", sweep_columns_table()},
-          {"run-summary-attributes", pyi_attributes()},
-          {"run-summary-json", typescript_summary()}};
+  return {
+      {"run-json-keys", json_keys_table()},         {"log-table-columns", log_table_columns()},
+      {"estimate-json-keys", estimate_json_keys()}, {"estimate-attributes", estimate_attributes()},
+      {"sweep-run-columns", sweep_columns_table()}, {"run-summary-attributes", pyi_attributes()},
+      {"run-summary-json", typescript_summary()}};
 }
 
 std::optional<std::string> with_listings(const std::string& file_text,

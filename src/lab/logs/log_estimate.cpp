@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
+#include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/geometry_check.hpp"
 
 namespace fl {
@@ -23,28 +25,12 @@ int line_at(const HallLog& log, double t) {
   return log.line[i];
 }
 
-nlohmann::json periods_json(const LogEstimate& estimate) {
-  nlohmann::json periods = nlohmann::json::array();
-  for (const EstimatedPeriod& p : estimate.periods)
-    periods.push_back({{"start_s", p.start},
-                       {"end_s", p.end},
-                       {"period_s", p.period},
-                       {"status", period_status_name(p.status)}});
-  return periods;
-}
-
-// The estimator's verdict: the geometry, the periods' counts, T +- dT and mu_k +- d mu_k.
-nlohmann::json verdict_json(const LogEstimate& estimate) {
-  const fl_estimator::Stats& s = estimate.stats;
-  return {{"geometry", geometry_name(estimate.geometry)},
-          {"periods_used", s.periods_used},
-          {"periods_discarded", s.periods_discarded},
-          {"period_s", static_cast<double>(s.period_s)},
-          {"period_std_s", static_cast<double>(s.period_std_s)},
-          {"period_sem_s", static_cast<double>(s.period_sem_s)},
-          {"mu_k", static_cast<double>(s.mu_k)},
-          {"mu_k_err_worst", static_cast<double>(s.mu_k_err_worst)},
-          {"mu_k_err_quadrature", static_cast<double>(s.mu_k_err_quadrature)}};
+// The keys of one part of the declaration (lab/logs/estimate_fields.hpp).
+nlohmann::json part_json(const HallLog& log, const LogEstimate& estimate, EstimatePart part) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const EstimateField& f : estimate_fields())
+    if (f.part == part && f.get != nullptr) out[f.json] = f.get({log, estimate}).json();
+  return out;
 }
 
 // Enough accepted periods, no more discarded, scattering as a rig's do (require_periods' checks).
@@ -284,64 +270,14 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
 }
 
 nlohmann::json log_reading_json(const HallLog& log) {
-  const HallLogReading& r = log.reading;
-  const auto lines = [](const LineTally& t) { return nlohmann::json(t.first); };
-  // The header's names as written, bytes that are not UTF-8 escaped (a Latin-1 "µs"): JSON's
-  // strings are UTF-8.
-  const auto text_or_null = [](const std::string& s) {
-    return s.empty() ? nlohmann::json(nullptr) : nlohmann::json(escape_invalid_utf8(s));
-  };
-  return {
-      {"log", escape_invalid_utf8(log.path)},
-      {"file", escape_invalid_utf8(log.file)},
-      {"format", r.format},
-      {"encoding", log.encoding},
-      {"columns_from", r.columns_from},
-      {"time_column", text_or_null(r.time_column)},
-      {"adc_column", escape_invalid_utf8(r.adc_column)},
-      {"time_unit", text_or_null(r.time_unit)},
-      {"time_unit_from", r.time_unit_from},
-      {"rate_hz", r.rate_hz > 0.0 ? nlohmann::json(r.rate_hz) : nlohmann::json(nullptr)},
-      {"header_line", r.header_line > 0 ? nlohmann::json(r.header_line) : nlohmann::json(nullptr)},
-      {"first_line", r.first_line},
-      {"lines_skipped", r.lines_skipped},
-      {"comment_lines", r.comment_lines},
-      {"lines_corrupted", r.corrupted.count},
-      {"lines_corrupted_first", lines(r.corrupted)},
-      {"times_repeated", r.repeated_times.count},
-      {"times_repeated_first", lines(r.repeated_times)},
-      {"times_out_of_order", r.out_of_order.count},
-      {"times_out_of_order_first", lines(r.out_of_order)},
-      {"ide_timestamps", r.ide_timestamps},
-      {"decimal_comma", r.decimal_comma},
-      {"clock_wraps", r.clock_wraps},
-      {"runs", r.segments},
-      {"run_used", log.segment + 1},
-      {"samples_in_other_runs", log.segment_samples_left_out},
-      {"unfinished_last_line", r.unfinished_last_line}};
+  const LogEstimate none;
+  return part_json(log, none, EstimatePart::kReading);
 }
 
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
-  const fl_estimator::Stats& s = est.stats;
-  nlohmann::json out = verdict_json(est);
-  out.update(log_reading_json(log));
-  out["samples"] = log.adc.size();
-  out["duration_s"] = est.duration;
-  out["sample_rate_hz"] = est.sample_rate;
-  out["polarity"] = est.polarity;
-  out["baseline_adc"] = est.baseline;
-  out["pulses"] = s.pulses;
-  out["pulses_distorted"] = est.distorted;
-  out["pulses_unused"] = s.unused_pulses;
-  out["restarts"] = s.restarts;
-  out["periods_outliers"] = est.outliers;
-  out["geometry_from"] =
-      est.set_up.geometry == fl_estimator::kAutoGeometry ? "recognised" : "geometry";
-  out["spacing_m"] = est.set_up.spacing;
-  out["spacing_err_m"] = est.set_up.spacing_err;
-  out["gravity_m_s2"] = est.set_up.gravity;
-  out["periods"] = periods_json(est);
-  out["geometry_check"] = geometry_check_json(check_geometry(log, est));
+  nlohmann::json out = nlohmann::json::object();
+  for (const EstimateField& f : estimate_fields())
+    if (f.get != nullptr) out[f.json] = f.get({log, est}).json();
   return out;
 }
 
@@ -366,7 +302,7 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
     keep.push_back(std::min(lo, hi));
     if (lo != hi) keep.push_back(std::max(lo, hi));
   }
-  nlohmann::json data = verdict_json(est);
+  nlohmann::json data = part_json(log, est, EstimatePart::kVerdict);
   nlohmann::json t = nlohmann::json::array();
   nlohmann::json adc = nlohmann::json::array();
   nlohmann::json baseline = nlohmann::json::array();
@@ -390,7 +326,8 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
                       {"peak", p.peak},
                       {"distorted", p.distorted}});
   data["pulses"] = std::move(pulses);
-  data["periods"] = periods_json(est);
+  for (const EstimateField& f : estimate_fields())
+    if (std::string_view(f.json) == "periods") data["periods"] = f.get({log, est}).json();
   data["spacing_m"] = static_cast<double>(est.set_up.config().spacing_m);
   return data;
 }

@@ -36,25 +36,9 @@ const char* summary_type(FieldType type) {
   return "object";
 }
 
-ApiDeclaration declare() {
-  ApiDeclaration d;
-  d.aliases = {
-      {"PeriodRow", "[number, number, number, boolean]",
-       "One period as the estimator judged it: [start, end, period, accepted], in seconds."},
-      {"HallPoint", "[number, number]",
-       "One Hall sample: [t, adc], t in seconds from the run's first sample."},
-      {"PlaybackSpeed", "1 | 0.25 | 0.0625", "How fast simulated time runs against the wall's."},
-      {"BoardPortState",
-       "\"closed\" | \"waiting\" | \"receiving\" | \"unplugged\" | \"failed\" | \"full\"",
-       "The live rig's serial port: none open, open with nothing yet, lines coming, gone, failed, "
-       "or its log full."},
-      {"PulseGeometry", "\"one-pulse\" | \"pair\" | \"unknown\"",
-       "How many Hall pulses the magnets give per period, as the rig's estimator recognised it."},
-      {"SessionState", "\"paused\" | \"playing\" | \"done\"", "Where a session's run stands."},
-      {"PeriodFrom", "\"sensor\" | \"trajectory\"",
-       "Where a period comes from: the Hall sensor's estimator, or the fit to the plate's motion."},
-  };
-  d.objects = {
+// What the lab offers: its scenes and the paper's materials.
+std::vector<ApiObject> offer_objects() {
+  return {
       {"SceneEntry",
        "A scene the lab offers (`GET /api/lab`).",
        {key("name", "string", "", "the name a session asks for"),
@@ -69,6 +53,12 @@ ApiDeclaration declare() {
        {key("scenes", "SceneEntry[]", "", "the scenes, by name"),
         key("materials", "MaterialEntry[]", "", "the paper's Table I"),
         key("version", "string", "", "the lab's version")}},
+  };
+}
+
+// A session's rig, as compiled from its set-up.
+std::vector<ApiObject> rig_objects() {
+  return {
       {"PlateBlock",
        "A LEGO part on the plate.",
        {key("part", "string", "", "the part, served as /parts/NAME.glb"),
@@ -148,6 +138,12 @@ ApiDeclaration declare() {
         key("key", "string", "",
             "the session's secret: only requests that carry it control the session"),
         key("rig", "Rig", "", "the compiled rig")}},
+  };
+}
+
+// A refusal, and what a session's stream and controls send.
+std::vector<ApiObject> run_objects() {
+  return {
       {"Problem",
        "One problem of a request the lab refused, by field.",
        {maybe("field", "string", "", "the request's key (`scene`, `set`, `name`)"),
@@ -209,6 +205,12 @@ ApiDeclaration declare() {
       {"Failure",
        "`event: failed`: a guard stopped the run (its summary follows as `done`).",
        {key("message", "string", "", "the guard's message")}},
+  };
+}
+
+// The live rig (the rig's board on a serial port) and the class's table.
+std::vector<ApiObject> live_rig_objects() {
+  return {
       {"LiveRig",
        "`GET /api/rig`: the serial ports the server sees and the one open (or last open).",
        {key("ports", "string[]", "", "the ports a page may open (none on a shared server)"),
@@ -273,6 +275,30 @@ ApiDeclaration declare() {
        {key("sessions", "ClassRow[]", "", "one row a session"),
         maybe("rig", "ClassLiveRig", "", "the live rig; null when no port was opened")}},
   };
+}
+
+ApiDeclaration declare() {
+  ApiDeclaration d;
+  d.aliases = {
+      {"PeriodRow", "[number, number, number, boolean]",
+       "One period as the estimator judged it: [start, end, period, accepted], in seconds."},
+      {"HallPoint", "[number, number]",
+       "One Hall sample: [t, adc], t in seconds from the run's first sample."},
+      {"PlaybackSpeed", "1 | 0.25 | 0.0625", "How fast simulated time runs against the wall's."},
+      {"BoardPortState",
+       "\"closed\" | \"waiting\" | \"receiving\" | \"unplugged\" | \"failed\" | \"full\"",
+       "The live rig's serial port: none open, open with nothing yet, lines coming, gone, failed, "
+       "or its log full."},
+      {"PulseGeometry", "\"one-pulse\" | \"pair\" | \"unknown\"",
+       "How many Hall pulses the magnets give per period, as the rig's estimator recognised it."},
+      {"SessionState", "\"paused\" | \"playing\" | \"done\"", "Where a session's run stands."},
+      {"PeriodFrom", "\"sensor\" | \"trajectory\"",
+       "Where a period comes from: the Hall sensor's estimator, or the fit to the plate's motion."},
+  };
+  for (auto* group : {&offer_objects, &rig_objects, &run_objects, &live_rig_objects}) {
+    std::vector<ApiObject> part = group();
+    d.objects.insert(d.objects.end(), part.begin(), part.end());
+  }
   // The run's summary (the `done` event, summary.json): its keys are the run's fields'.
   ApiObject summary{.name = "RunSummaryJson",
                     .meaning = "`event: done`: the run's summary, summary.json's object.",

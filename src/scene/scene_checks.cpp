@@ -19,120 +19,32 @@ bool finite_positive(double v) {
   return std::isfinite(v) && v > 0.0;
 }
 
-}  // namespace
+// The checks' one record of problems, and the kinds of check the parts share.
+class Checks {
+ public:
+  explicit Checks(std::vector<SceneProblem>& problems) : problems_(problems) {}
 
-std::vector<SceneProblem> check_scene(const Scene& s) {
-  std::vector<SceneProblem> problems;
-  const auto need = [&](bool ok, const char* key, std::string message) {
-    if (!ok) problems.push_back({key, std::move(message)});
-  };
+  void need(bool ok, const char* key, std::string message) const {
+    if (!ok) problems_.push_back({key, std::move(message)});
+  }
   // A value that must be positive, in its SI unit; a length also in millimetres, as a student
   // gives it.
-  const auto positive = [&](double v, const char* key, const char* unit = "") {
+  void positive(double v, const char* key, const char* unit = "") const {
     const std::string as_given =
         std::string_view(unit) == "m" && std::isfinite(v) ? describe(" (", v * 1e3, " mm)") : "";
     need(finite_positive(v), key,
          describe("must be positive, found ", v, unit[0] != '\0' ? " " : "", unit, as_given));
-  };
-  positive(s.world.gravity, "world.gravity", "m/s^2");
-  // A rig tilted beyond 30 degrees is no bench's slip of the level; at 90 the rollers carry
-  // nothing.
-  need(std::isfinite(s.world.tilt) && std::fabs(s.world.tilt) <= kPi / 6.0, "world.tilt",
-       describe("must be between -30 and 30 degrees, found ", s.world.tilt * 180.0 / kPi,
-                " deg (an angle without a unit is in radians)"));
-  positive(s.world.time_step, "world.time_step", "s");
-  positive(s.world.duration, "world.duration", "s");
-  need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
-       "world.solver_iterations",
-       describe("must be between 1 and 10000, found ", s.world.solver_iterations));
-  // A step of a quarter period or more cannot follow the plate (omega dt >= pi / 2): the
-  // thin plate's period, which any plate with a restoring force has at least roughly.
-  if (finite_positive(s.world.time_step) && finite_positive(s.rollers.spacing) &&
-      finite_positive(s.friction.mu_k) && finite_positive(s.world.gravity)) {
-    const double quarter = 0.25 * period_thin(s.rollers.spacing, s.friction.mu_k, s.world.gravity);
-    need(s.world.time_step < quarter, "world.time_step",
-         describe("expected a step that resolves the oscillation, shorter than a quarter of its "
-                  "period (",
-                  quarter, " s for the thin plate), found ", s.world.time_step,
-                  " s; use a step of 1 ms"));
-  }
-  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
-    need(s.world.duration >= s.world.time_step, "world.duration",
-         describe("must be at least one step of world.time_step (", s.world.time_step,
-                  " s), found ", s.world.duration, " s: a run of no step measures nothing"));
-  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
-    need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
-         describe("needs ", s.world.duration / s.world.time_step,
-                  " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
-  positive(s.rollers.spacing, "rollers.spacing", "m");
-  positive(s.rollers.radius, "rollers.radius", "m");
-  if (s.rollers.radius_roller_1) {
-    positive(*s.rollers.radius_roller_1, "rollers.radius", "m");
-    need(!s.drive, "rollers.radius",
-         "two radii go with the ideal drive only (the drive's gear train is laid out for one "
-         "roller size); give one radius or drop the drive");
   }
   // Beyond any bench (core/plausible_range.hpp): a slip of the unit or the keyboard, refused
   // before it is computed with (a plain 89 is 89 m; 1e300 rpm).
-  const auto plausible = [&](double v, const PlausibleRange& range, const char* key) {
-    if (!std::isfinite(v) || v <= 0.0) return;  // the checks above and below say those
+  void plausible(double v, const PlausibleRange& range, const char* key) const {
+    if (!std::isfinite(v) || v <= 0.0) return;  // the checks before and after say those
     if (const std::optional<std::string> why = implausible(v, range))
       need(false, key, *why + "; check the value and its unit (a plain number is SI)");
-  };
-  plausible(s.rollers.spacing, kSpacingRange, "rollers.spacing");
-  plausible(s.rollers.radius, kRollerRadiusRange, "rollers.radius");
-  if (s.rollers.radius_roller_1)
-    plausible(*s.rollers.radius_roller_1, kRollerRadiusRange, "rollers.radius");
-  plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
-  plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
-  plausible(s.world.gravity, kGravityRange, "world.gravity");
-  need(std::isfinite(s.rollers.skew) && std::fabs(s.rollers.skew) <= kPi / 18.0, "rollers.skew",
-       describe("must be between -10 and 10 degrees (axes that far from parallel are no "
-                "bench's misalignment), found ",
-                s.rollers.skew * 180.0 / kPi, " degrees"));
-  // Bounded by the smaller roller where the two differ.
-  const double radius_least =
-      std::min(s.rollers.radius, s.rollers.radius_roller_1.value_or(s.rollers.radius));
-  need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
-           s.rollers.rolling_resistance < 0.5 * radius_least,
-       "rollers.rolling_resistance",
-       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
-                " mm): a pressure centre that far ahead of the top is no roller's, found ",
-                s.rollers.rolling_resistance * 1e3, " mm"));
-  need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
-           s.rollers.runout < 0.5 * radius_least,
-       "rollers.runout",
-       describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
-                " mm), found ", 1e3 * s.rollers.runout, " mm"));
-  for (const double phase : s.rollers.runout_phase)
-    need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
-  positive(s.rollers.length, "rollers.length", "m");
-  if (const std::optional<WarmingDesc>& w = s.friction.warming) {
-    need(std::isfinite(w->room_temperature) && w->room_temperature > s.friction.temperature,
-         "friction.warming.room",
-         describe("must be warmer than the rollers' start (friction.temperature, ",
-                  s.friction.temperature, " K), found ", w->room_temperature, " K"));
-    positive(w->time_constant, "friction.warming.time_constant", "s");
-    need(std::isfinite(w->hold) && w->hold >= 0.0, "friction.warming.hold",
-         describe("must be >= 0, found ", w->hold, " s"));
-    if (w->mu_k_room) positive(*w->mu_k_room, "friction.warming.mu_k_room");
   }
-  need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
-       describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
-  if (const std::optional<double>& second = s.rollers.speed_roller_1) {
-    need(std::isfinite(*second) && *second >= 0.0, "rollers.speed",
-         describe("roller 1's speed must be >= 0, found ", *second, " rad/s"));
-    if (std::isfinite(*second) && *second > 0.0)
-      plausible(*second, kRollerSpeedRange, "rollers.speed");
-    need(!s.drive, "rollers.speed",
-         "two speeds [roller 0, roller 1] are the ideal drive's: a drive turns both rollers "
-         "through its gears at one speed; remove the drive or give one speed");
-    need(s.rollers.speed_ramp.empty(), "rollers.speed",
-         "two speeds go with a constant speed, not with rollers.speed_ramp; give one");
-  }
-  // A ramp: times from 0 s, increasing; speeds >= 0, duties 0 to 1.
-  const auto ramp = [&](const std::vector<RampPoint>& points, const char* key, double least,
-                        double most, const char* unit) {
+  // A ramp: times from 0 s, increasing; values from `least` to `most`.
+  void ramp(const std::vector<RampPoint>& points, const char* key, double least, double most,
+            const char* unit) const {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const RampPoint& p = points[i];
       need(std::isfinite(p.at) && p.at >= 0.0 && (i == 0 || p.at > points[i - 1].at), key,
@@ -143,129 +55,262 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
            describe("point ", i, ": its value ", p.value, unit, " must lie from ", least, " to ",
                     most));
     }
-  };
-  const std::size_t before_ramps = problems.size();
-  ramp(s.rollers.speed_ramp, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
-       " rad/s");
-  ramp(s.rollers.speed_ramp_roller_1, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
-       " rad/s (roller 1)");
-  need(s.rollers.speed_ramp_roller_1.empty() ||
-           (s.rollers.speed_ramp_roller_1.size() == s.rollers.speed_ramp.size() &&
-            std::equal(s.rollers.speed_ramp.begin(), s.rollers.speed_ramp.end(),
-                       s.rollers.speed_ramp_roller_1.begin(),
-                       [](const RampPoint& a, const RampPoint& b) { return a.at == b.at; })),
-       "rollers.speed_ramp", "roller 1's points must be at roller 0's times");
-  need(s.rollers.speed_ramp.empty() || !s.drive, "rollers.speed_ramp",
-       "the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead");
-  if (s.drive) ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");
-  // The largest speed a ramp reaches is read below only once the ramps hold.
-  const bool ramps_hold = problems.size() == before_ramps;
+  }
+  std::size_t count() const { return problems_.size(); }
+
+ private:
+  std::vector<SceneProblem>& problems_;
+};
+
+// The world: gravity, tilt, the step and the duration.
+void check_world(const Scene& s, const Checks& c) {
+  c.positive(s.world.gravity, "world.gravity", "m/s^2");
+  // A rig tilted beyond 30 degrees is no bench's slip of the level; at 90 the rollers carry
+  // nothing.
+  c.need(std::isfinite(s.world.tilt) && std::fabs(s.world.tilt) <= kPi / 6.0, "world.tilt",
+         describe("must be between -30 and 30 degrees, found ", s.world.tilt * 180.0 / kPi,
+                  " deg (an angle without a unit is in radians)"));
+  c.positive(s.world.time_step, "world.time_step", "s");
+  c.positive(s.world.duration, "world.duration", "s");
+  c.need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
+         "world.solver_iterations",
+         describe("must be between 1 and 10000, found ", s.world.solver_iterations));
+  // A step of a quarter period or more cannot follow the plate (omega dt >= pi / 2): the
+  // thin plate's period, which any plate with a restoring force has at least roughly.
+  if (finite_positive(s.world.time_step) && finite_positive(s.rollers.spacing) &&
+      finite_positive(s.friction.mu_k) && finite_positive(s.world.gravity)) {
+    const double quarter = 0.25 * period_thin(s.rollers.spacing, s.friction.mu_k, s.world.gravity);
+    c.need(s.world.time_step < quarter, "world.time_step",
+           describe("expected a step that resolves the oscillation, shorter than a quarter of its "
+                    "period (",
+                    quarter, " s for the thin plate), found ", s.world.time_step,
+                    " s; use a step of 1 ms"));
+  }
+  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
+    c.need(s.world.duration >= s.world.time_step, "world.duration",
+           describe("must be at least one step of world.time_step (", s.world.time_step,
+                    " s), found ", s.world.duration, " s: a run of no step measures nothing"));
+  if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
+    c.need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
+           describe("needs ", s.world.duration / s.world.time_step,
+                    " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
+}
+
+// The rollers' shape and mounting, and every value against the bench's ranges.
+void check_roller_shape(const Scene& s, const Checks& c) {
+  c.positive(s.rollers.spacing, "rollers.spacing", "m");
+  c.positive(s.rollers.radius, "rollers.radius", "m");
+  if (s.rollers.radius_roller_1) {
+    c.positive(*s.rollers.radius_roller_1, "rollers.radius", "m");
+    c.need(!s.drive, "rollers.radius",
+           "two radii go with the ideal drive only (the drive's gear train is laid out for one "
+           "roller size); give one radius or drop the drive");
+  }
+  c.plausible(s.rollers.spacing, kSpacingRange, "rollers.spacing");
+  c.plausible(s.rollers.radius, kRollerRadiusRange, "rollers.radius");
+  if (s.rollers.radius_roller_1)
+    c.plausible(*s.rollers.radius_roller_1, kRollerRadiusRange, "rollers.radius");
+  c.plausible(s.rollers.speed, kRollerSpeedRange, "rollers.speed");
+  c.plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
+  c.plausible(s.world.gravity, kGravityRange, "world.gravity");
+  c.need(std::isfinite(s.rollers.skew) && std::fabs(s.rollers.skew) <= kPi / 18.0, "rollers.skew",
+         describe("must be between -10 and 10 degrees (axes that far from parallel are no "
+                  "bench's misalignment), found ",
+                  s.rollers.skew * 180.0 / kPi, " degrees"));
+  // Bounded by the smaller roller where the two differ.
+  const double radius_least =
+      std::min(s.rollers.radius, s.rollers.radius_roller_1.value_or(s.rollers.radius));
+  c.need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
+             s.rollers.rolling_resistance < 0.5 * radius_least,
+         "rollers.rolling_resistance",
+         describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
+                  " mm): a pressure centre that far ahead of the top is no roller's, found ",
+                  s.rollers.rolling_resistance * 1e3, " mm"));
+  c.need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
+             s.rollers.runout < 0.5 * radius_least,
+         "rollers.runout",
+         describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
+                  " mm), found ", 1e3 * s.rollers.runout, " mm"));
+  for (const double phase : s.rollers.runout_phase)
+    c.need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
+  c.positive(s.rollers.length, "rollers.length", "m");
+}
+
+// Rollers warming from their start temperature.
+void check_warming(const Scene& s, const Checks& c) {
+  if (const std::optional<WarmingDesc>& w = s.friction.warming) {
+    c.need(std::isfinite(w->room_temperature) && w->room_temperature > s.friction.temperature,
+           "friction.warming.room",
+           describe("must be warmer than the rollers' start (friction.temperature, ",
+                    s.friction.temperature, " K), found ", w->room_temperature, " K"));
+    c.positive(w->time_constant, "friction.warming.time_constant", "s");
+    c.need(std::isfinite(w->hold) && w->hold >= 0.0, "friction.warming.hold",
+           describe("must be >= 0, found ", w->hold, " s"));
+    if (w->mu_k_room) c.positive(*w->mu_k_room, "friction.warming.mu_k_room");
+  }
+}
+
+// The rollers' speeds and ramps; whether the ramps hold (the largest speed is read only then).
+bool check_roller_speeds(const Scene& s, const Checks& c) {
+  c.need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
+         describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
+  if (const std::optional<double>& second = s.rollers.speed_roller_1) {
+    c.need(std::isfinite(*second) && *second >= 0.0, "rollers.speed",
+           describe("roller 1's speed must be >= 0, found ", *second, " rad/s"));
+    if (std::isfinite(*second) && *second > 0.0)
+      c.plausible(*second, kRollerSpeedRange, "rollers.speed");
+    c.need(!s.drive, "rollers.speed",
+           "two speeds [roller 0, roller 1] are the ideal drive's: a drive turns both rollers "
+           "through its gears at one speed; remove the drive or give one speed");
+    c.need(s.rollers.speed_ramp.empty(), "rollers.speed",
+           "two speeds go with a constant speed, not with rollers.speed_ramp; give one");
+  }
+  const std::size_t before_ramps = c.count();
+  c.ramp(s.rollers.speed_ramp, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
+         " rad/s");
+  c.ramp(s.rollers.speed_ramp_roller_1, "rollers.speed_ramp", 0.0,
+         std::numeric_limits<double>::max(), " rad/s (roller 1)");
+  c.need(s.rollers.speed_ramp_roller_1.empty() ||
+             (s.rollers.speed_ramp_roller_1.size() == s.rollers.speed_ramp.size() &&
+              std::equal(s.rollers.speed_ramp.begin(), s.rollers.speed_ramp.end(),
+                         s.rollers.speed_ramp_roller_1.begin(),
+                         [](const RampPoint& a, const RampPoint& b) { return a.at == b.at; })),
+         "rollers.speed_ramp", "roller 1's points must be at roller 0's times");
+  c.need(s.rollers.speed_ramp.empty() || !s.drive, "rollers.speed_ramp",
+         "the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead");
+  if (s.drive) c.ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");
+  // The largest speed a ramp reaches is read (check_friction) only once the ramps hold.
+  return c.count() == before_ramps;
+}
+
+// The plate, and room for it between the rollers.
+void check_plate(const Scene& s, const Checks& c) {
   const double radius_1 = s.rollers.radius_roller_1.value_or(s.rollers.radius);
   if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius) &&
       finite_positive(radius_1))
-    need(s.rollers.spacing > s.rollers.radius + radius_1, "rollers.spacing",
-         describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
-                  " mm is not more than their radii's sum ", 1e3 * (s.rollers.radius + radius_1),
-                  " mm"));
-  positive(s.plate.length, "plate.length", "m");
-  positive(s.plate.width, "plate.width", "m");
-  positive(s.plate.thickness, "plate.thickness", "m");
+    c.need(s.rollers.spacing > s.rollers.radius + radius_1, "rollers.spacing",
+           describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
+                    " mm is not more than their radii's sum ", 1e3 * (s.rollers.radius + radius_1),
+                    " mm"));
+  c.positive(s.plate.length, "plate.length", "m");
+  c.positive(s.plate.width, "plate.width", "m");
+  c.positive(s.plate.thickness, "plate.thickness", "m");
   if (s.plate.mass)
-    positive(*s.plate.mass, "plate.mass", "kg");
+    c.positive(*s.plate.mass, "plate.mass", "kg");
   else
-    positive(s.plate.density, "plate.density", "kg/m^3");
-  need(std::isfinite(s.plate.payload.mass) && s.plate.payload.mass >= 0.0, "plate.payload.mass",
-       "must be >= 0");
-  need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
-       "plate.payload.height", "must be >= 0");
-  need(std::isfinite(s.plate.payload.x) && std::fabs(s.plate.payload.x) <= 0.5 * s.plate.length,
-       "plate.payload.x",
-       describe("must lie on the plate, within half its length (", 0.5e3 * s.plate.length,
-                " mm) of its middle, found ", s.plate.payload.x * 1e3, " mm"));
-  need(std::isfinite(s.plate.offset), "plate.offset", "must be finite");
-  need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
-  need(std::isfinite(s.friction.mu_k) && s.friction.mu_k > 0.0, "friction.mu_k",
-       describe("mu_k must be positive, found ", s.friction.mu_k));
+    c.positive(s.plate.density, "plate.density", "kg/m^3");
+  c.need(std::isfinite(s.plate.payload.mass) && s.plate.payload.mass >= 0.0, "plate.payload.mass",
+         "must be >= 0");
+  c.need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
+         "plate.payload.height", "must be >= 0");
+  c.need(std::isfinite(s.plate.payload.x) && std::fabs(s.plate.payload.x) <= 0.5 * s.plate.length,
+         "plate.payload.x",
+         describe("must lie on the plate, within half its length (", 0.5e3 * s.plate.length,
+                  " mm) of its middle, found ", s.plate.payload.x * 1e3, " mm"));
+  c.need(std::isfinite(s.plate.offset), "plate.offset", "must be finite");
+  c.need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
+}
+
+// The friction law: mu_k, mu_s and a Stribeck law's fall.
+void check_friction(const Scene& s, const Checks& c, bool ramps_hold) {
+  c.need(std::isfinite(s.friction.mu_k) && s.friction.mu_k > 0.0, "friction.mu_k",
+         describe("mu_k must be positive, found ", s.friction.mu_k));
   const FrictionDesc& f = s.friction;
   if (f.mu_s)
-    need(std::isfinite(*f.mu_s) && *f.mu_s >= f.mu_k, "friction.mu_s",
-         describe("the static limit mu_s must be at least mu_k = ", f.mu_k, ", found ", *f.mu_s));
+    c.need(std::isfinite(*f.mu_s) && *f.mu_s >= f.mu_k, "friction.mu_s",
+           describe("the static limit mu_s must be at least mu_k = ", f.mu_k, ", found ", *f.mu_s));
   if (f.law == FrictionLawKind::kStribeck) {
-    need(!(f.mu_s && *f.mu_s > f.mu_k) || f.v_s.has_value(), "friction.mu_s",
-         "a stribeck law with mu_s > mu_k needs friction.v_s, the speed over which friction falls "
-         "from mu_s to mu_k (e.g. 10 mm/s)");
-    need(std::isfinite(f.beta), "friction.beta", describe("beta must be finite, found ", f.beta));
+    c.need(
+        !(f.mu_s && *f.mu_s > f.mu_k) || f.v_s.has_value(), "friction.mu_s",
+        "a stribeck law with mu_s > mu_k needs friction.v_s, the speed over which friction falls "
+        "from mu_s to mu_k (e.g. 10 mm/s)");
+    c.need(std::isfinite(f.beta), "friction.beta", describe("beta must be finite, found ", f.beta));
     // mu(s) falls monotonically when beta < 0: its least value is at the largest slip speed.
     const double s_max = ramps_hold ? largest_slip_speed(s) : 0.0;
     const double mu_min = friction_law(f).kinetic(s_max);
-    need(!ramps_hold || f.beta >= 0.0 || mu_min > 0.0, "friction.beta",
-         describe("the law's mu(s) goes negative (", mu_min, " at the run's largest slip speed ",
-                  s_max, " m/s); use a smaller |beta| or a larger mu_k"));
+    c.need(!ramps_hold || f.beta >= 0.0 || mu_min > 0.0, "friction.beta",
+           describe("the law's mu(s) goes negative (", mu_min, " at the run's largest slip speed ",
+                    s_max, " m/s); use a smaller |beta| or a larger mu_k"));
   }
+}
+
+// The magnets on the plate.
+void check_magnets(const Scene& s, const Checks& c) {
   for (std::size_t i = 0; i < s.magnets.size(); ++i) {
     const MagnetDesc& m = s.magnets[i];
-    need(finite_positive(m.diameter) && finite_positive(m.thickness) && finite_positive(m.density),
-         "magnets", describe("magnet ", i, ": diameter, thickness and density must be positive"));
-    need(std::isfinite(m.remanence) && m.remanence != 0.0, "magnets",
-         describe("magnet ", i, ": remanence must be non-zero"));
-    need(std::fabs(m.x) + 0.5 * m.diameter <= 0.5 * s.plate.length + 1e-12, "magnets",
-         describe("magnet ", i, " at x = ", m.x * 1e3,
-                  " mm does not sit on the plate (half length ", 0.5e3 * s.plate.length, " mm)"));
+    c.need(
+        finite_positive(m.diameter) && finite_positive(m.thickness) && finite_positive(m.density),
+        "magnets", describe("magnet ", i, ": diameter, thickness and density must be positive"));
+    c.need(std::isfinite(m.remanence) && m.remanence != 0.0, "magnets",
+           describe("magnet ", i, ": remanence must be non-zero"));
+    c.need(std::fabs(m.x) + 0.5 * m.diameter <= 0.5 * s.plate.length + 1e-12, "magnets",
+           describe("magnet ", i, " at x = ", m.x * 1e3,
+                    " mm does not sit on the plate (half length ", 0.5e3 * s.plate.length, " mm)"));
   }
-  if (!problems.empty()) return problems;
+}
 
-  // The physics of the set-up as a whole.
+// The set-up as a whole: an oscillation exists, and the plate stays on the rollers over its
+// amplitude, which it returns (none when no oscillation exists, which is said).
+std::optional<double> check_motion(const Scene& s, const Checks& c) {
   const PlateMass pm = plate_mass(s);
   const double l = s.rollers.spacing;
   const double mu = s.friction.mu_k;
   // A scene that explores a breakdown on purpose (expect.regime) is simulated and diagnosed.
   const bool exploring = s.expected_regime.has_value();
   if (!has_restoring_force(l, mu, pm.h_c) && !exploring) {
-    problems.push_back(
-        {"rollers.spacing",
-         describe("no oscillation exists: l = ", l * 1e3, " mm <= 2 mu_k h_c = ", 2e3 * mu * pm.h_c,
-                  " mm (mu_k = ", mu, ", h_c = ", pm.h_c * 1e3,
-                  " mm); widen the rollers, lower the plate's centre of mass or lower mu_k")});
-    return problems;
+    c.need(false, "rollers.spacing",
+           describe("no oscillation exists: l = ", l * 1e3, " mm <= 2 mu_k h_c = ",
+                    2e3 * mu * pm.h_c, " mm (mu_k = ", mu, ", h_c = ", pm.h_c * 1e3,
+                    " mm); widen the rollers, lower the plate's centre of mass or lower mu_k"));
+    return std::nullopt;
   }
   const double amplitude =
       has_restoring_force(l, mu, pm.h_c)
           ? amplitude_from_start(s.plate.offset, s.plate.velocity,
                                  angular_frequency(l, mu, pm.h_c, s.world.gravity))
           : std::fabs(s.plate.offset);
-  need(exploring || 0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
-       describe("the plate (", s.plate.length * 1e3,
-                " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
-                " mm: it would leave a roller; use a longer plate or a smaller offset"));
+  c.need(exploring || 0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
+         describe("the plate (", s.plate.length * 1e3,
+                  " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
+                  " mm: it would leave a roller; use a longer plate or a smaller offset"));
+  return amplitude;
+}
+
+// The drive's gear train can be laid out.
+void check_drive(const Scene& s, const Checks& c) {
   if (s.drive) {
     try {
       drive_layout(s);
     } catch (const std::invalid_argument& e) {
-      problems.push_back({"drive.coupling", e.what()});
+      c.need(false, "drive.coupling", e.what());
     }
   }
+}
+
+// The Hall sensor: its electronics, and a place the magnets never sweep over `amplitude`.
+void check_sensor(const Scene& s, const Checks& c, double amplitude) {
   if (s.sensor) {
     const SensorDesc& sensor = *s.sensor;
     const double norm = std::hypot(sensor.axis[0], sensor.axis[1], sensor.axis[2]);
-    need(std::isfinite(norm) && norm > 0.0, "sensor.axis", "must be a non-zero vector");
-    positive(sensor.sensitivity, "sensor.sensitivity", "V/T");
-    positive(sensor.supply, "sensor.supply", "V");
-    positive(sensor.sample_rate, "sensor.sample_rate", "Hz");
-    need(sensor.adc_bits >= 1 && sensor.adc_bits <= 16, "sensor.adc_bits",
-         describe("must be between 1 and 16, found ", sensor.adc_bits));
-    need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise", "must be >= 0");
-    need(std::isfinite(sensor.jitter) && sensor.jitter >= 0.0 &&
-             sensor.jitter < 0.25 / sensor.sample_rate,
-         "sensor.jitter", "must be >= 0 and below a quarter of the sample interval");
-    need(std::isfinite(sensor.clock_error) && std::fabs(sensor.clock_error) < 0.1,
-         "sensor.clock_error",
-         describe("must lie within +-10 % (a resonator is off by 0.5 % at most), found ",
-                  sensor.clock_error));
+    c.need(std::isfinite(norm) && norm > 0.0, "sensor.axis", "must be a non-zero vector");
+    c.positive(sensor.sensitivity, "sensor.sensitivity", "V/T");
+    c.positive(sensor.supply, "sensor.supply", "V");
+    c.positive(sensor.sample_rate, "sensor.sample_rate", "Hz");
+    c.need(sensor.adc_bits >= 1 && sensor.adc_bits <= 16, "sensor.adc_bits",
+           describe("must be between 1 and 16, found ", sensor.adc_bits));
+    c.need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise", "must be >= 0");
+    c.need(std::isfinite(sensor.jitter) && sensor.jitter >= 0.0 &&
+               sensor.jitter < 0.25 / sensor.sample_rate,
+           "sensor.jitter", "must be >= 0 and below a quarter of the sample interval");
+    c.need(std::isfinite(sensor.clock_error) && std::fabs(sensor.clock_error) < 0.1,
+           "sensor.clock_error",
+           describe("must lie within +-10 % (a resonator is off by 0.5 % at most), found ",
+                    sensor.clock_error));
     if (sensor.offset)
-      need(*sensor.offset >= 0.0 && *sensor.offset <= sensor.supply, "sensor.offset",
-           "must lie between 0 V and the supply");
-    need(sensor.position[2] > 0.0, "sensor.position",
-         "the sensor must sit above the rollers' tops (z > 0)");
+      c.need(*sensor.offset >= 0.0 && *sensor.offset <= sensor.supply, "sensor.offset",
+             "must lie between 0 V and the supply");
+    c.need(sensor.position[2] > 0.0, "sensor.position",
+           "the sensor must sit above the rollers' tops (z > 0)");
     // The sensor must not be inside the volume any magnet sweeps.
     const double top = s.plate.thickness;
     for (std::size_t i = 0; i < s.magnets.size(); ++i) {
@@ -276,12 +321,32 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
       const double bottom = top + m.height;
       const bool inside_z =
           sensor.position[2] >= bottom && sensor.position[2] <= bottom + m.thickness;
-      need(!(inside_x && inside_y && inside_z), "sensor.position",
-           describe("the sensor lies inside the volume magnet ", i,
-                    " sweeps as the plate moves; raise it above the magnet's top at ",
-                    (top + m.height + m.thickness) * 1e3, " mm"));
+      c.need(!(inside_x && inside_y && inside_z), "sensor.position",
+             describe("the sensor lies inside the volume magnet ", i,
+                      " sweeps as the plate moves; raise it above the magnet's top at ",
+                      (top + m.height + m.thickness) * 1e3, " mm"));
     }
   }
+}
+
+}  // namespace
+
+std::vector<SceneProblem> check_scene(const Scene& s) {
+  std::vector<SceneProblem> problems;
+  const Checks c(problems);
+  check_world(s, c);
+  check_roller_shape(s, c);
+  check_warming(s, c);
+  const bool ramps_hold = check_roller_speeds(s, c);
+  check_plate(s, c);
+  check_friction(s, c, ramps_hold);
+  check_magnets(s, c);
+  if (!problems.empty()) return problems;
+  // The physics of the set-up as a whole.
+  const std::optional<double> amplitude = check_motion(s, c);
+  if (!amplitude) return problems;
+  check_drive(s, c);
+  check_sensor(s, c, *amplitude);
   return problems;
 }
 

@@ -48,10 +48,10 @@ const fl_estimator::Stats& stats(E e) {
   return e.estimate.stats;
 }
 
-}  // namespace
-
-const std::vector<EstimateField>& estimate_fields() {
-  static const std::vector<EstimateField> fields = {
+// How the log was read: its file, format and columns, and what was left out.
+std::vector<EstimateField> reading_fields() {
+  // clang-format off
+  return {
       {.json = "log",
        .part = P::kReading,
        .type = T::kText,
@@ -137,6 +137,14 @@ const std::vector<EstimateField>& estimate_fields() {
        .type = T::kInteger,
        .meaning = "`#` lines",
        .get = [](E e) { return count(e.log.reading.comment_lines); }},
+  };
+  // clang-format on
+}
+
+// The lines and samples left out, and the runs of samples.
+std::vector<EstimateField> left_out_fields() {
+  // clang-format off
+  return {
       {.json = "lines_corrupted",
        .part = P::kReading,
        .type = T::kInteger,
@@ -202,6 +210,14 @@ const std::vector<EstimateField>& estimate_fields() {
        .type = T::kFlag,
        .meaning = "true when a cut-off last line was left out",
        .get = [](E e) { return V::flag(e.log.reading.unfinished_last_line); }},
+  };
+  // clang-format on
+}
+
+// The signal and the estimator's state.
+std::vector<EstimateField> signal_fields() {
+  // clang-format off
+  return {
       {.json = "samples",
        .part = P::kSignal,
        .type = T::kInteger,
@@ -242,6 +258,14 @@ const std::vector<EstimateField>& estimate_fields() {
        .type = T::kInteger,
        .meaning = "times the signal was lost (no pulse for four periods) and learned again",
        .get = [](E e) { return V::whole(std::uint64_t{stats(e).restarts}); }},
+  };
+  // clang-format on
+}
+
+// The estimator's verdict: the geometry, the periods, T and mu_k.
+std::vector<EstimateField> verdict_fields() {
+  // clang-format off
+  return {
       {.json = "geometry",
        .python = "geometry",
        .part = P::kVerdict,
@@ -316,6 +340,14 @@ const std::vector<EstimateField>& estimate_fields() {
        .part = P::kVerdict,
        .meaning = "d mu_k in quadrature: mu_k sqrt((dl/l)^2 + (2 dT/T)^2)",
        .get = [](E e) { return V::number(static_cast<double>(stats(e).mu_k_err_quadrature)); }},
+  };
+  // clang-format on
+}
+
+// The rig the estimate was made for, and what the request adds.
+std::vector<EstimateField> request_fields() {
+  // clang-format off
+  return {
       {.json = "spacing_m",
        .python = "spacing",
        .unit = "m",
@@ -361,6 +393,21 @@ const std::vector<EstimateField>& estimate_fields() {
        .meaning = "following a port: the file its raw log was written to",
        .null_when = "no file was given for the raw log"},
   };
+  // clang-format on
+}
+
+}  // namespace
+
+const std::vector<EstimateField>& estimate_fields() {
+  static const std::vector<EstimateField> fields = [] {
+    std::vector<EstimateField> all;
+    for (auto* group :
+         {&reading_fields, &left_out_fields, &signal_fields, &verdict_fields, &request_fields}) {
+      std::vector<EstimateField> part = group();
+      all.insert(all.end(), part.begin(), part.end());
+    }
+    return all;
+  }();
   return fields;
 }
 

@@ -57,34 +57,10 @@ std::string millimetres(double metres) {
   return fmt::format("{:.2f} mm", metres * 1e3);
 }
 
-}  // namespace
-
-MotionFinding diagnose_motion(const MotionEvidence& e) {
-  MotionFinding f;
-  std::vector<StickEpisode> held;  // the lasting ones
-  for (const StickEpisode& s : e.sticks) {
-    if (lasting(s))
-      held.push_back(s);
-    else
-      ++f.graze_count;
-  }
-  f.stick_count = static_cast<int>(held.size());
-
-  // Stuck for good: the last episode is still on and has lasted a quarter of the run.
-  if (!e.sticks.empty() && e.sticks.back().open &&
-      e.duration - e.sticks.back().start >= 0.25 * e.duration) {
-    const StickEpisode& s = e.sticks.back();
-    f.regime = Regime::kSticks;
-    f.since = s.start;
-    f.evidence = fmt::format(
-        "the plate moved with roller {}'s surface from t = {:.4f} s to the end of the run ({:.3f} "
-        "s): it stays stuck",
-        s.roller, s.start, e.duration - s.start);
-    return f;
-  }
-
-  // Stick phases that keep coming back: a stick-slip cycle. The first stick brings the plate onto
-  // the cycle; the cycle is read from the later ones.
+// Stick phases that keep coming back: a stick-slip cycle. The first stick brings the plate onto
+// the cycle; the cycle is read from the later ones. Whether `held` (the lasting sticks) shows one,
+// written into `f`.
+bool stick_slip(const MotionEvidence& e, const std::vector<StickEpisode>& held, MotionFinding& f) {
   if (held.size() >= 3) {
     std::vector<double> intervals;  // between sticks to the same roller
     std::vector<double> durations;
@@ -113,9 +89,74 @@ MotionFinding diagnose_motion(const MotionEvidence& e) {
           f.stick_duration ? fmt::format(" with sticks of {:.4f} s", *f.stick_duration)
                            : std::string(),
           f.cycle_amplitude ? ", amplitude " + millimetres(*f.cycle_amplitude) : std::string());
-      return f;
+      return true;
     }
   }
+  return false;
+}
+
+// A stick (or a graze) that clipped the amplitude, then a steady slipping oscillation, written
+// into `f`.
+void clipped(const MotionEvidence& e, const std::vector<StickEpisode>& held, MotionFinding& f) {
+  const StickEpisode& first = e.sticks.front();
+  f.regime = Regime::kClipped;
+  f.since = first.start;
+  f.clip_time = first.start;
+  const Span before = [&] {
+    Span s;
+    for (std::size_t i = 0; i < e.turning_times.size() && e.turning_times[i] < first.start; ++i) {
+      s.times.push_back(e.turning_times[i]);
+      s.amplitudes.push_back(e.turning_amplitudes[i]);
+    }
+    return s;
+  }();
+  f.amplitude_before = before.amplitudes.empty() ? e.amplitude_start : before.amplitudes.back();
+  const Span after = turning_points_after(e, held.empty() ? first.end : held.back().end);
+  if (!after.amplitudes.empty()) {
+    const std::size_t n = after.amplitudes.size();
+    f.amplitude_after = mean(
+        {after.amplitudes.begin() + static_cast<std::ptrdiff_t>(n - std::min<std::size_t>(n, 4)),
+         after.amplitudes.end()});
+  }
+  f.evidence = fmt::format(
+      "the plate reached roller {}'s surface speed at t = {:.4f} s and moved with it for {:.4f} s; "
+      "then both rollers slipped{}, at an amplitude of {}{}",
+      first.roller, first.start, first.end - first.start + e.time_step,
+      f.graze_count > (lasting(first) ? 0 : 1)
+          ? fmt::format(" (grazing a roller's speed {} times)",
+                        f.graze_count - (lasting(first) ? 0 : 1))
+          : std::string(),
+      f.amplitude_after ? millimetres(*f.amplitude_after) : std::string("(not measured)"),
+      f.amplitude_before ? " (" + millimetres(*f.amplitude_before) + " before)" : std::string());
+}
+
+}  // namespace
+
+MotionFinding diagnose_motion(const MotionEvidence& e) {
+  MotionFinding f;
+  std::vector<StickEpisode> held;  // the lasting ones
+  for (const StickEpisode& s : e.sticks) {
+    if (lasting(s))
+      held.push_back(s);
+    else
+      ++f.graze_count;
+  }
+  f.stick_count = static_cast<int>(held.size());
+
+  // Stuck for good: the last episode is still on and has lasted a quarter of the run.
+  if (!e.sticks.empty() && e.sticks.back().open &&
+      e.duration - e.sticks.back().start >= 0.25 * e.duration) {
+    const StickEpisode& s = e.sticks.back();
+    f.regime = Regime::kSticks;
+    f.since = s.start;
+    f.evidence = fmt::format(
+        "the plate moved with roller {}'s surface from t = {:.4f} s to the end of the run ({:.3f} "
+        "s): it stays stuck",
+        s.roller, s.start, e.duration - s.start);
+    return f;
+  }
+
+  if (stick_slip(e, held, f)) return f;
 
   // Slipping since the last lasting stick (grazes do not interrupt it).
   const double slipping_from = held.empty() ? 0.0 : held.back().end;
@@ -149,37 +190,7 @@ MotionFinding diagnose_motion(const MotionEvidence& e) {
     return f;
   }
 
-  // A stick (or a graze) that clipped the amplitude, then a steady slipping oscillation.
-  const StickEpisode& first = e.sticks.front();
-  f.regime = Regime::kClipped;
-  f.since = first.start;
-  f.clip_time = first.start;
-  const Span before = [&] {
-    Span s;
-    for (std::size_t i = 0; i < e.turning_times.size() && e.turning_times[i] < first.start; ++i) {
-      s.times.push_back(e.turning_times[i]);
-      s.amplitudes.push_back(e.turning_amplitudes[i]);
-    }
-    return s;
-  }();
-  f.amplitude_before = before.amplitudes.empty() ? e.amplitude_start : before.amplitudes.back();
-  const Span after = turning_points_after(e, held.empty() ? first.end : held.back().end);
-  if (!after.amplitudes.empty()) {
-    const std::size_t n = after.amplitudes.size();
-    f.amplitude_after = mean(
-        {after.amplitudes.begin() + static_cast<std::ptrdiff_t>(n - std::min<std::size_t>(n, 4)),
-         after.amplitudes.end()});
-  }
-  f.evidence = fmt::format(
-      "the plate reached roller {}'s surface speed at t = {:.4f} s and moved with it for {:.4f} s; "
-      "then both rollers slipped{}, at an amplitude of {}{}",
-      first.roller, first.start, first.end - first.start + e.time_step,
-      f.graze_count > (lasting(first) ? 0 : 1)
-          ? fmt::format(" (grazing a roller's speed {} times)",
-                        f.graze_count - (lasting(first) ? 0 : 1))
-          : std::string(),
-      f.amplitude_after ? millimetres(*f.amplitude_after) : std::string("(not measured)"),
-      f.amplitude_before ? " (" + millimetres(*f.amplitude_before) + " before)" : std::string());
+  clipped(e, held, f);
   return f;
 }
 

@@ -79,18 +79,18 @@ FieldValue warming_value(const RunSummary& s) {
                                  {"whole_run", warming_window_json(w.whole_run)}});
 }
 
-}  // namespace
+using S = const RunSummary&;
+using V = FieldValue;
+using T = FieldType;
+constexpr const char* kNoPeriod = "there is no headline period (period_withheld says why)";
+constexpr const char* kNoEstimatorSpread =
+    "the scene has no sensor, or its estimator accepted fewer than two periods";
+constexpr const char* kNoRestoring = "the plate has no restoring force (l <= 2 mu_k h_c)";
 
-const std::vector<SummaryField>& summary_fields() {
-  using S = const RunSummary&;
-  using V = FieldValue;
-  using T = FieldType;
-  constexpr const char* kNoPeriod = "there is no headline period (period_withheld says why)";
-  constexpr const char* kNoEstimatorSpread =
-      "the scene has no sensor, or its estimator accepted fewer than two periods";
-  constexpr const char* kNoRestoring = "the plate has no restoring force (l <= 2 mu_k h_c)";
+// The run, its regime and the conditioning of mu_k on what was measured.
+std::vector<SummaryField> run_fields() {
   // clang-format off
-  static const std::vector<SummaryField> fields{
+  return {
       {.json = "scene", .python = "scene", .type = T::kText,
        .meaning = "the scene's name (its `name:`, else its file's)",
        .get = [](S s) { return V::text(s.scene); }},
@@ -139,6 +139,15 @@ const std::vector<SummaryField>& summary_fields() {
       {.json = "condition_h_c", .python = "condition_h_c",
        .meaning = "d ln mu_k / d ln h_c through the thick formula",
        .get = [](S s) { return V::number(s.condition_h_c); }},
+  };
+  // clang-format on
+}
+
+// The periods: the estimator's, the trajectory's, the closed forms', and where the plate
+// oscillates.
+std::vector<SummaryField> period_fields() {
+  // clang-format off
+  return {
       {.json = "period_s", .sweep = "period_s", .python = "period", .unit = "s",
        .meaning = "the headline period: the rig's estimator's mean T from the simulated Hall "
                   "signal, for a harmonic oscillation only",
@@ -225,6 +234,14 @@ const std::vector<SummaryField>& summary_fields() {
        .get = [](S s) {
          return V::number(relative_error(s.period_trajectory, s.period_thick));
        }},
+  };
+  // clang-format on
+}
+
+// mu_k: set, recovered, and the sensor's own errors.
+std::vector<SummaryField> mu_k_fields() {
+  // clang-format off
+  return {
       {.json = "mu_k_set", .sweep = "mu_k_set", .python = "mu_k_set",
        .meaning = "the scene's mu_k (at the start, for rollers that warm)",
        .get = [](S s) { return V::number(s.mu_k_set); }},
@@ -286,6 +303,14 @@ const std::vector<SummaryField>& summary_fields() {
                     : V();
        },
        .omit_when_null = true},
+  };
+  // clang-format on
+}
+
+// The rig: its rollers, plate and drive.
+std::vector<SummaryField> rig_fields() {
+  // clang-format off
+  return {
       {.json = "runout_m", .sweep = "runout_m", .python = "runout", .unit = "m",
        .meaning = "the rollers' run-out (`rollers.runout`)",
        .null_when = "the rollers are true (left out of summary.json)",
@@ -338,6 +363,14 @@ const std::vector<SummaryField>& summary_fields() {
                   "speed, A omega, for the scene's initial amplitude",
        .null_when = kNoRestoring,
        .get = [](S s) { return V::number(s.slip_threshold); }},
+  };
+  // clang-format on
+}
+
+// The motion: amplitude, clipping, stick-slip, growth and jumps.
+std::vector<SummaryField> motion_fields() {
+  // clang-format off
+  return {
       {.json = "amplitude_start_m", .sweep = "amplitude_start_m", .python = "amplitude_start",
        .unit = "m", .meaning = "the first turning point's distance from the centre",
        .null_when = "the run reached no turning point",
@@ -401,6 +434,14 @@ const std::vector<SummaryField>& summary_fields() {
        .meaning = "the largest gap between the plate's bottom and a roller",
        .null_when = "the plate never left (left out of summary.json)",
        .get = [](S s) { return V::number(s.highest_jump); }, .omit_when_null = true},
+  };
+  // clang-format on
+}
+
+// What theory has for the regime, the rollers warming, and the paper's values.
+std::vector<SummaryField> theory_fields() {
+  // clang-format off
+  return {
       {.json = "regime_theory", .python = "regime_theory", .python_type = "Regime",
        .type = T::kText,
        .meaning = "the regime the friction law's closed forms give for the scene "
@@ -465,6 +506,14 @@ const std::vector<SummaryField>& summary_fields() {
       {.sweep = "paper_mu_k_err", .meaning = "its d mu_k",
        .null_when = "the scene's mu_k is not a row of the paper's Table I",
        .get = [](S s) { return s.paper_mu_k ? V::number(s.paper_mu_k->uncertainty) : V(); }},
+  };
+  // clang-format on
+}
+
+// The numerics and what the run cost.
+std::vector<SummaryField> numerics_fields() {
+  // clang-format off
+  return {
       {.json = "min_normal_force_n", .python = "min_normal_force", .unit = "N",
        .meaning = "the smallest normal force on the plate at a roller over the run",
        .get = [](S s) { return V::number(s.min_normal_force); }},
@@ -508,6 +557,20 @@ const std::vector<SummaryField>& summary_fields() {
        .get = [](S s) { return V::number(s.steps_per_second); }, .timing = true},
   };
   // clang-format on
+}
+
+}  // namespace
+
+const std::vector<SummaryField>& summary_fields() {
+  static const std::vector<SummaryField> fields = [] {
+    std::vector<SummaryField> all;
+    for (auto* group : {&run_fields, &period_fields, &mu_k_fields, &rig_fields, &motion_fields,
+                        &theory_fields, &numerics_fields}) {
+      std::vector<SummaryField> part = group();
+      all.insert(all.end(), part.begin(), part.end());
+    }
+    return all;
+  }();
   return fields;
 }
 

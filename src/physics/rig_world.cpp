@@ -70,6 +70,11 @@ struct RigWorld::Impl {
   std::unique_ptr<btRigidBody> plate;
 
   Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep);
+  // The guide towers (the frame's parts marked as guides, each through its boxes), then the plate
+  // on the rollers: parts of the constructor, in that order (the plate's freedom depends on the
+  // guides).
+  void add_guides();
+  void add_plate();
 
   std::array<const btRigidBody*, 2> roller_bodies() const {
     return {rollers[0].get(), rollers[1].get()};
@@ -148,7 +153,6 @@ struct RigWorld::Impl {
 RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const CompiledRig> keep)
     : owned(std::move(keep)), rig(compiled), dt(compiled.world.time_step) {
   const CompiledRig& s = rig;
-  const PlateMass& mass = rig.plate;
   // The rollers' spheres against the plate's box in closed form, as GJK finds them but cheaper
   // (physics/roller_plate_contact.hpp).
   use_closed_form_sphere_box_contact(dispatcher);
@@ -216,6 +220,17 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
     if (s.rollers.runout > 0.0) place_off_centre(i);
   }
 
+  add_guides();
+  add_plate();
+
+  world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
+  friction = std::make_unique<ContactFriction>(rig.friction, rig.guide_friction, plate.get(),
+                                               roller_bodies());
+  world.rig = this;
+}
+
+void RigWorld::Impl::add_guides() {
+  const CompiledRig& s = rig;
   // Guide towers: only the frame's parts marked as guides collide, each through its boxes
   // (from the part index, never the render mesh), with the rig's guide friction.
   if (s.frame) {
@@ -237,7 +252,11 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
       }
     }
   }
+}
 
+void RigWorld::Impl::add_plate() {
+  const CompiledRig& s = rig;
+  const PlateMass& mass = rig.plate;
   // The plate: its centre of mass is the body's origin. For collision it is a box whose bottom
   // face lies h_c below the centre of mass (the contact line), as long and wide as the plate;
   // only that face and the sides ever touch anything. Mass and pitch inertia come from the
@@ -274,11 +293,6 @@ RigWorld::Impl::Impl(const CompiledRig& compiled, std::shared_ptr<const Compiled
   plate->setLinearVelocity(btVector3(p.velocity, guides.empty() ? 0.0 : p.sideways_velocity, 0));
   if (s.rollers.runout > 0.0) rest_on_off_centre_rollers();
   world.addRigidBody(plate.get());
-
-  world.setInternalTickCallback(&before_step, this, /*isPreTick=*/true);
-  friction = std::make_unique<ContactFriction>(rig.friction, rig.guide_friction, plate.get(),
-                                               roller_bodies());
-  world.rig = this;
 }
 
 void RigWorld::Impl::before_solve(const btContactSolverInfo& info) {

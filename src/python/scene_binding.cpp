@@ -108,8 +108,8 @@ std::string sense_name(RollerSense sense) {
   return sense == RollerSense::kInward ? "inward" : "outward";
 }
 
-void bind_scene_parts(py::class_<LoadedScene>& scene) {
-  constexpr auto ref = py::return_value_policy::reference_internal;
+// The rig's parts as the scene describes them: the world, rollers, plate, magnets and sensor.
+void bind_rig_parts(py::class_<LoadedScene>& scene) {
   py::class_<RampPoint>(scene, "RampPoint", "A point of a ramp: at [s], value (rad/s or duty).")
       .def_readonly("at", &RampPoint::at)
       .def_readonly("value", &RampPoint::value);
@@ -176,6 +176,10 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("noise", &SensorDesc::noise, "V rms")
       .def_readonly("jitter", &SensorDesc::jitter, "s rms")
       .def_readonly("clock_error", &SensorDesc::clock_error, "relative");
+}
+
+// The friction law, the rollers warming, and the drive.
+void bind_friction_and_drive(py::class_<LoadedScene>& scene) {
   py::class_<WarmingDesc>(scene, "Warming", "friction.warming: rollers warming from the start.")
       .def_readonly("room", &WarmingDesc::room_temperature, "K")
       .def_readonly("time_constant", &WarmingDesc::time_constant, "s")
@@ -222,6 +226,10 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
           },
           "{\"roller_gear\": teeth, \"idler_gear\": teeth}")
       .def_property_readonly("ratio", &gearbox_ratio, "the gearbox's speed-up");
+}
+
+// The LEGO frame and the files a run writes.
+void bind_frame_and_output(py::class_<LoadedScene>& scene) {
   py::class_<FramePart>(scene, "FramePart", "A LEGO part of the frame on the stud grid.")
       .def_readonly("part", &FramePart::part)
       .def_readonly("at", &FramePart::at, "studs x, studs y, plates up")
@@ -238,6 +246,13 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("cycles", &OutputDesc::cycles)
       .def_readonly("periods", &OutputDesc::periods)
       .def_readonly("jumps", &OutputDesc::jumps);
+}
+
+void bind_scene_parts(py::class_<LoadedScene>& scene) {
+  constexpr auto ref = py::return_value_policy::reference_internal;
+  bind_rig_parts(scene);
+  bind_friction_and_drive(scene);
+  bind_frame_and_output(scene);
 
   const auto part = [](auto member) {
     return [member](const LoadedScene& s) -> const auto& {

@@ -50,6 +50,77 @@ Outcome CompareRequestResult::outcome() const {
   return Outcome::kDone;
 }
 
+namespace {
+
+// The plot of a comparison's file drawn by its script into `png`; a plot that cannot be drawn is
+// the result's plot failure, the comparison kept.
+void draw_plot(const char* script, const std::string& data, const std::string& png,
+               CompareRequestResult& result) {
+  try {
+    run_plot_script(script, {data, png});
+    result.written.push_back(png);
+  } catch (const std::runtime_error& e) {
+    result.plot_failure = e.what();
+  }
+}
+
+// One Hall log against its simulation: the refit, the paper's value for the log's material, the
+// report and its traces written, and the plot.
+void compare_one_log(const CompareRequest& r, const HallLogOptions& reading,
+                     fl_estimator::Geometry geometry, const PaperTable& paper,
+                     const MaterialChoice& material, const CompareOptions& options,
+                     CompareRequestResult& result) {
+  const HallLog log = read_hall_log_checked(r.log, reading, LogSetUp{});
+  // The sidecar's material (checked against the paper's table) when the request names none.
+  const std::optional<LogSidecar> sidecar = read_log_sidecar(log.file, &paper);
+  result.log = compare_log_with_rig(log, geometry, options);
+  if (result.log->interrupted) {
+    result.interrupted = true;
+    return;
+  }
+  result.json = log_against_rig_json(*result.log);
+  const CompareRow& row = result.log->fit.rows.front();
+  if (row.mu_k_refit && row.mu_k_refit_err_quadrature)
+    result.paper_value = paper_value_for(
+        paper, material,
+        sidecar ? MaterialChoice{sidecar->material, sidecar->temperature} : MaterialChoice{},
+        *row.mu_k_refit, *row.mu_k_refit_err_quadrature);
+  result.json["paper"] =
+      result.paper_value ? paper_comparison_json(*result.paper_value) : nlohmann::json(nullptr);
+  const std::string report = r.out + "/compare-log.json";
+  const std::string traces = r.out + "/compare-log-traces.json";
+  write_file_atomic(report, result.json.dump(1) + "\n");
+  write_file_atomic(traces, log_against_rig_plot_data(*result.log).dump() + "\n");
+  result.written = {report, traces};
+  if (r.plot) draw_plot("plot_log_vs_sim.py", traces, r.out + "/compare-log.png", result);
+}
+
+// A table of measurements, each row simulated in its own rig: the table, the rows it left out,
+// its files and the plot.
+void compare_table(const CompareRequest& r, const MeasuredRows& measured,
+                   const CompareOptions& options, CompareRequestResult& result) {
+  result.table = run_compare(measured, options);
+  result.interrupted = result.table->rows_interrupted() > 0;
+  result.skipped = measured.skipped;
+  result.json = compare_json(*result.table);
+  // Rows of a table of logs whose log gave no period: left out, and said.
+  nlohmann::json skipped = nlohmann::json::array();
+  for (const SkippedRow& row : measured.skipped)
+    skipped.push_back({{"label", escape_invalid_utf8(row.label)},
+                       {"line", row.where.line},
+                       {"reason", escape_invalid_utf8(row.reason)}});
+  result.json["skipped"] = skipped;
+  const std::string csv = r.out + "/compare.csv";
+  const std::string json = r.out + "/compare.json";
+  write_file_atomic(csv, compare_csv(*result.table));
+  write_file_atomic(json, result.json.dump(1) + "\n");
+  result.written = {csv, json};
+  if (r.plot && !result.interrupted)
+    draw_plot("plot_compare.py", json, r.out + "/compare.png", result);
+}
+
+}  // namespace
+
 CompareRequestResult compare_measurements(const CompareRequest& r,
                                           std::function<void(std::size_t, std::size_t)> progress,
                                           const JobControl& control) {
@@ -142,65 +213,10 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
   options.progress = std::move(progress);
   options.control = control;
 
-  if (with_log) {
-    const HallLog log = read_hall_log_checked(r.log, reading, LogSetUp{});
-    // The sidecar's material (checked against the paper's table) when the request names none.
-    const std::optional<LogSidecar> sidecar = read_log_sidecar(log.file, &paper);
-    result.log = compare_log_with_rig(log, *geometry, options);
-    if (result.log->interrupted) {
-      result.interrupted = true;
-      return result;
-    }
-    result.json = log_against_rig_json(*result.log);
-    const CompareRow& row = result.log->fit.rows.front();
-    if (row.mu_k_refit && row.mu_k_refit_err_quadrature)
-      result.paper_value = paper_value_for(
-          paper, material,
-          sidecar ? MaterialChoice{sidecar->material, sidecar->temperature} : MaterialChoice{},
-          *row.mu_k_refit, *row.mu_k_refit_err_quadrature);
-    result.json["paper"] =
-        result.paper_value ? paper_comparison_json(*result.paper_value) : nlohmann::json(nullptr);
-    const std::string report = r.out + "/compare-log.json";
-    const std::string traces = r.out + "/compare-log-traces.json";
-    write_file_atomic(report, result.json.dump(1) + "\n");
-    write_file_atomic(traces, log_against_rig_plot_data(*result.log).dump() + "\n");
-    result.written = {report, traces};
-    if (r.plot) {
-      const std::string png = r.out + "/compare-log.png";
-      try {
-        run_plot_script("plot_log_vs_sim.py", {traces, png});
-        result.written.push_back(png);
-      } catch (const std::runtime_error& e) {
-        result.plot_failure = e.what();
-      }
-    }
-    return result;
-  }
-  result.table = run_compare(measured, options);
-  result.interrupted = result.table->rows_interrupted() > 0;
-  result.skipped = measured.skipped;
-  result.json = compare_json(*result.table);
-  // Rows of a table of logs whose log gave no period: left out, and said.
-  nlohmann::json skipped = nlohmann::json::array();
-  for (const SkippedRow& row : measured.skipped)
-    skipped.push_back({{"label", escape_invalid_utf8(row.label)},
-                       {"line", row.where.line},
-                       {"reason", escape_invalid_utf8(row.reason)}});
-  result.json["skipped"] = skipped;
-  const std::string csv = r.out + "/compare.csv";
-  const std::string json = r.out + "/compare.json";
-  write_file_atomic(csv, compare_csv(*result.table));
-  write_file_atomic(json, result.json.dump(1) + "\n");
-  result.written = {csv, json};
-  if (r.plot && !result.interrupted) {
-    const std::string png = r.out + "/compare.png";
-    try {
-      run_plot_script("plot_compare.py", {json, png});
-      result.written.push_back(png);
-    } catch (const std::runtime_error& e) {
-      result.plot_failure = e.what();
-    }
-  }
+  if (with_log)
+    compare_one_log(r, reading, *geometry, paper, material, options, result);
+  else
+    compare_table(r, measured, options, result);
   return result;
 }
 

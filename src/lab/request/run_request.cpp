@@ -66,6 +66,69 @@ VideoRequest frames_request(const RunRequest& r, FieldChecks& checks) {
   return v;
 }
 
+// The files a run draws frames into, checked by name before anything is loaded or created.
+void check_frame_files(const RunRequest& r, FieldChecks& checks) {
+  // A video format it cannot write is refused before anything is loaded or created (a folder
+  // given as the file is refused below, saying so).
+  std::error_code folder_error;
+  if (!r.video.empty() && !std::filesystem::is_directory(r.video, folder_error)) {
+    const std::string problem = video_file_problem(r.video);
+    if (!problem.empty()) checks.problem("video", problem);
+  }
+  // The still is a PNG: a name that says otherwise (x.jpg) would be a file its viewer misreads.
+  if (!r.still.empty() && !std::filesystem::is_directory(r.still, folder_error)) {
+    std::string extension = std::filesystem::path(r.still).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png")
+      checks.problem("still",
+                     "expected a .png file (the still is a PNG image), found " +
+                         (extension.empty() ? std::string("a name without an extension")
+                                            : "\"" + extension + "\"") +
+                         "; name it " +
+                         std::filesystem::path(r.still).replace_extension(".png").string());
+  }
+}
+
+// The places the run writes, made ready before it runs: none may replace the scene or the
+// captions read, and the folder must hold the run's files.
+void make_output_places(const RunRequest& r, const Scene& scene, const CompiledRig& rig,
+                        FieldChecks& checks) {
+  // Outputs that would replace the scene or the captions read are refused before any is made.
+  const std::vector<InputFile> inputs = {{r.scene.file, "the scene"},
+                                         {r.captions, "the captions file"}};
+  refuse_overwriting_inputs(r.out,
+                            {"summary.json", "timing.json", "trajectory.csv", "hall.csv",
+                             "periods.csv", "cycles.csv", "jumps.csv", "periods.png"},
+                            "out", inputs);
+  refuse_overwriting_inputs(r.video, "video", inputs);
+  refuse_overwriting_inputs(r.still, "still", inputs);
+  if (!r.out.empty()) {
+    prepare_output_folder(r.out, "out");
+    // The files stream to the disk as the run goes: a run they would not fit is refused now, not
+    // after minutes of simulation.
+    const double needed = run_files_bytes_at_most(scene.output, rig);
+    std::error_code ec;
+    const std::filesystem::space_info space = std::filesystem::space(r.out, ec);
+    if (!ec && static_cast<double>(space.available) < needed) {
+      const auto size = [](double bytes) {
+        return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9)
+                            : fmt::format("{:.3g} MB", bytes / 1e6);
+      };
+      checks.problem(
+          "out", r.out,
+          fmt::format("expected a folder with room for the run's files, up to {} for "
+                      "{:.4g} s of steps and samples, found {} free there; free some, "
+                      "write elsewhere, shorten the {} or leave out output.trajectory",
+                      size(needed), rig.world.duration, size(static_cast<double>(space.available)),
+                      field_ref("duration")));
+      checks.throw_if_any();
+    }
+  }
+  if (!r.video.empty()) prepare_output_file(r.video, "video");
+  if (!r.still.empty()) prepare_output_file(r.still, "still");
+  if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
+}
+
 }  // namespace
 
 PreparedRun prepare_run(const RunRequest& r) {
@@ -90,25 +153,7 @@ PreparedRun prepare_run(const RunRequest& r) {
                            field_ref("set", "world.time_step=" + o.value) +
                            " would be ignored; give one of them");
   }
-  // A video format it cannot write is refused before anything is loaded or created (a folder
-  // given as the file is refused below, saying so).
-  std::error_code folder_error;
-  if (!r.video.empty() && !std::filesystem::is_directory(r.video, folder_error)) {
-    const std::string problem = video_file_problem(r.video);
-    if (!problem.empty()) checks.problem("video", problem);
-  }
-  // The still is a PNG: a name that says otherwise (x.jpg) would be a file its viewer misreads.
-  if (!r.still.empty() && !std::filesystem::is_directory(r.still, folder_error)) {
-    std::string extension = std::filesystem::path(r.still).extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png")
-      checks.problem("still",
-                     "expected a .png file (the still is a PNG image), found " +
-                         (extension.empty() ? std::string("a name without an extension")
-                                            : "\"" + extension + "\"") +
-                         "; name it " +
-                         std::filesystem::path(r.still).replace_extension(".png").string());
-  }
+  check_frame_files(r, checks);
   VideoRequest frames;
   if (r.draws_frames()) frames = frames_request(r, checks);
   const std::vector<SceneOverride> length = run_length_overrides(r.duration, r.seed, checks);
@@ -169,40 +214,7 @@ PreparedRun prepare_run(const RunRequest& r) {
                    "no periods to plot; drop " +
                        field_ref("plot"));
   checks.throw_if_any();
-  // Outputs that would replace the scene or the captions read are refused before any is made.
-  const std::vector<InputFile> inputs = {{r.scene.file, "the scene"},
-                                         {r.captions, "the captions file"}};
-  refuse_overwriting_inputs(r.out,
-                            {"summary.json", "timing.json", "trajectory.csv", "hall.csv",
-                             "periods.csv", "cycles.csv", "jumps.csv", "periods.png"},
-                            "out", inputs);
-  refuse_overwriting_inputs(r.video, "video", inputs);
-  refuse_overwriting_inputs(r.still, "still", inputs);
-  if (!r.out.empty()) {
-    prepare_output_folder(r.out, "out");
-    // The files stream to the disk as the run goes: a run they would not fit is refused now, not
-    // after minutes of simulation.
-    const double needed = run_files_bytes_at_most(scene.output, rig);
-    std::error_code ec;
-    const std::filesystem::space_info space = std::filesystem::space(r.out, ec);
-    if (!ec && static_cast<double>(space.available) < needed) {
-      const auto size = [](double bytes) {
-        return bytes >= 1e9 ? fmt::format("{:.3g} GB", bytes / 1e9)
-                            : fmt::format("{:.3g} MB", bytes / 1e6);
-      };
-      checks.problem(
-          "out", r.out,
-          fmt::format("expected a folder with room for the run's files, up to {} for "
-                      "{:.4g} s of steps and samples, found {} free there; free some, "
-                      "write elsewhere, shorten the {} or leave out output.trajectory",
-                      size(needed), rig.world.duration, size(static_cast<double>(space.available)),
-                      field_ref("duration")));
-      checks.throw_if_any();
-    }
-  }
-  if (!r.video.empty()) prepare_output_file(r.video, "video");
-  if (!r.still.empty()) prepare_output_file(r.still, "still");
-  if (!r.frames.empty()) prepare_output_folder(r.frames, "frames");
+  make_output_places(r, scene, rig, checks);
   std::vector<std::string> caption_warnings;
   if (r.draws_frames()) {
     out.video = effective_video(scene, frames);  // the settings against the scene's, by field

@@ -36,129 +36,82 @@ std::optional<std::vector<std::string>> many_logs(const std::vector<std::string>
   return found;
 }
 
-}  // namespace
-
-PreparedEstimate prepare_estimate(const EstimateRequest& r) {
-  FieldChecks checks;
-  PreparedEstimate p;
-  p.set_up.spacing =
-      checks.positive(r.spacing, Dimension::kLength, "spacing", "the roller spacing");
-  p.set_up.spacing_err =
-      checks.not_negative(r.spacing_err, Dimension::kLength, "spacing_err", "the uncertainty");
-  p.set_up.gravity = checks.positive(r.gravity, Dimension::kAcceleration, "gravity", "g");
-  checks.plausible(p.set_up.spacing, kSpacingRange, "spacing", r.spacing);
-  checks.plausible(p.set_up.gravity, kGravityRange, "gravity", r.gravity);
-  if (const std::optional<fl_estimator::Geometry> g = geometry_from_option(r.geometry))
-    p.set_up.geometry = *g;
-  else
-    checks.problem("geometry", r.geometry,
-                   "expected auto, one or pair, found \"" + r.geometry + "\"");
-  p.reading.columns = r.columns;
-  p.reading.time_unit = r.time_unit;
-  if (r.rate) {
-    p.reading.rate_hz = checks.quantity(*r.rate, Dimension::kFrequency, "rate");
-    if (!checks.has("rate") && (!(p.reading.rate_hz > 0.0) || !std::isfinite(p.reading.rate_hz)))
-      checks.problem("rate", quantity_input_text(*r.rate),
-                     "expected a positive sample rate (for example 1kHz), found \"" +
-                         quantity_input_text(*r.rate) + "\"");
-  }
+// The three jobs' own fields, after the fields they share (prepare_estimate).
+// Several logs: a table, each log estimated as one, written into out.
+PreparedEstimate prepare_log_table(const EstimateRequest& r, const std::vector<std::string>& logs,
+                                   FieldChecks& checks, PreparedEstimate& p) {
   const bool follow = !r.follow_port.empty();
-  if (r.follow_baud && !follow)
-    checks.problem("follow.baud", field_ref("follow.baud") + " is the serial port's rate for " +
-                                      field_ref("follow.port") +
-                                      "; a log file has none: drop it, or add " +
-                                      field_ref("follow.port"));
-  const bool monte_carlo = r.mc || r.h_c || r.h_c_err || !r.mc_plot.empty();
-  const std::optional<std::vector<std::string>> many = r.samples ? std::nullopt : many_logs(r.logs);
-  if (monte_carlo && (many || follow))
-    checks.problem("monte_carlo.draws",
-                   field_ref("monte_carlo.draws") +
-                       " and its fields estimate one log's mu_k by Monte Carlo; give one log "
-                       "(not several, nor " +
+  p.job = EstimateJob::kLogTable;
+  if (!r.plot.empty())
+    checks.problem("plot", field_ref("plot") + " draws one log's signal; with several logs give " +
+                               field_ref("out") + " for the table, or estimate one log with " +
+                               field_ref("plot"));
+  if (follow || !r.follow_raw_log.empty() || r.follow_duration)
+    checks.problem(follow                      ? "follow.port"
+                   : !r.follow_raw_log.empty() ? "follow.raw_log"
+                                               : "follow.duration",
+                   field_ref("follow.port") + ", " + field_ref("follow.raw_log") + " and " +
+                       field_ref("follow.duration") +
+                       " read the rig's serial port, not logs (give one: logs, or " +
                        field_ref("follow.port") + ")");
-  if (many) {
-    p.job = EstimateJob::kLogTable;
-    if (!r.plot.empty())
-      checks.problem("plot", field_ref("plot") +
-                                 " draws one log's signal; with several logs give " +
-                                 field_ref("out") + " for the table, or estimate one log with " +
-                                 field_ref("plot"));
-    if (follow || !r.follow_raw_log.empty() || r.follow_duration)
-      checks.problem(follow                      ? "follow.port"
-                     : !r.follow_raw_log.empty() ? "follow.raw_log"
-                                                 : "follow.duration",
-                     field_ref("follow.port") + ", " + field_ref("follow.raw_log") + " and " +
-                         field_ref("follow.duration") +
-                         " read the rig's serial port, not logs (give one: logs, or " +
-                         field_ref("follow.port") + ")");
-    if (std::find(r.logs.begin(), r.logs.end(), "-") != r.logs.end())
-      checks.problem("logs", "-",
-                     "- (standard input) is one log: estimate it alone, not among others");
-    p.logs = *many;
-    p.table.set_up = p.set_up;
-    p.table.reading = p.reading;
-    p.table.material = r.material;
-    // A material must be one of the paper's (a sidecar's too, checked as each log is read).
-    const PaperTable& paper = paper_table_in(asset_dir(r.assets));
-    p.table.paper = &paper;
-    if (r.material && paper.find(*r.material) == nullptr)
-      checks.problem("material", *r.material, unknown_material_message(paper, *r.material));
-    if (r.temperature)
-      p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
-    checks.throw_if_any();
-    std::vector<InputFile> inputs;
-    for (const std::string& log : p.logs) inputs.push_back({log, "a log"});
-    refuse_overwriting_inputs(r.out, {"estimates.csv", "estimates.json"}, "out", inputs);
-    if (!r.out.empty()) prepare_output_folder(r.out, "out");
-    p.out = r.out;
-    p.warnings = checks.warnings();
-    return p;
+  if (std::find(r.logs.begin(), r.logs.end(), "-") != r.logs.end())
+    checks.problem("logs", "-",
+                   "- (standard input) is one log: estimate it alone, not among others");
+  p.logs = logs;
+  p.table.set_up = p.set_up;
+  p.table.reading = p.reading;
+  p.table.material = r.material;
+  // A material must be one of the paper's (a sidecar's too, checked as each log is read).
+  const PaperTable& paper = paper_table_in(asset_dir(r.assets));
+  p.table.paper = &paper;
+  if (r.material && paper.find(*r.material) == nullptr)
+    checks.problem("material", *r.material, unknown_material_message(paper, *r.material));
+  if (r.temperature)
+    p.table.temperature = checks.quantity(*r.temperature, Dimension::kTemperature, "temperature");
+  checks.throw_if_any();
+  std::vector<InputFile> inputs;
+  for (const std::string& log : p.logs) inputs.push_back({log, "a log"});
+  refuse_overwriting_inputs(r.out, {"estimates.csv", "estimates.json"}, "out", inputs);
+  if (!r.out.empty()) prepare_output_folder(r.out, "out");
+  p.out = r.out;
+  p.warnings = checks.warnings();
+  return p;
+}
+
+// The rig's serial port, estimated as its lines come.
+PreparedEstimate prepare_follow(const EstimateRequest& r, FieldChecks& checks,
+                                PreparedEstimate& p) {
+  p.job = EstimateJob::kFollow;
+  if (!r.logs.empty() || r.samples)
+    checks.problem("follow.port", r.follow_port,
+                   "reads the rig's serial port, not a log file; found both \"" + r.follow_port +
+                       "\" and \"" + (r.logs.empty() ? "" : r.logs.front()) +
+                       "\" (give one: a log, or " + field_ref("follow.port") + ")");
+  p.follow_port = r.follow_port;
+  if (r.follow_baud) {
+    p.follow_baud = checks.quantity(*r.follow_baud, Dimension::kDimensionless, "follow.baud");
+    if (const std::optional<std::string> why = baud_problem(p.follow_baud))
+      checks.problem("follow.baud", quantity_input_text(*r.follow_baud),
+                     *why + ", found " + quantity_input_text(*r.follow_baud));
   }
-  if (!r.out.empty())
-    checks.problem("out", field_ref("out") +
-                              " writes the table of several logs; for one log its result is "
-                              "the estimate itself (or give " +
-                              field_ref("follow.raw_log") + " with " + field_ref("follow.port") +
-                              "), or name several logs");
-  if (follow && (r.material || r.temperature))
-    checks.problem(r.material ? "material" : "temperature",
-                   field_ref("material") + " and " + field_ref("temperature") +
-                       " go with a log or several; the live rig is estimated without them");
-  if (!follow) {
-    // One log's material: the paper's value is printed beside its result.
-    const PaperTable& paper = paper_table_in(asset_dir(r.assets));
-    p.paper = &paper;
-    p.material = read_material_fields(checks, paper, r.material, r.temperature);
-  }
-  if (follow) {
-    p.job = EstimateJob::kFollow;
-    if (!r.logs.empty() || r.samples)
-      checks.problem("follow.port", r.follow_port,
-                     "reads the rig's serial port, not a log file; found both \"" + r.follow_port +
-                         "\" and \"" + (r.logs.empty() ? "" : r.logs.front()) +
-                         "\" (give one: a log, or " + field_ref("follow.port") + ")");
-    p.follow_port = r.follow_port;
-    if (r.follow_baud) {
-      p.follow_baud = checks.quantity(*r.follow_baud, Dimension::kDimensionless, "follow.baud");
-      if (const std::optional<std::string> why = baud_problem(p.follow_baud))
-        checks.problem("follow.baud", quantity_input_text(*r.follow_baud),
-                       *why + ", found " + quantity_input_text(*r.follow_baud));
-    }
-    p.follow_raw_log = r.follow_raw_log;
-    p.follow_duration = checks.quantity(r.follow_duration, Dimension::kTime, "follow.duration");
-    if (p.follow_duration && !(*p.follow_duration > 0.0))
-      checks.problem("follow.duration", quantity_input_text(*r.follow_duration),
-                     "expected a positive time, such as 30s, found " +
-                         quantity_input_text(*r.follow_duration));
-    checks.throw_if_any();
-    refuse_overwriting_inputs(r.plot, "plot",
-                              {{r.follow_raw_log, "the log of the lines received"}});
-    if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
-    if (!r.follow_raw_log.empty()) prepare_output_file(r.follow_raw_log, "follow.raw_log");
-    p.plot = r.plot;
-    p.warnings = checks.warnings();
-    return p;
-  }
+  p.follow_raw_log = r.follow_raw_log;
+  p.follow_duration = checks.quantity(r.follow_duration, Dimension::kTime, "follow.duration");
+  if (p.follow_duration && !(*p.follow_duration > 0.0))
+    checks.problem(
+        "follow.duration", quantity_input_text(*r.follow_duration),
+        "expected a positive time, such as 30s, found " + quantity_input_text(*r.follow_duration));
+  checks.throw_if_any();
+  refuse_overwriting_inputs(r.plot, "plot", {{r.follow_raw_log, "the log of the lines received"}});
+  if (!r.plot.empty()) prepare_output_file(r.plot, "plot");
+  if (!r.follow_raw_log.empty()) prepare_output_file(r.follow_raw_log, "follow.raw_log");
+  p.plot = r.plot;
+  p.warnings = checks.warnings();
+  return p;
+}
+
+// One log (or samples given as arrays), with its plots and a Monte Carlo of mu_k.
+PreparedEstimate prepare_one_log(const EstimateRequest& r, FieldChecks& checks,
+                                 PreparedEstimate& p) {
   p.job = EstimateJob::kOneLog;
   if (r.logs.empty() && !r.samples)
     checks.problem("logs",
@@ -214,6 +167,67 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
   p.mc_plot = r.mc_plot;
   p.warnings = checks.warnings();
   return p;
+}
+
+}  // namespace
+
+PreparedEstimate prepare_estimate(const EstimateRequest& r) {
+  FieldChecks checks;
+  PreparedEstimate p;
+  p.set_up.spacing =
+      checks.positive(r.spacing, Dimension::kLength, "spacing", "the roller spacing");
+  p.set_up.spacing_err =
+      checks.not_negative(r.spacing_err, Dimension::kLength, "spacing_err", "the uncertainty");
+  p.set_up.gravity = checks.positive(r.gravity, Dimension::kAcceleration, "gravity", "g");
+  checks.plausible(p.set_up.spacing, kSpacingRange, "spacing", r.spacing);
+  checks.plausible(p.set_up.gravity, kGravityRange, "gravity", r.gravity);
+  if (const std::optional<fl_estimator::Geometry> g = geometry_from_option(r.geometry))
+    p.set_up.geometry = *g;
+  else
+    checks.problem("geometry", r.geometry,
+                   "expected auto, one or pair, found \"" + r.geometry + "\"");
+  p.reading.columns = r.columns;
+  p.reading.time_unit = r.time_unit;
+  if (r.rate) {
+    p.reading.rate_hz = checks.quantity(*r.rate, Dimension::kFrequency, "rate");
+    if (!checks.has("rate") && (!(p.reading.rate_hz > 0.0) || !std::isfinite(p.reading.rate_hz)))
+      checks.problem("rate", quantity_input_text(*r.rate),
+                     "expected a positive sample rate (for example 1kHz), found \"" +
+                         quantity_input_text(*r.rate) + "\"");
+  }
+  const bool follow = !r.follow_port.empty();
+  if (r.follow_baud && !follow)
+    checks.problem("follow.baud", field_ref("follow.baud") + " is the serial port's rate for " +
+                                      field_ref("follow.port") +
+                                      "; a log file has none: drop it, or add " +
+                                      field_ref("follow.port"));
+  const bool monte_carlo = r.mc || r.h_c || r.h_c_err || !r.mc_plot.empty();
+  const std::optional<std::vector<std::string>> many = r.samples ? std::nullopt : many_logs(r.logs);
+  if (monte_carlo && (many || follow))
+    checks.problem("monte_carlo.draws",
+                   field_ref("monte_carlo.draws") +
+                       " and its fields estimate one log's mu_k by Monte Carlo; give one log "
+                       "(not several, nor " +
+                       field_ref("follow.port") + ")");
+  if (many) return prepare_log_table(r, *many, checks, p);
+  if (!r.out.empty())
+    checks.problem("out", field_ref("out") +
+                              " writes the table of several logs; for one log its result is "
+                              "the estimate itself (or give " +
+                              field_ref("follow.raw_log") + " with " + field_ref("follow.port") +
+                              "), or name several logs");
+  if (follow && (r.material || r.temperature))
+    checks.problem(r.material ? "material" : "temperature",
+                   field_ref("material") + " and " + field_ref("temperature") +
+                       " go with a log or several; the live rig is estimated without them");
+  if (!follow) {
+    // One log's material: the paper's value is printed beside its result.
+    const PaperTable& paper = paper_table_in(asset_dir(r.assets));
+    p.paper = &paper;
+    p.material = read_material_fields(checks, paper, r.material, r.temperature);
+  }
+  if (follow) return prepare_follow(r, checks, p);
+  return prepare_one_log(r, checks, p);
 }
 
 nlohmann::json OneLogEstimate::json() const {

@@ -77,6 +77,34 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                                                  const std::array<double, 2>& surface,
                                                  const std::array<double, 2>& roller_angles) {
   // Guards first: numbers the lab cannot trust stop the run.
+  if (std::optional<RunFailure> failure = guard(t, s, contacts)) return failure;
+
+  // Diagnosis.
+  // Where the plate is from the oscillation's centre.
+  const double x = s.x - centre_;
+  tracker_.add(t, s.x, s.vx);
+  last_t_ = t;
+  if (!first_ && ((previous_x_ < 0.0 && x >= 0.0) || (previous_x_ > 0.0 && x <= 0.0))) ++crossings_;
+  if (std::fabs(x) > max_abs_x_) {
+    max_abs_x_ = std::fabs(x);
+    x_at_max_ = t;
+  }
+  if (!first_ && ((previous_vx_ > 0.0 && s.vx <= 0.0) || (previous_vx_ < 0.0 && s.vx >= 0.0)) &&
+      excursions_.size() < 16)
+    excursions_.push_back(std::fabs(x));
+  previous_vx_ = s.vx;
+  previous_x_ = x;
+  first_ = false;
+  static_assert(kSettleSteps > 0);
+  record_friction_direction(t, x, contacts);
+  const long long step = std::llround(t / rig_.world.time_step);
+  if (step < kSettleSteps) return std::nullopt;
+  record_contacts(t, s, contacts, surface, roller_angles);
+  return std::nullopt;
+}
+
+std::optional<RunFailure> RegimeMonitor::guard(double t, const PlateState& s,
+                                               const std::array<RollerContact, 2>& contacts) const {
   if (!finite(s)) {
     return RunFailure{Regime::kNumericallyFailed, t, "plate", "state",
                       fmt::format("t = {:.6f} s: the plate's state is not finite (x = {}, z = {}, "
@@ -147,22 +175,11 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
                     t, s.y * 1e3, rig_.rollers.length * 1e3,
                     0.5e3 * (rig_.rollers.length + rig_.plate_desc.width))};
   }
+  return std::nullopt;
+}
 
-  // Diagnosis.
-  tracker_.add(t, s.x, s.vx);
-  last_t_ = t;
-  if (!first_ && ((previous_x_ < 0.0 && x >= 0.0) || (previous_x_ > 0.0 && x <= 0.0))) ++crossings_;
-  if (std::fabs(x) > max_abs_x_) {
-    max_abs_x_ = std::fabs(x);
-    x_at_max_ = t;
-  }
-  if (!first_ && ((previous_vx_ > 0.0 && s.vx <= 0.0) || (previous_vx_ < 0.0 && s.vx >= 0.0)) &&
-      excursions_.size() < 16)
-    excursions_.push_back(std::fabs(x));
-  previous_vx_ = s.vx;
-  previous_x_ = x;
-  first_ = false;
-  static_assert(kSettleSteps > 0);
+void RegimeMonitor::record_friction_direction(double t, double x,
+                                              const std::array<RollerContact, 2>& contacts) {
   // Which way friction pushes while the plate rests on both rollers: toward the centre is the
   // restoring force of the oscillator; away from it, there is none. A plate that left a roller
   // within the last turn is landing, not resting: the impacts share its weight as they come.
@@ -186,8 +203,13 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
       ++friction_toward_;
     }
   }
-  const long long step = std::llround(t / rig_.world.time_step);
-  if (step < kSettleSteps) return std::nullopt;
+}
+
+void RegimeMonitor::record_contacts(double t, const PlateState& s,
+                                    const std::array<RollerContact, 2>& contacts,
+                                    const std::array<double, 2>& surface,
+                                    const std::array<double, 2>& roller_angles) {
+  const double weight = mass_ * rig_.gravity_normal;
 
   for (int i = 0; i < 2; ++i) {
     const double speed = std::fabs(surface[i]);
@@ -240,7 +262,6 @@ std::optional<RunFailure> RegimeMonitor::observe(double t, const PlateState& s,
     slips_[i][0] = s.vx - surface[i];
   }
   ++slip_steps_;
-  return std::nullopt;
 }
 
 double RegimeMonitor::stick_start(int roller, double t) const {
@@ -262,70 +283,11 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = failure->message;
     return f;
   }
-  // Friction that pushes the plate away from the centre while it rests on both rollers: no
-  // restoring force (whatever follows: a lift-off, a drift, the plate leaving the rig).
-  if (friction_away_ > friction_toward_) {
-    f.regime = Regime::kNoRestoringForce;
-    f.since = away_first_t_;
-    f.evidence = fmt::format(
-        "while the plate rested on both rollers, the net friction force pushed it "
-        "away from the centre in {} of {} steps (first at t = {:.4f} s: {:+.3g} N "
-        "at x = {:+.2f} mm){}",
-        friction_away_, friction_away_ + friction_toward_, away_first_t_, away_first_force_,
-        away_first_x_ * 1e3, failure ? "; " + failure->message : std::string());
-    return f;
-  }
-  // Thrown farther out at each turn until it left the rig: friction drives the plate away.
-  if (failure && failure->regime == Regime::kLost && !excursions_.empty() &&
-      std::fabs(previous_x_) > 1.5 * std::max(start_abs_x_, 1e-3)) {
-    // The start, each turning point, and where the plate was when it left: the last three grow.
-    std::vector<double> path{start_abs_x_};
-    path.insert(path.end(), excursions_.begin(), excursions_.end());
-    path.push_back(std::fabs(previous_x_));
-    const std::size_t n = path.size();
-    const bool growing = path[n - 1] > path[n - 2] && (n < 3 || path[n - 2] > path[n - 3]);
-    std::string list;
-    for (const double e : path) list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", e * 1e3);
-    if (growing) {
-      f.regime = Regime::kNoRestoringForce;
-      f.since = 0.0;
-      f.evidence = fmt::format(
-          "each excursion went farther from the centre ({} mm) until the plate left "
-          "the rig: friction drives it away{}; {}",
-          list,
-          tip_since_
-              ? fmt::format(" (it lifted off roller {} at t = {:.4f} s)", tip_roller_, *tip_since_)
-              : std::string(),
-          failure->message);
-      return f;
-    }
-  }
-  // Drifting off: the plate never came back through the centre and got farther out.
-  if (crossings_ == 0 && max_abs_x_ > 1.5 * std::max(start_abs_x_, 1e-3)) {
-    f.regime = Regime::kNoRestoringForce;
-    f.since = 0.0;
-    f.evidence = fmt::format(
-        "the plate moved away from the centre, from |x| = {:.1f} mm to {:.1f} mm "
-        "at t = {:.3f} s, and never came back{}",
-        start_abs_x_ * 1e3, max_abs_x_ * 1e3, x_at_max_,
-        failure ? "; " + failure->message : std::string());
-    return f;
-  }
+  if (no_restoring_force(failure, f)) return f;
   // Brief lift-offs that keep coming and going are jumps, not a tip: the motion is read on, and
   // the jumps are reported with it.
   const bool jumps = lift_offs_are_jumps();
-  if (jumps) {
-    f.jump_list = this->jumps();
-    f.jumps = static_cast<int>(f.jump_list.size());
-    f.first_jump = f.jump_list.front().start;
-    double longest = 0.0, highest = 0.0;
-    for (const PlateJump& l : f.jump_list) {
-      longest = std::max(longest, l.end - l.start);
-      highest = std::max(highest, l.height);
-    }
-    f.longest_jump = longest;
-    f.highest_jump = highest;
-  }
+  if (jumps) record_jumps(f);
   // Lifting off a roller is the cause when it came first; the plate may have left the rig after.
   if (!jumps && tip_since_ && (!failure || *tip_since_ <= failure->time)) {
     f.regime = Regime::kTips;
@@ -372,6 +334,78 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
         previous_x_ * 1e3);
     return f;
   }
+  read_motion(jumps, f);
+  return f;
+}
+
+bool RegimeMonitor::no_restoring_force(const std::optional<RunFailure>& failure,
+                                       RegimeFinding& f) const {
+  // Friction that pushes the plate away from the centre while it rests on both rollers: no
+  // restoring force (whatever follows: a lift-off, a drift, the plate leaving the rig).
+  if (friction_away_ > friction_toward_) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = away_first_t_;
+    f.evidence = fmt::format(
+        "while the plate rested on both rollers, the net friction force pushed it "
+        "away from the centre in {} of {} steps (first at t = {:.4f} s: {:+.3g} N "
+        "at x = {:+.2f} mm){}",
+        friction_away_, friction_away_ + friction_toward_, away_first_t_, away_first_force_,
+        away_first_x_ * 1e3, failure ? "; " + failure->message : std::string());
+    return true;
+  }
+  // Thrown farther out at each turn until it left the rig: friction drives the plate away.
+  if (failure && failure->regime == Regime::kLost && !excursions_.empty() &&
+      std::fabs(previous_x_) > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    // The start, each turning point, and where the plate was when it left: the last three grow.
+    std::vector<double> path{start_abs_x_};
+    path.insert(path.end(), excursions_.begin(), excursions_.end());
+    path.push_back(std::fabs(previous_x_));
+    const std::size_t n = path.size();
+    const bool growing = path[n - 1] > path[n - 2] && (n < 3 || path[n - 2] > path[n - 3]);
+    std::string list;
+    for (const double e : path) list += fmt::format("{}{:.1f}", list.empty() ? "" : ", ", e * 1e3);
+    if (growing) {
+      f.regime = Regime::kNoRestoringForce;
+      f.since = 0.0;
+      f.evidence = fmt::format(
+          "each excursion went farther from the centre ({} mm) until the plate left "
+          "the rig: friction drives it away{}; {}",
+          list,
+          tip_since_
+              ? fmt::format(" (it lifted off roller {} at t = {:.4f} s)", tip_roller_, *tip_since_)
+              : std::string(),
+          failure->message);
+      return true;
+    }
+  }
+  // Drifting off: the plate never came back through the centre and got farther out.
+  if (crossings_ == 0 && max_abs_x_ > 1.5 * std::max(start_abs_x_, 1e-3)) {
+    f.regime = Regime::kNoRestoringForce;
+    f.since = 0.0;
+    f.evidence = fmt::format(
+        "the plate moved away from the centre, from |x| = {:.1f} mm to {:.1f} mm "
+        "at t = {:.3f} s, and never came back{}",
+        start_abs_x_ * 1e3, max_abs_x_ * 1e3, x_at_max_,
+        failure ? "; " + failure->message : std::string());
+    return true;
+  }
+  return false;
+}
+
+void RegimeMonitor::record_jumps(RegimeFinding& f) const {
+  f.jump_list = this->jumps();
+  f.jumps = static_cast<int>(f.jump_list.size());
+  f.first_jump = f.jump_list.front().start;
+  double longest = 0.0, highest = 0.0;
+  for (const PlateJump& l : f.jump_list) {
+    longest = std::max(longest, l.end - l.start);
+    highest = std::max(highest, l.height);
+  }
+  f.longest_jump = longest;
+  f.highest_jump = highest;
+}
+
+void RegimeMonitor::read_motion(bool jumped, RegimeFinding& f) const {
   MotionEvidence evidence;
   evidence.sticks = sticks_;
   evidence.crossings = tracker_.crossings();
@@ -399,20 +433,19 @@ RegimeFinding RegimeMonitor::finding(const std::optional<RunFailure>& failure) c
     f.evidence = unresolved->reason + " (the run looked " + regime_name(motion.regime) + ": " +
                  motion.evidence + ")";
     f.motion = std::move(motion);
-    return f;
+    return;
   }
   if (motion.regime == Regime::kOscillates && sticks_.empty())
     f.evidence = fmt::format(
         "both rollers slipped throughout (the plate's speed stayed at least "
         "{:.1f} % of the surface speed away from each roller's)",
         100.0 * slip_ratio_min_);
-  if (jumps)
+  if (jumped)
     f.evidence += fmt::format(
         "; the plate jumped off a roller {} times from t = {:.4f} s (locked to the "
         "roller's turn), each time back within {:.1f} ms, at most {:.3f} mm high",
         f.jumps, *f.first_jump, *f.longest_jump * 1e3, *f.highest_jump * 1e3);
   f.motion = std::move(motion);
-  return f;
 }
 
 std::vector<PlateJump> RegimeMonitor::jumps() const {

@@ -83,6 +83,23 @@ class RegimeMonitor {
   const OscillationTracker& tracker() const { return tracker_; }
 
  private:
+  // The finding's parts: no restoring force (friction pushing the plate away, excursions that
+  // grew until it left, a drift that never came back), written into `f` when so; the jumps; and
+  // the motion read from the turning points and sticks, with a law the step does not resolve.
+  bool no_restoring_force(const std::optional<RunFailure>& failure, RegimeFinding& f) const;
+  void record_jumps(RegimeFinding& f) const;
+  void read_motion(bool jumped, RegimeFinding& f) const;
+  // The guards of one step: a state the lab cannot trust or a plate that left the rig, as the
+  // failure that stops the run; none when the step may be diagnosed.
+  std::optional<RunFailure> guard(double t, const PlateState& plate,
+                                  const std::array<RollerContact, 2>& contacts) const;
+  // Which way friction pushes the plate, resting on both rollers, `x` from the centre.
+  void record_friction_direction(double t, double x, const std::array<RollerContact, 2>& contacts);
+  // Each roller's slip, lift-offs and stick episodes, and how fast the rollers turn.
+  void record_contacts(double t, const PlateState& plate,
+                       const std::array<RollerContact, 2>& contacts,
+                       const std::array<double, 2>& surface,
+                       const std::array<double, 2>& roller_angles);
   // When a stick on `roller` found at step time t began, between the last step and t.
   double stick_start(int roller, double t) const;
   const CompiledRig& rig_;

@@ -29,7 +29,6 @@
 #include "cli/option_quantity.hpp"
 #include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
-#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/hall_log.hpp"
 #include "io/input_error.hpp"
@@ -42,6 +41,7 @@
 #include "lab/request/outcome.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
+#include "text/utf8.hpp"
 
 namespace fl::cli {
 namespace {

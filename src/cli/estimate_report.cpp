@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "core/utf8.hpp"
 #include "io/json_value.hpp"
+#include "text/utf8.hpp"
 
 namespace fl::cli {
 namespace {

@@ -4,9 +4,9 @@
 #include <numbers>
 #include <string>
 
-#include "core/describe.hpp"
 #include "core/domain_check.hpp"
 #include "core/units.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

@@ -5,8 +5,8 @@
 #include <string>
 
 #include "core/analytic_model.hpp"
-#include "core/describe.hpp"
 #include "core/units.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

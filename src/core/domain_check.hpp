@@ -6,7 +6,7 @@
 #include <string>
 
 #include "core/analytic_model.hpp"
-#include "core/describe.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

@@ -8,8 +8,8 @@
 
 #include "core/analytic_model.hpp"
 #include "core/averaged_motion.hpp"
-#include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

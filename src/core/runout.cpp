@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

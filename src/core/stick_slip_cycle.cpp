@@ -4,8 +4,8 @@
 #include <string>
 
 #include "core/analytic_model.hpp"
-#include "core/describe.hpp"
 #include "core/domain_check.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "core/analytic_model.hpp"
-#include "core/describe.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <span>
 
-#include "core/text.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

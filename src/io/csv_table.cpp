@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "core/text.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

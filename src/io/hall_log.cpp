@@ -7,9 +7,9 @@
 #include <map>
 #include <sstream>
 
-#include "core/text.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -5,11 +5,11 @@
 #include <sstream>
 #include <utility>
 
-#include "core/text.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/log_line.hpp"
 #include "io/log_reading_error.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

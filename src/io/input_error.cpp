@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 

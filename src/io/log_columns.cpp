@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <array>
 
-#include "core/text.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -5,7 +5,7 @@
 #include <string>
 #include <system_error>
 
-#include "core/text.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 
 #include "core/plausible_range.hpp"
-#include "core/text.hpp"
 #include "core/units.hpp"
 #include "io/csv_table.hpp"
 #include "io/estimate_table_columns.hpp"
 #include "io/suggest.hpp"
 #include "io/text_file.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -1,6 +1,6 @@
 #include "render/font.hpp"
 
-#include "core/utf8.hpp"
+#include "text/utf8.hpp"
 
 namespace fl::render {
 

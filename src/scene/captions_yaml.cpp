@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "core/text.hpp"
-#include "core/utf8.hpp"
 #include "io/yaml_node.hpp"
+#include "text/text.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

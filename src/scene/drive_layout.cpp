@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/describe.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/describe.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 

@@ -7,10 +7,10 @@
 #include <string_view>
 
 #include "core/analytic_model.hpp"
-#include "core/describe.hpp"
 #include "core/plausible_range.hpp"
 #include "core/units.hpp"
 #include "scene/drive_layout.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

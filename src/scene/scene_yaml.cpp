@@ -5,13 +5,13 @@
 #include <string>
 #include <string_view>
 
-#include "core/utf8.hpp"
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
 #include "scene/ramp_yaml.hpp"
 #include "scene/rig_parts_yaml.hpp"
 #include "scene/scene_checks.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

@@ -9,7 +9,6 @@
 
 #include "core/analytic_model.hpp"
 #include "core/plausible_range.hpp"
-#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -17,6 +16,7 @@
 #include "lab/compare/simulated_period.hpp"
 #include "lab/sweep/sweep_pool.hpp"
 #include "scene/compiled_rig.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

@@ -9,7 +9,6 @@
 
 #include "core/oscillation_tracker.hpp"
 #include "core/sample_summary.hpp"
-#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
@@ -17,6 +16,7 @@
 #include "lab/logs/log_table.hpp"
 #include "lab/run/experiment.hpp"
 #include "scene/compiled_rig.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

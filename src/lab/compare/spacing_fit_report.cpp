@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
-#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/json_value.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

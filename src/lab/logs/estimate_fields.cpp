@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core/utf8.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

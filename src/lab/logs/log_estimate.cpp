@@ -8,12 +8,12 @@
 #include <fmt/format.h>
 
 #include "core/plausible_range.hpp"
-#include "core/utf8.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
 #include "io/json_value.hpp"
 #include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

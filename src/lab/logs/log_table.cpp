@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "core/utf8.hpp"
 #include "io/csv_table.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -14,6 +13,7 @@
 #include "lab/logs/checked_reading.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_table_fields.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 

@@ -1,11 +1,11 @@
 #include "lab/logs/log_table_fields.hpp"
 
-#include "core/utf8.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {
 
-// A text a row holds, a file name that is not UTF-8 escaped (core/utf8.hpp); none when empty.
+// A text a row holds, a file name that is not UTF-8 escaped (text/utf8.hpp); none when empty.
 FieldValue text_or_none(const std::string& text) {
   return text.empty() ? FieldValue() : FieldValue::text(escape_invalid_utf8(text));
 }

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 
 #include "core/paper_table.hpp"
-#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/hall_log.hpp"
@@ -22,6 +21,7 @@
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
 #include "lab/request/scene_source.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

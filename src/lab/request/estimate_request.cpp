@@ -10,7 +10,6 @@
 
 #include <fmt/format.h>
 
-#include "core/utf8.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -19,6 +18,7 @@
 #include "lab/logs/checked_reading.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 namespace {

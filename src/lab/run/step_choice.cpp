@@ -5,7 +5,6 @@
 
 #include <fmt/format.h>
 
-#include "core/describe.hpp"
 #include "core/integrator_error.hpp"
 #include "estimator/period_estimator.h"
 #include "io/field_ref.hpp"
@@ -13,6 +12,7 @@
 #include "lab/run/regime_theory.hpp"
 #include "scene/compiled_rig.hpp"
 #include "sensor/hall_timing.hpp"
+#include "text/describe.hpp"
 
 namespace fl {
 namespace {

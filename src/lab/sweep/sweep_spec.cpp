@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 
 #include "core/integrator_error.hpp"
-#include "core/text.hpp"
 #include "core/units.hpp"
 #include "io/text_file.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "core/text.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

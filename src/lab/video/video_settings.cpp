@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/text.hpp"
 #include "io/input_error.hpp"
 #include "lab/video/video_settings.hpp"
 #include "scene/video_format.hpp"
+#include "text/text.hpp"
 
 namespace fl {
 namespace {

@@ -1,5 +1,5 @@
 // trim: blanks (or the characters asked for) off both ends, nothing from the middle.
-#include "core/text.hpp"
+#include "text/text.hpp"
 
 #include <gtest/gtest.h>
 

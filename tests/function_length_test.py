@@ -4,9 +4,10 @@ of 121 fails by name and line, braces in strings and comments do not count, a li
 not grow and must leave the list once split."""
 
 import pathlib
-import subprocess
 import sys
-import tempfile
+
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from tool_on_tree import run_on_tree  # noqa: E402
 
 TOOL = pathlib.Path(sys.argv[1]) / "tools" / "check-function-length"
 
@@ -17,14 +18,7 @@ def function(name, lines):
 
 
 def check(files):
-    root = pathlib.Path(tempfile.mkdtemp(prefix="length-"))
-    for name, text in files.items():
-        path = root / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-    done = subprocess.run([sys.executable, str(TOOL), str(root)], capture_output=True, text=True,
-                          check=False)
-    return done.returncode, done.stdout
+    return run_on_tree(TOOL, files)
 
 
 cases = [

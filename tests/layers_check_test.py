@@ -4,26 +4,16 @@ render, a core file including lab, and a CMakeLists.txt building a source from a
 each fail, named by file and line."""
 
 import pathlib
-import subprocess
 import sys
-import tempfile
+
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from tool_on_tree import run_on_tree  # noqa: E402
 
 TOOL = pathlib.Path(sys.argv[1]) / "tools" / "check-layers"
 
 
-def tree(files):
-    root = pathlib.Path(tempfile.mkdtemp(prefix="layers-"))
-    for name, text in files.items():
-        path = root / name
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
-    return root
-
-
 def check(files):
-    done = subprocess.run([sys.executable, str(TOOL), str(tree(files))], capture_output=True,
-                          text=True, check=False)
-    return done.returncode, done.stdout
+    return run_on_tree(TOOL, files)
 
 
 failures = []

@@ -13,6 +13,7 @@
 
 #include "api/api_fields.hpp"
 #include "io/input_error.hpp"
+#include "io/serial_port.hpp"
 #include "lab/live/live_run.hpp"
 #include "lab/logs/live_log_estimate.hpp"
 #include "lab/request/lab_data.hpp"
@@ -154,18 +155,19 @@ json board_reading(const BoardSamples& board, double spacing, double gravity) {
       /*keep_samples=*/false);
   json changes = json::array();
   std::size_t sent = 0;
-  std::string geometry = "unknown";
+  fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry;
   for (std::size_t i = 0; i < board.adc.size(); ++i) {
     live.add(LogSample{
         .t_s = board.t_us[i] * 1e-6, .adc = board.adc[i], .line = static_cast<int>(i) + 3});
-    const json reading = board_reading_json(live);
+    // The event's reading is made only when it changes, not at each of the 40 000 samples.
     const std::vector<EstimatedPeriod>& periods = live.host().periods();
-    if (periods.size() == sent && reading["geometry"] == geometry) continue;
+    const fl_estimator::Geometry now = live.host().estimator().geometry();
+    if (periods.size() == sent && now == geometry) continue;
     json change{{"samples", i + 1}, {"periods", periods_json(periods, sent)}};
-    change.update(reading);
+    change.update(board_reading_json(live));
     changes.push_back(std::move(change));
     sent = periods.size();
-    geometry = reading["geometry"];
+    geometry = now;
   }
   return {{"spacing", spacing}, {"changes", std::move(changes)}};
 }
@@ -197,6 +199,8 @@ json record_api(const ApiRecordingRequest& request) {
           {"setups", std::move(setups)},
           {"board",
            {{"header", kBoardHeader},
+            {"baud", kFirmwareBaud},
+            {"shown_s", BoardWatch::kShownSeconds},
             {"t_us", board.t_us},
             {"adc", board.adc},
             {"readings", std::move(readings)}}}};

@@ -30,9 +30,9 @@ struct ApiRecordingRequest {
 };
 
 // {"declaration", "lab", "frame_interval_s", "setups": [{"scene", "set", "status", "body",
-// "frames": [{"state", "row"}], "summary"}], "board": {"header", "sample_us", "adc": [...],
-// "readings": [{"spacing", "changes": [{"samples", "periods", "estimate", "geometry"}]}]}}; see
-// web/tests/mock_server.mjs for how it is played.
+// "frames": [{"state", "row"}], "summary"}], "board": {"header", "baud", "shown_s", "t_us": [...],
+// "adc": [...], "readings": [{"spacing", "changes": [{"samples", "periods", "estimate",
+// "geometry"}]}]}}; see web/tests/mock_server.mjs for how it is played.
 nlohmann::json record_api(const ApiRecordingRequest& request);
 
 }  // namespace fl::serve

@@ -8,8 +8,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr double kShownSeconds = 10.0;  // of samples an event carries at most
-
 }  // namespace
 
 BoardWatch::BoardWatch(const LogSetUp& set_up) : set_up_(set_up) {}

@@ -17,6 +17,9 @@ namespace fl::serve {
 
 class BoardWatch {
  public:
+  // The samples an event carries at most, the last of them: the page's plot of the rig.
+  static constexpr double kShownSeconds = 10.0;  // s
+
   // l, dl, g and the pulses per period the estimate is made with.
   explicit BoardWatch(const LogSetUp& set_up);
 

@@ -50,8 +50,6 @@ export async function readRecording(path = process.env.FRICTIONLAB_MOCK_RECORDIN
 // the page's spacing (the recording has a reading for each spacing of its set-ups).
 export const FAKE_RIG_PORT = "/dev/ttyFAKE0";
 const FAKE_RIG_BOOT_S = 0.3; // an Uno resets when its port opens: nothing comes for this long
-const FAKE_RIG_BAUD = 250000; // the firmware's (io/serial_port.hpp)
-const SHOWN_S = 10; // of samples a `rig` event carries at most, as the lab's
 
 class FakeBoard {
   constructor(board) {
@@ -132,7 +130,7 @@ class FakeBoard {
       ports: this.mayChoose ? this.ports : [], // a shared server lists none
       may_choose: this.mayChoose,
       port: this.port,
-      baud: this.port === null ? null : FAKE_RIG_BAUD,
+      baud: this.port === null ? null : this.board.baud, // the firmware's, as recorded
       state: this.state,
       message: this.message,
       lines: this.lines,
@@ -150,7 +148,8 @@ class FakeBoard {
     }
     const last = this.sampleCount > 0 ? (tUs[this.sampleCount - 1] - tUs[0]) * 1e-6 : 0;
     let first = cursor.sample;
-    while (first < this.sampleCount && (tUs[first] - tUs[0]) * 1e-6 < last - SHOWN_S) first++;
+    while (first < this.sampleCount && (tUs[first] - tUs[0]) * 1e-6 < last - this.board.shown_s)
+      first++;
     const hall = [];
     for (let i = first; i < this.sampleCount; i++) hall.push([(tUs[i] - tUs[0]) * 1e-6, adc[i]]);
     const changes = this.changes(spacing);

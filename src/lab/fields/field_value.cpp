@@ -3,6 +3,7 @@
 #include <type_traits>
 
 #include "io/json_value.hpp"
+#include "text/utf8.hpp"
 
 namespace fl {
 
@@ -20,6 +21,14 @@ json FieldValue::json() const {
           return nlohmann::json(v);
       },
       value_);
+}
+
+FieldValue escaped_text(const std::string& text) {
+  return FieldValue::text(escape_invalid_utf8(text));
+}
+
+FieldValue escaped_text_or_none(const std::string& text) {
+  return text.empty() ? FieldValue() : escaped_text(text);
 }
 
 }  // namespace fl

@@ -59,4 +59,10 @@ enum class FieldType {
   kObject,   // a nested object (its keys in `meaning`)
 };
 
+// A text as read from outside (a file's name, a header's words, a label), bytes that are not
+// UTF-8 escaped (text/utf8.hpp): JSON's strings are UTF-8. The second is none when the text is
+// empty.
+FieldValue escaped_text(const std::string& text);
+FieldValue escaped_text_or_none(const std::string& text);
+
 }  // namespace fl

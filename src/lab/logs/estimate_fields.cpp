@@ -4,7 +4,6 @@
 #include <string>
 
 #include "lab/logs/geometry_check.hpp"
-#include "text/utf8.hpp"
 
 namespace fl {
 namespace {
@@ -13,16 +12,6 @@ using E = const EstimateOf&;
 using V = FieldValue;
 using T = FieldType;
 using P = EstimatePart;
-
-// A text as read (a header's names, a file's), bytes that are not UTF-8 escaped (a Latin-1 "µs"):
-// JSON's strings are UTF-8.
-V escaped(const std::string& s) {
-  return V::text(escape_invalid_utf8(s));
-}
-
-V escaped_or_none(const std::string& s) {
-  return s.empty() ? V() : escaped(s);
-}
 
 V count(std::int64_t n) {
   return V::whole(n);
@@ -56,12 +45,12 @@ std::vector<EstimateField> reading_fields() {
        .part = P::kReading,
        .type = T::kText,
        .meaning = "the log as given (`<stdin>`, a folder, a port)",
-       .get = [](E e) { return escaped(e.log.path); }},
+       .get = [](E e) { return escaped_text(e.log.path); }},
       {.json = "file",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "the file read (a folder's log; a followed port's raw log, or the port)",
-       .get = [](E e) { return escaped(e.log.file); }},
+       .get = [](E e) { return escaped_text(e.log.file); }},
       {.json = "format",
        .part = P::kReading,
        .type = T::kText,
@@ -84,18 +73,18 @@ std::vector<EstimateField> reading_fields() {
        .type = T::kText,
        .meaning = "the name of the time column used (`field 1` by position)",
        .null_when = "the samples are timed by a rate (the request's field `rate`)",
-       .get = [](E e) { return escaped_or_none(e.log.reading.time_column); }},
+       .get = [](E e) { return escaped_text_or_none(e.log.reading.time_column); }},
       {.json = "adc_column",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "the name of the value column used (`field 2` by position)",
-       .get = [](E e) { return escaped(e.log.reading.adc_column); }},
+       .get = [](E e) { return escaped_text(e.log.reading.adc_column); }},
       {.json = "time_unit",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "`us`, `ms` or `s`",
        .null_when = "the samples are timed by a rate (the request's field `rate`)",
-       .get = [](E e) { return escaped_or_none(e.log.reading.time_unit); }},
+       .get = [](E e) { return escaped_text_or_none(e.log.reading.time_unit); }},
       {.json = "time_unit_from",
        .part = P::kReading,
        .type = T::kText,

@@ -21,9 +21,9 @@ struct EstimateOf {
 
 // Where a key comes from, in the order the docs list them.
 enum class EstimatePart {
-  kReading,  // how the log was read (log_reading_json)
+  kReading,  // how the log was read and what was left out of it
   kSignal,   // the signal and the estimator's state
-  kVerdict,  // the geometry, the periods' counts, T +- dT and mu_k +- d mu_k (verdict_json)
+  kVerdict,  // the geometry, the periods' counts, T +- dT and mu_k +- d mu_k (the Hall plot's too)
   kRequest,  // added by the request that ran it (a plot, a Monte Carlo, the paper's value)
 };
 

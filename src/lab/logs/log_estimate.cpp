@@ -269,11 +269,6 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
             100.0 * static_cast<double>(est.set_up.config().tolerance), look, note));
 }
 
-nlohmann::json log_reading_json(const HallLog& log) {
-  const LogEstimate none;
-  return part_json(log, none, EstimatePart::kReading);
-}
-
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
   nlohmann::json out = nlohmann::json::object();
   for (const EstimateField& f : estimate_fields())

@@ -82,9 +82,6 @@ const char* geometry_name(fl_estimator::Geometry geometry);
 // "pair"; nothing for any other text.
 std::optional<fl_estimator::Geometry> geometry_from_option(std::string_view text);
 
-// How the log was read and what was left out of it (docs/cli.md, `estimate --json`).
-nlohmann::json log_reading_json(const HallLog& log);
-
 // The result as `frictionlab estimate --json` prints it (docs/cli.md), without "plot".
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& estimate);
 

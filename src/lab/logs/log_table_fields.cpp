@@ -1,16 +1,6 @@
 #include "lab/logs/log_table_fields.hpp"
 
-#include "text/utf8.hpp"
-
 namespace fl {
-namespace {
-
-// A text a row holds, a file name that is not UTF-8 escaped (text/utf8.hpp); none when empty.
-FieldValue text_or_none(const std::string& text) {
-  return text.empty() ? FieldValue() : FieldValue::text(escape_invalid_utf8(text));
-}
-
-}  // namespace
 
 const std::vector<LogTableField>& log_table_fields() {
   using R = const LogTableRow&;
@@ -22,17 +12,17 @@ const std::vector<LogTableField>& log_table_fields() {
        .csv = "label",
        .type = T::kText,
        .meaning = "the log's name (its file's, or its sidecar's `label`)",
-       .get = [](R r) { return V::text(escape_invalid_utf8(r.label)); }},
+       .get = [](R r) { return escaped_text(r.label); }},
       {.json = "log",
        .csv = "log",
        .type = T::kText,
        .meaning = "the file read",
-       .get = [](R r) { return V::text(escape_invalid_utf8(r.log)); }},
+       .get = [](R r) { return escaped_text(r.log); }},
       {.json = "sidecar",
        .type = T::kText,
        .meaning = "the sidecar read",
        .null_when = "the log has no sidecar",
-       .get = [](R r) { return text_or_none(r.sidecar); }},
+       .get = [](R r) { return escaped_text_or_none(r.sidecar); }},
       {.json = "status",
        .csv = "status",
        .type = T::kText,
@@ -60,7 +50,7 @@ const std::vector<LogTableField>& log_table_fields() {
        .type = T::kText,
        .meaning = "the plate's material, a key of the paper's Table I",
        .null_when = "neither the sidecar nor the request (`material`) names one",
-       .get = [](R r) { return text_or_none(r.material.value_or("")); }},
+       .get = [](R r) { return escaped_text_or_none(r.material.value_or("")); }},
       {.json = "temperature_k",
        .csv = "friction.temperature",
        .unit = "K",
@@ -72,7 +62,7 @@ const std::vector<LogTableField>& log_table_fields() {
        .type = T::kText,
        .meaning = "`one-pulse` or `pair`: pulses per period",
        .null_when = kFailed,
-       .get = [](R r) { return text_or_none(r.geometry); }},
+       .get = [](R r) { return escaped_text_or_none(r.geometry); }},
       {.json = "period_s",
        .csv = "period",
        .unit = "s",
@@ -124,7 +114,7 @@ const std::vector<LogTableField>& log_table_fields() {
        .type = T::kText,
        .meaning = "why the log gave no period, located in it",
        .null_when = "the log gave a period",
-       .get = [](R r) { return text_or_none(r.error); }},
+       .get = [](R r) { return escaped_text_or_none(r.error); }},
   };
   return fields;
 }

@@ -15,9 +15,9 @@
 
 #include "render/components.hpp"
 #include "render/demo_scene.hpp"
-#include "render/png.hpp"
-#include "render/renderer.hpp"
-#include "render/video.hpp"
+#include "render/gl/renderer.hpp"
+#include "render/sinks/png.hpp"
+#include "render/sinks/video.hpp"
 
 namespace {
 

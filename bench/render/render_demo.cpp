@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "render/demo_scene.hpp"
-#include "render/png.hpp"
-#include "render/renderer.hpp"
-#include "render/video.hpp"
+#include "render/gl/renderer.hpp"
+#include "render/sinks/png.hpp"
+#include "render/sinks/video.hpp"
 
 namespace {
 

@@ -27,11 +27,11 @@
 
 #include "../../tests/support/rig_fixture.hpp"
 #include "render/components.hpp"
-#include "render/renderer.hpp"
-#include "render/rig_camera.hpp"
-#include "render/rig_overlay.hpp"
-#include "render/rig_view.hpp"
-#include "render/video.hpp"
+#include "render/gl/renderer.hpp"
+#include "render/rig/rig_camera.hpp"
+#include "render/rig/rig_overlay.hpp"
+#include "render/rig/rig_view.hpp"
+#include "render/sinks/video.hpp"
 
 namespace {
 

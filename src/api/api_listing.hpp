@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "lab/fields/field_listing.hpp"
+#include "lab/listings/field_listing.hpp"
 
 namespace fl::api {
 

@@ -1,8 +1,8 @@
 // frictionlab estimate LOG: T +- dT and mu_k +- d mu_k from a log of the real rig's Hall sensor,
 // by the very estimator the rig's Arduino runs (src/estimator/period_estimator.h); with --follow
-// PORT, live from the rig's serial port (cli/estimate_follow). Reading the log is io/hall_log,
-// the estimate lab/log_estimate, the geometry's check lab/geometry_check; this command reads the
-// options and prints (cli/estimate_report).
+// PORT, live from the rig's serial port (cli/estimate_follow). Reading the log is
+// hall_log/hall_log, the estimate lab/log_estimate, the geometry's check lab/geometry_check; this
+// command reads the options and prints (cli/estimate_report).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -29,10 +29,10 @@
 #include "cli/option_quantity.hpp"
 #include "cli/paper_value_text.hpp"
 #include "cli/plot_failure.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/log_files.hpp"
 #include "io/atomic_file.hpp"
-#include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "io/log_files.hpp"
 #include "lab/analytic/analytic_report.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"

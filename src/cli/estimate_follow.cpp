@@ -10,11 +10,11 @@
 
 #include "cli/estimate_report.hpp"
 #include "cli/stop_signals.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/serial_port.hpp"
 #include "io/appending_file.hpp"
 #include "io/field_ref.hpp"
-#include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "io/serial_port.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/live_capture.hpp"
 #include "lab/logs/live_log_estimate.hpp"

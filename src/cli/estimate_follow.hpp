@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "io/hall_log.hpp"
-#include "io/serial_port.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/serial_port.hpp"
 #include "lab/logs/log_estimate.hpp"
 
 namespace fl::cli {

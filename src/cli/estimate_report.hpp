@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"
 

@@ -1,6 +1,6 @@
-// frictionlab-fields FILE...: writes the listings of a run's fields (lab/fields/field_listing.hpp)
-// and of the web API's bodies (api/api_listing.hpp) into each file's generated blocks; @LIST names
-// a file that lists the files, one a line. With
+// frictionlab-fields FILE...: writes the listings of a run's fields
+// (lab/listings/field_listing.hpp) and of the web API's bodies (api/api_listing.hpp) into each
+// file's generated blocks; @LIST names a file that lists the files, one a line. With
 // --check, writes nothing and exits 1 naming each file whose blocks are not what the declaration
 // gives (tools/generate-fields mends them).
 #include <cstdio>
@@ -13,7 +13,7 @@
 
 #include "api/api_listing.hpp"
 #include "io/atomic_file.hpp"
-#include "lab/fields/field_listing.hpp"
+#include "lab/listings/field_listing.hpp"
 
 int main(int argc, char** argv) {
   bool check = false;

@@ -12,8 +12,8 @@
 
 #include "cli/commands.hpp"
 #include "cli/stop_signals.hpp"
+#include "hall_log/serial_port.hpp"
 #include "io/input_error.hpp"
-#include "io/serial_port.hpp"
 #include "lab/request/lab_data.hpp"
 
 #if FRICTIONLAB_WITH_SERVE

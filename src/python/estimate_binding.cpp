@@ -8,7 +8,7 @@
 
 #include <pybind11/numpy.h>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/geometry_check.hpp"

@@ -12,7 +12,7 @@
 #include <pybind11/numpy.h>
 
 #include "core/cycle_tracker.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 #include "lab/run/experiment.hpp"
 #include "lab/run/regime_monitor.hpp"
 #include "sensor/hall_signal.hpp"

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <string_view>
 
 #include "io/missing_component.hpp"
 
@@ -45,5 +46,13 @@ class RenderError : public std::runtime_error {
 // type of every layer (io/missing_component.hpp, with throw_missing). Not a RenderError: catch
 // both where both can come.
 using MissingComponent = fl::MissingComponent;
+
+// What a build without the drawing layer (FRICTIONLAB_WITH_RENDER=OFF) throws from its stubs
+// (font_stub.cpp, gl/renderer_stub.cpp, sinks/png_stub.cpp): `what` names the part asked for.
+[[noreturn]] inline void missing_drawing_layer(std::string_view what) {
+  throw_missing(what, "the drawing layer (libpng, stb_truetype, DejaVu Sans)",
+                "configure with -DFRICTIONLAB_WITH_RENDER=ON after apt-get install "
+                "libpng-dev libstb-dev libgl-dev fonts-dejavu-core");
+}
 
 }  // namespace fl::render

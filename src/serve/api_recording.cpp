@@ -12,8 +12,8 @@
 #include <fmt/format.h>
 
 #include "api/api_fields.hpp"
+#include "hall_log/serial_port.hpp"
 #include "io/input_error.hpp"
-#include "io/serial_port.hpp"
 #include "lab/live/live_run.hpp"
 #include "lab/logs/live_log_estimate.hpp"
 #include "lab/request/lab_data.hpp"

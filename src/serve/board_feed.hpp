@@ -15,9 +15,9 @@
 #include <thread>
 #include <vector>
 
+#include "hall_log/hall_log_reader.hpp"
+#include "hall_log/serial_port.hpp"
 #include "io/appending_file.hpp"
-#include "io/hall_log_reader.hpp"
-#include "io/serial_port.hpp"
 #include "lab/logs/live_capture.hpp"
 
 namespace fl::serve {

@@ -20,8 +20,8 @@
 #include <fmt/format.h>
 #include <httplib.h>
 
+#include "hall_log/serial_ports.hpp"
 #include "io/input_error.hpp"
-#include "io/serial_ports.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "io/serial_port.hpp"
+#include "hall_log/serial_port.hpp"
 
 namespace fl::serve {
 

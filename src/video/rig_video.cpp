@@ -16,15 +16,15 @@
 #include "io/paper_table_yaml.hpp"
 #include "lab/video/caption_values.hpp"
 #include "lab/video/video_module.hpp"
-#include "render/caption_overlay.hpp"
 #include "render/components.hpp"
-#include "render/gl_context.hpp"
-#include "render/png.hpp"
-#include "render/renderer.hpp"
-#include "render/rig_camera.hpp"
-#include "render/rig_overlay.hpp"
-#include "render/rig_view.hpp"
-#include "render/video.hpp"
+#include "render/gl/gl_context.hpp"
+#include "render/gl/renderer.hpp"
+#include "render/rig/caption_overlay.hpp"
+#include "render/rig/rig_camera.hpp"
+#include "render/rig/rig_overlay.hpp"
+#include "render/rig/rig_view.hpp"
+#include "render/sinks/png.hpp"
+#include "render/sinks/video.hpp"
 #include "scene/theory_motion.hpp"
 
 namespace fl {
@@ -206,7 +206,7 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
       render::PngSinkOptions options;
       options.directory = request.frames;
       options.replace_existing = true;
-      // Encoded on a pool of threads beside the drawing (render/png.hpp): one per core with a
+      // Encoded on a pool of threads beside the drawing (render/sinks/png.hpp): one per core with a
       // GPU drawing; one with a software rasteriser, which draws on every core itself (a pool of
       // two there only competed with it; bench/README.md's performance table).
       const std::string drawn_by = context->description();

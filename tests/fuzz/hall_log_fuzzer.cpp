@@ -1,5 +1,5 @@
-// libFuzzer target for the Hall log reader (io/hall_log, io/hall_log_reader) and what follows it
-// for a log that reads: the rig's estimator and the checks of its periods and geometry
+// libFuzzer target for the Hall log reader (hall_log/hall_log, hall_log/hall_log_reader) and what
+// follows it for a log that reads: the rig's estimator and the checks of its periods and geometry
 // (lab/logs/log_estimate, lab/logs/geometry_check). Any input is either read and estimated, or
 // refused with an InputError; anything else (a crash, a sanitizer report, another exception, a
 // hang) is a bug. The first byte picks how the log is read (columns, a rate, a time unit, a
@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"

@@ -2,7 +2,7 @@
 // test executables that create GL contexts, and turns off its record of dynamic TLS: the EGL back
 // end loads Mesa's swrast_dri.so and LLVM with dlopen, whose thread-local blocks GCC 12's runtime
 // can misread into a range that is not memory, killing the leak check at exit (as in the
-// frictionlab executable, src/lab/video/video_module_loader.cpp; docs/rendering.md). Without a
+// frictionlab executable, src/lab/recorder/video_module_loader.cpp; docs/rendering.md). Without a
 // sanitizer nobody calls this function.
 extern "C" const char* __lsan_default_options();
 

@@ -16,11 +16,11 @@
 #include "render/components.hpp"
 #include "render/demo_scene.hpp"
 #include "render/font.hpp"
-#include "render/frame_sink.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl/gl_context.hpp"
 #include "render/mesh_data.hpp"
-#include "render/png.hpp"
-#include "render/video.hpp"
+#include "render/sinks/frame_sink.hpp"
+#include "render/sinks/png.hpp"
+#include "render/sinks/video.hpp"
 
 namespace fl::render {
 namespace {

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "render/components.hpp"
-#include "render/gl_context.hpp"
+#include "render/gl/gl_context.hpp"
 #include "render/image.hpp"
-#include "render/png.hpp"
+#include "render/sinks/png.hpp"
 
 #define FL_REQUIRE_RENDER()                                                               \
   do {                                                                                    \

@@ -20,7 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "api/api_contract.hpp"
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "lab/live/live_run.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/request/session_request.hpp"

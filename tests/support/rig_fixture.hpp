@@ -7,7 +7,7 @@
 #include <string>
 
 #include "assets/mesh_library.hpp"
-#include "render/rig_model.hpp"
+#include "render/rig/rig_model.hpp"
 #include "scene_fixture.hpp"
 
 namespace fl::test {
@@ -18,7 +18,7 @@ inline const Scene& paper_rig() {
 }
 
 // The paper's rig's model, its meshes read through a library of its own; `cut_away_near_side` as
-// the front camera's videos draw it (render/rig_model.hpp).
+// the front camera's videos draw it (render/rig/rig_model.hpp).
 inline render::RigModel paper_rig_model(bool cut_away_near_side = false) {
   assets::MeshLibrary meshes;
   return render::build_rig_model(compile_rig(paper_rig()), &part_catalog(), &meshes,

@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "lab/compare/compare.hpp"
 #include "lab/logs/log_estimate.hpp"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 #include "lab/run/experiment.hpp"
 #include "lab/run/run_summary.hpp"
 #include "scene/compiled_rig.hpp"

@@ -8,8 +8,8 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "hall_log/log_reading_error.hpp"
 #include "io/input_error.hpp"
-#include "io/log_reading_error.hpp"
 
 namespace fl {
 namespace {

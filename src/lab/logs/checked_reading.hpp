@@ -1,15 +1,15 @@
 // A Hall log read for an estimate, with advice that is checked before it is given. When the log
 // cannot be read as the request says, each way of reading it the reader's message would suggest
-// (io/log_reading_error.hpp: other columns, a sample rate, a time unit) is tried on the same text:
-// read, estimated on the request's rig, held to periods and to a rig's T and mu_k. The message
-// then names the ways that work with what each gives ("with --columns t,_,adc: T = 0.7900 s,
-// mu_k 0.287 from 12 periods"), or, when none does, says what was tried instead of advising it.
+// (hall_log/log_reading_error.hpp: other columns, a sample rate, a time unit) is tried on the same
+// text: read, estimated on the request's rig, held to periods and to a rig's T and mu_k. The
+// message then names the ways that work with what each gives ("with --columns t,_,adc: T = 0.7900
+// s, mu_k 0.287 from 12 periods"), or, when none does, says what was tried instead of advising it.
 #pragma once
 
 #include <cstddef>
 #include <string>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "lab/logs/log_estimate.hpp"
 
 namespace fl {

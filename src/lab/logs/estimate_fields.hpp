@@ -7,7 +7,7 @@
 
 #include <vector>
 
-#include "io/hall_log.hpp"
+#include "hall_log/hall_log.hpp"
 #include "lab/fields/field_value.hpp"
 #include "lab/logs/log_estimate.hpp"
 

@@ -1,10 +1,10 @@
 // Bytes from the rig's serial port turned into its log's samples as they come: what
 // `frictionlab estimate --follow` and the server's live rig both read a port through. Each
 // complete line goes, as received, to the caller (for the raw log kept beside), then to the log
-// reader (io/hall_log_reader.hpp); the samples of the run being received are kept (a board that
-// restarts begins a new run, and the samples before it are dropped). A line that never ends (bytes
-// at a wrong baud rate) is read as it stands once it passes a log line's limit, so the capture's
-// memory stays bounded however the port misbehaves.
+// reader (hall_log/hall_log_reader.hpp); the samples of the run being received are kept (a board
+// that restarts begins a new run, and the samples before it are dropped). A line that never ends
+// (bytes at a wrong baud rate) is read as it stands once it passes a log line's limit, so the
+// capture's memory stays bounded however the port misbehaves.
 #pragma once
 
 #include <functional>
@@ -12,8 +12,8 @@
 #include <string_view>
 #include <vector>
 
-#include "io/hall_log.hpp"
-#include "io/hall_log_reader.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/hall_log_reader.hpp"
 #include "io/input_error.hpp"
 
 namespace fl {

@@ -9,9 +9,9 @@
 #include <memory>
 #include <optional>
 
-#include "io/hall_log.hpp"
-#include "io/hall_log_reader.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/hall_log_reader.hpp"
 #include "lab/logs/log_estimate.hpp"
 
 namespace fl {

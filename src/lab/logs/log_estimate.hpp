@@ -1,6 +1,6 @@
-// A Hall-sensor log of the real rig (io/hall_log) run through the rig's estimator: T +- dT and
-// mu_k +- d mu_k, every pulse and period on the log's time axis, what the log lacks when it gives
-// no period, and the data tools/plot_hall.py draws.
+// A Hall-sensor log of the real rig (hall_log/hall_log) run through the rig's estimator: T +- dT
+// and mu_k +- d mu_k, every pulse and period on the log's time axis, what the log lacks when it
+// gives no period, and the data tools/plot_hall.py draws.
 #pragma once
 
 #include <optional>
@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "estimator/host_estimator.hpp"
 #include "estimator/period_estimator.h"
-#include "io/hall_log.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "hall_log/hall_log.hpp"
 
 namespace fl {
 

@@ -1,6 +1,6 @@
 // Many Hall-sensor logs at once: each log estimated as `frictionlab estimate` estimates one (its
-// rig from its sidecar, io/log_sidecar, else from the command line), one row per log. A log that
-// gives no period is a row with its error; the others go on. The table's columns are those a
+// rig from its sidecar, hall_log/log_sidecar, else from the command line), one row per log. A log
+// that gives no period is a row with its error; the others go on. The table's columns are those a
 // measurements file takes (lab/measured_rows), so it feeds `frictionlab compare --measured` and
 // `frictionlab fit` as it is.
 #pragma once
@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/paper_table.hpp"
-#include "io/hall_log.hpp"
-#include "io/log_sidecar.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/log_sidecar.hpp"
 #include "lab/logs/log_estimate.hpp"
 
 namespace fl {

@@ -8,11 +8,11 @@
 #include <fmt/format.h>
 
 #include "core/paper_table.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/log_sidecar.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
-#include "io/hall_log.hpp"
 #include "io/input_error.hpp"
-#include "io/log_sidecar.hpp"
 #include "io/paper_table_yaml.hpp"
 #include "lab/logs/checked_reading.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -24,17 +24,6 @@
 #include "text/utf8.hpp"
 
 namespace fl {
-namespace {
-
-// The rig's scene when the request names none: scenes/paper-rig.yaml from the working folder,
-// else from the source tree.
-std::string default_scene() {
-  const std::string relative = "scenes/paper-rig.yaml";
-  if (std::filesystem::exists(relative)) return relative;
-  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
-}
-
-}  // namespace
 
 int CompareRequestResult::rows_without_result() const {
   // The paper's own table shows the rows the model cannot oscillate (flexible foam at 300 K):
@@ -168,7 +157,7 @@ CompareRequestResult compare_measurements(const CompareRequest& r,
       with_log ? MeasuredRows{}
                : read_measured_rows(result.paper ? paper_measurements_path(assets) : r.measured);
   CompareOptions options;
-  options.scene_file = r.scene.empty() ? default_scene() : r.scene;
+  options.scene_file = r.scene.empty() ? shipped_scene("scenes/paper-rig.yaml") : r.scene;
   const SceneInputs inputs = scene_inputs(assets);
   options.paper = inputs.paper;
   options.parts = inputs.parts;

@@ -1,5 +1,5 @@
 #include "lab/request/estimate_request.hpp"
-#include "io/log_sidecar.hpp"
+#include "hall_log/log_sidecar.hpp"
 #include "io/unknown_material.hpp"
 #include "lab/request/lab_data.hpp"
 
@@ -10,11 +10,11 @@
 
 #include <fmt/format.h>
 
+#include "hall_log/log_files.hpp"
+#include "hall_log/serial_port.hpp"
 #include "io/atomic_file.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
-#include "io/log_files.hpp"
-#include "io/serial_port.hpp"
 #include "lab/logs/checked_reading.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"

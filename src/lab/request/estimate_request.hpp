@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/hall_log.hpp"
-#include "io/serial_port.hpp"
+#include "hall_log/hall_log.hpp"
+#include "hall_log/serial_port.hpp"
 #include "lab/analytic/analytic_report.hpp"
 #include "lab/logs/geometry_check.hpp"
 #include "lab/logs/log_estimate.hpp"

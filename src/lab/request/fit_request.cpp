@@ -20,14 +20,6 @@
 namespace fl {
 namespace {
 
-// The rig's scene when the request names none: scenes/minimal.yaml from the working folder, else
-// from the source tree.
-std::string default_scene() {
-  const std::string relative = "scenes/minimal.yaml";
-  if (std::filesystem::exists(relative)) return relative;
-  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
-}
-
 // What the fit says that a friction oscillator's series cannot: refused as bad input, saying so
 // rather than giving a mu_k that means nothing.
 void require_physical(const SpacingFitReport& r) {
@@ -124,7 +116,8 @@ FitResult fit_series(const FitRequest& r) {
         MonteCarloRequest{.draws = static_cast<int>(*r.mc), .seed = r.seed, .keep_samples = true});
   if (r.through_rig) {
     SceneSource source = r.scene;
-    if (source.file.empty() && source.text.empty()) source.file = default_scene();
+    if (source.file.empty() && source.text.empty())
+      source.file = shipped_scene("scenes/minimal.yaml");
     source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
     FitThroughRigRequest rig{.scene = *load_scene_source(std::move(source)).scene,
                              .gravity = gravity};

@@ -1,8 +1,10 @@
 #include "lab/request/scene_source.hpp"
 
+#include <filesystem>
 #include <utility>
 
 #include "lab/request/lab_data.hpp"
+#include "lab/request/plot_script.hpp"
 
 namespace fl {
 
@@ -44,6 +46,11 @@ std::vector<SceneOverride> run_length_overrides(const std::optional<QuantityInpu
   }
   if (seed) out.push_back({"world.seed", std::to_string(*seed)});
   return out;
+}
+
+std::string shipped_scene(const std::string& relative) {
+  if (std::filesystem::exists(relative)) return relative;
+  return (std::filesystem::path(tools_dir()).parent_path() / relative).string();
 }
 
 }  // namespace fl

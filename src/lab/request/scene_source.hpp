@@ -16,6 +16,10 @@
 
 namespace fl {
 
+// A scene the lab ships, for a request that names none (`relative`: "scenes/minimal.yaml"): from
+// the working folder when it holds one, else from the source tree.
+std::string shipped_scene(const std::string& relative);
+
 struct SceneSource {
   std::string file;  // the scene file; empty for a text
   std::string text;  // the scene's text, when it is given as text

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/cycle_tracker.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 #include "lab/run/regime_monitor.hpp"
 #include "lab/run/run_summary.hpp"
 #include "physics/rig_world.hpp"

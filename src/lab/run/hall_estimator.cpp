@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <optional>
 
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 
 namespace fl {
 namespace {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 #include "lab/run/experiment.hpp"
 #include "sensor/hall_signal.hpp"
 

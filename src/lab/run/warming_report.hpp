@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/roller_warming.hpp"
-#include "lab/logs/host_estimator.hpp"
+#include "estimator/host_estimator.hpp"
 
 namespace fl {
 

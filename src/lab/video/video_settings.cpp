@@ -1,4 +1,4 @@
-// The video's settings and frame clock (fl_video_settings): linked into the executable, which
+// The video's settings and frame clock (fl_lab_video): linked into the executable, which
 // checks a request with them before it loads the video module, even in a build without
 // rendering, and into the module.
 #include <algorithm>

@@ -407,7 +407,7 @@ class Estimate:
     duration: float
     sample_rate: float
     polarity: int
-    baseline: float
+    baseline: Optional[float]
     geometry: str
     periods_used: int
     periods_discarded: int

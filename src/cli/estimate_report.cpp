@@ -65,10 +65,13 @@ std::vector<std::string> left_out_text(const HallLog& log) {
 
 std::string format_text(const HallLog& log) {
   std::vector<std::string> parts;
-  parts.push_back(log.reading.format == "firmware" ? "the rig firmware's serial output"
-                  : log.reading.format == "serial-plotter"
-                      ? "the Serial Plotter's label:value lines"
-                      : "CSV");
+  parts.push_back(
+      log.reading.format == "firmware"         ? "the rig firmware's serial output"
+      : log.reading.format == "serial-plotter" ? "the Serial Plotter's label:value lines"
+      : log.instrument != kRigHallSensor
+          ? fmt::format("{} ({} {}, the clearest pulses)", log.instrument,
+                        log.channel == "|B|" ? "the field's magnitude" : "component", log.channel)
+          : "CSV");
   if (log.encoding != "utf-8") parts.push_back(log.encoding);
   if (log.reading.ide_timestamps) parts.push_back("the Arduino IDE's timestamps taken off");
   if (log.reading.decimal_comma) parts.push_back("decimal commas");
@@ -109,8 +112,12 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
   fmt::print("                       {}\n", columns_text(log.reading));
   for (const std::string& line : left_out_text(log))
     fmt::print("                       {}\n", line);
-  fmt::print("  signal               polarity {:+d}, baseline {:.1f} counts, {} pulses{}\n",
-             est.polarity, est.baseline, s.pulses,
+  // Another instrument's values are no ADC counts: its baseline in counts means nothing.
+  const std::string baseline = log.instrument == kRigHallSensor
+                                   ? fmt::format(", baseline {:.1f} counts", est.baseline)
+                                   : std::string();
+  fmt::print("  signal               polarity {:+d}{}, {} pulses{}\n", est.polarity, baseline,
+             s.pulses,
              est.distorted > 0 ? fmt::format(" ({} distorted)", est.distorted) : std::string());
   fmt::print("  geometry             {}\n", geometry_text(est, check));
   const int broken = static_cast<int>(s.periods_discarded) - est.outliers;

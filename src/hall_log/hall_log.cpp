@@ -3,10 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
 
+#include "hall_log/measurement_file.hpp"
+#include "hall_log/phyphox_log.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
 #include "text/text.hpp"
@@ -117,6 +120,16 @@ std::string decode_log_text(std::string_view bytes, std::string* encoding) {
 
 HallLog parse_hall_log(std::string_view bytes, const std::string& name,
                        const HallLogOptions& options) {
+  const RecognisedFile recognised = recognise_measurement_file(bytes);
+  if (recognised.instrument == "phyphox magnetometer") {
+    std::string decoded_phone;
+    std::string encoding;
+    HallLog phone = read_phyphox_magnetometer(decoded_text(bytes, &encoding, &decoded_phone), name);
+    phone.encoding = encoding;
+    return phone;
+  }
+  if (recognised.kind != MeasurementFile::kRigLog)
+    throw InputError(SourceLocation(name, 1, 1), not_a_rig_log(recognised));
   HallLog log;
   log.path = name;
   log.file = name;
@@ -241,11 +254,45 @@ std::string log_file_of(const std::string& path) {
   return path != "-" && std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
 }
 
+namespace {
+
+// A file another instrument wrote (a phone's zip, a video) is named before it is read as text,
+// which it is not: its first and last 64 KiB (a zip's entries' names are at its end) say what it
+// is. A file that cannot be opened is left to the text reader, which says why.
+void refuse_other_instruments(const std::string& file) {
+  constexpr std::streamoff kPeekBytes = std::streamoff{1} << 16;
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(file, error)) return;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return;
+  std::string bytes(static_cast<std::size_t>(kPeekBytes), '\0');
+  in.read(bytes.data(), kPeekBytes);
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  const auto size = static_cast<std::streamoff>(std::filesystem::file_size(file, error));
+  if (!error && size > 2 * kPeekBytes && bytes.rfind("PK", 0) == 0) {
+    std::string tail(static_cast<std::size_t>(kPeekBytes), '\0');
+    in.clear();
+    in.seekg(size - kPeekBytes);
+    in.read(tail.data(), kPeekBytes);
+    bytes += tail.substr(0, static_cast<std::size_t>(in.gcount()));
+  }
+  // Text (a phone's CSV, Tracker's data) is recognised as it is parsed: only what has no lines
+  // here.
+  const RecognisedFile recognised = recognise_measurement_file(bytes);
+  const MeasurementFile kind = recognised.kind;
+  if (kind == MeasurementFile::kPhyphoxExport || kind == MeasurementFile::kExcel ||
+      kind == MeasurementFile::kZip || kind == MeasurementFile::kVideo)
+    throw InputError(SourceLocation(file), not_a_rig_log(recognised));
+}
+
+}  // namespace
+
 LogText read_log_text(const std::string& path) {
   if (path == "-")
     return {read_text_stream(std::cin, "<stdin>", "the log", kMostTextFileBytes, kMostLogLineBytes),
             "<stdin>"};
   const std::string file = log_file_of(path);
+  refuse_other_instruments(file);
   return {read_text_file(file, "the log", kMostTextFileBytes, kMostLogLineBytes), file};
 }
 

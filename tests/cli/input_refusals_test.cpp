@@ -410,5 +410,47 @@ TEST_F(InputRefusals, ALongLogsAdviceIsTriedOnItsFirstEightMebibytes) {
   EXPECT_NE(r.err.find(" periods in its first 8 MiB"), std::string::npos) << r.err;
 }
 
+// Another instrument's file, named by what it holds and refused with exit status 2, by estimate
+// and by compare --log, rather than read as a log of binary bytes or of the wrong columns; a
+// phone's magnetometer, the instrument estimate reads, is read.
+TEST_F(InputRefusals, AnotherInstrumentsFileIsNamedAndRefused) {
+  write("phone-on-plate.csv", "\"Time (s)\",\"Acceleration x (m/s^2)\"\n0.00,0.1\n0.01,0.3\n");
+  const test::CommandResult accelerometer = lab("estimate phone-on-plate.csv");
+  EXPECT_EQ(accelerometer.status, 2) << accelerometer.out;
+  EXPECT_EQ(accelerometer.err.rfind("phone-on-plate.csv:1:1: error:", 0), 0u) << accelerometer.err;
+  EXPECT_NE(accelerometer.err.find("found a phyphox accelerometer CSV"), std::string::npos)
+      << accelerometer.err;
+  // A zip whose entries' names say phyphox.
+  write("export.zip", std::string("PK\x03\x04", 4) + std::string(26, '\0') + "meta/device.csv");
+  for (const char* command : {"estimate export.zip", "compare --log export.zip --out cmp"}) {
+    const test::CommandResult zip = lab(command);
+    EXPECT_EQ(zip.status, 2) << command;
+    EXPECT_NE(zip.err.find("found a phyphox export (the zip of one CSV per sensor)"),
+              std::string::npos)
+        << command << ": " << zip.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "cmp" / "compare-log.json"));
+  // A phone's magnetometer beside the paper's rig: the magnet's pulses on the Earth's field.
+  test::HallSignal s;
+  s.period_s = 0.79;
+  std::string phone = "\"Time (s)\";\"Magnetic field x (\xC2\xB5T)\"\n";
+  for (int i = 0; i < 3000; ++i) {
+    const double t = i / 100.0;
+    std::string row = fmt::format("{:.2f};{:.3f}\n", t, 30.0 + 50.0 * test::dipole_field(s, t));
+    for (char& c : row)
+      if (c == '.') c = ',';
+    phone += row;
+  }
+  write("Raw Data.csv", phone);
+  const test::CommandResult read = lab("estimate 'Raw Data.csv' --json");
+  ASSERT_EQ(read.status, 0) << read.err;
+  const auto json = nlohmann::json::parse(read.out);
+  EXPECT_EQ(json["instrument"], "phyphox magnetometer");
+  EXPECT_EQ(json["channel"], "x");
+  EXPECT_TRUE(json["decimal_comma"].get<bool>());
+  EXPECT_TRUE(json["baseline_adc"].is_null());
+  EXPECT_NEAR(json["period_s"].get<double>(), 0.79, 0.79 * 5e-4);
+}
+
 }  // namespace
 }  // namespace fl

@@ -51,11 +51,24 @@ std::vector<EstimateField> reading_fields() {
        .type = T::kText,
        .meaning = "the file read (a folder's log; a followed port's raw log, or the port)",
        .get = [](E e) { return escaped_text(e.log.file); }},
+      {.json = "instrument",
+       .part = P::kReading,
+       .type = T::kText,
+       .meaning = "what measured: `Hall sensor` (the rig's) or `phyphox magnetometer` (a phone "
+                  "beside the rig, its CSV export)",
+       .get = [](E e) { return V::text(e.log.instrument); }},
+      {.json = "channel",
+       .part = P::kReading,
+       .type = T::kText,
+       .meaning = "the channel read of the instrument's several: `x`, `y`, `z` or `|B|`, the one "
+                  "with the clearest pulses",
+       .null_when = "the instrument has one channel (the rig's Hall sensor)",
+       .get = [](E e) { return escaped_text_or_none(e.log.channel); }},
       {.json = "format",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "`firmware` (a capture of the rig firmware, recognised by its banner comment), "
-                  "`serial-plotter` (label:value lines) or `csv`",
+                  "`serial-plotter` (label:value lines), `phyphox` or `csv`",
        .get = [](E e) { return V::text(e.log.reading.format); }},
       {.json = "encoding",
        .part = P::kReading,
@@ -230,7 +243,12 @@ std::vector<EstimateField> signal_fields() {
       {.json = "baseline_adc",
        .python = "baseline",
        .meaning = "the estimator's baseline at the end, in ADC counts",
-       .get = [](E e) { return V::number(e.estimate.baseline); }},
+       .null_when = "another instrument was read (its values are no ADC counts)",
+       .get =
+           [](E e) {
+             return e.log.instrument == kRigHallSensor ? V::number(e.estimate.baseline)
+                                                      : FieldValue();
+           }},
       {.json = "pulses",
        .type = T::kInteger,
        .meaning = "pulses detected (after the two the signal is learned from)",

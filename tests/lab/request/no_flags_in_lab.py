@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """No message of the lab names a command-line flag: the layers below the front ends (lab, core,
-scene, io, physics, sensor) name a request's field with io/field_ref.hpp, and each front end
+scene, io, hall_log, estimator, physics, sensor) name a request's field with io/field_ref.hpp, and each front end
 spells it (--geometry, geometry=). Reads every string literal of those folders' C++ sources and
 fails on one that holds a flag ("--geometry", "-j"), printing where it is."""
 
@@ -9,7 +9,7 @@ import re
 import sys
 
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else pathlib.Path(__file__).parents[2])
-LAYERS = ["lab", "core", "scene", "io", "physics", "sensor"]
+LAYERS = ["lab", "core", "scene", "io", "hall_log", "estimator", "physics", "sensor"]
 # A string literal (with escapes), outside comments.
 LITERAL = re.compile(r'"(?:[^"\\\n]|\\.)*"')
 # "--geometry", or a short flag standing alone ("-j 2"); "12-tooth" is no flag.

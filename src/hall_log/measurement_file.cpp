@@ -1,0 +1,193 @@
+#include "hall_log/measurement_file.hpp"
+
+#include <cctype>
+#include <optional>
+#include <vector>
+
+#include "hall_log/log_columns.hpp"
+#include "text/text.hpp"
+
+namespace fl {
+namespace {
+
+bool starts_with(std::string_view s, std::string_view prefix) {
+  return s.substr(0, prefix.size()) == prefix;
+}
+
+bool contains(std::string_view s, std::string_view part) {
+  return s.find(part) != std::string_view::npos;
+}
+
+// A container format from its magic bytes: true, and `file` set, for one.
+bool recognise_container(std::string_view bytes, RecognisedFile* file) {
+  if (starts_with(bytes, "PK\x03\x04") || starts_with(bytes, "PK\x05\x06")) {
+    // A zip stores its entries' names as they are, in each entry's header and at its end.
+    if (contains(bytes, "xl/workbook.xml"))
+      *file = {MeasurementFile::kExcel, "Excel workbook (.xlsx)"};
+    else if (contains(bytes, "meta/"))
+      *file = {MeasurementFile::kPhyphoxExport, "phyphox export (zip)"};
+    else
+      *file = {MeasurementFile::kZip, "zip archive"};
+    return true;
+  }
+  if (bytes.size() >= 12 && bytes.substr(4, 4) == "ftyp") {
+    *file = {MeasurementFile::kVideo, bytes.substr(8, 2) == "qt" ? "video (MOV)" : "video (MP4)"};
+    return true;
+  }
+  if (starts_with(bytes, "\x1A\x45\xDF\xA3")) {
+    *file = {MeasurementFile::kVideo,
+             contains(bytes.substr(0, 64), "webm") ? "video (WebM)" : "video (Matroska)"};
+    return true;
+  }
+  if (starts_with(bytes, "RIFF") && bytes.size() >= 12 && bytes.substr(8, 4) == "AVI ") {
+    *file = {MeasurementFile::kVideo, "video (AVI)"};
+    return true;
+  }
+  return false;
+}
+
+// The first few lines that hold anything, without a UTF-8 byte-order mark.
+std::vector<std::string_view> first_lines(std::string_view text, std::size_t most) {
+  if (starts_with(text, "\xEF\xBB\xBF")) text.remove_prefix(3);
+  std::vector<std::string_view> lines;
+  std::size_t pos = 0;
+  while (pos < text.size() && lines.size() < most) {
+    std::size_t end = text.find_first_of("\r\n", pos);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view line = trim(text.substr(pos, end - pos));
+    if (!line.empty()) lines.push_back(line);
+    pos = end + 1;
+  }
+  return lines;
+}
+
+// A header's fields, split on commas, semicolons or tabs, quotes removed.
+std::vector<std::string> header_fields(std::string_view line) {
+  std::vector<std::string> fields;
+  std::string field;
+  const auto finish = [&] {
+    fields.emplace_back(trim(field, " \"'"));
+    field.clear();
+  };
+  for (char c : line) {
+    if (c == ',' || c == ';' || c == '\t')
+      finish();
+    else
+      field += c;
+  }
+  finish();
+  return fields;
+}
+
+// A column's name in lower-case letters only, its unit left out: "Position (m)" -> "position",
+// "x_mm" -> "xmm", "t [s]" -> "t".
+std::string bare_name(std::string_view field) {
+  std::string name;
+  for (char c : field) {
+    if (c == '(' || c == '[') break;
+    if (std::isalpha(static_cast<unsigned char>(c)))
+      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return name;
+}
+
+bool is_time_name(const std::string& n) {
+  // "t", "time", and "t_s", "t_ms", "t_us" without their underscores.
+  return n == "t" || n == "time" || n == "ts" || n == "tms" || n == "tus" || n == "timestamp";
+}
+
+bool is_position_name(const std::string& n) {
+  for (std::string_view base : {"x", "position", "pos", "displacement", "distance"}) {
+    if (n == base) return true;
+    // A unit written without brackets: x_mm, xcm, position_m.
+    for (std::string_view unit : {"m", "cm", "mm", "px"})
+      if (n.size() == base.size() + unit.size() && starts_with(n, base) &&
+          std::string_view(n).substr(base.size()) == unit)
+        return true;
+  }
+  return false;
+}
+
+bool recognise_text(std::string_view bytes, RecognisedFile* file) {
+  const std::vector<std::string_view> lines = first_lines(bytes.substr(0, 1 << 16), 3);
+  if (lines.empty()) return false;
+  const std::string first = ascii_lower(lines[0]);
+  if (starts_with(first, "#multi:")) {
+    *file = {MeasurementFile::kTracker, "Tracker"};
+    return true;
+  }
+  if (contains(first, "time (s)")) {
+    if (contains(first, "magnetic field")) {
+      *file = {MeasurementFile::kPhyphoxCsv, "phyphox magnetometer"};
+      return true;
+    }
+    if (contains(first, "linear acceleration")) {
+      *file = {MeasurementFile::kPhyphoxCsv, "phyphox accelerometer (without g)"};
+      return true;
+    }
+    if (contains(first, "acceleration")) {
+      *file = {MeasurementFile::kPhyphoxCsv, "phyphox accelerometer"};
+      return true;
+    }
+  }
+  // Tracker's data: the track's name on its own line, then "t", "x", ... (tab-separated); a
+  // table: a time column and a position column, and no column a rig's log names its value by.
+  for (std::size_t i = 0; i < lines.size() && i < 2; ++i) {
+    const std::vector<std::string> fields = header_fields(lines[i]);
+    if (fields.size() < 2 || !is_time_name(bare_name(fields[0]))) continue;
+    bool position = false;
+    bool rig_value = false;
+    for (std::size_t k = 1; k < fields.size(); ++k) {
+      position = position || is_position_name(bare_name(fields[k]));
+      const std::optional<ColumnName> column = column_name(fields[k]);
+      rig_value = rig_value || (column && column->role == ColumnRole::kValue);
+    }
+    if (!position || rig_value) continue;
+    if (i == 1 && header_fields(lines[0]).size() == 1)
+      *file = {MeasurementFile::kTracker, "Tracker"};
+    else
+      *file = {MeasurementFile::kPositionTable, "position-time table"};
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+RecognisedFile recognise_measurement_file(std::string_view bytes) {
+  RecognisedFile file;
+  if (recognise_container(bytes, &file) || recognise_text(bytes, &file)) return file;
+  return {};
+}
+
+std::string not_a_rig_log(const RecognisedFile& file) {
+  if (file.kind == MeasurementFile::kRigLog) return "";
+  const std::string what = [&]() -> std::string {
+    switch (file.kind) {
+      case MeasurementFile::kPhyphoxExport:
+        return "a phyphox export (the zip of one CSV per sensor)";
+      case MeasurementFile::kExcel:
+        return "an Excel workbook (.xlsx)";
+      case MeasurementFile::kZip:
+        return "a zip archive";
+      case MeasurementFile::kPhyphoxCsv:
+        return "a " + file.instrument + " CSV";
+      case MeasurementFile::kTracker:
+        return "Tracker's exported data (a track's t and x)";
+      case MeasurementFile::kPositionTable:
+        return "a position-time table (a time and a position column)";
+      case MeasurementFile::kVideo:
+        return "a " + file.instrument;
+      case MeasurementFile::kRigLog:
+        break;
+    }
+    return "";
+  }();
+  return "expected a log of the rig's Hall sensor (a time and an ADC column), found " + what +
+         ", which this reader does not read; read the period off it yourself (phyphox's or "
+         "Tracker's own analysis) and give it with its error as a measured period, a row of a "
+         "measurement table: the lab compares it with the rig and fits mu_k from several "
+         "spacings (docs/students.md, \"Your measurements against the lab\")";
+}
+
+}  // namespace fl

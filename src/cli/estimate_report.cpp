@@ -63,15 +63,22 @@ std::vector<std::string> left_out_text(const HallLog& log) {
   return out;
 }
 
+// Another instrument, and the channel of it read.
+std::string instrument_text(const HallLog& log) {
+  if (log.instrument == "phyphox magnetometer")
+    return fmt::format("{} ({} {}, the clearest pulses)", log.instrument,
+                       log.channel == "|B|" ? "the field's magnitude" : "component", log.channel);
+  return fmt::format("{} (column {}, the clearest swing, timed at its upper turns)", log.instrument,
+                     log.channel);
+}
+
 std::string format_text(const HallLog& log) {
   std::vector<std::string> parts;
-  parts.push_back(
-      log.reading.format == "firmware"         ? "the rig firmware's serial output"
-      : log.reading.format == "serial-plotter" ? "the Serial Plotter's label:value lines"
-      : log.instrument != kRigHallSensor
-          ? fmt::format("{} ({} {}, the clearest pulses)", log.instrument,
-                        log.channel == "|B|" ? "the field's magnitude" : "component", log.channel)
-          : "CSV");
+  parts.push_back(log.reading.format == "firmware" ? "the rig firmware's serial output"
+                  : log.reading.format == "serial-plotter"
+                      ? "the Serial Plotter's label:value lines"
+                  : log.instrument == kRigHallSensor ? "CSV"
+                                                     : instrument_text(log));
   if (log.encoding != "utf-8") parts.push_back(log.encoding);
   if (log.reading.ide_timestamps) parts.push_back("the Arduino IDE's timestamps taken off");
   if (log.reading.decimal_comma) parts.push_back("decimal commas");

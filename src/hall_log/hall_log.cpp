@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "hall_log/measurement_file.hpp"
+#include "hall_log/oscillation_log.hpp"
 #include "hall_log/phyphox_log.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
@@ -127,6 +128,14 @@ HallLog parse_hall_log(std::string_view bytes, const std::string& name,
     HallLog phone = read_phyphox_magnetometer(decoded_text(bytes, &encoding, &decoded_phone), name);
     phone.encoding = encoding;
     return phone;
+  }
+  if (is_oscillation_file(recognised)) {
+    std::string decoded_table;
+    std::string encoding;
+    HallLog table =
+        read_oscillation_log(decoded_text(bytes, &encoding, &decoded_table), name, recognised);
+    table.encoding = encoding;
+    return table;
   }
   if (recognised.kind != MeasurementFile::kRigLog)
     throw InputError(SourceLocation(name, 1, 1), not_a_rig_log(recognised));

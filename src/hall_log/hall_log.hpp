@@ -5,6 +5,10 @@
 // lines are read by HallLogReader (hall_log/hall_log_reader.hpp): what it skips and leaves out is
 // counted in `reading`. The text may start with a byte-order mark (UTF-8, or UTF-16 from a
 // spreadsheet's "Unicode text"), and its lines may end in "\n", "\r\n" or "\r".
+// Another instrument's file is recognised by its content (hall_log/measurement_file.hpp) and read
+// into the same log, one channel of it as counts the rig's estimator times: a phone's
+// magnetometer (hall_log/phyphox_log.hpp), positions or a phone's accelerometer
+// (hall_log/oscillation_log.hpp); `instrument` and `channel` say what was read.
 #pragma once
 
 #include <cstddef>

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "hall_log/log_columns.hpp"
+#include "hall_log/log_line.hpp"
+#include "hall_log/measurement_table.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -46,7 +48,7 @@ bool recognise_container(std::string_view bytes, RecognisedFile* file) {
   return false;
 }
 
-// The first few lines that hold anything, without a UTF-8 byte-order mark.
+// The first few lines that hold anything but a comment, without a UTF-8 byte-order mark.
 std::vector<std::string_view> first_lines(std::string_view text, std::size_t most) {
   if (starts_with(text, "\xEF\xBB\xBF")) text.remove_prefix(3);
   std::vector<std::string_view> lines;
@@ -55,57 +57,20 @@ std::vector<std::string_view> first_lines(std::string_view text, std::size_t mos
     std::size_t end = text.find_first_of("\r\n", pos);
     if (end == std::string_view::npos) end = text.size();
     const std::string_view line = trim(text.substr(pos, end - pos));
-    if (!line.empty()) lines.push_back(line);
+    // A comment line ("# simulated, not measured") says nothing of the format; Tracker's
+    // "#multi:" does.
+    const bool comment = line.substr(0, 1) == "#" && ascii_lower(line).rfind("#multi:", 0) != 0;
+    if (!line.empty() && !comment) lines.push_back(line);
     pos = end + 1;
   }
   return lines;
 }
 
-// A header's fields, split on commas, semicolons or tabs, quotes removed.
+// A header's fields, as a log's line is split.
 std::vector<std::string> header_fields(std::string_view line) {
   std::vector<std::string> fields;
-  std::string field;
-  const auto finish = [&] {
-    fields.emplace_back(trim(field, " \"'"));
-    field.clear();
-  };
-  for (char c : line) {
-    if (c == ',' || c == ';' || c == '\t')
-      finish();
-    else
-      field += c;
-  }
-  finish();
+  for (const LogField& f : split_fields(line, detect_delimiter(line))) fields.emplace_back(f.text);
   return fields;
-}
-
-// A column's name in lower-case letters only, its unit left out: "Position (m)" -> "position",
-// "x_mm" -> "xmm", "t [s]" -> "t".
-std::string bare_name(std::string_view field) {
-  std::string name;
-  for (char c : field) {
-    if (c == '(' || c == '[') break;
-    if (std::isalpha(static_cast<unsigned char>(c)))
-      name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  }
-  return name;
-}
-
-bool is_time_name(const std::string& n) {
-  // "t", "time", and "t_s", "t_ms", "t_us" without their underscores.
-  return n == "t" || n == "time" || n == "ts" || n == "tms" || n == "tus" || n == "timestamp";
-}
-
-bool is_position_name(const std::string& n) {
-  for (std::string_view base : {"x", "position", "pos", "displacement", "distance"}) {
-    if (n == base) return true;
-    // A unit written without brackets: x_mm, xcm, position_m.
-    for (std::string_view unit : {"m", "cm", "mm", "px"})
-      if (n.size() == base.size() + unit.size() && starts_with(n, base) &&
-          std::string_view(n).substr(base.size()) == unit)
-        return true;
-  }
-  return false;
 }
 
 bool recognise_text(std::string_view bytes, RecognisedFile* file) {
@@ -130,20 +95,20 @@ bool recognise_text(std::string_view bytes, RecognisedFile* file) {
       return true;
     }
   }
-  // Tracker's data: the track's name on its own line, then "t", "x", ... (tab-separated); a
+  // Tracker's data: the track's name on a line of its own, then "t", "x", ... (tab-separated); a
   // table: a time column and a position column, and no column a rig's log names its value by.
   for (std::size_t i = 0; i < lines.size() && i < 2; ++i) {
     const std::vector<std::string> fields = header_fields(lines[i]);
-    if (fields.size() < 2 || !is_time_name(bare_name(fields[0]))) continue;
+    if (fields.size() < 2 || !is_time_column(bare_column_name(fields[0]))) continue;
     bool position = false;
     bool rig_value = false;
     for (std::size_t k = 1; k < fields.size(); ++k) {
-      position = position || is_position_name(bare_name(fields[k]));
+      position = position || is_position_column(bare_column_name(fields[k]));
       const std::optional<ColumnName> column = column_name(fields[k]);
       rig_value = rig_value || (column && column->role == ColumnRole::kValue);
     }
     if (!position || rig_value) continue;
-    if (i == 1 && header_fields(lines[0]).size() == 1)
+    if (i == 1)
       *file = {MeasurementFile::kTracker, "Tracker"};
     else
       *file = {MeasurementFile::kPositionTable, "position-time table"};
@@ -184,10 +149,11 @@ std::string not_a_rig_log(const RecognisedFile& file) {
     return "";
   }();
   return "expected a log of the rig's Hall sensor (a time and an ADC column), found " + what +
-         ", which this reader does not read; read the period off it yourself (phyphox's or "
-         "Tracker's own analysis) and give it with its error as a measured period, a row of a "
-         "measurement table: the lab compares it with the rig and fits mu_k from several "
-         "spacings (docs/students.md, \"Your measurements against the lab\")";
+         ", which the lab does not read yet; export it as CSV (phyphox) or track it with Tracker "
+         "and export its data (a video), which the lab reads, or read the period off it yourself "
+         "and give it with its error as a measured period: the lab compares it with the rig and "
+         "fits mu_k from several spacings (docs/students.md, \"Your measurements against the "
+         "lab\")";
 }
 
 }  // namespace fl

@@ -414,12 +414,14 @@ TEST_F(InputRefusals, ALongLogsAdviceIsTriedOnItsFirstEightMebibytes) {
 // and by compare --log, rather than read as a log of binary bytes or of the wrong columns; a
 // phone's magnetometer, the instrument estimate reads, is read.
 TEST_F(InputRefusals, AnotherInstrumentsFileIsNamedAndRefused) {
-  write("phone-on-plate.csv", "\"Time (s)\",\"Acceleration x (m/s^2)\"\n0.00,0.1\n0.01,0.3\n");
-  const test::CommandResult accelerometer = lab("estimate phone-on-plate.csv");
-  EXPECT_EQ(accelerometer.status, 2) << accelerometer.out;
-  EXPECT_EQ(accelerometer.err.rfind("phone-on-plate.csv:1:1: error:", 0), 0u) << accelerometer.err;
-  EXPECT_NE(accelerometer.err.find("found a phyphox accelerometer CSV"), std::string::npos)
-      << accelerometer.err;
+  write("clip.mp4", std::string("\0\0\0\x20"
+                                "ftypisom\0\0\x02\0",
+                                16) +
+                        std::string(100000, 'v'));
+  const test::CommandResult video = lab("estimate clip.mp4");
+  EXPECT_EQ(video.status, 2) << video.out;
+  EXPECT_EQ(video.err.rfind("clip.mp4: error:", 0), 0u) << video.err;
+  EXPECT_NE(video.err.find("found a video (MP4)"), std::string::npos) << video.err;
   // A zip whose entries' names say phyphox.
   write("export.zip", std::string("PK\x03\x04", 4) + std::string(26, '\0') + "meta/device.csv");
   for (const char* command : {"estimate export.zip", "compare --log export.zip --out cmp"}) {

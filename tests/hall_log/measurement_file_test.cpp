@@ -103,15 +103,18 @@ TEST(MeasurementFile, RigLogsOfEveryShapeAreRigLogs) {
 }
 
 TEST(MeasurementFile, TheLogReaderRefusesAnotherInstrumentsFileByName) {
-  const std::string text =
-      "\"Time (s)\",\"Acceleration x (m/s^2)\"\n0.00,0.1\n0.01,0.3\n0.02,0.2\n";
+  // A phone's video, handed to the log reader as text.
+  const std::string video(
+      "\0\0\0\x20"
+      "ftypisom\0\0\x02\0isomiso2avc1mp41",
+      32);
   try {
-    parse_hall_log(text, "phone.csv");
-    FAIL() << "a phyphox accelerometer CSV was read as a rig's log";
+    parse_hall_log(video, "clip.mp4");
+    FAIL() << "a video was read as a rig's log";
   } catch (const InputError& e) {
     const std::string what = e.what();
-    EXPECT_NE(what.find("phone.csv:1:1"), std::string::npos) << what;
-    EXPECT_NE(what.find("phyphox accelerometer"), std::string::npos) << what;
+    EXPECT_NE(what.find("clip.mp4:1:1"), std::string::npos) << what;
+    EXPECT_NE(what.find("found a video (MP4)"), std::string::npos) << what;
     EXPECT_NE(what.find("Your measurements against the lab"), std::string::npos) << what;
   }
   // A zip on disk is named before it is read as text, which it is not: its entries' names lie

@@ -54,21 +54,23 @@ std::vector<EstimateField> reading_fields() {
       {.json = "instrument",
        .part = P::kReading,
        .type = T::kText,
-       .meaning = "what measured: `Hall sensor` (the rig's) or `phyphox magnetometer` (a phone "
-                  "beside the rig, its CSV export)",
+       .meaning = "what measured: `Hall sensor` (the rig's), `phyphox magnetometer` (a phone "
+                  "beside the rig), `phyphox accelerometer` or `phyphox accelerometer (without g)` "
+                  "(a phone on the plate), `Tracker` (a video's marks), `position-time table`",
        .get = [](E e) { return V::text(e.log.instrument); }},
       {.json = "channel",
        .part = P::kReading,
        .type = T::kText,
-       .meaning = "the channel read of the instrument's several: `x`, `y`, `z` or `|B|`, the one "
-                  "with the clearest pulses",
+       .meaning = "the channel read of the instrument's several, the one that swings clearest: "
+                  "a magnetometer's `x`, `y`, `z` or `|B|`, an accelerometer's axis, a table's "
+                  "position column",
        .null_when = "the instrument has one channel (the rig's Hall sensor)",
        .get = [](E e) { return escaped_text_or_none(e.log.channel); }},
       {.json = "format",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "`firmware` (a capture of the rig firmware, recognised by its banner comment), "
-                  "`serial-plotter` (label:value lines), `phyphox` or `csv`",
+                  "`serial-plotter` (label:value lines), `phyphox`, `tracker`, `table` or `csv`",
        .get = [](E e) { return V::text(e.log.reading.format); }},
       {.json = "encoding",
        .part = P::kReading,

@@ -1,0 +1,25 @@
+// What the readers of other instruments share (a phone's magnetometer, its accelerometer,
+// Tracker's positions, a table's): how clearly a channel shows what the rig's estimator times,
+// and the one channel chosen turned into a log of counts that estimator runs on.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "hall_log/hall_log.hpp"
+#include "hall_log/measurement_table.hpp"
+
+namespace fl {
+
+// How clearly a channel swings: its largest excursion from its median (either way) against the
+// median step between samples, its noise. Empty fields (NaN) are left out; 0 for fewer than three
+// values.
+double swing_clarity(const std::vector<double>& values);
+
+// The channel as a log the rig's estimator reads: the values mapped by one linear map onto 1000
+// to 61000 counts (the estimator's timing levels are fractions of the pulse height, so the map
+// changes no time it finds), each sample at its time and line. Throws InputError, as
+// hall_log_from_samples does, for no samples or times that do not increase.
+HallLog log_of_signal(const Series& signal, const std::string& name);
+
+}  // namespace fl

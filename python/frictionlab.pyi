@@ -404,6 +404,8 @@ def run(
 
 class Estimate:
     # generated: estimate-attributes (tools/generate-fields, from src/lab/logs/estimate_fields.cpp)
+    instrument: str
+    channel: Optional[str]
     duration: float
     sample_rate: float
     polarity: int
@@ -418,6 +420,7 @@ class Estimate:
     mu_k: float
     mu_k_err_worst: float
     mu_k_err_quadrature: float
+    mu_k_thick: Optional[float]
     spacing: float
     spacing_err: float
     gravity: float
@@ -448,6 +451,7 @@ def estimate_file(
     time_unit: str = "",
     material: Optional[str] = None,
     temperature: Optional[Quantity] = None,
+    h_c: Optional[Quantity] = None,
 ) -> Estimate: ...
 
 # ---- the analytic model ----

@@ -97,3 +97,26 @@ def test_bad_samples_are_located():
         fl.estimate([0.0, 0.001], [500, 500], geometry="three")
     with pytest.raises(fl.InputError, match="spacing: error: expected the roller spacing as a finite positive length"):
         fl.estimate([0.0, 0.001], [500, 500], spacing=-1)
+
+
+INSTRUMENTS = SCENES.parent / "assets" / "examples" / "instruments"
+
+
+@pytest.mark.parametrize("name", ["phone-magnetometer.csv", "phone-accelerometer.csv",
+                                  "tracker-plate.txt"])
+def test_another_instrument_reads_as_the_command_reads_it(name):
+    path = INSTRUMENTS / name
+    expected = cli_json("estimate", path, "--h-c", "3.58mm")
+    assert expected.pop("plot") is None
+    assert expected.pop("monte_carlo") is None
+    found = fl.estimate_file(path, h_c="3.58 mm")
+    assert found.json() == expected
+    assert found.instrument == expected["instrument"] != "Hall sensor"
+    assert found.channel == expected["channel"]
+    assert found.baseline is None
+    # The files are the paper's rig simulated at mu_k 0.29, its plate's centre of mass 3.58 mm
+    # above the rollers: the thick formula gives mu_k back, within what the periods' standard
+    # error allows (d mu / mu = 2 dT / T, three of them); the paper's thin one cannot.
+    allowed = 3 * 2 * found.period_std_error / found.period * 0.29
+    assert abs(found.mu_k_thick - 0.29) < allowed
+    assert abs(found.mu_k - 0.29) > allowed

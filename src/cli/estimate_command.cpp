@@ -220,7 +220,8 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& global) {
                   "With several logs: the folder for estimates.csv and estimates.json");
   add_monte_carlo_options(*sub, options->monte_carlo);
   sub->add_option("--h-c", options->h_c,
-                  "With --mc: the plate's centre of mass above the contact line (thick formula)");
+                  "The plate's centre of mass above the contact line (a phone on it raises it): "
+                  "mu_k through the thick formula too, and with --mc in its draws");
   sub->add_option("--h-c-err", options->h_c_err, "With --mc: the uncertainty of --h-c");
   sub->add_option("--mc-plot", options->mc_plot,
                   "With --mc: draw the histogram of mu_k's draws to this PNG");

@@ -139,6 +139,14 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
       "                       for l = {:.1f} +- {:.1f} mm, g = {:.3f} m/s^2, dT the "
       "standard deviation\n",
       set_up.spacing * 1e3, set_up.spacing_err * 1e3, set_up.gravity);
+  if (const std::optional<double> thick = mu_k_thick(est))
+    fmt::print("  mu_k thick           {:.4f} (the thick formula, h_c = {:.2f} mm)\n", *thick,
+               *set_up.h_c * 1e3);
+  else if (log.instrument.rfind("phyphox accelerometer", 0) == 0)
+    fmt::print(
+        "  note                 a phone lying on the plate raises its centre of mass: --h-c "
+        "(the plate's with the phone, above the rollers' contact line) gives mu_k through the "
+        "thick formula\n");
   if (!plot.empty()) fmt::print("  plot                 {}\n", escape_invalid_utf8(plot));
 }
 

@@ -150,9 +150,11 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
       [](const Path& path, const Quantity& spacing, const Quantity& spacing_err,
          const Quantity& gravity, const std::string& geometry, const std::string& columns,
          const std::optional<Quantity>& rate, const std::string& time_unit,
-         const std::optional<std::string>& material, const std::optional<Quantity>& temperature) {
+         const std::optional<std::string>& material, const std::optional<Quantity>& temperature,
+         const std::optional<Quantity>& h_c) {
         EstimateRequest r = request_of(spacing, spacing_err, gravity, geometry);
         r.logs = {path.string()};
+        r.h_c = h_c;
         r.columns = columns;
         r.rate = rate;
         r.time_unit = time_unit;
@@ -165,10 +167,14 @@ T +- dT (saying what it found); its line is the 1-based sample index, `name` its
       py::arg("gravity") = quantity_input_text(d.gravity), py::arg("geometry") = d.geometry,
       py::arg("columns") = "", py::arg("rate") = py::none(), py::arg("time_unit") = "",
       py::arg("material") = py::none(), py::arg("temperature") = py::none(),
+      py::arg("h_c") = py::none(),
       R"(T +- dT and mu_k +- d mu_k from a Hall-sensor log, as `frictionlab estimate LOG`.
 
 The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_us,adc",
-"t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...). Arguments as estimate; the
+"t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...); or another instrument's
+file, recognised by what it holds (a phone's phyphox CSV, Tracker's data, a position-time
+table: `instrument` and `channel` say what was read). h_c ("3.6 mm"), the plate's centre of
+mass above the rollers' contact line, gives mu_k_thick through the thick formula. Arguments as estimate; the
 log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity, geometry) is read over
 them, as the command reads it. columns ("t_us,adc", "_,t_ms,adc"), rate ("1kHz") and
 time_unit ("us", "ms", "s") say how to read a log whose header does not, as the command's

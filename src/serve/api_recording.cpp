@@ -151,7 +151,7 @@ BoardSamples board_samples(const ApiRecordingRequest& request,
 // a period is judged or the geometry is recognised, at the number of samples it took.
 json board_reading(const BoardSamples& board, double spacing, double gravity) {
   LiveLogEstimate live(
-      LogSetUp{spacing, LogSetUp{}.spacing_err, gravity, fl_estimator::kAutoGeometry},
+      LogSetUp{spacing, LogSetUp{}.spacing_err, gravity, fl_estimator::kAutoGeometry, std::nullopt},
       /*keep_samples=*/false);
   json changes = json::array();
   std::size_t sent = 0;

@@ -412,7 +412,7 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
   struct StreamState {
     explicit StreamState(const CompiledRig& rig)
         : board_watch(LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
-                               fl_estimator::kAutoGeometry}) {}
+                               fl_estimator::kAutoGeometry, std::nullopt}) {}
     std::optional<int> generation;
     Clock::time_point next = Clock::now();
     BoardWatch board_watch;  // the live rig with this session's spacing

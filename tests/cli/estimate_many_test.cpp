@@ -220,8 +220,17 @@ TEST_F(EstimateMany, MonteCarloOfOneLogMatchesTheQuadratureRuleAndIsSeeded) {
   EXPECT_NE(run("--mc 100000 --seed 2")["monte_carlo"]["mu_k_mean"], mc["mu_k_mean"]);
   EXPECT_TRUE(run("")["monte_carlo"].is_null());
   // Options that would do nothing.
-  EXPECT_EQ(lab(log + " --h-c 3mm").status, 2);
+  EXPECT_EQ(lab(log + " --h-c-err 1mm").status, 2);
+  // h_c alone gives mu_k through the thick formula, below the thin one (a thick plate
+  // oscillates faster than the paper's formula assumes); one log only.
+  EXPECT_TRUE(a["mu_k_thick"].is_null());
+  const nlohmann::json thick = run("--h-c 3mm");
+  EXPECT_LT(thick["mu_k_thick"].get<double>(), thick["mu_k"].get<double>());
   const std::string b = write_log("logs/b.csv", 0.79, 4);
+  const auto two = lab(log + " " + b + " --h-c 3mm");
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find("--h-c gives one log's mu_k through the thick formula"), std::string::npos)
+      << two.err;
   const auto many = lab(log + " " + b + " --mc 1000");
   EXPECT_EQ(many.status, 2);
   EXPECT_NE(many.err.find("give one log"), std::string::npos) << many.err;

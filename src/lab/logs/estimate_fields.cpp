@@ -52,6 +52,7 @@ std::vector<EstimateField> reading_fields() {
        .meaning = "the file read (a folder's log; a followed port's raw log, or the port)",
        .get = [](E e) { return escaped_text(e.log.file); }},
       {.json = "instrument",
+       .python = "instrument",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "what measured: `Hall sensor` (the rig's), `phyphox magnetometer` (a phone "
@@ -59,6 +60,7 @@ std::vector<EstimateField> reading_fields() {
                   "(a phone on the plate), `Tracker` (a video's marks), `position-time table`",
        .get = [](E e) { return V::text(e.log.instrument); }},
       {.json = "channel",
+       .python = "channel",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "the channel read of the instrument's several, the one that swings clearest: "
@@ -349,6 +351,12 @@ std::vector<EstimateField> verdict_fields() {
        .part = P::kVerdict,
        .meaning = "d mu_k in quadrature: mu_k sqrt((dl/l)^2 + (2 dT/T)^2)",
        .get = [](E e) { return V::number(static_cast<double>(stats(e).mu_k_err_quadrature)); }},
+      {.json = "mu_k_thick",
+       .python = "mu_k_thick",
+       .meaning = "mu_k through the thick formula, 2 pi^2 l / (g T^2 + 4 pi^2 h_c), with the "
+                  "request's h_c (the plate's centre of mass above the contact line)",
+       .null_when = "no h_c was given, or the log gave no period",
+       .get = [](E e) { return V::number(mu_k_thick(e.estimate)); }},
   };
   // clang-format on
 }

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "core/analytic_model.hpp"
 #include "core/plausible_range.hpp"
 #include "io/field_ref.hpp"
 #include "io/input_error.hpp"
@@ -325,6 +326,13 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
     if (std::string_view(f.json) == "periods") data["periods"] = f.get({log, est}).json();
   data["spacing_m"] = static_cast<double>(est.set_up.config().spacing_m);
   return data;
+}
+
+std::optional<double> mu_k_thick(const LogEstimate& estimate) {
+  const LogSetUp& s = estimate.set_up;
+  const double period = estimate.stats.period_s;
+  if (!s.h_c || !(period > 0.0)) return std::nullopt;
+  return mu_k_from_period_thick(period, s.spacing, *s.h_c, s.gravity);
 }
 
 }  // namespace fl

@@ -23,6 +23,9 @@ struct LogSetUp {
   double spacing_err = 0.002;  // dl [m]
   double gravity = 9.81;       // g [m/s^2]
   fl_estimator::Geometry geometry = fl_estimator::kAutoGeometry;
+  // The plate's centre of mass above the rollers' contact line, when given [m]: mu_k through the
+  // thick formula beside the paper's (a phone lying on the plate raises it).
+  std::optional<double> h_c;
 
   // The estimator's configuration (single precision, as the rig's Arduino holds it).
   fl_estimator::Config config() const;
@@ -46,6 +49,10 @@ struct LogEstimate {
   std::vector<float> baseline_trace;
   std::vector<float> level_trace;
 };
+
+// mu_k through the thick formula, 2 pi^2 l / (g T^2 + 4 pi^2 h_c), with the set-up's h_c; nullopt
+// without an h_c or a period.
+std::optional<double> mu_k_thick(const LogEstimate& estimate);
 
 // Runs the estimator over the log; `traces` keeps the per-sample levels for a plot.
 LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces);

@@ -127,17 +127,15 @@ PreparedEstimate prepare_one_log(const EstimateRequest& r, FieldChecks& checks,
                    fmt::format("expected the number of draws, a whole number from 1 to {}, found "
                                "{}",
                                kMaxMonteCarloDraws, *r.mc));
-  if (!r.mc && (r.h_c || r.h_c_err || !r.mc_plot.empty()))
-    checks.problem(r.h_c       ? "h_c"
-                   : r.h_c_err ? "h_c_err"
-                               : "mc_plot",
-                   field_ref("h_c") + ", " + field_ref("h_c_err") + " and " + field_ref("mc_plot") +
-                       " go with " + field_ref("monte_carlo.draws") +
-                       " (the Monte Carlo of mu_k); add " +
+  if (!r.mc && (r.h_c_err || !r.mc_plot.empty()))
+    checks.problem(r.h_c_err ? "h_c_err" : "mc_plot",
+                   field_ref("h_c_err") + " and " + field_ref("mc_plot") + " go with " +
+                       field_ref("monte_carlo.draws") + " (the Monte Carlo of mu_k); add " +
                        field_ref("monte_carlo.draws", "100000") + ", or drop them");
   if (r.h_c) {
     p.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
     checks.plausible(p.h_c, kHcRange, "h_c", *r.h_c);
+    p.set_up.h_c = p.h_c;
   }
   if (r.h_c_err)
     p.h_c_err = checks.not_negative(*r.h_c_err, Dimension::kLength, "h_c_err", "an uncertainty");
@@ -201,8 +199,13 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
                                       field_ref("follow.port") +
                                       "; a log file has none: drop it, or add " +
                                       field_ref("follow.port"));
-  const bool monte_carlo = r.mc || r.h_c || r.h_c_err || !r.mc_plot.empty();
+  const bool monte_carlo = r.mc || r.h_c_err || !r.mc_plot.empty();
   const std::optional<std::vector<std::string>> many = r.samples ? std::nullopt : many_logs(r.logs);
+  if (r.h_c && !monte_carlo && (many || follow))
+    checks.problem("h_c", field_ref("h_c") +
+                              " gives one log's mu_k through the thick formula; give one log (not "
+                              "several, nor " +
+                              field_ref("follow.port") + ")");
   if (monte_carlo && (many || follow))
     checks.problem("monte_carlo.draws",
                    field_ref("monte_carlo.draws") +

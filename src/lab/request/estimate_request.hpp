@@ -48,7 +48,7 @@ struct EstimateRequest {
   std::optional<QuantityInput> follow_duration;       // "follow.duration": stop after
   std::optional<std::int64_t> mc;                     // "monte_carlo.draws": one log's mu_k
   std::uint64_t seed = 1;                             // "seed"
-  std::optional<QuantityInput> h_c;                   // "h_c": with mc, the thick formula
+  std::optional<QuantityInput> h_c;                   // "h_c": mu_k_thick (and with mc its draws)
   std::optional<QuantityInput> h_c_err;               // "h_c_err": with mc
   std::string mc_plot;                                // "mc_plot": with mc, the histogram
 };
@@ -67,7 +67,7 @@ struct PreparedEstimate {
   std::string out;
   LogTableDefaults table;  // the table's defaults (set-up, material, temperature)
   std::optional<MonteCarloRequest> monte_carlo;
-  double h_c = 0.0;      // m, for the Monte Carlo
+  double h_c = 0.0;      // m, for mu_k_thick and the Monte Carlo
   double h_c_err = 0.0;  // m
   std::string mc_plot;
   // One log's material (a key or name of the paper's Table I) and temperature [K], for the

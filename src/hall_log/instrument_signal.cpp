@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "io/input_error.hpp"
 
@@ -37,6 +38,24 @@ HallLog log_of_signal(const Series& signal, const std::string& name) {
   HallLog log = hall_log_from_samples(signal.t_s, counts, name);
   log.line = signal.lines;
   return log;
+}
+
+void say_what_was_read(HallLog& log, const MeasurementTable& table, std::size_t time,
+                       std::string instrument, std::string channel, std::string format,
+                       std::string value_column) {
+  log.instrument = std::move(instrument);
+  log.channel = std::move(channel);
+  HallLogReading& r = log.reading;
+  r.format = std::move(format);
+  r.columns_from = "header";
+  r.time_column = table.names[time];
+  r.adc_column = std::move(value_column);
+  const double unit_s = seconds_per_time_unit(table.names[time]);
+  r.time_unit = unit_s == 1.0 ? "s" : unit_s == 1e-3 ? "ms" : "us";
+  r.time_unit_from = "header";
+  r.header_line = table.header_line;
+  r.first_line = table.header_line;
+  r.decimal_comma = table.decimal_comma;
 }
 
 }  // namespace fl

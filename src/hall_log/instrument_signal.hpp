@@ -22,4 +22,11 @@ double swing_clarity(const std::vector<double>& values);
 // hall_log_from_samples does, for no samples or times that do not increase.
 HallLog log_of_signal(const Series& signal, const std::string& name);
 
+// What was read into such a log, said as a log's reading says it: the instrument and its channel,
+// the file's format ("phyphox", "tracker", "table"), the time column (`time`, of `table`) and the
+// value column's name, its header and decimal commas.
+void say_what_was_read(HallLog& log, const MeasurementTable& table, std::size_t time,
+                       std::string instrument, std::string channel, std::string format,
+                       std::string value_column);
+
 }  // namespace fl

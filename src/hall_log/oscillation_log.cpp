@@ -97,19 +97,8 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name,
       });
   HallLog log = log_of_signal(
       series_of(table, chosen.time, turns_at_upper_end(table.columns[chosen.column])), name);
-  log.instrument = file.instrument;
-  log.channel = chosen.channel;
-  log.reading.format = format_of(file);
-  log.reading.columns_from = "header";
-  log.reading.time_column = table.names[chosen.time];
-  log.reading.adc_column = table.names[chosen.column];
-  log.reading.time_unit = seconds_per_time_unit(table.names[chosen.time]) == 1.0    ? "s"
-                          : seconds_per_time_unit(table.names[chosen.time]) == 1e-3 ? "ms"
-                                                                                    : "us";
-  log.reading.time_unit_from = "header";
-  log.reading.header_line = table.header_line;
-  log.reading.first_line = table.header_line;
-  log.reading.decimal_comma = table.decimal_comma;
+  say_what_was_read(log, table, chosen.time, file.instrument, chosen.channel, format_of(file),
+                    table.names[chosen.column]);
   return log;
 }
 

@@ -61,17 +61,8 @@ HallLog read_phyphox_magnetometer(std::string_view text, const std::string& name
         return swing_clarity(a.values) < swing_clarity(b.values);
       });
   HallLog log = log_of_signal(series_of(table, 0, channel.values), name);
-  log.instrument = "phyphox magnetometer";
-  log.channel = channel.name;
-  log.reading.format = "phyphox";
-  log.reading.columns_from = "header";
-  log.reading.time_column = table.names[0];
-  log.reading.adc_column = channel.column.empty() ? "|B| of the three components" : channel.column;
-  log.reading.time_unit = "s";
-  log.reading.time_unit_from = "header";
-  log.reading.header_line = table.header_line;
-  log.reading.first_line = table.header_line;
-  log.reading.decimal_comma = table.decimal_comma;
+  say_what_was_read(log, table, 0, "phyphox magnetometer", channel.name, "phyphox",
+                    channel.column.empty() ? "|B| of the three components" : channel.column);
   return log;
 }
 

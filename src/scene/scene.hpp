@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/friction_law.hpp"
@@ -164,6 +165,13 @@ struct FrictionDesc {
   // What the paper measured for that material and temperature, when from_paper.
   std::optional<Measured> paper_period;  // T +- dT [s]
   std::optional<Measured> paper_mu_k;
+
+  // The rules a friction value keeps: mu_k positive, mu_s at least mu_k, a Stribeck law's v_s
+  // when mu_s > mu_k and a finite beta, and, when the rollers' speeds are known to hold
+  // (`speeds_hold`), mu(s) still positive at the run's largest slip speed [m/s]. Each broken rule
+  // as the scene key responsible and what is wrong (scene_checks.cpp adds them to the scene's).
+  std::vector<std::pair<std::string, std::string>> problems(double largest_slip_speed,
+                                                            bool speeds_hold) const;
 };
 
 // A 12 V DC motor with a linear torque-speed curve, its voltage set by PWM (the paper's Arduino).

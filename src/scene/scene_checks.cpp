@@ -211,27 +211,12 @@ void check_plate(const Scene& s, const Checks& c) {
   c.need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
 }
 
-// The friction law: mu_k, mu_s and a Stribeck law's fall.
+// The friction law: the rules the friction value keeps (FrictionDesc::problems).
 void check_friction(const Scene& s, const Checks& c, bool ramps_hold) {
-  c.need(std::isfinite(s.friction.mu_k) && s.friction.mu_k > 0.0, "friction.mu_k",
-         describe("mu_k must be positive, found ", s.friction.mu_k));
-  const FrictionDesc& f = s.friction;
-  if (f.mu_s)
-    c.need(std::isfinite(*f.mu_s) && *f.mu_s >= f.mu_k, "friction.mu_s",
-           describe("the static limit mu_s must be at least mu_k = ", f.mu_k, ", found ", *f.mu_s));
-  if (f.law == FrictionLawKind::kStribeck) {
-    c.need(
-        !(f.mu_s && *f.mu_s > f.mu_k) || f.v_s.has_value(), "friction.mu_s",
-        "a stribeck law with mu_s > mu_k needs friction.v_s, the speed over which friction falls "
-        "from mu_s to mu_k (e.g. 10 mm/s)");
-    c.need(std::isfinite(f.beta), "friction.beta", describe("beta must be finite, found ", f.beta));
-    // mu(s) falls monotonically when beta < 0: its least value is at the largest slip speed.
-    const double s_max = ramps_hold ? largest_slip_speed(s) : 0.0;
-    const double mu_min = friction_law(f).kinetic(s_max);
-    c.need(!ramps_hold || f.beta >= 0.0 || mu_min > 0.0, "friction.beta",
-           describe("the law's mu(s) goes negative (", mu_min, " at the run's largest slip speed ",
-                    s_max, " m/s); use a smaller |beta| or a larger mu_k"));
-  }
+  const double s_max =
+      ramps_hold && s.friction.law == FrictionLawKind::kStribeck ? largest_slip_speed(s) : 0.0;
+  for (const auto& [key, message] : s.friction.problems(s_max, ramps_hold))
+    c.need(false, key.c_str(), message);
 }
 
 // The magnets on the plate.

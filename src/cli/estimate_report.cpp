@@ -65,10 +65,11 @@ std::vector<std::string> left_out_text(const HallLog& log) {
 
 // Another instrument, and the channel of it read.
 std::string instrument_text(const HallLog& log) {
-  if (log.instrument == "phyphox magnetometer")
-    return fmt::format("{} ({} {}, the clearest pulses)", log.instrument,
+  const std::string words = instrument_words(log.instrument);
+  if (log.instrument == MeasurementFile::kPhyphoxMagnetometer)
+    return fmt::format("{} ({} {}, the clearest pulses)", words,
                        log.channel == "|B|" ? "the field's magnitude" : "component", log.channel);
-  return fmt::format("{} (column {}, the clearest swing, timed at its upper turns)", log.instrument,
+  return fmt::format("{} (column {}, the clearest swing, timed at its upper turns)", words,
                      log.channel);
 }
 
@@ -77,8 +78,8 @@ std::string format_text(const HallLog& log) {
   parts.push_back(log.reading.format == "firmware" ? "the rig firmware's serial output"
                   : log.reading.format == "serial-plotter"
                       ? "the Serial Plotter's label:value lines"
-                  : log.instrument == kRigHallSensor ? "CSV"
-                                                     : instrument_text(log));
+                  : log.instrument == MeasurementFile::kRigLog ? "CSV"
+                                                               : instrument_text(log));
   if (log.encoding != "utf-8") parts.push_back(log.encoding);
   if (log.reading.ide_timestamps) parts.push_back("the Arduino IDE's timestamps taken off");
   if (log.reading.decimal_comma) parts.push_back("decimal commas");
@@ -120,7 +121,7 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
   for (const std::string& line : left_out_text(log))
     fmt::print("                       {}\n", line);
   // Another instrument's values are no ADC counts: its baseline in counts means nothing.
-  const std::string baseline = log.instrument == kRigHallSensor
+  const std::string baseline = log.instrument == MeasurementFile::kRigLog
                                    ? fmt::format(", baseline {:.1f} counts", est.baseline)
                                    : std::string();
   fmt::print("  signal               polarity {:+d}{}, {} pulses{}\n", est.polarity, baseline,
@@ -142,7 +143,7 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
   if (const std::optional<double> thick = mu_k_thick(est))
     fmt::print("  mu_k thick           {:.4f} (the thick formula, h_c = {:.2f} mm)\n", *thick,
                *set_up.h_c * 1e3);
-  else if (log.instrument.rfind("phyphox accelerometer", 0) == 0)
+  else if (is_accelerometer(log.instrument))
     fmt::print(
         "  note                 a phone lying on the plate raises its centre of mass: --h-c "
         "(the plate's with the phone, above the rollers' contact line) gives mu_k through the "

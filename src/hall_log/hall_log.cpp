@@ -122,23 +122,19 @@ std::string decode_log_text(std::string_view bytes, std::string* encoding) {
 HallLog parse_hall_log(std::string_view bytes, const std::string& name,
                        const HallLogOptions& options) {
   const RecognisedFile recognised = recognise_measurement_file(bytes);
-  if (recognised.instrument == "phyphox magnetometer") {
-    std::string decoded_phone;
-    std::string encoding;
-    HallLog phone = read_phyphox_magnetometer(decoded_text(bytes, &encoding, &decoded_phone), name);
-    phone.encoding = encoding;
-    return phone;
-  }
-  if (is_oscillation_file(recognised)) {
+  if (is_container(recognised.kind))
+    throw InputError(SourceLocation(name, 1, 1), not_a_rig_log(recognised));
+  if (recognised.kind != MeasurementFile::kRigLog) {
+    // Another instrument's table, one channel of it read as a log.
     std::string decoded_table;
     std::string encoding;
-    HallLog table =
-        read_oscillation_log(decoded_text(bytes, &encoding, &decoded_table), name, recognised);
-    table.encoding = encoding;
-    return table;
+    const std::string_view table = decoded_text(bytes, &encoding, &decoded_table);
+    HallLog log = recognised.kind == MeasurementFile::kPhyphoxMagnetometer
+                      ? read_phyphox_magnetometer(table, name)
+                      : read_oscillation_log(table, name, recognised.kind);
+    log.encoding = encoding;
+    return log;
   }
-  if (recognised.kind != MeasurementFile::kRigLog)
-    throw InputError(SourceLocation(name, 1, 1), not_a_rig_log(recognised));
   HallLog log;
   log.path = name;
   log.file = name;
@@ -288,9 +284,7 @@ void refuse_other_instruments(const std::string& file) {
   // Text (a phone's CSV, Tracker's data) is recognised as it is parsed: only what has no lines
   // here.
   const RecognisedFile recognised = recognise_measurement_file(bytes);
-  const MeasurementFile kind = recognised.kind;
-  if (kind == MeasurementFile::kPhyphoxExport || kind == MeasurementFile::kExcel ||
-      kind == MeasurementFile::kZip || kind == MeasurementFile::kVideo)
+  if (is_container(recognised.kind))
     throw InputError(SourceLocation(file), not_a_rig_log(recognised));
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "hall_log/hall_log_reader.hpp"
+#include "hall_log/measurement_file.hpp"
 
 namespace fl {
 
@@ -26,19 +27,17 @@ namespace fl {
 // without line ends, one number of megabytes) is refused as soon as it is read.
 inline constexpr std::size_t kMostLogLineBytes = 8192;
 
-// What measured the rig's own logs: its Hall sensor (HallLog::instrument).
-inline constexpr const char* kRigHallSensor = "Hall sensor";
-
 struct HallLog {
-  std::string path;                         // as given ("<stdin>" for standard input)
-  std::string file;                         // the file read (a folder's log inside it)
-  std::string encoding;                     // "utf-8", "utf-8 with BOM", "utf-16le", "utf-16be"
-  HallLogReading reading;                   // columns, unit, and what was skipped or left out
-  std::string instrument = kRigHallSensor;  // what measured: the rig's Hall sensor, or another
-                                            // instrument read as one ("phyphox magnetometer")
-  std::string channel;                      // the channel read of several ("x", "|B|"); "" for one
-  std::vector<double> t_s;                  // sample times [s] on the log's own axis (wraps of a
-                                            // microsecond clock undone)
+  std::string path;        // as given ("<stdin>" for standard input)
+  std::string file;        // the file read (a folder's log inside it)
+  std::string encoding;    // "utf-8", "utf-8 with BOM", "utf-16le", "utf-16be"
+  HallLogReading reading;  // columns, unit, and what was skipped or left out
+  // What measured: the rig's Hall sensor (kRigLog), or another instrument read as one
+  // (instrument_words names it).
+  MeasurementFile instrument = MeasurementFile::kRigLog;
+  std::string channel;               // the channel read of several ("x", "|B|"); "" for one
+  std::vector<double> t_s;           // sample times [s] on the log's own axis (wraps of a
+                                     // microsecond clock undone)
   std::vector<uint32_t> t_us;        // the same in microseconds since the first sample, on a 32-bit
                                      // clock that wraps like the firmware's (for the estimator)
   std::vector<uint16_t> adc;         // ADC values [counts]

@@ -52,10 +52,6 @@ std::string percent(int part, int whole) {
   return s.str();
 }
 
-double seconds_per(const std::string& unit) {
-  return unit == "us" ? 1e-6 : unit == "ms" ? 1e-3 : 1.0;
-}
-
 constexpr std::string_view kFirmwareBanner = "# frictionlab rig firmware";
 
 const std::string kExpected =

@@ -8,24 +8,44 @@
 
 namespace fl {
 
-double swing_clarity(const std::vector<double>& all) {
+std::optional<Spread> spread_of(const std::vector<double>& all) {
   std::vector<double> values;
   for (double v : all)
     if (!std::isnan(v)) values.push_back(v);
-  if (values.size() < 3) return 0.0;
+  if (values.empty()) return std::nullopt;
+  std::sort(values.begin(), values.end());
+  return Spread{values[values.size() / 200], values[values.size() / 2],
+                values[values.size() - 1 - values.size() / 200]};
+}
+
+double swing_clarity(const std::vector<double>& all) {
   std::vector<double> steps;
-  steps.reserve(values.size() - 1);
-  for (std::size_t i = 1; i < values.size(); ++i)
-    steps.push_back(std::fabs(values[i] - values[i - 1]));
+  double previous = std::nan("");
+  for (double v : all) {
+    if (std::isnan(v)) continue;
+    if (!std::isnan(previous)) steps.push_back(std::fabs(v - previous));
+    previous = v;
+  }
+  if (steps.size() < 2) return 0.0;
   std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2),
                    steps.end());
   const double noise = steps[steps.size() / 2];
-  std::sort(values.begin(), values.end());
-  const double median = values[values.size() / 2];
-  const double low = values[values.size() / 200];
-  const double high = values[values.size() - 1 - values.size() / 200];
-  const double excursion = std::max(high - median, median - low);
-  return excursion / std::max(noise, 1e-12 * std::max(1.0, std::fabs(median)));
+  const Spread s = *spread_of(all);
+  const double excursion = std::max(s.high - s.median, s.median - s.low);
+  return excursion / std::max(noise, 1e-12 * std::max(1.0, std::fabs(s.median)));
+}
+
+std::size_t clearest(const std::vector<const std::vector<double>*>& channels) {
+  std::size_t best = 0;
+  double best_clarity = -1.0;
+  for (std::size_t i = 0; i < channels.size(); ++i) {
+    const double clarity = swing_clarity(*channels[i]);
+    if (clarity > best_clarity) {
+      best = i;
+      best_clarity = clarity;
+    }
+  }
+  return best;
 }
 
 HallLog log_of_signal(const Series& signal, const std::string& name) {
@@ -41,17 +61,16 @@ HallLog log_of_signal(const Series& signal, const std::string& name) {
 }
 
 void say_what_was_read(HallLog& log, const MeasurementTable& table, std::size_t time,
-                       std::string instrument, std::string channel, std::string format,
+                       MeasurementFile instrument, std::string channel, std::string format,
                        std::string value_column) {
-  log.instrument = std::move(instrument);
+  log.instrument = instrument;
   log.channel = std::move(channel);
   HallLogReading& r = log.reading;
   r.format = std::move(format);
   r.columns_from = "header";
   r.time_column = table.names[time];
   r.adc_column = std::move(value_column);
-  const double unit_s = seconds_per_time_unit(table.names[time]);
-  r.time_unit = unit_s == 1.0 ? "s" : unit_s == 1e-3 ? "ms" : "us";
+  r.time_unit = time_column_unit(table.names[time]);
   r.time_unit_from = "header";
   r.header_line = table.header_line;
   r.first_line = table.header_line;

@@ -3,6 +3,8 @@
 // and the one channel chosen turned into a log of counts that estimator runs on.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,10 +13,22 @@
 
 namespace fl {
 
+// A channel's spread: its median and its 0.5th and 99.5th percentiles (the extremes, a lone
+// glitch left out). Empty fields (NaN) are left out; nullopt when none is left.
+struct Spread {
+  double low = 0.0;
+  double median = 0.0;
+  double high = 0.0;
+};
+std::optional<Spread> spread_of(const std::vector<double>& values);
+
 // How clearly a channel swings: its largest excursion from its median (either way) against the
 // median step between samples, its noise. Empty fields (NaN) are left out; 0 for fewer than three
 // values.
 double swing_clarity(const std::vector<double>& values);
+
+// The index of the channel that swings clearest, of one or more.
+std::size_t clearest(const std::vector<const std::vector<double>*>& channels);
 
 // The channel as a log the rig's estimator reads: the values mapped by one linear map onto 1000
 // to 61000 counts (the estimator's timing levels are fractions of the pulse height, so the map
@@ -26,7 +40,7 @@ HallLog log_of_signal(const Series& signal, const std::string& name);
 // the file's format ("phyphox", "tracker", "table"), the time column (`time`, of `table`) and the
 // value column's name, its header and decimal commas.
 void say_what_was_read(HallLog& log, const MeasurementTable& table, std::size_t time,
-                       std::string instrument, std::string channel, std::string format,
+                       MeasurementFile instrument, std::string channel, std::string format,
                        std::string value_column);
 
 }  // namespace fl

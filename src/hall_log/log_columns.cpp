@@ -132,4 +132,8 @@ ColumnLayout columns_from_option(std::string_view spec) {
   return layout;
 }
 
+double seconds_per(const std::string& unit) {
+  return unit == "us" ? 1e-6 : unit == "ms" ? 1e-3 : 1.0;
+}
+
 }  // namespace fl

@@ -44,4 +44,7 @@ ColumnLayout columns_from_option(std::string_view spec);
 // "millis", "s", "sec"), nullopt otherwise.
 std::optional<std::string> time_unit_name(std::string_view text);
 
+// Seconds per unit of time: 1e-6 for "us", 1e-3 for "ms", 1 for "s".
+double seconds_per(const std::string& unit);
+
 }  // namespace fl

@@ -21,15 +21,17 @@ bool contains(std::string_view s, std::string_view part) {
 }
 
 // A container format from its magic bytes: true, and `file` set, for one.
+// A kind the lab names in its own words.
+RecognisedFile recognised(MeasurementFile kind) {
+  return {kind, instrument_words(kind)};
+}
+
 bool recognise_container(std::string_view bytes, RecognisedFile* file) {
   if (starts_with(bytes, "PK\x03\x04") || starts_with(bytes, "PK\x05\x06")) {
     // A zip stores its entries' names as they are, in each entry's header and at its end.
-    if (contains(bytes, "xl/workbook.xml"))
-      *file = {MeasurementFile::kExcel, "Excel workbook (.xlsx)"};
-    else if (contains(bytes, "meta/"))
-      *file = {MeasurementFile::kPhyphoxExport, "phyphox export (zip)"};
-    else
-      *file = {MeasurementFile::kZip, "zip archive"};
+    *file = recognised(contains(bytes, "xl/workbook.xml") ? MeasurementFile::kExcel
+                       : contains(bytes, "meta/")         ? MeasurementFile::kPhyphoxExport
+                                                          : MeasurementFile::kZip);
     return true;
   }
   if (bytes.size() >= 12 && bytes.substr(4, 4) == "ftyp") {
@@ -78,20 +80,16 @@ bool recognise_text(std::string_view bytes, RecognisedFile* file) {
   if (lines.empty()) return false;
   const std::string first = ascii_lower(lines[0]);
   if (starts_with(first, "#multi:")) {
-    *file = {MeasurementFile::kTracker, "Tracker"};
+    *file = recognised(MeasurementFile::kTracker);
     return true;
   }
   if (contains(first, "time (s)")) {
-    if (contains(first, "magnetic field")) {
-      *file = {MeasurementFile::kPhyphoxCsv, "phyphox magnetometer"};
-      return true;
-    }
-    if (contains(first, "linear acceleration")) {
-      *file = {MeasurementFile::kPhyphoxCsv, "phyphox accelerometer (without g)"};
-      return true;
-    }
-    if (contains(first, "acceleration")) {
-      *file = {MeasurementFile::kPhyphoxCsv, "phyphox accelerometer"};
+    const bool field = contains(first, "magnetic field");
+    const bool linear = contains(first, "linear acceleration");
+    if (field || linear || contains(first, "acceleration")) {
+      *file = recognised(field    ? MeasurementFile::kPhyphoxMagnetometer
+                         : linear ? MeasurementFile::kPhyphoxLinearAccelerometer
+                                  : MeasurementFile::kPhyphoxAccelerometer);
       return true;
     }
   }
@@ -108,10 +106,7 @@ bool recognise_text(std::string_view bytes, RecognisedFile* file) {
       rig_value = rig_value || (column && column->role == ColumnRole::kValue);
     }
     if (!position || rig_value) continue;
-    if (i == 1)
-      *file = {MeasurementFile::kTracker, "Tracker"};
-    else
-      *file = {MeasurementFile::kPositionTable, "position-time table"};
+    *file = recognised(i == 1 ? MeasurementFile::kTracker : MeasurementFile::kPositionTable);
     return true;
   }
   return false;
@@ -125,29 +120,47 @@ RecognisedFile recognise_measurement_file(std::string_view bytes) {
   return {};
 }
 
+std::string instrument_words(MeasurementFile kind) {
+  switch (kind) {
+    case MeasurementFile::kRigLog:
+      return "Hall sensor";
+    case MeasurementFile::kPhyphoxMagnetometer:
+      return "phyphox magnetometer";
+    case MeasurementFile::kPhyphoxAccelerometer:
+      return "phyphox accelerometer";
+    case MeasurementFile::kPhyphoxLinearAccelerometer:
+      return "phyphox accelerometer (without g)";
+    case MeasurementFile::kTracker:
+      return "Tracker";
+    case MeasurementFile::kPositionTable:
+      return "position-time table";
+    case MeasurementFile::kPhyphoxExport:
+      return "phyphox export (zip)";
+    case MeasurementFile::kExcel:
+      return "Excel workbook (.xlsx)";
+    case MeasurementFile::kZip:
+      return "zip archive";
+    case MeasurementFile::kVideo:
+      break;
+  }
+  return "video";
+}
+
+bool is_accelerometer(MeasurementFile kind) {
+  return kind == MeasurementFile::kPhyphoxAccelerometer ||
+         kind == MeasurementFile::kPhyphoxLinearAccelerometer;
+}
+
+bool is_container(MeasurementFile kind) {
+  return kind == MeasurementFile::kPhyphoxExport || kind == MeasurementFile::kExcel ||
+         kind == MeasurementFile::kZip || kind == MeasurementFile::kVideo;
+}
+
 std::string not_a_rig_log(const RecognisedFile& file) {
-  if (file.kind == MeasurementFile::kRigLog) return "";
-  const std::string what = [&]() -> std::string {
-    switch (file.kind) {
-      case MeasurementFile::kPhyphoxExport:
-        return "a phyphox export (the zip of one CSV per sensor)";
-      case MeasurementFile::kExcel:
-        return "an Excel workbook (.xlsx)";
-      case MeasurementFile::kZip:
-        return "a zip archive";
-      case MeasurementFile::kPhyphoxCsv:
-        return "a " + file.instrument + " CSV";
-      case MeasurementFile::kTracker:
-        return "Tracker's exported data (a track's t and x)";
-      case MeasurementFile::kPositionTable:
-        return "a position-time table (a time and a position column)";
-      case MeasurementFile::kVideo:
-        return "a " + file.instrument;
-      case MeasurementFile::kRigLog:
-        break;
-    }
-    return "";
-  }();
+  const std::string what = file.kind == MeasurementFile::kPhyphoxExport
+                               ? "a phyphox export (the zip of one CSV per sensor)"
+                           : file.kind == MeasurementFile::kExcel ? "an Excel workbook (.xlsx)"
+                                                                  : "a " + file.instrument;
   return "expected a log of the rig's Hall sensor (a time and an ADC column), found " + what +
          ", which the lab does not read yet; export it as CSV (phyphox) or track it with Tracker "
          "and export its data (a video), which the lab reads, or read the period off it yourself "

@@ -12,28 +12,39 @@
 namespace fl {
 
 enum class MeasurementFile {
-  kRigLog,         // anything not recognised below: read as the rig's Hall-sensor log
-  kPhyphoxExport,  // a zip holding phyphox's meta/ folder and one CSV per sensor
-  kExcel,          // an Office Open XML workbook (.xlsx): phyphox's Excel export, a spreadsheet
-  kZip,            // another zip archive
-  kPhyphoxCsv,     // one CSV of a phyphox export: "Time (s)" then a sensor's columns
-  kTracker,        // Tracker's exported data: a track's name, then "t", "x", ...
-  kPositionTable,  // a time column and a position column, units in the header
-  kVideo,          // an MP4 or MOV, a WebM or Matroska, an AVI
+  kRigLog,                      // anything not recognised below: read as the rig's Hall log
+  kPhyphoxMagnetometer,         // phyphox's CSV: "Time (s)", "Magnetic field x (µT)", ...
+  kPhyphoxAccelerometer,        // phyphox's CSV: "Time (s)", "Acceleration x (m/s^2)", ...
+  kPhyphoxLinearAccelerometer,  // the same without g: "Linear Acceleration x (m/s^2)", ...
+  kTracker,                     // Tracker's exported data: a track's name, then "t", "x", ...
+  kPositionTable,               // a time column and a position column, units in the header
+  kPhyphoxExport,               // a zip holding phyphox's meta/ folder and one CSV per sensor
+  kExcel,                       // an Office Open XML workbook (.xlsx): phyphox's, a spreadsheet's
+  kZip,                         // another zip archive
+  kVideo,                       // an MP4 or MOV, a WebM or Matroska, an AVI
 };
+
+// What measured, in words a student knows: "Hall sensor" (the rig's), "phyphox magnetometer",
+// "Tracker", "video"; the key `instrument` of an estimate.
+std::string instrument_words(MeasurementFile kind);
+
+// A phone's accelerometer, with or without g.
+bool is_accelerometer(MeasurementFile kind);
+
+// Files that are no text of lines: a zip, a workbook, a video (the lab reads none of them yet).
+bool is_container(MeasurementFile kind);
 
 struct RecognisedFile {
   MeasurementFile kind = MeasurementFile::kRigLog;
-  // What was read, in words a student knows: "phyphox magnetometer", "Tracker", "video (MP4)";
-  // empty for the rig's log.
-  std::string instrument;
+  // instrument_words(kind), and a video's container in words: "video (MP4)".
+  std::string instrument = instrument_words(MeasurementFile::kRigLog);
 };
 
 // Recognises a file from its first bytes (any number; the first 64 KiB are enough).
 RecognisedFile recognise_measurement_file(std::string_view bytes);
 
-// Why the rig's log reader cannot read a file recognised as another instrument's, and what to
-// do instead: the message of the error the reader throws. Empty for MeasurementFile::kRigLog.
+// Why the rig's log reader cannot read a file recognised as a container (is_container), and
+// what to do instead: the message of the error the reader throws.
 std::string not_a_rig_log(const RecognisedFile& file);
 
 }  // namespace fl

@@ -104,16 +104,15 @@ bool is_position_column(const std::string& n) {
   return false;
 }
 
-double seconds_per_time_unit(std::string_view name) {
+std::string time_column_unit(std::string_view name) {
   const std::optional<ColumnName> column = column_name(name);
-  const std::string unit = column ? column->unit : "";
-  return unit == "ms" ? 1e-3 : unit == "us" ? 1e-6 : 1.0;
+  return column && !column->unit.empty() ? column->unit : "s";
 }
 
 Series series_of(const MeasurementTable& table, std::size_t time,
                  const std::vector<double>& values) {
   Series s;
-  const double scale = seconds_per_time_unit(table.names[time]);
+  const double scale = seconds_per(time_column_unit(table.names[time]));
   for (std::size_t i = 0; i < table.lines.size(); ++i) {
     const double t = table.columns[time][i];
     const double v = values[i];

@@ -37,9 +37,9 @@ bool is_time_column(const std::string& bare);
 // brackets ("x_mm" -> "xmm", "position_m"); as bare_column_name gives them.
 bool is_position_column(const std::string& bare);
 
-// Seconds per unit of a time column's name: 1e-3 for "t_ms", "Time (ms)"; 1 when the name gives
-// no unit (Tracker's and phyphox's times are in seconds).
-double seconds_per_time_unit(std::string_view name);
+// The unit of a time column's name: "ms" for "t_ms", "Time (ms)"; "s" when the name gives none
+// (Tracker's and phyphox's times are in seconds).
+std::string time_column_unit(std::string_view name);
 
 // The rows where the time column (`time`, scaled by its unit to seconds) and `values` (a column of
 // the table, or one computed from its columns, one value per row) both hold a number, with each

@@ -13,10 +13,6 @@
 namespace fl {
 namespace {
 
-bool is_accelerometer(const RecognisedFile& file) {
-  return file.kind == MeasurementFile::kPhyphoxCsv && file.instrument != "phyphox magnetometer";
-}
-
 // The columns that may hold the oscillation: positions (x, and Tracker's y: a camera may be held
 // on its side), or the accelerometer's axes; each with the time column to its left.
 struct Candidate {
@@ -25,7 +21,7 @@ struct Candidate {
   std::string channel;  // "x", "y", the axis
 };
 
-std::vector<Candidate> candidates(const MeasurementTable& t, const RecognisedFile& file) {
+std::vector<Candidate> candidates(const MeasurementTable& t, MeasurementFile kind) {
   std::vector<Candidate> out;
   std::optional<std::size_t> time;
   for (std::size_t k = 0; k < t.names.size(); ++k) {
@@ -35,15 +31,14 @@ std::vector<Candidate> candidates(const MeasurementTable& t, const RecognisedFil
       continue;
     }
     if (!time) continue;
-    if (is_accelerometer(file)) {
+    if (is_accelerometer(kind)) {
       // "Acceleration x (m/s^2)", "Linear Acceleration x (m/s^2)"; not "Absolute acceleration".
       const std::string lower = ascii_lower(t.names[k]);
       const std::size_t at = lower.find("acceleration ");
       if (lower.rfind("absolute", 0) != 0 && at != std::string::npos && at + 13 < lower.size() &&
           std::string("xyz").find(lower[at + 13]) != std::string::npos)
         out.push_back({*time, k, std::string(1, lower[at + 13])});
-    } else if (is_position_column(bare) ||
-               (file.kind == MeasurementFile::kTracker && bare == "y")) {
+    } else if (is_position_column(bare) || (kind == MeasurementFile::kTracker && bare == "y")) {
       out.push_back({*time, k, t.names[k]});
     }
   }
@@ -53,51 +48,39 @@ std::vector<Candidate> candidates(const MeasurementTable& t, const RecognisedFil
 // The virtual sensor at the upper end of the swing: the part of the signal above its median plus
 // 30 % of its upper swing; the rest of the time the baseline, 0.
 std::vector<double> turns_at_upper_end(const std::vector<double>& values) {
-  std::vector<double> sorted;
-  for (double v : values)
-    if (!std::isnan(v)) sorted.push_back(v);
-  if (sorted.empty()) return values;
-  std::sort(sorted.begin(), sorted.end());
-  const double median = sorted[sorted.size() / 2];
-  const double high = sorted[sorted.size() - 1 - sorted.size() / 200];
-  const double level = median + 0.3 * (high - median);
+  const std::optional<Spread> spread = spread_of(values);
+  if (!spread) return values;
+  const double level = spread->median + 0.3 * (spread->high - spread->median);
   std::vector<double> pulses;
   pulses.reserve(values.size());
   for (double v : values) pulses.push_back(std::isnan(v) ? v : std::max(0.0, v - level));
   return pulses;
 }
 
-std::string format_of(const RecognisedFile& file) {
-  return file.kind == MeasurementFile::kTracker         ? "tracker"
-         : file.kind == MeasurementFile::kPositionTable ? "table"
-                                                        : "phyphox";
+std::string format_of(MeasurementFile kind) {
+  return kind == MeasurementFile::kTracker         ? "tracker"
+         : kind == MeasurementFile::kPositionTable ? "table"
+                                                   : "phyphox";
 }
 
 }  // namespace
 
-bool is_oscillation_file(const RecognisedFile& file) {
-  return file.kind == MeasurementFile::kTracker || file.kind == MeasurementFile::kPositionTable ||
-         is_accelerometer(file);
-}
-
-HallLog read_oscillation_log(std::string_view text, const std::string& name,
-                             const RecognisedFile& file) {
+HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind) {
   const MeasurementTable table = read_measurement_table(text, name);
-  const std::vector<Candidate> found = candidates(table, file);
+  const std::vector<Candidate> found = candidates(table, kind);
   if (found.empty())
     throw InputError(SourceLocation(name, table.header_line),
-                     is_accelerometer(file)
+                     is_accelerometer(kind)
                          ? "expected phyphox's accelerometer columns (\"Acceleration x (m/s^2)\", "
                            "...) after its time, found none"
                          : "expected a position column (x, position, \"Position (m)\", x_mm) "
                            "after a time column, found none");
-  const Candidate& chosen =
-      *std::max_element(found.begin(), found.end(), [&](const Candidate& a, const Candidate& b) {
-        return swing_clarity(table.columns[a.column]) < swing_clarity(table.columns[b.column]);
-      });
+  std::vector<const std::vector<double>*> columns;
+  for (const Candidate& c : found) columns.push_back(&table.columns[c.column]);
+  const Candidate& chosen = found[clearest(columns)];
   HallLog log = log_of_signal(
       series_of(table, chosen.time, turns_at_upper_end(table.columns[chosen.column])), name);
-  say_what_was_read(log, table, chosen.time, file.instrument, chosen.channel, format_of(file),
+  say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
                     table.names[chosen.column]);
   return log;
 }

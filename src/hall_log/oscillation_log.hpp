@@ -22,13 +22,9 @@
 
 namespace fl {
 
-// Reads a file recognised as Tracker's data, a position-time table, or a phyphox accelerometer
-// CSV (`file`); `name` stands for the file in messages. Throws InputError, located at the line,
-// for a table that cannot be read or holds no column to read.
-HallLog read_oscillation_log(std::string_view text, const std::string& name,
-                             const RecognisedFile& file);
-
-// Whether read_oscillation_log reads what `file` is.
-bool is_oscillation_file(const RecognisedFile& file);
+// Reads a file recognised (`kind`) as Tracker's data, a position-time table, or a phyphox
+// accelerometer CSV; `name` stands for the file in messages. Throws InputError, located at the
+// line, for a table that cannot be read or holds no column to read.
+HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind);
 
 }  // namespace fl

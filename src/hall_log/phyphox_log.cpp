@@ -45,7 +45,7 @@ std::vector<Channel> field_channels(const MeasurementTable& t, const std::string
   }
   if (channels.empty())
     throw InputError(
-        SourceLocation(name, 1),
+        SourceLocation(name, t.header_line),
         "expected phyphox's magnetometer columns (\"Magnetic field x (\xC2\xB5T)\", ... or "
         "\"Absolute field (\xC2\xB5T)\") in the header, found none");
   return channels;
@@ -56,12 +56,11 @@ std::vector<Channel> field_channels(const MeasurementTable& t, const std::string
 HallLog read_phyphox_magnetometer(std::string_view text, const std::string& name) {
   const MeasurementTable table = read_measurement_table(text, name);
   const std::vector<Channel> channels = field_channels(table, name);
-  const Channel& channel =
-      *std::max_element(channels.begin(), channels.end(), [](const Channel& a, const Channel& b) {
-        return swing_clarity(a.values) < swing_clarity(b.values);
-      });
+  std::vector<const std::vector<double>*> values;
+  for (const Channel& c : channels) values.push_back(&c.values);
+  const Channel& channel = channels[clearest(values)];
   HallLog log = log_of_signal(series_of(table, 0, channel.values), name);
-  say_what_was_read(log, table, 0, "phyphox magnetometer", channel.name, "phyphox",
+  say_what_was_read(log, table, 0, MeasurementFile::kPhyphoxMagnetometer, channel.name, "phyphox",
                     channel.column.empty() ? "|B| of the three components" : channel.column);
   return log;
 }

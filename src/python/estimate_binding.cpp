@@ -174,9 +174,9 @@ The log: the rig firmware's serial capture or any CSV of time and ADC value ("t_
 "t_s,adc", "time,value"), e.g. the hall.csv of run(..., out=...); or another instrument's
 file, recognised by what it holds (a phone's phyphox CSV, Tracker's data, a position-time
 table: `instrument` and `channel` say what was read). h_c ("3.6 mm"), the plate's centre of
-mass above the rollers' contact line, gives mu_k_thick through the thick formula. Arguments as estimate; the
-log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity, geometry) is read over
-them, as the command reads it. columns ("t_us,adc", "_,t_ms,adc"), rate ("1kHz") and
+mass above the rollers' contact line, gives mu_k_thick through the thick formula. Arguments
+as estimate; the log's sidecar (the log's name with .yaml: spacing, spacing_err, gravity,
+geometry) is read over them, as the command reads it. columns ("t_us,adc", "_,t_ms,adc"), rate ("1kHz") and
 time_unit ("us", "ms", "s") say how to read a log whose header does not, as the command's
 --columns, --rate and --time-unit. material ("lego", a key or name of the paper's Table I) and
 temperature ("77K"; 300 K by default), or the sidecar's, put the paper's value for it beside

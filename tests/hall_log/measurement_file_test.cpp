@@ -35,17 +35,17 @@ TEST(MeasurementFile, NamesEachInstrumentFromItsContent) {
        "\"Time (s)\",\"Magnetic field x (\xC2\xB5T)\",\"Magnetic "
        "field y (\xC2\xB5T)\",\"Magnetic field z (\xC2\xB5T)\",\"Absolute field (\xC2\xB5T)\"\n"
        "0.0,12.1,-3.0,40.2,42.1\n",
-       MeasurementFile::kPhyphoxCsv, "phyphox magnetometer"},
+       MeasurementFile::kPhyphoxMagnetometer, "phyphox magnetometer"},
       {"phyphox magnetometer, semicolon and decimal comma",
-       "\"Time (s)\";\"Magnetic field x (\xC2\xB5T)\"\n0,0;12,1\n", MeasurementFile::kPhyphoxCsv,
-       "phyphox magnetometer"},
+       "\"Time (s)\";\"Magnetic field x (\xC2\xB5T)\"\n0,0;12,1\n",
+       MeasurementFile::kPhyphoxMagnetometer, "phyphox magnetometer"},
       {"phyphox accelerometer, tab",
        "\"Time (s)\"\t\"Acceleration x (m/s^2)\"\t\"Acceleration y "
        "(m/s^2)\"\n0.0\t0.1\t9.8\n",
-       MeasurementFile::kPhyphoxCsv, "phyphox accelerometer"},
+       MeasurementFile::kPhyphoxAccelerometer, "phyphox accelerometer"},
       {"phyphox accelerometer without g",
-       "\"Time (s)\",\"Linear Acceleration x (m/s^2)\"\n0.0,0.1\n", MeasurementFile::kPhyphoxCsv,
-       "phyphox accelerometer (without g)"},
+       "\"Time (s)\",\"Linear Acceleration x (m/s^2)\"\n0.0,0.1\n",
+       MeasurementFile::kPhyphoxLinearAccelerometer, "phyphox accelerometer (without g)"},
       {"Tracker", "mass A\nt\tx\ty\n0.0\t1.2E-2\t0.0\n", MeasurementFile::kTracker, "Tracker"},
       {"Tracker, several tracks", "#multi:\nmass A\tmass B\nt\tx\ty\tt\tx\ty\n",
        MeasurementFile::kTracker, "Tracker"},

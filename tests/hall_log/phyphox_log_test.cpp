@@ -86,7 +86,7 @@ LogEstimate estimate(const HallLog& log) {
 
 TEST(PhyphoxMagnetometer, TheRigsEstimatorReadsThePlatesPeriod) {
   const HallLog log = parse_hall_log(phone_csv(Form::kComma, 2, true), "phone.csv");
-  EXPECT_EQ(log.instrument, "phyphox magnetometer");
+  EXPECT_EQ(instrument_words(log.instrument), "phyphox magnetometer");
   EXPECT_EQ(log.reading.format, "phyphox");
   EXPECT_EQ(log.t_s.size(), static_cast<std::size_t>(kSeconds * kRateHz));
   const LogEstimate e = estimate(log);

@@ -58,7 +58,7 @@ std::vector<EstimateField> reading_fields() {
        .meaning = "what measured: `Hall sensor` (the rig's), `phyphox magnetometer` (a phone "
                   "beside the rig), `phyphox accelerometer` or `phyphox accelerometer (without g)` "
                   "(a phone on the plate), `Tracker` (a video's marks), `position-time table`",
-       .get = [](E e) { return V::text(e.log.instrument); }},
+       .get = [](E e) { return V::text(instrument_words(e.log.instrument)); }},
       {.json = "channel",
        .python = "channel",
        .part = P::kReading,
@@ -250,7 +250,7 @@ std::vector<EstimateField> signal_fields() {
        .null_when = "another instrument was read (its values are no ADC counts)",
        .get =
            [](E e) {
-             return e.log.instrument == kRigHallSensor ? V::number(e.estimate.baseline)
+             return e.log.instrument == MeasurementFile::kRigLog ? V::number(e.estimate.baseline)
                                                       : FieldValue();
            }},
       {.json = "pulses",

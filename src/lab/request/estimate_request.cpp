@@ -133,9 +133,8 @@ PreparedEstimate prepare_one_log(const EstimateRequest& r, FieldChecks& checks,
                        field_ref("monte_carlo.draws") + " (the Monte Carlo of mu_k); add " +
                        field_ref("monte_carlo.draws", "100000") + ", or drop them");
   if (r.h_c) {
-    p.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
-    checks.plausible(p.h_c, kHcRange, "h_c", *r.h_c);
-    p.set_up.h_c = p.h_c;
+    p.set_up.h_c = checks.not_negative(*r.h_c, Dimension::kLength, "h_c", "a height");
+    checks.plausible(*p.set_up.h_c, kHcRange, "h_c", *r.h_c);
   }
   if (r.h_c_err)
     p.h_c_err = checks.not_negative(*r.h_c_err, Dimension::kLength, "h_c_err", "an uncertainty");
@@ -306,7 +305,7 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
     mc.spacing = set_up.spacing;
     mc.spacing_err = set_up.spacing_err;
     mc.gravity = set_up.gravity;
-    mc.h_c = p.h_c;
+    mc.h_c = set_up.h_c.value_or(0.0);
     mc.h_c_err = p.h_c_err;
     out.monte_carlo =
         analytic_for_period(mc, out.estimate.stats.period_s, out.estimate.stats.period_std_s);

@@ -67,8 +67,7 @@ struct PreparedEstimate {
   std::string out;
   LogTableDefaults table;  // the table's defaults (set-up, material, temperature)
   std::optional<MonteCarloRequest> monte_carlo;
-  double h_c = 0.0;      // m, for mu_k_thick and the Monte Carlo
-  double h_c_err = 0.0;  // m
+  double h_c_err = 0.0;  // m, for the Monte Carlo (h_c itself is set_up.h_c)
   std::string mc_plot;
   // One log's material (a key or name of the paper's Table I) and temperature [K], for the
   // paper's value beside its result; the log's sidecar may name them instead.

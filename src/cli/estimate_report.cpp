@@ -22,7 +22,11 @@ std::string columns_text(const HallLogReading& r) {
   std::string from = r.columns_from == "header"
                          ? fmt::format("from the header, line {}", r.header_line)
                      : r.columns_from == "columns" ? std::string("from --columns")
-                                                   : std::string("by position: no header");
+                     : r.columns_from == "tracked"
+                         ? std::string(
+                               "the plate tracked in each frame: frictionlab track draws "
+                               "what was followed")
+                         : std::string("by position: no header");
   std::string unit;
   if (r.time_unit_from == "rate")
     unit = fmt::format("; timed by --rate {:g} Hz", r.rate_hz);
@@ -66,6 +70,11 @@ std::vector<std::string> left_out_text(const HallLog& log) {
 // Another instrument, and the channel of it read.
 std::string instrument_text(const HallLog& log) {
   const std::string words = instrument_words(log.instrument);
+  if (log.instrument == MeasurementFile::kVideo)
+    return fmt::format(
+        "{} (the plate's position along its motion, in {}, timed at its upper "
+        "turns)",
+        words, log.reading.adc_column == "x (mm)" ? "mm" : "the video's pixels");
   if (log.instrument == MeasurementFile::kPhyphoxMagnetometer)
     return fmt::format("{} ({} {}, the clearest pulses)", words,
                        log.channel == "|B|" ? "the field's magnitude" : "component", log.channel);
@@ -80,7 +89,7 @@ std::string format_text(const HallLog& log) {
                       ? "the Serial Plotter's label:value lines"
                   : log.instrument == MeasurementFile::kRigLog ? "CSV"
                                                                : instrument_text(log));
-  if (log.encoding != "utf-8") parts.push_back(log.encoding);
+  if (!log.encoding.empty() && log.encoding != "utf-8") parts.push_back(log.encoding);
   if (log.reading.ide_timestamps) parts.push_back("the Arduino IDE's timestamps taken off");
   if (log.reading.decimal_comma) parts.push_back("decimal commas");
   std::string out;

@@ -6,11 +6,13 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "hall_log/measurement_file.hpp"
 #include "hall_log/oscillation_log.hpp"
 #include "hall_log/phyphox_log.hpp"
+#include "hall_log/video_log.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
 #include "text/text.hpp"
@@ -259,17 +261,12 @@ std::string log_file_of(const std::string& path) {
   return path != "-" && std::filesystem::is_directory(path, ec) ? log_in_folder(path) : path;
 }
 
-namespace {
-
-// A file another instrument wrote (a phone's zip, a video) is named before it is read as text,
-// which it is not: its first and last 64 KiB (a zip's entries' names are at its end) say what it
-// is. A file that cannot be opened is left to the text reader, which says why.
-void refuse_other_instruments(const std::string& file) {
+RecognisedFile recognise_file(const std::string& file) {
   constexpr std::streamoff kPeekBytes = std::streamoff{1} << 16;
   std::error_code error;
-  if (!std::filesystem::is_regular_file(file, error)) return;
+  if (file == "-" || !std::filesystem::is_regular_file(file, error)) return {};
   std::ifstream in(file, std::ios::binary);
-  if (!in) return;
+  if (!in) return {};
   std::string bytes(static_cast<std::size_t>(kPeekBytes), '\0');
   in.read(bytes.data(), kPeekBytes);
   bytes.resize(static_cast<std::size_t>(in.gcount()));
@@ -284,22 +281,29 @@ void refuse_other_instruments(const std::string& file) {
   // Text (a phone's CSV, Tracker's data) is recognised as it is parsed: only what has no lines
   // here.
   const RecognisedFile recognised = recognise_measurement_file(bytes);
-  if (is_container(recognised.kind))
-    throw InputError(SourceLocation(file), not_a_rig_log(recognised));
+  return is_container(recognised.kind) ? recognised : RecognisedFile{};
 }
-
-}  // namespace
 
 LogText read_log_text(const std::string& path) {
   if (path == "-")
     return {read_text_stream(std::cin, "<stdin>", "the log", kMostTextFileBytes, kMostLogLineBytes),
             "<stdin>"};
   const std::string file = log_file_of(path);
-  refuse_other_instruments(file);
+  if (const RecognisedFile recognised = recognise_file(file); is_container(recognised.kind))
+    throw InputError(SourceLocation(file), not_a_rig_log(recognised));
   return {read_text_file(file, "the log", kMostTextFileBytes, kMostLogLineBytes), file};
 }
 
+std::optional<HallLog> read_if_video(const std::string& path, const HallLogOptions& options) {
+  const std::string file = log_file_of(path);
+  if (recognise_file(file).kind != MeasurementFile::kVideo) return std::nullopt;
+  HallLog log = read_video_log(file, options.video).log;
+  log.path = path;
+  return log;
+}
+
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
+  if (std::optional<HallLog> video = read_if_video(path, options)) return std::move(*video);
   const LogText text = read_log_text(path);
   HallLog log = parse_hall_log(text.bytes, text.file, options);
   if (path != "-") log.path = path;

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,7 +31,7 @@ inline constexpr std::size_t kMostLogLineBytes = 8192;
 struct HallLog {
   std::string path;        // as given ("<stdin>" for standard input)
   std::string file;        // the file read (a folder's log inside it)
-  std::string encoding;    // "utf-8", "utf-8 with BOM", "utf-16le", "utf-16be"
+  std::string encoding;    // "utf-8", "utf-8 with BOM", "utf-16le", "utf-16be"; "" for a video
   HallLogReading reading;  // columns, unit, and what was skipped or left out
   // What measured: the rig's Hall sensor (kRigLog), or another instrument read as one
   // (instrument_words names it).
@@ -61,6 +62,14 @@ LogText read_log_text(const std::string& path);
 // The file read for `path`: a folder's log (its hall.csv, or its only log), else the path itself
 // ("-" as it is). Throws InputError, as reading does, for a folder without exactly one log.
 std::string log_file_of(const std::string& path);
+
+// The file recognised from its first and last bytes when it is no text (a zip, a workbook, a
+// video: is_container); the rig's log (kRigLog) for any other, and for "-" or what cannot be read.
+RecognisedFile recognise_file(const std::string& file);
+
+// A video (a file, or a folder's only log) read as a log: its plate tracked with `options.video`;
+// nothing for any other file. Throws InputError as read_video_log does.
+std::optional<HallLog> read_if_video(const std::string& path, const HallLogOptions& options = {});
 
 // The same from text in memory; `name` stands for the file in messages.
 HallLog parse_hall_log(std::string_view text, const std::string& name,

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "hall_log/log_columns.hpp"
+#include "tracking/plate_tracker.hpp"
 
 namespace fl {
 
@@ -27,6 +28,7 @@ struct HallLogOptions {
   std::string columns;    // the request's `columns` ("" : the header's names, or by position)
   double rate_hz = 0.0;   // --rate (0: the log's time column)
   std::string time_unit;  // `time_unit`: "s", "ms" or "us" ("" : the name's, or inferred)
+  TrackOptions video;     // how a video's plate is tracked (its region, its scale)
 };
 
 // Lines of one kind: how many, and the first few (1-based).

@@ -65,6 +65,12 @@ std::string format_of(MeasurementFile kind) {
 
 }  // namespace
 
+HallLog log_of_oscillation(const Series& oscillation, const std::string& name) {
+  Series pulses = oscillation;
+  pulses.values = turns_at_upper_end(oscillation.values);
+  return log_of_signal(pulses, name);
+}
+
 HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind) {
   const MeasurementTable table = read_measurement_table(text, name);
   const std::vector<Candidate> found = candidates(table, kind);
@@ -78,8 +84,8 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
   std::vector<const std::vector<double>*> columns;
   for (const Candidate& c : found) columns.push_back(&table.columns[c.column]);
   const Candidate& chosen = found[clearest(columns)];
-  HallLog log = log_of_signal(
-      series_of(table, chosen.time, turns_at_upper_end(table.columns[chosen.column])), name);
+  HallLog log =
+      log_of_oscillation(series_of(table, chosen.time, table.columns[chosen.column]), name);
   say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
                     table.names[chosen.column]);
   return log;

@@ -19,6 +19,7 @@
 
 #include "hall_log/hall_log.hpp"
 #include "hall_log/measurement_file.hpp"
+#include "hall_log/measurement_table.hpp"
 
 namespace fl {
 
@@ -26,5 +27,10 @@ namespace fl {
 // accelerometer CSV; `name` stands for the file in messages. Throws InputError, located at the
 // line, for a table that cannot be read or holds no column to read.
 HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind);
+
+// The same for positions (or accelerations) already in memory, each sample at its time and line:
+// the virtual sensor's pulses at the upper end of the swing, as a log. Throws InputError as
+// log_of_signal does.
+HallLog log_of_oscillation(const Series& oscillation, const std::string& name);
 
 }  // namespace fl

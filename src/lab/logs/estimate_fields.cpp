@@ -79,11 +79,14 @@ std::vector<EstimateField> reading_fields() {
        .type = T::kText,
        .meaning = "`utf-8`, `utf-8 with BOM`, `utf-16le`, `utf-16be`, `utf-16le (no BOM)`, "
                   "`utf-16be (no BOM)`",
-       .get = [](E e) { return V::text(e.log.encoding); }},
+       .null_when = "a video was read (frames, no text)",
+       .get =
+           [](E e) { return e.log.encoding.empty() ? FieldValue() : V::text(e.log.encoding); }},
       {.json = "columns_from",
        .part = P::kReading,
        .type = T::kText,
-       .meaning = "`header`, `columns` (the request's field `columns`) or `position`",
+       .meaning = "`header`, `columns` (the request's field `columns`), `position`, or "
+                  "`tracked` (a video's plate followed in its frames)",
        .get = [](E e) { return V::text(e.log.reading.columns_from); }},
       {.json = "time_column",
        .part = P::kReading,

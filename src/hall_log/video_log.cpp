@@ -1,0 +1,30 @@
+#include "hall_log/video_log.hpp"
+
+#include "hall_log/oscillation_log.hpp"
+
+namespace fl {
+
+VideoLog read_video_log(const std::string& file, const TrackOptions& options) {
+  VideoLog out;
+  out.tracked = track_plate_in_video(file, options);
+  const PlateTrack& track = out.tracked.track;
+  Series positions;
+  positions.t_s = track.t_s;
+  positions.values = track.x;
+  for (std::size_t k = 0; k < track.t_s.size(); ++k)
+    positions.lines.push_back(static_cast<int>(k) + 1);
+  out.log = log_of_oscillation(positions, file);
+  out.log.instrument = MeasurementFile::kVideo;
+  out.log.channel = "x (" + track.unit + ")";
+  out.log.encoding = "";  // frames, not text
+  HallLogReading& r = out.log.reading;
+  r.format = "video";
+  r.columns_from = "tracked";
+  r.time_column = "frame time";
+  r.adc_column = "x (" + track.unit + ")";
+  r.time_unit = "s";
+  r.time_unit_from = "header";
+  return out;
+}
+
+}  // namespace fl

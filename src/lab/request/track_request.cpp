@@ -1,0 +1,182 @@
+#include "lab/request/track_request.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "hall_log/instrument_signal.hpp"
+#include "hall_log/oscillation_log.hpp"
+#include "io/atomic_file.hpp"
+#include "io/json_value.hpp"
+#include "lab/logs/log_estimate.hpp"
+#include "lab/request/output_paths.hpp"
+#include "text/text.hpp"
+
+namespace fl {
+namespace {
+
+constexpr const char* kTrackCsv = "track.csv";
+constexpr const char* kTrackStill = "track.png";
+
+// "X,Y,W,H" -> the four numbers, or a problem.
+std::optional<std::array<int, 4>> region_of(const std::string& text, FieldChecks& checks) {
+  std::vector<std::string_view> parts;
+  std::string_view rest = text;
+  for (std::size_t comma; (comma = rest.find(',')) != std::string_view::npos;
+       rest = rest.substr(comma + 1))
+    parts.push_back(trim(rest.substr(0, comma)));
+  parts.push_back(trim(rest));
+  std::array<int, 4> region{};
+  bool ok = parts.size() == 4;
+  for (std::size_t i = 0; ok && i < 4; ++i) {
+    const char* end = parts[i].data() + parts[i].size();
+    const auto [at, error] = std::from_chars(parts[i].data(), end, region[i]);
+    ok = error == std::errc() && at == end && region[i] >= 0 && !parts[i].empty();
+  }
+  if (ok && (region[2] < 2 || region[3] < 2)) ok = false;
+  if (!ok) {
+    checks.problem("roi", text,
+                   "expected the region as X,Y,W,H in the video's pixels (whole numbers: the "
+                   "top-left corner from the picture's top-left, then a width and a height of 2 "
+                   "or more, such as 100,200,640,240), found \"" +
+                       text + "\"");
+    return std::nullopt;
+  }
+  return region;
+}
+
+TrackOptions checked_options(const TrackRequest& request, FieldChecks& checks) {
+  TrackOptions options;
+  if (request.video.empty()) checks.problem("video", "expected a video file, found none");
+  if (request.out.empty()) checks.problem("out", "expected a folder for the track, found none");
+  if (!request.roi.empty()) options.roi = region_of(request.roi, checks);
+  if (request.scale) {
+    if (!std::isfinite(*request.scale) || *request.scale <= 0.0)
+      checks.problem("scale", fmt::format("{}", *request.scale),
+                     fmt::format("expected millimetres per pixel of the video, a finite positive "
+                                 "number, found {}",
+                                 *request.scale));
+    else
+      options.mm_per_px = *request.scale;
+  }
+  if (request.plate_length) {
+    const double length = checks.positive(*request.plate_length, Dimension::kLength, "plate_length",
+                                          "the plate's length");
+    if (std::isfinite(length) && length > 0) options.plate_length_mm = length * 1e3;
+  }
+  if (request.scale && request.plate_length)
+    checks.problem("plate_length",
+                   "expected the scale or the plate's length, found both: give one of them");
+  return options;
+}
+
+// The track as a position table `estimate` reads: comments, then "t (s)" and "x (<unit>)".
+std::string track_table(const TrackResult& result, const std::string& video) {
+  const PlateTrack& t = result.tracked.track;
+  std::string out = fmt::format(
+      "# frictionlab track: {}\n# the plate followed without clicks: {} pixels in {} patch(es), "
+      "along a line at {:.1f} deg (0 across the picture, 90 up)\n# x: its position along that "
+      "line from its mean, in {}{}\nt (s),x ({})\n",
+      video, t.pixels_followed, t.edges, t.direction_deg, t.unit,
+      t.mm_per_px ? fmt::format(" ({:.6g} mm per pixel, from the {})", *t.mm_per_px, t.scale_from)
+                  : std::string(" of the video (no scale given)"),
+      t.unit);
+  for (std::size_t k = 0; k < t.t_s.size(); ++k)
+    out += fmt::format("{:.6f},{:.4f}\n", t.t_s[k], t.x[k]);
+  return out;
+}
+
+// The first frame in grey with the followed pixels in orange and the region searched outlined.
+void write_still(const PlateTrack& t, const std::string& path) {
+  const GrayFrame& f = t.first;
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(f.width) * f.height * 3);
+  for (std::size_t p = 0; p < f.levels.size(); ++p) {
+    const unsigned char g = f.levels[p];
+    const bool followed = t.followed[p] != 0;
+    rgb[3 * p] = followed ? 255 : g;
+    rgb[3 * p + 1] = followed ? static_cast<unsigned char>(90 + g / 3) : g;
+    rgb[3 * p + 2] = followed ? 0 : g;
+  }
+  const auto box = [&](double v) { return static_cast<int>(std::lround(v * t.scale)); };
+  const int x0 = std::clamp(box(t.region[0]), 0, f.width - 1);
+  const int y0 = std::clamp(box(t.region[1]), 0, f.height - 1);
+  const int x1 = std::clamp(box(t.region[0] + t.region[2]) - 1, 0, f.width - 1);
+  const int y1 = std::clamp(box(t.region[1] + t.region[3]) - 1, 0, f.height - 1);
+  const auto paint = [&](int x, int y) {
+    const std::size_t p = static_cast<std::size_t>(y) * f.width + x;
+    rgb[3 * p] = 0;
+    rgb[3 * p + 1] = 200;
+    rgb[3 * p + 2] = 255;
+  };
+  for (int x = x0; x <= x1; ++x) paint(x, y0), paint(x, y1);
+  for (int y = y0; y <= y1; ++y) paint(x0, y), paint(x1, y);
+  write_rgb_png(path, f.width, f.height, rgb);
+}
+
+}  // namespace
+
+TrackResult track_video(const TrackRequest& request) {
+  FieldChecks checks;
+  const TrackOptions options = checked_options(request, checks);
+  checks.throw_if_any();
+  prepare_output_folder(request.out, "out");
+  refuse_overwriting_inputs(request.out, {kTrackCsv, kTrackStill}, "out",
+                            {{request.video, "the video"}});
+
+  TrackResult result;
+  result.tracked = track_plate_in_video(request.video, options);
+  const PlateTrack& t = result.tracked.track;
+  if (const std::optional<Spread> s = spread_of(t.x)) result.amplitude = 0.5 * (s->high - s->low);
+  Series positions{t.t_s, t.x, {}};
+  for (std::size_t k = 0; k < t.t_s.size(); ++k) positions.lines.push_back(static_cast<int>(k) + 1);
+  result.stats =
+      estimate_log(log_of_oscillation(positions, request.video), LogSetUp{}, false).stats;
+
+  const std::filesystem::path folder(request.out);
+  result.csv = (folder / kTrackCsv).string();
+  result.still = (folder / kTrackStill).string();
+  write_file_atomic(result.csv, track_table(result, request.video));
+  write_still(t, result.still);
+  return result;
+}
+
+nlohmann::json TrackResult::json() const {
+  const VideoStream& v = tracked.video;
+  const PlateTrack& t = tracked.track;
+  const fl_estimator::Stats& s = stats;
+  return {
+      {"video",
+       {{"container", v.container},
+        {"codec", v.codec},
+        {"width", v.width},
+        {"height", v.height},
+        {"fps", v.fps > 0 ? nlohmann::json(v.fps) : nlohmann::json(nullptr)},
+        {"frames", v.frames_read}}},
+      {"tracked",
+       {{"pixels_followed", t.pixels_followed},
+        {"patches", t.edges},
+        {"direction_deg", t.direction_deg},
+        {"noise_grey", t.noise_grey},
+        {"frames_learned", t.frames_learned},
+        {"region", t.region},
+        {"plate_length_px", json_or_null(t.plate_length_px)}}},
+      {"unit", t.unit},
+      {"mm_per_px", json_or_null(t.mm_per_px)},
+      {"scale_from", t.scale_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(t.scale_from)},
+      {"amplitude", amplitude},
+      {"periods_used", s.periods_used},
+      {"period_s", s.periods_used > 0 ? json_or_null(static_cast<double>(s.period_s))
+                                      : nlohmann::json(nullptr)},
+      {"period_std_s", s.periods_used > 1 ? json_or_null(static_cast<double>(s.period_std_s))
+                                          : nlohmann::json(nullptr)},
+      {"csv", csv},
+      {"still", still},
+  };
+}
+
+}  // namespace fl

@@ -30,7 +30,7 @@ struct VideoDesc {
   int fps = 30;                  // frames per second of video
   double slow_motion = 1.0;      // factor s: the video shows 1/s simulated seconds per second,
                                  // rendering fps x s frames per simulated second
-  std::string camera = "front";  // preset: front, top, sensor (see kCameraPresets)
+  std::string camera = "front";  // preset: front, top, sensor, phone (see kCameraPresets)
   std::optional<VideoCameraPlacement> placed;  // a placed camera instead of the preset
   double orbit = 0.0;                          // rad per second of video, about the vertical
                                                // through the camera's target
@@ -49,8 +49,12 @@ inline constexpr double kEndCardSeconds = 3.0;
 inline constexpr double kGuardBannerSeconds = 2.0;
 
 // The camera presets: the whole rig from the front (from -y, a little above and to the right),
-// from above, and a close-up on the Hall sensor and the magnet that passes under it.
-inline constexpr std::array<std::string_view, 3> kCameraPresets = {"front", "top", "sensor"};
+// from above, a close-up on the Hall sensor and the magnet that passes under it, and a phone on a
+// support beside the rig, level with the plate and square on to its motion: the picture alone,
+// as a phone records it (no overlay, captions, title or end card: what `frictionlab track` and
+// `estimate` read as a student's video).
+inline constexpr std::array<std::string_view, 4> kCameraPresets = {"front", "top", "sensor",
+                                                                   "phone"};
 
 // Reads `video:`; every error is located at its key. Keys: size ("1280x720" or [1280, 720]),
 // fps, slow_motion, camera (a preset name, or {position, target, fov}), orbit, title, end_card,

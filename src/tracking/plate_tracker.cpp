@@ -282,13 +282,12 @@ Line line_of(const std::vector<std::size_t>& pixels, int width) {
   return line;
 }
 
-// The patches of followed pixels (the plate's ends, a brick's edges): their height across the
-// line, which way the coverage grows along it, and the distance between the two furthest apart.
+// The patches of followed pixels (the plate's ends' strips, or one band when a plate's pattern
+// joins them): which way the coverage grows along the line, and how far they reach along it.
 struct Patches {
-  double height_px = 0.0;
-  double trend = 0.0;  // > 0: a pixel further along is on for more of the time
-  int ends = 0;        // patches with a tenth of the largest's pixels or more
-  std::optional<double> length_px;
+  double trend = 0.0;      // > 0: a pixel further along is on for more of the time
+  int ends = 0;            // patches with a tenth of the largest's pixels or more
+  double extent_px = 0.0;  // from the first of those to the last, along the line
 };
 
 Patches patches_along(const std::vector<GrayFrame>& frames, const Changing& changing,
@@ -322,18 +321,72 @@ Patches patches_along(const std::vector<GrayFrame>& frames, const Changing& chan
   for (const Patch& b : patches) {
     const auto n = static_cast<double>(b.pixels);
     out.trend += b.on_along - b.on * b.along / n;
-    out.height_px += n / (b.most - b.least + 1.0);
     largest = std::max(largest, b.pixels);
   }
   double first = 1e300, last = -1e300;
   for (const Patch& b : patches) {
     if (10 * b.pixels < largest) continue;
     ++out.ends;
-    first = std::min(first, b.along / static_cast<double>(b.pixels));
-    last = std::max(last, b.along / static_cast<double>(b.pixels));
+    first = std::min(first, b.least);
+    last = std::max(last, b.most + 1.0);
   }
-  if (out.ends >= 2) out.length_px = last - first;
+  out.extent_px = last - first;
   return out;
+}
+
+// How much the covered area grows for each pixel the plate moves, from the pixels' own steps:
+// with the frames in order of their covered area, each followed pixel turns on at some area, and
+// the next pixel along the line turns on one pixel of motion later. The median of those
+// differences over neighbouring pairs is the growth, whether each edge has its own strip or a
+// plate's pattern joins many edges into one band (a pair across two edges is one of few).
+double area_per_pixel_of_motion(const std::vector<GrayFrame>& frames, const Changing& changing,
+                                const Followed& followed, const Line& line) {
+  const std::size_t count = frames.size();
+  const int width = frames.front().width;
+  std::vector<double> area(count, 0.0);
+  for (std::size_t i : followed.kept)
+    for (std::size_t k = 0; k < count; ++k)
+      area[k] += changing.state(frames, i, k, followed.sense[changing.pixels[i]]);
+  std::vector<std::size_t> order(count);
+  for (std::size_t k = 0; k < count; ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return area[a] < area[b]; });
+  // Each pixel's step: the area midway between the frames either side of its best split.
+  std::vector<double> step_at(followed.mask.size(), std::nan(""));
+  const auto n = static_cast<double>(count);
+  for (std::size_t i : followed.kept) {
+    const std::size_t p = changing.pixels[i];
+    double total = 0.0;
+    for (std::size_t k = 0; k < count; ++k)
+      total += changing.state(frames, i, k, followed.sense[p]);
+    double below = 0.0, best = 1e300;
+    std::size_t split = 0;
+    for (std::size_t k = 0; k <= count; ++k) {
+      const double misfit = 2.0 * below + n - static_cast<double>(k) - total;
+      if (misfit < best) best = misfit, split = k;
+      if (k < count) below += changing.state(frames, i, order[k], followed.sense[p]);
+    }
+    if (split > 0 && split < count)
+      step_at[p] = 0.5 * (area[order[split - 1]] + area[order[split]]);
+  }
+  // Neighbours one pixel apart along the line's main axis.
+  const bool across = std::abs(line.ux) >= std::abs(line.uy);
+  const int dx = across ? (line.ux >= 0 ? 1 : -1) : 0;
+  const int dy = across ? 0 : (line.uy >= 0 ? 1 : -1);
+  const double apart = across ? std::abs(line.ux) : std::abs(line.uy);
+  std::vector<double> growth;
+  for (std::size_t i : followed.kept) {
+    const std::size_t p = changing.pixels[i];
+    const int x = static_cast<int>(p % static_cast<std::size_t>(width)) + dx;
+    const int y = static_cast<int>(p / static_cast<std::size_t>(width)) + dy;
+    if (x < 0 || y < 0 || x >= width || y >= frames.front().height) continue;
+    const std::size_t q = static_cast<std::size_t>(y) * width + x;
+    if (!std::isnan(step_at[p]) && !std::isnan(step_at[q]))
+      growth.push_back((step_at[q] - step_at[p]) / apart);
+  }
+  if (growth.empty()) return std::nan("");
+  std::nth_element(growth.begin(), growth.begin() + growth.size() / 2, growth.end());
+  return growth[growth.size() / 2];
 }
 
 }  // namespace
@@ -412,15 +465,18 @@ void PlateTracker::learn() {
   const Line line = line_of(followed_pixels, width);
   track_.direction_deg = -std::atan2(line.uy, line.ux) * 180.0 / std::numbers::pi;  // up: +
   const Patches patches = patches_along(learning_, changing, followed, line);
-  height_px_ = patches.height_px;
   // A pixel further along the line is reached later by an edge moving along it: it is on for
   // less of the time if the coverage grows with the motion. If it is on for more, turn every
   // pixel's sense so that the position grows along the line.
   if (patches.trend > 0.0)
     for (std::int8_t& s : followed.sense) s = static_cast<std::int8_t>(-s);
   track_.edges = patches.ends;
-  if (patches.length_px) track_.plate_length_px = *patches.length_px / track_.scale;
-  set_unit();
+  area_per_px_ = area_per_pixel_of_motion(learning_, changing, followed, line);
+  if (!(area_per_px_ > 0.0))
+    throw NoTrack(
+        fmt::format("nothing moves along a line in the video: {} pixels change together, "
+                    "but not as edges passing over them one after another",
+                    followed.kept.size()));
 
   for (std::size_t i : followed.kept) {
     pixels_.push_back(changing.pixels[i]);
@@ -432,16 +488,25 @@ void PlateTracker::learn() {
   track_.followed = std::move(followed.mask);
   track_.frames_learned = static_cast<int>(frames);
   learned_ = true;
-  // The positions of the frames learned from, taken from their mean as every later one is.
+  // The positions of the frames learned from [frame pixels], taken from their mean as every
+  // later one is. The followed region reaches from one end's furthest swing to the other's: its
+  // extent less the swing is the plate's length, when that is longer than the swing (a region
+  // around one end holds the swing alone).
+  unit_per_frame_px_ = 1.0;
   mean_cover_ = 0.0;
   std::vector<double> raw;
   for (const GrayFrame& f : learning_) raw.push_back(position(f));
   for (double r : raw) mean_cover_ += r / static_cast<double>(raw.size());
+  const auto [lowest, highest] = std::minmax_element(raw.begin(), raw.end());
+  const double swing = *highest - *lowest;
+  if (patches.extent_px - swing > swing)
+    track_.plate_length_px = (patches.extent_px - swing) / track_.scale;
+  set_unit();
   for (std::size_t k = 0; k < frames; ++k) {
     track_.t_s.push_back(learning_[k].t_s);
-    track_.x.push_back(raw[k] - mean_cover_);
+    track_.x.push_back((raw[k] - mean_cover_) * unit_per_frame_px_);
   }
-  mean_cover_ *= height_px_ / unit_per_frame_px_;
+  mean_cover_ *= area_per_px_;
   std::vector<GrayFrame>().swap(learning_);
 }
 
@@ -469,7 +534,7 @@ double PlateTracker::position(const GrayFrame& frame) const {
     const float e = std::clamp((frame.levels[pixels_[j]] - low_[j]) / span_[j], -0.5f, 1.5f);
     covered += static_cast<double>(sense_[j] > 0 ? e : 1.0f - e);
   }
-  return (covered - mean_cover_) / height_px_ * unit_per_frame_px_;
+  return (covered - mean_cover_) / area_per_px_ * unit_per_frame_px_;
 }
 
 PlateTrack PlateTracker::finish() {

@@ -2,20 +2,24 @@
 // line. A phone's video of the rig shows the plate as a slab of one colour whose ends sweep over
 // the background as it swings; every pixel an end passes over turns from the background's grey
 // to the plate's and back. The tracker learns from the first frames (up to `learn_frames`):
-//  - each pixel's two states, its 2nd and 98th percentiles of grey; a pixel whose states differ
-//    by more than 16 levels and 8 times the video's noise may be covered and uncovered;
+//  - each pixel's two states (the medians of its grey either side of the middle of its 2nd to
+//    98th percentile); a pixel whose states differ by 16 levels and 8 times the video's noise
+//    may be covered and uncovered;
 //  - the one motion they share: the first principal component of their coverage over time (the
 //    fraction of the way from one state to the other). The plate's edges are the pixels that
 //    follow it as an edge passing over them does: in one state while the motion is below some
 //    value, in the other above it (a step, in either sense). Pixels that change for other reasons
 //    (the rollers' turning marks, which turn at the drive's pace and not the plate's, light,
 //    noise) fit no step and are left out;
-//  - the line of the motion (the principal axis of the followed pixels), and each edge's height
-//    across it.
-// Then each frame's position along the line is the area its edges cover, divided by their height:
-// linear in the plate's displacement, to a fraction of a pixel (an edge's pixel half covered
-// counts half). With two ends in view their distance gives the plate's length in pixels, so a
-// plate length in millimetres gives the scale.
+//  - the line of the motion (the principal axis of the followed pixels), and how much the area
+//    they cover grows for each pixel the plate moves: with the frames in order of that area, each
+//    followed pixel turns at some area, and its neighbour one pixel further along the line turns
+//    one pixel of motion later (the median over neighbouring pairs).
+// Then each frame's position along the line is the area covered over that growth: linear in the
+// plate's displacement, to a fraction of a pixel (a pixel half covered counts half), whether
+// each end has a strip of its own or a plate's pattern joins its edges into one band. The
+// followed region reaches from one end's furthest swing to the other's, so its extent less the
+// swing is the plate's length in pixels, and a plate length in millimetres gives the scale.
 #pragma once
 
 #include <array>
@@ -47,8 +51,9 @@ struct PlateTrack {
   std::string scale_from;           // "scale", "plate length" or "" (none)
   double direction_deg = 0.0;       // the motion's line in the picture: 0 across, 90 up and down
   int pixels_followed = 0;          // pixels of the frames the tracker read (scaled down)
-  int edges = 0;                    // separate patches of them (a plate's two ends: 2)
-  std::optional<double> plate_length_px;  // the distance between the two largest patches
+  int edges = 0;  // separate patches of them (a plain plate's two ends: 2; a patterned one: 1)
+  std::optional<double> plate_length_px;  // the followed region's extent less the swing;
+                                          // none when it is not longer than the swing
   double noise_grey = 0.0;                // the video's noise [grey levels]
   int frames_learned = 0;
   std::array<int, 4> region{};  // searched, in the video's pixels
@@ -92,7 +97,7 @@ class PlateTracker {
   std::vector<float> span_;
   std::vector<std::int8_t> sense_;
   double mean_cover_ = 0.0;
-  double height_px_ = 1.0;  // the edges' height across the motion [frame pixels]
+  double area_per_px_ = 1.0;  // the covered area's growth per pixel of motion [frame pixels]
   double unit_per_frame_px_ = 1.0;
 };
 

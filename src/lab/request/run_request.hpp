@@ -47,7 +47,7 @@ struct RunRequest {
   std::optional<FrameSizeInput> size;        // "size"
   std::optional<int> fps;                    // "fps"
   std::optional<QuantityInput> slow_motion;  // "slow_motion"
-  std::optional<std::string> camera;         // "camera": front, top or sensor
+  std::optional<std::string> camera;         // "camera": front, top, sensor or phone
   std::optional<QuantityInput> orbit;        // "orbit": an angular speed of video time
   std::optional<std::string> title;          // "title": turns the title card on
   std::string captions;                      // "captions": a captions file

@@ -65,6 +65,13 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
     v.title_text = *request.title;
   }
   if (request.captions) v.captions = *request.captions;
+  if (v.camera == "phone" && !v.placed) {
+    // A phone records the picture alone.
+    v.title = false;
+    v.end_card = false;
+    v.phase_portrait = false;
+    v.captions.clear();
+  }
   if (!request.video.empty()) {
     check("video", video_file_problem(request.video));
     // A GIF is drawn small unless the command line asks otherwise: its size is what keeps it

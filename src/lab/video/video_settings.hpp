@@ -32,7 +32,7 @@ struct VideoRequest {
   std::optional<std::array<int, 2>> size;  // pixels
   std::optional<int> fps;
   std::optional<double> slow_motion;
-  std::optional<std::string> camera;  // a preset: front, top, sensor
+  std::optional<std::string> camera;  // a preset: front, top, sensor, phone
   std::optional<double> orbit;        // rad per second of video
   std::optional<std::string> title;   // the title card's title; given, it turns the card on
   std::optional<std::vector<Caption>> captions;  // replace the scene's (an empty list: none)

@@ -101,6 +101,10 @@ Camera rig_camera(const RigModel& model, const VideoDesc& video) {
       corners.push_back(box.corner(static_cast<Eigen::AlignedBox3f::CornerType>(i)));
     c = fit_camera(corners, Eigen::Vector3f(0.30f, -1.0f, 0.45f).normalized(), 30.0f, video.width,
                    video.height, 0.16f, 0.70f);
+  } else if (video.camera == "phone") {
+    // Level with the plate, square on to its motion, the rig filling the middle of the picture.
+    c = fit_camera(model.outline, Eigen::Vector3f(0.0f, -1.0f, 0.05f).normalized(), 40.0f,
+                   video.width, video.height, 0.15f, 0.85f);
   } else if (video.camera == "top") {
     c = fit_camera(model.outline, Eigen::Vector3f(0.0f, -0.30f, 1.0f).normalized(), 32.0f,
                    video.width, video.height, 0.08f, 0.70f);

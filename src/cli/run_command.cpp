@@ -153,7 +153,9 @@ Command add_run_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--fps", options->request.fps, "Frames per second of video (default 30)");
   sub->add_option("--slow-motion", options->slow_motion,
                   "Slow-motion factor: 4 renders 4 x fps frames per simulated second (default 1)");
-  sub->add_option("--camera", options->camera, "Camera preset: front, top, sensor or phone (a phone's plain recording beside the rig)");
+  sub->add_option(
+      "--camera", options->camera,
+      "Camera preset: front, top, sensor or phone (a phone's plain recording beside the rig)");
   sub->add_option("--orbit", options->orbit,
                   "Turn the camera about the rig at this rate of video time, e.g. \"10 deg/s\" "
                   "(default: the scene's, 0)");

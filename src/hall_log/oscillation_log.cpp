@@ -7,6 +7,7 @@
 
 #include "hall_log/instrument_signal.hpp"
 #include "hall_log/measurement_table.hpp"
+#include "hall_log/periodic_motion.hpp"
 #include "io/input_error.hpp"
 #include "text/text.hpp"
 
@@ -84,8 +85,10 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
   std::vector<const std::vector<double>*> columns;
   for (const Candidate& c : found) columns.push_back(&table.columns[c.column]);
   const Candidate& chosen = found[clearest(columns)];
-  HallLog log =
-      log_of_oscillation(series_of(table, chosen.time, table.columns[chosen.column]), name);
+  const Series series = series_of(table, chosen.time, table.columns[chosen.column]);
+  require_periodic_motion(series, SourceLocation(name, table.header_line), instrument_words(kind),
+                          "\"" + table.names[chosen.column] + "\"");
+  HallLog log = log_of_oscillation(series, name);
   say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
                     table.names[chosen.column]);
   return log;

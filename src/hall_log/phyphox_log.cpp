@@ -8,6 +8,7 @@
 
 #include "hall_log/instrument_signal.hpp"
 #include "hall_log/measurement_table.hpp"
+#include "hall_log/periodic_motion.hpp"
 #include "io/input_error.hpp"
 #include "text/text.hpp"
 
@@ -59,7 +60,11 @@ HallLog read_phyphox_magnetometer(std::string_view text, const std::string& name
   std::vector<const std::vector<double>*> values;
   for (const Channel& c : channels) values.push_back(&c.values);
   const Channel& channel = channels[clearest(values)];
-  HallLog log = log_of_signal(series_of(table, 0, channel.values), name);
+  const Series series = series_of(table, 0, channel.values);
+  require_periodic_motion(series, SourceLocation(name, table.header_line),
+                          instrument_words(MeasurementFile::kPhyphoxMagnetometer),
+                          channel.column.empty() ? "|B|" : "\"" + channel.column + "\"");
+  HallLog log = log_of_signal(series, name);
   say_what_was_read(log, table, 0, MeasurementFile::kPhyphoxMagnetometer, channel.name, "phyphox",
                     channel.column.empty() ? "|B| of the three components" : channel.column);
   return log;

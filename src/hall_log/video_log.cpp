@@ -1,6 +1,7 @@
 #include "hall_log/video_log.hpp"
 
 #include "hall_log/oscillation_log.hpp"
+#include "hall_log/periodic_motion.hpp"
 
 namespace fl {
 
@@ -13,6 +14,8 @@ VideoLog read_video_log(const std::string& file, const TrackOptions& options) {
   positions.values = track.x;
   for (std::size_t k = 0; k < track.t_s.size(); ++k)
     positions.lines.push_back(static_cast<int>(k) + 1);
+  require_periodic_motion(positions, SourceLocation(file), "video",
+                          "plate's position (" + track.unit + ")");
   out.log = log_of_oscillation(positions, file);
   out.log.instrument = MeasurementFile::kVideo;
   out.log.channel = "x (" + track.unit + ")";

@@ -67,7 +67,8 @@ std::string video_slow_motion_problem(double factor) {
 std::string video_camera_problem(std::string_view preset) {
   for (const std::string_view name : kCameraPresets)
     if (preset == name) return {};
-  return "expected a camera preset (front, top, sensor, phone) or {position, target, fov}, found \"" +
+  return "expected a camera preset (front, top, sensor, phone) or {position, target, fov}, found "
+         "\"" +
          std::string(preset) + "\"";
 }
 

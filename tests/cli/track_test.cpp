@@ -35,7 +35,8 @@ TEST_F(Track, ThePeriodOfTheLabsOwnPhoneVideo) {
   const auto summary = nlohmann::json::parse(run.out);
   const double truth = summary.at("period_trajectory_s").get<double>();
 
-  const test::CommandResult track = lab("track phone.mp4 --out tracked --plate-length 200mm --json");
+  const test::CommandResult track =
+      lab("track phone.mp4 --out tracked --plate-length 200mm --json");
   ASSERT_EQ(track.status, 0) << track.err;
   const auto t = nlohmann::json::parse(track.out);
   EXPECT_NEAR(t.at("period_s").get<double>(), truth, 5e-4 * truth);

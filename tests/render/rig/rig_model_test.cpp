@@ -216,6 +216,26 @@ TEST(RigModel, CameraPresetsFrameTheWholeRig) {
       EXPECT_LT(at->y(), 0.70f * 360.0f);
       continue;
     }
+    if (preset == "phone") {
+      // The whole rig in the picture, and the plate's motion level and across it: points along
+      // x at the plate's height land on one row, and the swing's two ends equally far from the
+      // middle (square on).
+      for (const auto& point : rig.outline) {
+        const auto at = project_to_pixel(camera, 640, 360, point);
+        ASSERT_TRUE(at.has_value());
+        EXPECT_GE(at->x(), 0.0f);
+        EXPECT_LE(at->x(), 640.0f);
+        EXPECT_GE(at->y(), 0.0f);
+        EXPECT_LE(at->y(), 360.0f);
+      }
+      const auto left = project_to_pixel(camera, 640, 360, Eigen::Vector3f(-0.03f, 0.0f, 0.004f));
+      const auto right = project_to_pixel(camera, 640, 360, Eigen::Vector3f(0.03f, 0.0f, 0.004f));
+      const auto middle = project_to_pixel(camera, 640, 360, Eigen::Vector3f(0.0f, 0.0f, 0.004f));
+      ASSERT_TRUE(left && right && middle);
+      EXPECT_NEAR(left->y(), right->y(), 0.5f);
+      EXPECT_NEAR(middle->x() - left->x(), right->x() - middle->x(), 0.5f);
+      continue;
+    }
     // Every part of the rig lands in the picture, above the overlay's bottom panels.
     for (const auto& point : rig.outline) {
       const auto at = project_to_pixel(camera, 640, 360, point);
@@ -795,7 +815,7 @@ TEST(VideoKeys, MistakesAreLocatedErrors) {
             std::string::npos);
   EXPECT_NE(video_error("  camera: side\n")
                 .find("v.yaml:6:11: error: video.camera: expected a "
-                      "camera preset (front, top, sensor)"),
+                      "camera preset (front, top, sensor, phone)"),
             std::string::npos)
       << video_error("  camera: side\n");
   EXPECT_NE(video_error("  camera: {position: [0, 0, 1], target: [0, 0, 0], fov: 170 deg}\n")

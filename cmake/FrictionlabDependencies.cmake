@@ -80,6 +80,13 @@ if(FRICTIONLAB_WITH_VIDEO AND NOT LIBAV_FOUND)
   message(FATAL_ERROR "FRICTIONLAB_WITH_VIDEO=ON but libav* were not found (apt-get install libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev)")
 endif()
 
+# phyphox's zip export through minizip (zlib's contrib, Debian's libminizip-dev).
+pkg_check_modules(MINIZIP QUIET IMPORTED_TARGET minizip)
+option(FRICTIONLAB_WITH_ZIP "phyphox's zip export through minizip" ${MINIZIP_FOUND})
+if(FRICTIONLAB_WITH_ZIP AND NOT MINIZIP_FOUND)
+  message(FATAL_ERROR "FRICTIONLAB_WITH_ZIP=ON but minizip was not found (apt-get install libminizip-dev)")
+endif()
+
 find_package(assimp QUIET)
 option(FRICTIONLAB_WITH_ASSETS "LEGO meshes through assimp" ${assimp_FOUND})
 if(FRICTIONLAB_WITH_ASSETS AND NOT assimp_FOUND)

@@ -9,7 +9,10 @@
 #include <optional>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "hall_log/measurement_file.hpp"
+#include "hall_log/measurement_zip.hpp"
 #include "hall_log/oscillation_log.hpp"
 #include "hall_log/phyphox_log.hpp"
 #include "hall_log/video_log.hpp"
@@ -124,8 +127,16 @@ std::string decode_log_text(std::string_view bytes, std::string* encoding) {
 HallLog parse_hall_log(std::string_view bytes, const std::string& name,
                        const HallLogOptions& options) {
   const RecognisedFile recognised = recognise_measurement_file(bytes);
+  if (recognised.kind == MeasurementFile::kPhyphoxExport ||
+      recognised.kind == MeasurementFile::kZip) {
+    // The instrument's CSV inside, read as that file would be, named as the zip's entry.
+    const ZipMeasurement inside = measurement_in_zip(bytes, name);
+    return parse_hall_log(inside.text, name + "/" + inside.entry, options);
+  }
   if (is_container(recognised.kind))
     throw InputError(SourceLocation(name, 1, 1), not_a_rig_log(recognised));
+  if (records_no_oscillation(recognised.kind))
+    throw InputError(SourceLocation(name, 1, 1), no_oscillation_recorded(recognised));
   if (recognised.kind != MeasurementFile::kRigLog) {
     // Another instrument's table, one channel of it read as a log.
     std::string decoded_table;
@@ -294,16 +305,30 @@ LogText read_log_text(const std::string& path) {
   return {read_text_file(file, "the log", kMostTextFileBytes, kMostLogLineBytes), file};
 }
 
-std::optional<HallLog> read_if_video(const std::string& path, const HallLogOptions& options) {
+std::optional<HallLog> read_if_not_text(const std::string& path, const HallLogOptions& options) {
   const std::string file = log_file_of(path);
-  if (recognise_file(file).kind != MeasurementFile::kVideo) return std::nullopt;
-  HallLog log = read_video_log(file, options.video).log;
-  log.path = path;
+  const MeasurementFile kind = recognise_file(file).kind;
+  std::optional<HallLog> log;
+  if (kind == MeasurementFile::kVideo) {
+    log = read_video_log(file, options.video).log;
+  } else if (kind == MeasurementFile::kPhyphoxExport || kind == MeasurementFile::kZip) {
+    std::error_code error;
+    const auto size = std::filesystem::file_size(file, error);
+    if (!error && size > kMostTextFileBytes)
+      throw InputError(SourceLocation(file),
+                       fmt::format("the zip is {} MiB; a phone's export is a few MiB", size >> 20));
+    std::ifstream in(file, std::ios::binary);
+    std::string bytes(error ? 0 : static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
+    log = parse_hall_log(bytes, file, options);
+  }
+  if (log) log->path = path;
   return log;
 }
 
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options) {
-  if (std::optional<HallLog> video = read_if_video(path, options)) return std::move(*video);
+  if (std::optional<HallLog> other = read_if_not_text(path, options)) return std::move(*other);
   const LogText text = read_log_text(path);
   HallLog log = parse_hall_log(text.bytes, text.file, options);
   if (path != "-") log.path = path;

@@ -67,9 +67,11 @@ std::string log_file_of(const std::string& path);
 // video: is_container); the rig's log (kRigLog) for any other, and for "-" or what cannot be read.
 RecognisedFile recognise_file(const std::string& file);
 
-// A video (a file, or a folder's only log) read as a log: its plate tracked with `options.video`;
-// nothing for any other file. Throws InputError as read_video_log does.
-std::optional<HallLog> read_if_video(const std::string& path, const HallLogOptions& options = {});
+// A file that is no text (a file, or a folder's only log) read as a log: a video, its plate
+// tracked with `options.video`; a zip (phyphox's export), the instrument's CSV inside it. Nothing
+// for any other file. Throws InputError as read_video_log and measurement_in_zip do.
+std::optional<HallLog> read_if_not_text(const std::string& path,
+                                        const HallLogOptions& options = {});
 
 // The same from text in memory; `name` stands for the file in messages.
 HallLog parse_hall_log(std::string_view text, const std::string& name,

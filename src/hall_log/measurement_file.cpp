@@ -84,6 +84,20 @@ bool recognise_text(std::string_view bytes, RecognisedFile* file) {
     return true;
   }
   if (contains(first, "time (s)")) {
+    if (contains(first, "latitude") || contains(first, "longitude")) {
+      *file = recognised(MeasurementFile::kPhyphoxLocation);
+      return true;
+    }
+    if (contains(first, "sound pressure") || contains(first, "frequency (hz)") ||
+        contains(first, "\"amplitude") || contains(first, "audio")) {
+      *file = recognised(MeasurementFile::kPhyphoxAudio);
+      return true;
+    }
+    if (contains(first, "gyroscope") || contains(first, "illuminance") ||
+        contains(first, "pressure (hpa)") || contains(first, "proximity")) {
+      *file = recognised(MeasurementFile::kPhyphoxOtherSensor);
+      return true;
+    }
     const bool field = contains(first, "magnetic field");
     const bool linear = contains(first, "linear acceleration");
     if (field || linear || contains(first, "acceleration")) {
@@ -134,6 +148,12 @@ std::string instrument_words(MeasurementFile kind) {
       return "Tracker";
     case MeasurementFile::kPositionTable:
       return "position-time table";
+    case MeasurementFile::kPhyphoxLocation:
+      return "phyphox location (GPS)";
+    case MeasurementFile::kPhyphoxAudio:
+      return "phyphox audio";
+    case MeasurementFile::kPhyphoxOtherSensor:
+      return "phyphox sensor of another kind";
     case MeasurementFile::kPhyphoxExport:
       return "phyphox export (zip)";
     case MeasurementFile::kExcel:
@@ -151,6 +171,24 @@ bool is_accelerometer(MeasurementFile kind) {
          kind == MeasurementFile::kPhyphoxLinearAccelerometer;
 }
 
+bool records_no_oscillation(MeasurementFile kind) {
+  return kind == MeasurementFile::kPhyphoxLocation || kind == MeasurementFile::kPhyphoxAudio ||
+         kind == MeasurementFile::kPhyphoxOtherSensor;
+}
+
+std::string no_oscillation_recorded(const RecognisedFile& file) {
+  const std::string why =
+      file.kind == MeasurementFile::kPhyphoxLocation
+          ? "GPS follows a phone across the ground to a few metres, not a plate's centimetres"
+      : file.kind == MeasurementFile::kPhyphoxAudio
+          ? "a microphone hears the rollers' motor, not the plate's swing"
+          : "that sensor does not follow the plate's swing";
+  return "expected a recording of the plate's oscillation, found a " + file.instrument +
+         " export: " + why +
+         "; record with phyphox's \"Magnetometer\" beside the rig or its \"Acceleration\" "
+         "with the phone on the plate, or film the rig (frictionlab track)";
+}
+
 bool is_container(MeasurementFile kind) {
   return kind == MeasurementFile::kPhyphoxExport || kind == MeasurementFile::kExcel ||
          kind == MeasurementFile::kZip || kind == MeasurementFile::kVideo;
@@ -162,11 +200,10 @@ std::string not_a_rig_log(const RecognisedFile& file) {
                            : file.kind == MeasurementFile::kExcel ? "an Excel workbook (.xlsx)"
                                                                   : "a " + file.instrument;
   return "expected a log of the rig's Hall sensor (a time and an ADC column), found " + what +
-         ", which the lab does not read yet; export it as CSV (phyphox) or track it with Tracker "
-         "and export its data (a video), which the lab reads, or read the period off it yourself "
-         "and give it with its error as a measured period: the lab compares it with the rig and "
-         "fits mu_k from several spacings (docs/students.md, \"Your measurements against the "
-         "lab\")";
+         ", which the lab does not read; save or export it as CSV (phyphox exports CSV too), "
+         "which the lab reads, or read the period off it yourself and give it with its error as a "
+         "measured period: the lab compares it with the rig and fits mu_k from several spacings "
+         "(docs/students.md, \"Your measurements against the lab\")";
 }
 
 }  // namespace fl

@@ -18,6 +18,9 @@ enum class MeasurementFile {
   kPhyphoxLinearAccelerometer,  // the same without g: "Linear Acceleration x (m/s^2)", ...
   kTracker,                     // Tracker's exported data: a track's name, then "t", "x", ...
   kPositionTable,               // a time column and a position column, units in the header
+  kPhyphoxLocation,             // phyphox's CSV of GPS: "Latitude (°)", ... (no oscillation)
+  kPhyphoxAudio,                // phyphox's CSV of sound: "Amplitude", "Frequency (Hz)", ...
+  kPhyphoxOtherSensor,          // phyphox's CSV of a gyroscope, light, pressure, proximity
   kPhyphoxExport,               // a zip holding phyphox's meta/ folder and one CSV per sensor
   kExcel,                       // an Office Open XML workbook (.xlsx): phyphox's, a spreadsheet's
   kZip,                         // another zip archive
@@ -31,7 +34,8 @@ std::string instrument_words(MeasurementFile kind);
 // A phone's accelerometer, with or without g.
 bool is_accelerometer(MeasurementFile kind);
 
-// Files that are no text of lines: a zip, a workbook, a video (the lab reads none of them yet).
+// Files that are no text of lines: a zip and a video (read through hall_log/measurement_zip.hpp
+// and tracking/), a workbook (named and refused).
 bool is_container(MeasurementFile kind);
 
 struct RecognisedFile {
@@ -40,11 +44,19 @@ struct RecognisedFile {
   std::string instrument = instrument_words(MeasurementFile::kRigLog);
 };
 
+// A phone's recording of something other than the plate's motion (GPS, sound, another sensor):
+// named and refused.
+bool records_no_oscillation(MeasurementFile kind);
+
+// Why such a recording gives no period, and what to record instead.
+std::string no_oscillation_recorded(const RecognisedFile& file);
+
 // Recognises a file from its first bytes (any number; the first 64 KiB are enough).
 RecognisedFile recognise_measurement_file(std::string_view bytes);
 
-// Why the rig's log reader cannot read a file recognised as a container (is_container), and
-// what to do instead: the message of the error the reader throws.
+// Why the rig's log reader cannot read a file recognised as a container (is_container) it does not
+// open (a workbook; a zip or a video in a build without minizip or libav), and what to do
+// instead: the message of the error the reader throws.
 std::string not_a_rig_log(const RecognisedFile& file);
 
 }  // namespace fl

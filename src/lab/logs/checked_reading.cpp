@@ -52,7 +52,7 @@ std::optional<std::string> outcome_of(const LogText& text, const ReadingTry& rea
 
 HallLog read_hall_log_checked(const std::string& path, const HallLogOptions& options,
                               const LogSetUp& set_up) {
-  if (std::optional<HallLog> video = read_if_video(path, options)) return std::move(*video);
+  if (std::optional<HallLog> other = read_if_not_text(path, options)) return std::move(*other);
   const LogText text = read_log_text(path);
   try {
     HallLog log = parse_hall_log(text.bytes, text.file, options);

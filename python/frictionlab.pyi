@@ -421,6 +421,8 @@ class Estimate:
     mu_k_err_worst: float
     mu_k_err_quadrature: float
     mu_k_thick: Optional[float]
+    amplitude: Optional[float]
+    amplitude_unit: Optional[str]
     spacing: float
     spacing_err: float
     gravity: float

@@ -149,6 +149,14 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
       "                       for l = {:.1f} +- {:.1f} mm, g = {:.3f} m/s^2, dT the "
       "standard deviation\n",
       set_up.spacing * 1e3, set_up.spacing_err * 1e3, set_up.gravity);
+  std::string unit;
+  if (const std::optional<double> amplitude = plate_amplitude(log, est, &unit))
+    fmt::print("  amplitude            {:.4g} {}{}\n", *amplitude,
+               unit.empty() ? "(the file's unit)" : unit,
+               is_accelerometer(log.instrument)
+                   ? fmt::format(" (the axis's {:.4g} {} over (2 pi / T)^2)", *log.half_swing,
+                                 log.swing_unit)
+                   : std::string(""));
   if (const std::optional<double> thick = mu_k_thick(est))
     fmt::print("  mu_k thick           {:.4f} (the thick formula, h_c = {:.2f} mm)\n", *thick,
                *set_up.h_c * 1e3);

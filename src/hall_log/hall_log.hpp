@@ -36,9 +36,14 @@ struct HallLog {
   // What measured: the rig's Hall sensor (kRigLog), or another instrument read as one
   // (instrument_words names it).
   MeasurementFile instrument = MeasurementFile::kRigLog;
-  std::string channel;               // the channel read of several ("x", "|B|"); "" for one
-  std::vector<double> t_s;           // sample times [s] on the log's own axis (wraps of a
-                                     // microsecond clock undone)
+  std::string channel;  // the channel read of several ("x", "|B|"); "" for one
+  // The amplitude of the channel read (its strongest oscillation's, hall_log/periodic_motion.hpp)
+  // in `swing_unit`, for an instrument that follows the plate's position or its acceleration;
+  // none for the Hall sensor and a magnetometer, whose pulses are no measure of the motion.
+  std::optional<double> half_swing;
+  std::string swing_unit;   // the column's ("m", "mm", "px", "m/s^2"); "" when its header says none
+  std::vector<double> t_s;  // sample times [s] on the log's own axis (wraps of a
+                            // microsecond clock undone)
   std::vector<uint32_t> t_us;        // the same in microseconds since the first sample, on a 32-bit
                                      // clock that wraps like the firmware's (for the estimator)
   std::vector<uint16_t> adc;         // ADC values [counts]

@@ -66,10 +66,31 @@ std::string format_of(MeasurementFile kind) {
 
 }  // namespace
 
-HallLog log_of_oscillation(const Series& oscillation, const std::string& name) {
+HallLog log_of_oscillation(const Series& oscillation, const std::string& name,
+                           const std::string& unit) {
   Series pulses = oscillation;
   pulses.values = turns_at_upper_end(oscillation.values);
-  return log_of_signal(pulses, name);
+  HallLog log = log_of_signal(pulses, name);
+  if (const Oscillation o = strongest_oscillation(oscillation); o.amplitude > 0.0)
+    log.half_swing = o.amplitude;
+  log.swing_unit = unit;
+  return log;
+}
+
+std::string column_unit(std::string_view header) {
+  const std::string_view h = trim(header, " \t\"");
+  for (const auto& [open, close] : {std::pair{'(', ')'}, std::pair{'[', ']'}}) {
+    const std::size_t at = h.rfind(open);
+    if (at != std::string_view::npos && !h.empty() && h.back() == close)
+      return std::string(trim(h.substr(at + 1, h.size() - at - 2)));
+  }
+  const std::size_t under = h.rfind('_');
+  if (under != std::string_view::npos) {
+    const std::string suffix = ascii_lower(h.substr(under + 1));
+    for (const char* unit : {"m", "cm", "mm", "px"})
+      if (suffix == unit) return suffix;
+  }
+  return "";
 }
 
 HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind) {
@@ -88,7 +109,7 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
   const Series series = series_of(table, chosen.time, table.columns[chosen.column]);
   require_periodic_motion(series, SourceLocation(name, table.header_line), instrument_words(kind),
                           "\"" + table.names[chosen.column] + "\"");
-  HallLog log = log_of_oscillation(series, name);
+  HallLog log = log_of_oscillation(series, name, column_unit(table.names[chosen.column]));
   say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
                     table.names[chosen.column]);
   return log;

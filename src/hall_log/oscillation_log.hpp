@@ -29,8 +29,13 @@ namespace fl {
 HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind);
 
 // The same for positions (or accelerations) already in memory, each sample at its time and line:
-// the virtual sensor's pulses at the upper end of the swing, as a log. Throws InputError as
-// log_of_signal does.
-HallLog log_of_oscillation(const Series& oscillation, const std::string& name);
+// the virtual sensor's pulses at the upper end of the swing, as a log, with half its swing in
+// `unit`. Throws InputError as log_of_signal does.
+HallLog log_of_oscillation(const Series& oscillation, const std::string& name,
+                           const std::string& unit);
+
+// The unit a column's header gives: "Position (m)" -> "m", "x [mm]" -> "mm", "x_mm" -> "mm",
+// "Linear Acceleration x (m/s^2)" -> "m/s^2"; "" when it gives none ("x", Tracker's).
+std::string column_unit(std::string_view header);
 
 }  // namespace fl

@@ -73,6 +73,49 @@ Periodicity periodicity_of(const Series& channel) {
   return out;
 }
 
+Oscillation strongest_oscillation(const Series& channel) {
+  const Periodicity p = periodicity_of(channel);
+  if (!(p.strongest_hz > 0.0)) return {};
+  const std::size_t n = channel.values.size();
+  const std::size_t every = (n + kMostSamples - 1) / kMostSamples;
+  std::vector<double> t, v;
+  double mean = 0.0;
+  for (std::size_t k = 0; k < n; k += every) {
+    t.push_back(channel.t_s[k]);
+    v.push_back(channel.values[k]);
+    mean += channel.values[k];
+  }
+  mean /= static_cast<double>(v.size());
+  // The least-squares sinusoid at f: its cosine and sine parts solved from the 2x2 normal
+  // equations (the samples need not span whole periods).
+  const auto fit = [&](double f) {
+    double cc = 0.0, ss = 0.0, cs = 0.0, xc = 0.0, xs = 0.0;
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const double phase = 2.0 * std::numbers::pi * f * t[k];
+      const double c = std::cos(phase), s = std::sin(phase), x = v[k] - mean;
+      cc += c * c, ss += s * s, cs += c * s, xc += x * c, xs += x * s;
+    }
+    const double det = cc * ss - cs * cs;
+    if (!(std::abs(det) > 0.0)) return 0.0;
+    const double a = (xc * ss - xs * cs) / det, b = (xs * cc - xc * cs) / det;
+    return std::hypot(a, b);
+  };
+  // Golden-section search for the largest amplitude within a resolution step of the peak.
+  const double span_s = channel.t_s.back() - channel.t_s.front();
+  double lo = p.strongest_hz - 0.5 / span_s, hi = p.strongest_hz + 0.5 / span_s;
+  const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo);
+  double f1 = fit(x1), f2 = fit(x2);
+  for (int i = 0; i < 40; ++i) {
+    if (f1 < f2) {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = fit(x2);
+    } else {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = fit(x1);
+    }
+  }
+  return f1 > f2 ? Oscillation{x1, f1} : Oscillation{x2, f2};
+}
+
 void require_periodic_motion(const Series& channel, const SourceLocation& where,
                              const std::string& instrument, const std::string& column) {
   const Periodicity p = periodicity_of(channel);

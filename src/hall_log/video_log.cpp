@@ -16,7 +16,7 @@ VideoLog read_video_log(const std::string& file, const TrackOptions& options) {
     positions.lines.push_back(static_cast<int>(k) + 1);
   require_periodic_motion(positions, SourceLocation(file), "video",
                           "plate's position (" + track.unit + ")");
-  out.log = log_of_oscillation(positions, file);
+  out.log = log_of_oscillation(positions, file, track.unit);
   out.log.instrument = MeasurementFile::kVideo;
   out.log.channel = "x (" + track.unit + ")";
   out.log.encoding = "";  // frames, not text

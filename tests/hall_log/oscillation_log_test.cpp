@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 
@@ -58,6 +59,13 @@ TEST(OscillationLog, TrackersPositionsAtAPhoneVideosFrameRates) {
     EXPECT_EQ(log.channel, "x");
     EXPECT_EQ(log.reading.format, "tracker");
     EXPECT_NEAR(period_of(log), kPeriod, 5e-4 * kPeriod) << fps << " fps";
+    // The positions' amplitude, in Tracker's unit (its header names none).
+    std::string unit = "?";
+    const std::optional<double> amplitude =
+        plate_amplitude(log, estimate_log(log, LogSetUp{}, false), &unit);
+    ASSERT_TRUE(amplitude.has_value());
+    EXPECT_EQ(unit, "");
+    EXPECT_NEAR(*amplitude, kAmplitude, 0.01 * kAmplitude);
   }
 }
 
@@ -130,6 +138,14 @@ TEST(OscillationLog, APhoneOnThePlateFeelsThePeriod) {
               with_g ? "phyphox accelerometer" : "phyphox accelerometer (without g)");
     EXPECT_EQ(log.channel, "y");
     EXPECT_NEAR(period_of(log), kPeriod, 5e-4 * kPeriod) << with_g;
+    // The amplitude as a / omega^2, the axis's sinusoid fitted (its 0.05 m/s^2 of noise on a swing
+    // of 0.9 m/s^2 averages out).
+    std::string unit;
+    const std::optional<double> amplitude =
+        plate_amplitude(log, estimate_log(log, LogSetUp{}, false), &unit);
+    ASSERT_TRUE(amplitude.has_value());
+    EXPECT_EQ(unit, "m");
+    EXPECT_NEAR(*amplitude, kAmplitude, 0.01 * kAmplitude);
   }
 }
 

@@ -360,6 +360,27 @@ std::vector<EstimateField> verdict_fields() {
                   "request's h_c (the plate's centre of mass above the contact line)",
        .null_when = "no h_c was given, or the log gave no period",
        .get = [](E e) { return V::number(mu_k_thick(e.estimate)); }},
+      {.json = "amplitude",
+       .python = "amplitude",
+       .meaning = "the plate's amplitude in `amplitude_unit`: the least-squares sinusoid's at "
+                  "the strongest frequency of the positions read, or of the accelerometer's axis "
+                  "over omega^2 = (2 pi / T)^2 (a mean over the record, if the swing changes)",
+       .null_when = "the instrument does not follow the plate's motion (the Hall sensor, a "
+                    "magnetometer: pulses), or the log gave no period",
+       .get = [](E e) { return V::number(plate_amplitude(e.log, e.estimate)); }},
+      {.json = "amplitude_unit",
+       .python = "amplitude_unit",
+       .type = T::kText,
+       .meaning = "the amplitude's unit: the position column's (`m`, `mm`, `px`), `m` from an "
+                  "accelerometer",
+       .null_when = "there is no amplitude, or the column's header names no unit (Tracker's "
+                    "data: the unit its video was calibrated in)",
+       .get =
+           [](E e) {
+             std::string unit;
+             return plate_amplitude(e.log, e.estimate, &unit) && !unit.empty() ? V::text(unit)
+                                                                                 : FieldValue();
+           }},
   };
   // clang-format on
 }

@@ -328,6 +328,19 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
   return data;
 }
 
+std::optional<double> plate_amplitude(const HallLog& log, const LogEstimate& estimate,
+                                      std::string* unit) {
+  const double period = estimate.stats.period_s;
+  if (!log.half_swing || !(period > 0.0)) return std::nullopt;
+  if (is_accelerometer(log.instrument)) {
+    const double omega = 2.0 * std::numbers::pi / period;
+    if (unit != nullptr) *unit = log.swing_unit == "m/s^2" ? "m" : log.swing_unit + " s^2";
+    return *log.half_swing / (omega * omega);
+  }
+  if (unit != nullptr) *unit = log.swing_unit;
+  return log.half_swing;
+}
+
 std::optional<double> mu_k_thick(const LogEstimate& estimate) {
   const LogSetUp& s = estimate.set_up;
   const double period = estimate.stats.period_s;

@@ -54,6 +54,13 @@ struct LogEstimate {
 // without an h_c or a period.
 std::optional<double> mu_k_thick(const LogEstimate& estimate);
 
+// The plate's amplitude from an instrument that follows its motion: the amplitude of its
+// positions' oscillation, or of an accelerometer's axis over omega^2 (a = -omega^2 x, omega = 2 pi
+// / T: metres from m/s^2). `unit` is set to the amplitude's ("" when the file names none: Tracker's
+// calibration). nullopt for the Hall sensor and a magnetometer, or without a period.
+std::optional<double> plate_amplitude(const HallLog& log, const LogEstimate& estimate,
+                                      std::string* unit = nullptr);
+
 // Runs the estimator over the log; `traces` keeps the per-sample levels for a plot.
 LogEstimate estimate_log(const HallLog& log, const LogSetUp& set_up, bool traces);
 

@@ -135,7 +135,7 @@ TrackResult track_video(const TrackRequest& request) {
   Series positions{t.t_s, t.x, {}};
   for (std::size_t k = 0; k < t.t_s.size(); ++k) positions.lines.push_back(static_cast<int>(k) + 1);
   result.stats =
-      estimate_log(log_of_oscillation(positions, request.video), LogSetUp{}, false).stats;
+      estimate_log(log_of_oscillation(positions, request.video, t.unit), LogSetUp{}, false).stats;
 
   const std::filesystem::path folder(request.out);
   result.csv = (folder / kTrackCsv).string();

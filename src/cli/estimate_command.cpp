@@ -54,6 +54,9 @@ struct EstimateOptions {
   std::string gravity = quantity_input_text(EstimateRequest{}.gravity);
   std::string geometry = EstimateRequest{}.geometry;
   LogReadingOptions reading;
+  std::string roi;  // a video's
+  std::optional<double> scale;
+  std::string plate_length;
   std::string plot;
   bool json = false;
   std::string follow;
@@ -109,6 +112,9 @@ EstimateRequest request_of(const EstimateOptions& o, const CLI::App& sub,
   r.columns = o.reading.columns;
   if (!o.reading.rate.empty()) r.rate = o.reading.rate;
   r.time_unit = o.reading.time_unit;
+  r.roi = o.roi;
+  r.scale = o.scale;
+  if (!o.plate_length.empty()) r.plate_length = o.plate_length;
   r.plot = o.plot;
   r.out = o.out;
   if (!o.material.empty()) r.material = o.material;
@@ -188,6 +194,13 @@ Command add_estimate_command(CLI::App& app, const GlobalOptions& global) {
                   "input. Several logs, a folder of logs or a pattern (logs/*.csv) give a table, "
                   "one row per log");
   add_log_reading_options(*sub, options->reading, "");
+  sub->add_option("--roi", options->roi,
+                  "A video's region where the plate is, X,Y,W,H in its pixels (default: the "
+                  "whole picture; frictionlab track shows what was followed)");
+  sub->add_option("--scale", options->scale,
+                  "A video's millimetres per pixel, for the amplitude in mm");
+  sub->add_option("--plate-length", options->plate_length,
+                  "Or the plate's length (200mm), both its ends in view");
   sub->add_option("--spacing", options->spacing, "Roller spacing l")->capture_default_str();
   sub->add_option("--spacing-err", options->spacing_err, "Uncertainty dl of the spacing")
       ->capture_default_str();

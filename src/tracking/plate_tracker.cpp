@@ -19,6 +19,7 @@ constexpr double kNoisesOfChange = 8.0;    // and by this many times the video's
 constexpr double kMostMisfit = 0.25;       // of a pixel's coverage to a step in the shared motion
 constexpr std::size_t kLeastFollowed = 8;  // pixels for a track
 constexpr int kPowerIterations = 60;
+constexpr int kLongestBaseline = 8;  // pixels, for the growth of the covered area
 
 // The video's noise in grey levels: the spread of frame-to-frame changes of pixels that do not
 // move (the median change, which most pixels show), as a standard deviation.
@@ -283,46 +284,32 @@ Line line_of(const std::vector<std::size_t>& pixels, int width) {
 }
 
 // The patches of followed pixels (the plate's ends' strips, or one band when a plate's pattern
-// joins them): which way the coverage grows along the line, and how far they reach along it.
+// joins them): how many, and how far they reach along the line.
 struct Patches {
-  double trend = 0.0;      // > 0: a pixel further along is on for more of the time
   int ends = 0;            // patches with a tenth of the largest's pixels or more
   double extent_px = 0.0;  // from the first of those to the last, along the line
 };
 
-Patches patches_along(const std::vector<GrayFrame>& frames, const Changing& changing,
-                      const Followed& followed, const Line& line) {
-  const int width = frames.front().width;
+Patches patches_along(const Followed& followed, const Changing& changing, const Line& line,
+                      int width, int height) {
   int patch_count = 0;
-  const std::vector<int> patch =
-      patches_of(followed.mask, width, frames.front().height, &patch_count);
+  const std::vector<int> patch = patches_of(followed.mask, width, height, &patch_count);
   struct Patch {
-    double least = 1e300, most = -1e300, along = 0.0, on = 0.0, on_along = 0.0;
+    double least = 1e300, most = -1e300;
     std::size_t pixels = 0;
   };
   std::vector<Patch> patches(static_cast<std::size_t>(patch_count));
   for (std::size_t i : followed.kept) {
     const std::size_t p = changing.pixels[i];
-    double on = 0.0;
-    for (std::size_t k = 0; k < frames.size(); ++k)
-      on += changing.state(frames, i, k, followed.sense[p]);
-    on /= static_cast<double>(frames.size());
     const double q = line.along(p, width);
     Patch& b = patches[static_cast<std::size_t>(patch[p])];
     b.least = std::min(b.least, q);
     b.most = std::max(b.most, q);
-    b.along += q;
-    b.on += on;
-    b.on_along += on * q;
     ++b.pixels;
   }
-  Patches out;
   std::size_t largest = 0;
-  for (const Patch& b : patches) {
-    const auto n = static_cast<double>(b.pixels);
-    out.trend += b.on_along - b.on * b.along / n;
-    largest = std::max(largest, b.pixels);
-  }
+  for (const Patch& b : patches) largest = std::max(largest, b.pixels);
+  Patches out;
   double first = 1e300, last = -1e300;
   for (const Patch& b : patches) {
     if (10 * b.pixels < largest) continue;
@@ -336,9 +323,10 @@ Patches patches_along(const std::vector<GrayFrame>& frames, const Changing& chan
 
 // How much the covered area grows for each pixel the plate moves, from the pixels' own steps:
 // with the frames in order of their covered area, each followed pixel turns on at some area, and
-// the next pixel along the line turns on one pixel of motion later. The median of those
-// differences over neighbouring pairs is the growth, whether each edge has its own strip or a
-// plate's pattern joins many edges into one band (a pair across two edges is one of few).
+// the pixel k further along the line turns on k pixels of motion later. The median of those
+// differences over k, over pairs of followed pixels, is the growth, whether each edge has its own
+// strip or a plate's pattern joins many edges into one band (a pair across two edges is one of
+// few).
 double area_per_pixel_of_motion(const std::vector<GrayFrame>& frames, const Changing& changing,
                                 const Followed& followed, const Line& line) {
   const std::size_t count = frames.size();
@@ -369,7 +357,10 @@ double area_per_pixel_of_motion(const std::vector<GrayFrame>& frames, const Chan
     if (split > 0 && split < count)
       step_at[p] = 0.5 * (area[order[split - 1]] + area[order[split]]);
   }
-  // Neighbours one pixel apart along the line's main axis.
+  // Pixels up to kLongestBaseline apart along the line's main axis, every one between them
+  // followed: a video's frames sample the swing at a few dozen phases when its period is close to
+  // a whole number of frames, so the areas where pixels turn come in steps of about a pixel of
+  // motion, and a longer baseline divides that step.
   const bool across = std::abs(line.ux) >= std::abs(line.uy);
   const int dx = across ? (line.ux >= 0 ? 1 : -1) : 0;
   const int dy = across ? 0 : (line.uy >= 0 ? 1 : -1);
@@ -377,12 +368,19 @@ double area_per_pixel_of_motion(const std::vector<GrayFrame>& frames, const Chan
   std::vector<double> growth;
   for (std::size_t i : followed.kept) {
     const std::size_t p = changing.pixels[i];
-    const int x = static_cast<int>(p % static_cast<std::size_t>(width)) + dx;
-    const int y = static_cast<int>(p / static_cast<std::size_t>(width)) + dy;
-    if (x < 0 || y < 0 || x >= width || y >= frames.front().height) continue;
-    const std::size_t q = static_cast<std::size_t>(y) * width + x;
-    if (!std::isnan(step_at[p]) && !std::isnan(step_at[q]))
-      growth.push_back((step_at[q] - step_at[p]) / apart);
+    if (std::isnan(step_at[p])) continue;
+    int x = static_cast<int>(p % static_cast<std::size_t>(width));
+    int y = static_cast<int>(p / static_cast<std::size_t>(width));
+    std::optional<std::size_t> far;
+    int steps = 0;
+    for (int k = 1; k <= kLongestBaseline; ++k) {
+      x += dx, y += dy;
+      if (x < 0 || y < 0 || x >= width || y >= frames.front().height) break;
+      const std::size_t q = static_cast<std::size_t>(y) * width + x;
+      if (std::isnan(step_at[q])) break;
+      far = q, steps = k;
+    }
+    if (far) growth.push_back((step_at[*far] - step_at[p]) / (steps * apart));
   }
   if (growth.empty()) return std::nan("");
   std::nth_element(growth.begin(), growth.begin() + growth.size() / 2, growth.end());
@@ -464,14 +462,17 @@ void PlateTracker::learn() {
   for (std::size_t i : followed.kept) followed_pixels.push_back(changing.pixels[i]);
   const Line line = line_of(followed_pixels, width);
   track_.direction_deg = -std::atan2(line.uy, line.ux) * 180.0 / std::numbers::pi;  // up: +
-  const Patches patches = patches_along(learning_, changing, followed, line);
-  // A pixel further along the line is reached later by an edge moving along it: it is on for
-  // less of the time if the coverage grows with the motion. If it is on for more, turn every
-  // pixel's sense so that the position grows along the line.
-  if (patches.trend > 0.0)
-    for (std::int8_t& s : followed.sense) s = static_cast<std::int8_t>(-s);
+  const Patches patches = patches_along(followed, changing, line, width, track_.first.height);
   track_.edges = patches.ends;
+  // The next pixel along the line turns later as the covered area grows, if it grows with the
+  // motion along the line; if it turns earlier, every pixel's sense is turned over (the area
+  // becomes what it did not cover, and the growth changes sign) so that the position grows along
+  // the line.
   area_per_px_ = area_per_pixel_of_motion(learning_, changing, followed, line);
+  if (area_per_px_ < 0.0) {
+    for (std::int8_t& s : followed.sense) s = static_cast<std::int8_t>(-s);
+    area_per_px_ = -area_per_px_;
+  }
   if (!(area_per_px_ > 0.0))
     throw NoTrack(
         fmt::format("nothing moves along a line in the video: {} pixels change together, "
@@ -516,7 +517,7 @@ void PlateTracker::set_unit() {
     track_.scale_from = "scale";
   } else if (options_.plate_length_mm) {
     if (!track_.plate_length_px)
-      throw std::invalid_argument(
+      throw std::domain_error(
           "the plate's length gives the scale only with both its ends in view; the tracker "
           "follows one patch: give the scale (millimetres per pixel) instead");
     track_.mm_per_px = *options_.plate_length_mm / *track_.plate_length_px;

@@ -13,8 +13,8 @@
 //    noise) fit no step and are left out;
 //  - the line of the motion (the principal axis of the followed pixels), and how much the area
 //    they cover grows for each pixel the plate moves: with the frames in order of that area, each
-//    followed pixel turns at some area, and its neighbour one pixel further along the line turns
-//    one pixel of motion later (the median over neighbouring pairs).
+//    followed pixel turns at some area, and the pixel k further along the line turns k pixels of
+//    motion later (the median over pairs up to 8 pixels apart).
 // Then each frame's position along the line is the area covered over that growth: linear in the
 // plate's displacement, to a fraction of a pixel (a pixel half covered counts half), whether
 // each end has a strip of its own or a plate's pattern joins its edges into one band. The
@@ -78,7 +78,7 @@ class PlateTracker {
   // Takes the next frame (all of one size, in order of time).
   void add(const GrayFrame& frame);
   // The track; throws NoTrack when nothing to follow was found, std::invalid_argument for a
-  // region outside the frames or a plate length with fewer than two ends in view.
+  // region outside the frames, std::domain_error for a plate length with one end in view.
   PlateTrack finish();
 
  private:

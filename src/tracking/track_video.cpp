@@ -26,9 +26,10 @@ VideoTrack track_plate_in_video(const std::string& path, const TrackOptions& opt
   } catch (const NoTrack& e) {
     throw InputError(SourceLocation(path), e.what());
   } catch (const std::invalid_argument& e) {
+    throw InputError(SourceLocation(path), std::string(e.what()) + " (" + field_ref("roi") + ")");
+  } catch (const std::domain_error& e) {
     throw InputError(SourceLocation(path),
-                     std::string(e.what()) + " (" +
-                         (options.roi ? field_ref("roi") : field_ref("plate_length")) + ")");
+                     std::string(e.what()) + " (" + field_ref("plate_length") + ")");
   }
   return out;
 }

@@ -118,7 +118,7 @@ TEST(PlateTracker, ARegionLeavesTheOtherEndOut) {
   EXPECT_FALSE(track.plate_length_px.has_value());
   EXPECT_NEAR(fit_to_truth(track, scene).slope, 1.0, 0.03);
   options.plate_length_mm = 200.0;
-  EXPECT_THROW(tracked(scene, 10.0, 30.0, options), std::invalid_argument);
+  EXPECT_THROW(tracked(scene, 10.0, 30.0, options), std::domain_error);
   options.plate_length_mm.reset();
   options.roi = std::array<int, 4>{200, 40, 80, 40};  // beyond the right side
   EXPECT_THROW(tracked(scene, 10.0, 30.0, options), std::invalid_argument);

@@ -2,6 +2,7 @@
 #include "hall_log/log_sidecar.hpp"
 #include "io/unknown_material.hpp"
 #include "lab/request/lab_data.hpp"
+#include "lab/request/video_fields.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -185,6 +186,7 @@ PreparedEstimate prepare_estimate(const EstimateRequest& r) {
                    "expected auto, one or pair, found \"" + r.geometry + "\"");
   p.reading.columns = r.columns;
   p.reading.time_unit = r.time_unit;
+  p.reading.video = checked_track_options(r.roi, r.scale, r.plate_length, checks);
   if (r.rate) {
     p.reading.rate_hz = checks.quantity(*r.rate, Dimension::kFrequency, "rate");
     if (!checks.has("rate") && (!(p.reading.rate_hz > 0.0) || !std::isfinite(p.reading.rate_hz)))

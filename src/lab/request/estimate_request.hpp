@@ -38,6 +38,9 @@ struct EstimateRequest {
   std::string columns;                                // "columns": the log's fields in order
   std::optional<QuantityInput> rate;                  // "rate": time samples by their count
   std::string time_unit;                              // "time_unit": us, ms or s
+  std::string roi;                                    // "roi": a video's region, X,Y,W,H
+  std::optional<double> scale;                        // "scale": a video's mm per pixel
+  std::optional<QuantityInput> plate_length;          // "plate_length": or the plate's length
   std::string plot;                                   // "plot": one log's signal, a PNG
   std::string out;                                    // "out": several logs' table's folder
   std::optional<std::string> material;                // "material": several logs

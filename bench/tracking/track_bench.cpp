@@ -12,14 +12,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
-#include "render/sinks/video.hpp"
-#include "support/synthetic_plate_video.hpp"
+#include "support/filmed_plate.hpp"
 #include "tracking/track_video.hpp"
+#include "tracking/video_decoder_module.hpp"
 
 namespace {
 
@@ -53,26 +52,12 @@ std::string phone_video() {
   scene.plate_length_px = 900.0;
   scene.plate_height_px = 80.0;
   scene.amplitude_px = 160.0;
-  fl::render::VideoOptions options;
-  options.path = path.string();
-  options.fps = 60;
-  options.preset = "medium";
-  auto sink = fl::render::make_mp4_sink(options);
-  std::mt19937 random(1);
-  fl::render::Image rgba(scene.width, scene.height);
-  for (int k = 0; k < 600; ++k) {
-    const fl::GrayFrame f = scene.frame(k / 60.0, random);
-    for (std::size_t p = 0; p < f.levels.size(); ++p) {
-      for (int c = 0; c < 3; ++c) rgba.rgba[4 * p + c] = f.levels[p];
-      rgba.rgba[4 * p + 3] = 255;
-    }
-    sink->write(rgba.view());
-  }
-  sink->finish();
+  fl::test::film_plate(scene, 10.0, 60, path.string(), "medium");
   return path.string();
 }
 
 void track(benchmark::State& state, const std::string& path) {
+  setenv(fl::kVideoDecoderVariable, FRICTIONLAB_BENCH_DECODER_MODULE, 0);
   double video_seconds = 0.0, wall_seconds = 0.0, frames = 0.0, peak = 0.0;
   for (auto _ : state) {
     reset_peak();

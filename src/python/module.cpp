@@ -1,7 +1,36 @@
 // import frictionlab: the lab from Python, over the same libraries the frictionlab command uses.
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
 #include <pybind11/pybind11.h>
 
 #include "python/bindings.hpp"
+#include "tracking/video_decoder_module.hpp"
+
+namespace {
+
+// The decoder module beside this Python module (an installed copy), else the build's: where the
+// tracker looks when $FRICTIONLAB_DECODER_MODULE does not say (it would look beside the running
+// executable, which is python3).
+void find_decoder_module() {
+  const char* env = std::getenv(fl::kVideoDecoderVariable);
+  if (env != nullptr && *env != '\0') return;
+  std::string path = FRICTIONLAB_PYTHON_DECODER_MODULE;
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&find_decoder_module), &info) != 0 &&
+      info.dli_fname != nullptr) {
+    const std::filesystem::path beside =
+        std::filesystem::path(info.dli_fname).parent_path() / fl::kVideoDecoderFile;
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(beside, ec)) path = beside.string();
+  }
+  if (!path.empty()) setenv(fl::kVideoDecoderVariable, path.c_str(), 0);
+}
+
+}  // namespace
 
 PYBIND11_MODULE(frictionlab, m) {
   m.doc() =
@@ -16,6 +45,7 @@ PYBIND11_MODULE(frictionlab, m) {
       "\"1600rpm\").\n"
       "Bad input raises InputError with the message the command prints (file:line:column).";
   m.attr("__version__") = FRICTIONLAB_VERSION;
+  find_decoder_module();
   fl::python::bind_input_error(m);
   fl::python::bind_common_types(m);
   fl::python::bind_scene(m);

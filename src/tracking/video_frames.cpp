@@ -1,224 +1,155 @@
 #include "tracking/video_frames.hpp"
 
-#include <cmath>
-#include <cstdio>
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <exception>
 #include <filesystem>
-#include <fstream>
-#include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include "io/input_error.hpp"
-
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/imgutils.h>
-#include <libswscale/swscale.h>
-}
+#include "tracking/video_decoder_module.hpp"
 
 namespace fl {
 namespace {
 
-std::string av_text(int code) {
-  char text[AV_ERROR_MAX_STRING_SIZE] = {};
-  av_strerror(code, text, sizeof text);
-  return text;
+namespace fs = std::filesystem;
+
+#ifdef FRICTIONLAB_DECODER_BUILT
+constexpr bool kDecoderBuilt = true;
+#else
+constexpr bool kDecoderBuilt = false;
+#endif
+
+constexpr const char* kWithoutLibav =
+    "this build of frictionlab reads no video (it was built without libav: apt-get install "
+    "libavcodec-dev libavformat-dev libswscale-dev and build again)";
+
+// $FRICTIONLAB_DECODER_MODULE, else the module beside the running executable.
+fs::path module_path() {
+  std::error_code ec;
+  if (const char* env = std::getenv(kVideoDecoderVariable); env != nullptr && *env != '\0') {
+    const fs::path absolute = fs::absolute(fs::path(env), ec);
+    return ec ? fs::path(env) : absolute;
+  }
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  return ec ? fs::path(kVideoDecoderFile) : exe.parent_path() / kVideoDecoderFile;
 }
 
-struct FormatCloser {
-  void operator()(AVFormatContext* f) const { avformat_close_input(&f); }
-};
-struct CodecCloser {
-  void operator()(AVCodecContext* c) const { avcodec_free_context(&c); }
-};
-struct FrameCloser {
-  void operator()(AVFrame* f) const { av_frame_free(&f); }
-};
-struct PacketCloser {
-  void operator()(AVPacket* p) const { av_packet_free(&p); }
-};
-struct ScaleCloser {
-  void operator()(SwsContext* s) const { sws_freeContext(s); }
+// The module, opened the first time a video is read and kept for the process (libav keeps
+// threads and state that must not outlive its code: no dlclose); or why it cannot be.
+struct Opened {
+  const VideoDecoderModule* module = nullptr;
+  std::string error;
 };
 
-// One video stream being decoded into grey frames.
-class GreyDecoder {
- public:
-  GreyDecoder(const std::string& path, int most_width, int threads) : path_(path) {
-    AVFormatContext* format = nullptr;
-    if (const int code = avformat_open_input(&format, path.c_str(), nullptr, nullptr); code < 0)
-      throw InputError(SourceLocation(path), "libav cannot read it as a video (" + av_text(code) +
-                                                 "); a video cut short before its end cannot be "
-                                                 "read: copy it from the phone again");
-    format_.reset(format);
-    if (const int code = avformat_find_stream_info(format, nullptr); code < 0)
-      throw InputError(SourceLocation(path), "libav finds no stream in it (" + av_text(code) + ")");
-    const AVCodec* codec = nullptr;
-    stream_index_ = av_find_best_stream(format, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
-    if (stream_index_ < 0 || codec == nullptr)
-      throw InputError(SourceLocation(path),
-                       stream_index_ == AVERROR_DECODER_NOT_FOUND
-                           ? "this build's libav has no decoder for its video; convert it to "
-                             "H.264 (MP4) first"
-                           : "expected a video stream, found none (a sound recording?)");
-    stream_ = format->streams[stream_index_];
-    decoder_.reset(avcodec_alloc_context3(codec));
-    avcodec_parameters_to_context(decoder_.get(), stream_->codecpar);
-    decoder_->thread_count = threads;
-    decoder_->thread_type = FF_THREAD_FRAME | FF_THREAD_SLICE;
-    if (const int code = avcodec_open2(decoder_.get(), codec, nullptr); code < 0)
-      throw InputError(SourceLocation(path),
-                       "libav cannot open its decoder (" + av_text(code) + ")");
-    info_.container = format->iformat->name;
-    info_.codec = codec->name;
-    info_.width = stream_->codecpar->width;
-    info_.height = stream_->codecpar->height;
-    if (info_.width <= 0 || info_.height <= 0)
-      throw InputError(SourceLocation(path), "its video stream says no frame size");
-    if (stream_->avg_frame_rate.num > 0 && stream_->avg_frame_rate.den > 0)
-      info_.fps = av_q2d(stream_->avg_frame_rate);
-    if (format->duration > 0)
-      info_.duration_s = static_cast<double>(format->duration) / AV_TIME_BASE;
-    const int width = std::min(info_.width, most_width);
-    out_width_ = width;
-    out_height_ = std::max(
-        1, static_cast<int>(std::lround(static_cast<double>(info_.height) * width / info_.width)));
-    info_.scale = static_cast<double>(width) / info_.width;
-    packet_.reset(av_packet_alloc());
-    frame_.reset(av_frame_alloc());
-    grey_.width = out_width_;
-    grey_.height = out_height_;
-    grey_.levels.assign(static_cast<std::size_t>(out_width_) * out_height_, 0);
+Opened open_module() {
+  Opened out;
+  if (!kDecoderBuilt) {
+    out.error = kWithoutLibav;
+    return out;
   }
-
-  VideoStream run(const FrameHandler& hand_on) {
-    bool more = true;
-    int read_code = 0;
-    while (more && (read_code = av_read_frame(format_.get(), packet_.get())) >= 0) {
-      if (packet_->stream_index == stream_index_) more = decode(packet_.get(), hand_on);
-      av_packet_unref(packet_.get());
-    }
-    if (!more) return info_;
-    if (read_code != AVERROR_EOF)
-      throw InputError(SourceLocation(path_), where() + "libav cannot read on (" +
-                                                  av_text(read_code) + "): the file is damaged");
-    if (decode(nullptr, hand_on) && stream_->nb_frames > 0 &&
-        info_.frames_read + 1 < stream_->nb_frames)
-      throw InputError(SourceLocation(path_),
-                       "the video ends at frame " + std::to_string(info_.frames_read) + " of the " +
-                           std::to_string(stream_->nb_frames) +
-                           " its container lists: the file is cut short; copy it again");
-    return info_;
+  const fs::path path = module_path();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    out.error = "reading a video needs the decoder module " + path.string() +
+                ", which does not exist (the build puts " + kVideoDecoderFile +
+                " beside the frictionlab executable; " + kVideoDecoderVariable +
+                " names another file)";
+    return out;
   }
-
- private:
-  std::string where() const {
-    char at[64];
-    std::snprintf(at, sizeof at, "frame %d (t = %.3f s): ", info_.frames_read, last_t_s_);
-    return at;
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = dlerror();
+    out.error = "the decoder module " + path.string() +
+                " cannot be loaded: " + (why != nullptr ? why : "unknown error");
+    return out;
   }
-
-  bool decode(const AVPacket* packet, const FrameHandler& hand_on) {
-    if (const int code = avcodec_send_packet(decoder_.get(), packet);
-        code < 0 && code != AVERROR_EOF)
-      throw InputError(SourceLocation(path_), where() + "libav cannot decode the next frame (" +
-                                                  av_text(code) +
-                                                  "): the file is damaged or cut short");
-    for (;;) {
-      const int code = avcodec_receive_frame(decoder_.get(), frame_.get());
-      if (code == AVERROR(EAGAIN) || code == AVERROR_EOF) return true;
-      if (code < 0)
-        throw InputError(SourceLocation(path_), where() + "libav cannot decode it (" +
-                                                    av_text(code) + "): the file is damaged");
-      const bool go_on = hand_on_frame(hand_on);
-      av_frame_unref(frame_.get());
-      if (!go_on) return false;
-    }
+  using Entry = const VideoDecoderModule* (*)();
+  const auto entry = reinterpret_cast<Entry>(dlsym(handle, kVideoDecoderEntry));
+  const VideoDecoderModule* module = entry != nullptr ? entry() : nullptr;
+  if (module == nullptr || module->abi != kVideoDecoderAbi) {
+    out.error = "the file " + path.string() +
+                " is not this frictionlab's decoder module (built from other sources?)";
+    return out;
   }
+  out.module = module;
+  return out;
+}
 
-  bool hand_on_frame(const FrameHandler& hand_on) {
-    SwsContext* scale = sws_getCachedContext(
-        scale_.release(), frame_->width, frame_->height, static_cast<AVPixelFormat>(frame_->format),
-        out_width_, out_height_, AV_PIX_FMT_GRAY8, SWS_AREA, nullptr, nullptr, nullptr);
-    scale_.reset(scale);
-    if (scale == nullptr)
-      throw InputError(SourceLocation(path_), where() + "libav cannot convert its pixels to grey");
-    std::uint8_t* planes[4] = {grey_.levels.data(), nullptr, nullptr, nullptr};
-    int strides[4] = {out_width_, 0, 0, 0};
-    sws_scale(scale, frame_->data, frame_->linesize, 0, frame_->height, planes, strides);
-    const std::int64_t stamp = frame_->best_effort_timestamp;
-    double t = stamp == AV_NOPTS_VALUE
-                   ? (info_.fps > 0 ? info_.frames_read / info_.fps : info_.frames_read)
-                   : static_cast<double>(stamp) * av_q2d(stream_->time_base);
-    if (info_.frames_read == 0) first_t_s_ = t;
-    t -= first_t_s_;
-    last_t_s_ = t;
-    grey_.t_s = t;
-    ++info_.frames_read;
-    return hand_on(grey_, info_);
-  }
+const VideoDecoderModule& decoder(const std::string& path) {
+  static std::once_flag once;
+  static Opened opened;
+  std::call_once(once, [] { opened = open_module(); });
+  if (opened.module == nullptr) throw InputError(SourceLocation(path), opened.error);
+  return *opened.module;
+}
 
-  std::string path_;
-  std::unique_ptr<AVFormatContext, FormatCloser> format_;
-  std::unique_ptr<AVCodecContext, CodecCloser> decoder_;
-  std::unique_ptr<AVPacket, PacketCloser> packet_;
-  std::unique_ptr<AVFrame, FrameCloser> frame_;
-  std::unique_ptr<SwsContext, ScaleCloser> scale_;
-  AVStream* stream_ = nullptr;
-  int stream_index_ = -1;
-  int out_width_ = 0;
-  int out_height_ = 0;
-  double first_t_s_ = 0.0;
-  double last_t_s_ = 0.0;
-  GrayFrame grey_;
-  VideoStream info_;
+VideoStream stream_of(const DecodedVideoInfo& info) {
+  VideoStream s;
+  s.container = info.container;
+  s.codec = info.codec;
+  s.width = info.width;
+  s.height = info.height;
+  s.fps = info.fps;
+  s.duration_s = info.duration_s;
+  s.frames_read = info.frames_read;
+  s.scale = info.scale;
+  return s;
+}
+
+// What the module's frame handler carries: the caller's handler, and an exception it threw (kept
+// here: none crosses the module).
+struct Handing {
+  const FrameHandler* frame;
+  GrayFrame grey;
+  std::exception_ptr thrown;
 };
+
+int hand_on(void* user, const DecodedGreyFrame* frame, const DecodedVideoInfo* info) {
+  auto* h = static_cast<Handing*>(user);
+  try {
+    h->grey.width = frame->width;
+    h->grey.height = frame->height;
+    h->grey.t_s = frame->t_s;
+    h->grey.levels.assign(frame->levels,
+                          frame->levels + static_cast<std::size_t>(frame->width) *
+                                              static_cast<std::size_t>(frame->height));
+    return (*h->frame)(h->grey, stream_of(*info)) ? 1 : 0;
+  } catch (...) {
+    h->thrown = std::current_exception();
+    return 0;
+  }
+}
 
 }  // namespace
 
 VideoStream read_video_frames(const std::string& path, int most_width, const FrameHandler& frame,
                               int threads) {
   if (most_width < 1) throw std::invalid_argument("read_video_frames: most_width must be positive");
-  // Every failure is said in the InputError, located; libav's own lines would repeat it.
-  if (av_log_get_level() == AV_LOG_INFO) av_log_set_level(AV_LOG_QUIET);
-  GreyDecoder decoder(path, most_width, threads);
-  return decoder.run(frame);
+  const VideoDecoderModule& module = decoder(path);
+  Handing handing{&frame, {}, nullptr};
+  DecodedVideoInfo info{};
+  char error[1024] = {};
+  const int status = module.read(path.c_str(), most_width, threads, &hand_on, &handing, &info,
+                                 error, sizeof error);
+  if (handing.thrown) std::rethrow_exception(handing.thrown);
+  if (status != 0) throw InputError(SourceLocation(path), error);
+  return stream_of(info);
 }
 
 void write_rgb_png(const std::string& path, int width, int height,
                    const std::vector<unsigned char>& rgb) {
-  const AVCodec* codec = avcodec_find_encoder(AV_CODEC_ID_PNG);
-  if (codec == nullptr) throw std::runtime_error(path + ": this build's libav has no PNG encoder");
-  std::unique_ptr<AVCodecContext, CodecCloser> encoder(avcodec_alloc_context3(codec));
-  encoder->width = width;
-  encoder->height = height;
-  encoder->pix_fmt = AV_PIX_FMT_RGB24;
-  encoder->time_base = {1, 1};
-  if (const int code = avcodec_open2(encoder.get(), codec, nullptr); code < 0)
-    throw std::runtime_error(path + ": cannot start libav's PNG encoder (" + av_text(code) + ")");
-  std::unique_ptr<AVFrame, FrameCloser> frame(av_frame_alloc());
-  frame->width = width;
-  frame->height = height;
-  frame->format = AV_PIX_FMT_RGB24;
-  av_image_fill_arrays(frame->data, frame->linesize, rgb.data(), AV_PIX_FMT_RGB24, width, height,
-                       1);
-  std::unique_ptr<AVPacket, PacketCloser> packet(av_packet_alloc());
-  if (avcodec_send_frame(encoder.get(), frame.get()) < 0 ||
-      avcodec_send_frame(encoder.get(), nullptr) < 0 ||
-      avcodec_receive_packet(encoder.get(), packet.get()) < 0)
-    throw std::runtime_error(path + ": libav's PNG encoder failed");
-  const std::string part = path + ".part";
-  {
-    std::ofstream out(part, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(packet->data), packet->size);
-    if (!out) throw std::runtime_error(part + ": cannot write");
-  }
-  std::filesystem::rename(part, path);
+  const VideoDecoderModule& module = decoder(path);
+  char error[1024] = {};
+  if (module.write_png(path.c_str(), width, height, rgb.data(), error, sizeof error) != 0)
+    throw std::runtime_error(path + ": " + error);
 }
 
 bool reads_videos() {
-  return true;
+  return kDecoderBuilt;
 }
 
 }  // namespace fl

@@ -422,14 +422,18 @@ TEST_F(InputRefusals, AnotherInstrumentsFileIsNamedAndRefused) {
   const test::CommandResult video = lab("estimate clip.mp4");
   EXPECT_EQ(video.status, 2) << video.out;
   EXPECT_EQ(video.err.rfind("clip.mp4: error:", 0), 0u) << video.err;
-  EXPECT_NE(video.err.find("libav cannot read it as a video"), std::string::npos) << video.err;
+  // (A build without libav says so instead.)
+  EXPECT_TRUE(video.err.find("libav cannot read it as a video") != std::string::npos ||
+              video.err.find("this build of frictionlab reads no video") != std::string::npos)
+      << video.err;
   // A zip whose entries' names say phyphox, and nothing else of a zip: opened, and refused as a
   // damaged one.
   write("export.zip", std::string("PK\x03\x04", 4) + std::string(26, '\0') + "meta/device.csv");
   for (const char* command : {"estimate export.zip", "compare --log export.zip --out cmp"}) {
     const test::CommandResult zip = lab(command);
     EXPECT_EQ(zip.status, 2) << command;
-    EXPECT_NE(zip.err.find("export.zip: error: the zip is damaged"), std::string::npos)
+    EXPECT_TRUE(zip.err.find("export.zip: error: the zip is damaged") != std::string::npos ||
+                zip.err.find("this build was made without minizip") != std::string::npos)
         << command << ": " << zip.err;
   }
   EXPECT_FALSE(fs::exists(dir_ / "cmp" / "compare-log.json"));

@@ -4,8 +4,8 @@
 // that is no video and a video where nothing moves refused, located at the file.
 #include "tracking/track_video.hpp"
 
+#include <cstdlib>
 #include <filesystem>
-#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -13,12 +13,18 @@
 #include "hall_log/hall_log.hpp"
 #include "io/input_error.hpp"
 #include "lab/logs/log_estimate.hpp"
-#include "render/sinks/video.hpp"
-#include "support/synthetic_plate_video.hpp"
+#include "support/filmed_plate.hpp"
 #include "support/temp_folder.hpp"
+#include "tracking/video_decoder_module.hpp"
 
 namespace fl {
 namespace {
+
+// The decoder module the build made (looked for beside the executable otherwise).
+const bool kDecoderNamed = [] {
+  setenv(kVideoDecoderVariable, FRICTIONLAB_TEST_DECODER_MODULE, 0);
+  return true;
+}();
 
 using test::PlateScene;
 
@@ -29,22 +35,7 @@ class TrackVideo : public test::TempFolderTest {
   // The scene filmed for `seconds` at `fps`, written as an MP4; its path.
   std::string film(const PlateScene& scene, double seconds, int fps, const std::string& name) {
     const std::string path = (dir_ / name).string();
-    render::VideoOptions options;
-    options.path = path;
-    options.fps = fps;
-    options.queue_frames = 0;
-    auto sink = render::make_mp4_sink(options);
-    std::mt19937 random(scene.seed);
-    render::Image rgba(scene.width, scene.height);
-    for (int k = 0; k < static_cast<int>(seconds * fps); ++k) {
-      const GrayFrame f = scene.frame(static_cast<double>(k) / fps, random);
-      for (std::size_t p = 0; p < f.levels.size(); ++p) {
-        for (int c = 0; c < 3; ++c) rgba.rgba[4 * p + c] = f.levels[p];
-        rgba.rgba[4 * p + 3] = 255;
-      }
-      sink->write(rgba.view());
-    }
-    sink->finish();
+    test::film_plate(scene, seconds, fps, path);
     return path;
   }
 };

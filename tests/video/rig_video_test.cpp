@@ -667,8 +667,9 @@ TEST(RigVideo, ARunWithoutFramesLoadsNoRenderer) {
         "run " + kRig + " --duration 0.2s"}) {
     const std::string objects = loaded_objects(args);
     EXPECT_NE(objects.find("libyaml-cpp"), std::string::npos) << args << ":\n" << objects;
-    for (const char* name : {"frictionlab-video", "libOSMesa", "libEGL", "libLLVM", "libavcodec",
-                             "libavformat", "libavfilter", "libswscale", "libassimp", "libpng"})
+    for (const char* name :
+         {"frictionlab-video", "frictionlab-decoder", "libOSMesa", "libEGL", "libLLVM",
+          "libavcodec", "libavformat", "libavfilter", "libswscale", "libassimp", "libpng"})
       EXPECT_EQ(objects.find(name), std::string::npos) << args << " loaded " << name;
   }
   if (!kDraws) return;

@@ -1,3 +1,7 @@
+// The decoder module, frictionlab-decoder.so (tracking/video_decoder_module.hpp): a video read
+// through libav as a stream of grey frames, one decoded at a time (memory does not grow with the
+// video's length), each scaled down by area averaging; and libav's PNG encoder for the tracker's
+// picture. Its one exported symbol is the entry at the end; everything else is hidden.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +15,7 @@
 #include <vector>
 
 #include "tracking/video_decoder_module.hpp"
+#include "tracking/video_frames.hpp"
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -27,25 +32,6 @@ class DecodeError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-
-// The stream as the seam carries it, and the frame handler as the decoder calls it.
-struct VideoStream {
-  std::string container;
-  std::string codec;
-  int width = 0;
-  int height = 0;
-  double fps = 0.0;
-  double duration_s = 0.0;
-  int frames_read = 0;
-  double scale = 1.0;
-};
-struct GrayFrame {
-  int width = 0;
-  int height = 0;
-  double t_s = 0.0;
-  std::vector<std::uint8_t> levels;
-};
-using FrameHandler = std::function<bool(const GrayFrame&, const VideoStream&)>;
 
 std::string av_text(int code) {
   char text[AV_ERROR_MAX_STRING_SIZE] = {};

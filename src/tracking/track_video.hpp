@@ -1,6 +1,7 @@
 // A video file's plate tracked: its frames decoded as a stream (tracking/video_frames.hpp) into the
 // tracker (tracking/plate_tracker.hpp). Memory holds the frames the tracker learns from (600 at
-// most, scaled down to 480 pixels across: about 80 MB for any video) and one decoded frame.
+// most, scaled down to 480 pixels across: about 80 MB for any video) and the decoder's own frames
+// (a few at the video's size), however long the video.
 #pragma once
 
 #include <string>

@@ -1,11 +1,13 @@
 // A video file read as a stream of grey frames through libav: MP4 and MOV (H.264, H.265), WebM
 // and Matroska (VP8, VP9, AV1 where libav has a decoder), AVI. One frame is decoded at a time and
 // handed on, so memory does not grow with the video's length; each frame is scaled down (area
-// averaging) to at most `most_width` pixels across, keeping its aspect ratio.
+// averaging) to at most `most_width` pixels across, keeping its aspect ratio. libav itself is in
+// the decoder module (tracking/video_decoder_module.hpp), opened the first time a video is read.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "tracking/gray_frame.hpp"
 
@@ -29,12 +31,14 @@ using FrameHandler = std::function<bool(const GrayFrame&, const VideoStream&)>;
 // the stream so far; stops early when `frame` returns false. `threads`: the decoder's threads (0:
 // libav decides). Throws InputError, located at the file (and at the frame where decoding failed),
 // for a file that is not a video libav reads, one without a video stream, or one that ends before
-// its container says (a truncated file). MissingComponent-like InputError in a build without libav.
+// its container says (a truncated file); and for a build without libav, or a decoder module that
+// is missing or not this build's, saying which and what to do.
 VideoStream read_video_frames(const std::string& path, int most_width, const FrameHandler& frame,
                               int threads = 0);
 
-// Writes an RGB image (rows top-down, 3 bytes a pixel, tightly packed) as a PNG through libav,
-// atomically (a ".part" file renamed). Throws std::runtime_error when it cannot.
+// Writes an RGB image (rows top-down, 3 bytes a pixel, tightly packed) as a PNG through libav's
+// encoder in the decoder module, atomically (a ".part" file renamed). Throws InputError without
+// the module, std::runtime_error when it cannot write.
 void write_rgb_png(const std::string& path, int width, int height,
                    const std::vector<unsigned char>& rgb);
 

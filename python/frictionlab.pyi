@@ -586,6 +586,14 @@ class PaperTable:
     def find(self, key: str) -> Optional[PaperMaterial]: ...
 
 def paper_table(*, assets: Optional[PathLike] = None) -> PaperTable: ...
+def track(
+    video: PathLike,
+    *,
+    out: PathLike,
+    roi: str = "",
+    scale: Optional[float] = None,
+    plate_length: Optional[Quantity] = None,
+) -> dict[str, Any]: ...
 def table(
     *,
     gravity: Quantity = "9.81 m/s^2",

@@ -18,5 +18,6 @@ void bind_paper_table(py::module_& m);   // PaperTable, paper_table
 void bind_sweep(py::module_& m);         // sweep
 void bind_fit(py::module_& m);           // fit
 void bind_studies(py::module_& m);       // compare, accuracy, stability
+void bind_track(py::module_& m);         // track
 
 }  // namespace fl::python

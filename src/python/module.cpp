@@ -40,7 +40,8 @@ PYBIND11_MODULE(frictionlab, m) {
       "load_scene and run (a simulation and its typed summary, the trajectory and the Hall\n"
       "samples as NumPy arrays), estimate and estimate_file (the rig's period estimator on a\n"
       "Hall signal), analytic, paper_table, sweep, fit (mu_k and h_c from a spacing\n"
-      "series), compare, accuracy and stability. Quantities are SI; arguments that are\n"
+      "series), compare, accuracy and stability, track (a phone's video of the rig). Quantities "
+      "are SI; arguments that are\n"
       "quantities also take text with units, the way the paper writes them (\"89mm\", "
       "\"1600rpm\").\n"
       "Bad input raises InputError with the message the command prints (file:line:column).";
@@ -56,4 +57,5 @@ PYBIND11_MODULE(frictionlab, m) {
   fl::python::bind_sweep(m);
   fl::python::bind_fit(m);
   fl::python::bind_studies(m);
+  fl::python::bind_track(m);
 }

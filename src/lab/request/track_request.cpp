@@ -9,8 +9,8 @@
 
 #include <fmt/format.h>
 
-#include "hall_log/instrument_signal.hpp"
 #include "hall_log/oscillation_log.hpp"
+#include "hall_log/periodic_motion.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_value.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -86,9 +86,9 @@ TrackResult track_video(const TrackRequest& request) {
   TrackResult result;
   result.tracked = track_plate_in_video(request.video, options);
   const PlateTrack& t = result.tracked.track;
-  if (const std::optional<Spread> s = spread_of(t.x)) result.amplitude = 0.5 * (s->high - s->low);
   Series positions{t.t_s, t.x, {}};
   for (std::size_t k = 0; k < t.t_s.size(); ++k) positions.lines.push_back(static_cast<int>(k) + 1);
+  result.amplitude = strongest_oscillation(positions).amplitude;
   result.stats =
       estimate_log(log_of_oscillation(positions, request.video, t.unit), LogSetUp{}, false).stats;
 

@@ -29,7 +29,8 @@ struct TrackResult {
   VideoTrack tracked;
   std::string csv;  // the files written
   std::string still;
-  // Half the swing's extent (its 0.5th to 99.5th percentile) in the track's unit.
+  // The amplitude in the track's unit: the least-squares sinusoid's at its strongest frequency
+  // (hall_log/periodic_motion.hpp), as estimate gives it.
   double amplitude = 0.0;
   fl_estimator::Stats stats{};  // the rig's estimator on the track (its period; no mu_k here)
   nlohmann::json json() const;  // `track --json`'s object (docs/cli.md)

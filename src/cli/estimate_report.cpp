@@ -124,6 +124,9 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
   const fl_estimator::Stats& s = est.stats;
   const LogSetUp& set_up = est.set_up;
   fmt::print("frictionlab estimate: {}\n", escape_invalid_utf8(log.path));
+  // The file read, when it is not the one named: a folder's log, a zip's entry.
+  if (!log.file.empty() && log.file != log.path)
+    fmt::print("  file                 {}\n", escape_invalid_utf8(log.file));
   fmt::print("  log                  {}, {} samples over {:.3f} s at {:.0f} Hz\n", format_text(log),
              log.adc.size(), est.duration, est.sample_rate);
   fmt::print("                       {}\n", columns_text(log.reading));

@@ -300,14 +300,13 @@ LogText read_log_text(const std::string& path) {
     return {read_text_stream(std::cin, "<stdin>", "the log", kMostTextFileBytes, kMostLogLineBytes),
             "<stdin>"};
   const std::string file = log_file_of(path);
-  if (const RecognisedFile recognised = recognise_file(file); is_container(recognised.kind))
-    throw InputError(SourceLocation(file), not_a_rig_log(recognised));
   return {read_text_file(file, "the log", kMostTextFileBytes, kMostLogLineBytes), file};
 }
 
 std::optional<HallLog> read_if_not_text(const std::string& path, const HallLogOptions& options) {
   const std::string file = log_file_of(path);
-  const MeasurementFile kind = recognise_file(file).kind;
+  const RecognisedFile recognised = recognise_file(file);
+  const MeasurementFile kind = recognised.kind;
   std::optional<HallLog> log;
   if (kind == MeasurementFile::kVideo) {
     log = read_video_log(file, options.video).log;
@@ -322,6 +321,8 @@ std::optional<HallLog> read_if_not_text(const std::string& path, const HallLogOp
     in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     bytes.resize(static_cast<std::size_t>(std::max<std::streamsize>(0, in.gcount())));
     log = parse_hall_log(bytes, file, options);
+  } else if (is_container(kind)) {
+    throw InputError(SourceLocation(file), not_a_rig_log(recognised));
   }
   if (log) log->path = path;
   return log;

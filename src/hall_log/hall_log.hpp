@@ -57,7 +57,8 @@ struct HallLog {
 HallLog read_hall_log(const std::string& path, const HallLogOptions& options = {});
 
 // A log's bytes as read, not yet decoded: `file` is the file read (a folder's log inside it) or
-// "<stdin>" for "-". Throws InputError as read_hall_log does for what cannot be read.
+// "<stdin>" for "-". Throws InputError as read_hall_log does for what cannot be read. A file that
+// is no text is read_if_not_text's: every reader asks it first, and this reads what it declined.
 struct LogText {
   std::string bytes;
   std::string file;
@@ -74,7 +75,8 @@ RecognisedFile recognise_file(const std::string& file);
 
 // A file that is no text (a file, or a folder's only log) read as a log: a video, its plate
 // tracked with `options.video`; a zip (phyphox's export), the instrument's CSV inside it. Nothing
-// for any other file. Throws InputError as read_video_log and measurement_in_zip do.
+// for a text file. Throws InputError as read_video_log and measurement_in_zip do, and for another
+// container (a workbook), saying what to do instead (not_a_rig_log).
 std::optional<HallLog> read_if_not_text(const std::string& path,
                                         const HallLogOptions& options = {});
 

@@ -67,11 +67,11 @@ std::string format_of(MeasurementFile kind) {
 }  // namespace
 
 HallLog log_of_oscillation(const Series& oscillation, const std::string& name,
-                           const std::string& unit) {
+                           const std::string& unit, const Periodicity& periodicity) {
   Series pulses = oscillation;
   pulses.values = turns_at_upper_end(oscillation.values);
   HallLog log = log_of_signal(pulses, name);
-  if (const Oscillation o = strongest_oscillation(oscillation); o.amplitude > 0.0)
+  if (const Oscillation o = strongest_oscillation(oscillation, periodicity); o.amplitude > 0.0)
     log.half_swing = o.amplitude;
   log.swing_unit = unit;
   return log;
@@ -107,9 +107,11 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
   for (const Candidate& c : found) columns.push_back(&table.columns[c.column]);
   const Candidate& chosen = found[clearest(columns)];
   const Series series = series_of(table, chosen.time, table.columns[chosen.column]);
-  require_periodic_motion(series, SourceLocation(name, table.header_line), instrument_words(kind),
-                          "\"" + table.names[chosen.column] + "\"");
-  HallLog log = log_of_oscillation(series, name, column_unit(table.names[chosen.column]));
+  const Periodicity periodicity =
+      require_periodic_motion(series, SourceLocation(name, table.header_line),
+                              instrument_words(kind), "\"" + table.names[chosen.column] + "\"");
+  HallLog log =
+      log_of_oscillation(series, name, column_unit(table.names[chosen.column]), periodicity);
   say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
                     table.names[chosen.column]);
   return log;

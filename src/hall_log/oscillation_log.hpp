@@ -20,6 +20,7 @@
 #include "hall_log/hall_log.hpp"
 #include "hall_log/measurement_file.hpp"
 #include "hall_log/measurement_table.hpp"
+#include "hall_log/periodic_motion.hpp"
 
 namespace fl {
 
@@ -29,10 +30,11 @@ namespace fl {
 HallLog read_oscillation_log(std::string_view text, const std::string& name, MeasurementFile kind);
 
 // The same for positions (or accelerations) already in memory, each sample at its time and line:
-// the virtual sensor's pulses at the upper end of the swing, as a log, with half its swing in
-// `unit`. Throws InputError as log_of_signal does.
+// the virtual sensor's pulses at the upper end of the swing, as a log, with its amplitude in
+// `unit` (its strongest oscillation's, from `periodicity`: periodicity_of the same samples, or
+// what require_periodic_motion returned). Throws InputError as log_of_signal does.
 HallLog log_of_oscillation(const Series& oscillation, const std::string& name,
-                           const std::string& unit);
+                           const std::string& unit, const Periodicity& periodicity);
 
 // The unit a column's header gives: "Position (m)" -> "m", "x [mm]" -> "mm", "x_mm" -> "mm",
 // "Linear Acceleration x (m/s^2)" -> "m/s^2"; "" when it gives none ("x", Tracker's).

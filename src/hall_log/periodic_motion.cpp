@@ -73,8 +73,7 @@ Periodicity periodicity_of(const Series& channel) {
   return out;
 }
 
-Oscillation strongest_oscillation(const Series& channel) {
-  const Periodicity p = periodicity_of(channel);
+Oscillation strongest_oscillation(const Series& channel, const Periodicity& p) {
   if (!(p.strongest_hz > 0.0)) return {};
   const std::size_t n = channel.values.size();
   const std::size_t every = (n + kMostSamples - 1) / kMostSamples;
@@ -116,10 +115,10 @@ Oscillation strongest_oscillation(const Series& channel) {
   return f1 > f2 ? Oscillation{x1, f1} : Oscillation{x2, f2};
 }
 
-void require_periodic_motion(const Series& channel, const SourceLocation& where,
-                             const std::string& instrument, const std::string& column) {
+Periodicity require_periodic_motion(const Series& channel, const SourceLocation& where,
+                                    const std::string& instrument, const std::string& column) {
   const Periodicity p = periodicity_of(channel);
-  if (p.periodic()) return;
+  if (p.periodic()) return p;
   throw InputError(
       where,
       fmt::format("expected a periodic motion, found none in the {}'s {}: its strongest "

@@ -29,19 +29,20 @@ struct Periodicity {
 // interval, at most 20 000 of them, every k-th of a longer one). Needs 16 samples or more.
 Periodicity periodicity_of(const Series& channel);
 
-// The channel's strongest oscillation: its frequency (the spectrum's peak, refined to a small
-// fraction of the record's resolution) and its amplitude there (the least-squares sinusoid's, so
-// the noise averages out rather than widening the swing). Zeros for a channel with no spectrum.
+// The channel's strongest oscillation: its frequency (the spectrum's peak, `periodicity` of the
+// same channel, refined to a small fraction of the record's resolution) and its amplitude there
+// (the least-squares sinusoid's, so the noise averages out rather than widening the swing). Zeros
+// for a channel with no spectrum.
 struct Oscillation {
   double frequency_hz = 0.0;
   double amplitude = 0.0;  // in the channel's unit
 };
-Oscillation strongest_oscillation(const Series& channel);
+Oscillation strongest_oscillation(const Series& channel, const Periodicity& periodicity);
 
 // Throws InputError at `where` when the channel shows no periodic motion, saying what was found:
 // the strongest frequency and how far it stands above the rest, the noise and the swing (in the
-// channel's unit, which `column` names), and what to check.
-void require_periodic_motion(const Series& channel, const SourceLocation& where,
-                             const std::string& instrument, const std::string& column);
+// channel's unit, which `column` names), and what to check. Returns the channel's periodicity.
+Periodicity require_periodic_motion(const Series& channel, const SourceLocation& where,
+                                    const std::string& instrument, const std::string& column);
 
 }  // namespace fl

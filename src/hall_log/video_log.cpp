@@ -5,18 +5,21 @@
 
 namespace fl {
 
+Series positions_of(const PlateTrack& track) {
+  Series positions{track.t_s, track.x, {}};
+  for (std::size_t k = 0; k < track.t_s.size(); ++k)
+    positions.lines.push_back(static_cast<int>(k) + 1);
+  return positions;
+}
+
 VideoLog read_video_log(const std::string& file, const TrackOptions& options) {
   VideoLog out;
   out.tracked = track_plate_in_video(file, options);
   const PlateTrack& track = out.tracked.track;
-  Series positions;
-  positions.t_s = track.t_s;
-  positions.values = track.x;
-  for (std::size_t k = 0; k < track.t_s.size(); ++k)
-    positions.lines.push_back(static_cast<int>(k) + 1);
-  require_periodic_motion(positions, SourceLocation(file), "video",
-                          "plate's position (" + track.unit + ")");
-  out.log = log_of_oscillation(positions, file, track.unit);
+  const Series positions = positions_of(track);
+  const Periodicity periodicity = require_periodic_motion(positions, SourceLocation(file), "video",
+                                                          "plate's position (" + track.unit + ")");
+  out.log = log_of_oscillation(positions, file, track.unit, periodicity);
   out.log.instrument = MeasurementFile::kVideo;
   out.log.channel = "x (" + track.unit + ")";
   out.log.encoding = "";  // frames, not text

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hall_log/hall_log.hpp"
+#include "hall_log/measurement_table.hpp"
 #include "tracking/track_video.hpp"
 
 namespace fl {
@@ -18,5 +19,8 @@ struct VideoLog {
   VideoTrack tracked;
 };
 VideoLog read_video_log(const std::string& file, const TrackOptions& options);
+
+// A track's positions as a table's are read: each frame a sample, its "line" its frame number.
+Series positions_of(const PlateTrack& track);
 
 }  // namespace fl

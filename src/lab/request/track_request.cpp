@@ -11,6 +11,7 @@
 
 #include "hall_log/oscillation_log.hpp"
 #include "hall_log/periodic_motion.hpp"
+#include "hall_log/video_log.hpp"
 #include "io/atomic_file.hpp"
 #include "io/json_value.hpp"
 #include "lab/logs/log_estimate.hpp"
@@ -86,11 +87,13 @@ TrackResult track_video(const TrackRequest& request) {
   TrackResult result;
   result.tracked = track_plate_in_video(request.video, options);
   const PlateTrack& t = result.tracked.track;
-  Series positions{t.t_s, t.x, {}};
-  for (std::size_t k = 0; k < t.t_s.size(); ++k) positions.lines.push_back(static_cast<int>(k) + 1);
-  result.amplitude = strongest_oscillation(positions).amplitude;
-  result.stats =
-      estimate_log(log_of_oscillation(positions, request.video, t.unit), LogSetUp{}, false).stats;
+  // As estimate reads a video (hall_log/video_log.hpp), without its refusal of no periodic
+  // motion: a track without a period is still written, and said to have none.
+  const Series positions = positions_of(t);
+  const HallLog log =
+      log_of_oscillation(positions, request.video, t.unit, periodicity_of(positions));
+  result.amplitude = log.half_swing.value_or(0.0);
+  result.stats = estimate_log(log, LogSetUp{}, false).stats;
 
   const std::filesystem::path folder(request.out);
   result.csv = (folder / kTrackCsv).string();

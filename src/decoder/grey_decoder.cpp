@@ -89,8 +89,6 @@ class GreyDecoder {
       throw DecodeError("its video stream says no frame size");
     if (stream_->avg_frame_rate.num > 0 && stream_->avg_frame_rate.den > 0)
       info_.fps = av_q2d(stream_->avg_frame_rate);
-    if (format->duration > 0)
-      info_.duration_s = static_cast<double>(format->duration) / AV_TIME_BASE;
     const int width = std::min(info_.width, most_width);
     out_width_ = width;
     out_height_ = std::max(
@@ -241,7 +239,6 @@ int read_video(const char* path, int most_width, int threads, fl::DecodedFrameHa
       info->width = s.width;
       info->height = s.height;
       info->fps = s.fps;
-      info->duration_s = s.duration_s;
       info->frames_read = s.frames_read;
       info->scale = s.scale;
     };

@@ -19,7 +19,7 @@ namespace fl {
 inline constexpr const char* kVideoDecoderEntry = "frictionlab_video_decoder";
 inline constexpr const char* kVideoDecoderVariable = "FRICTIONLAB_DECODER_MODULE";
 inline constexpr const char* kVideoDecoderFile = "frictionlab-decoder.so";
-inline constexpr int kVideoDecoderAbi = 1;
+inline constexpr int kVideoDecoderAbi = 2;
 
 extern "C" {
 
@@ -37,8 +37,7 @@ struct DecodedVideoInfo {
   char codec[32];
   int width;
   int height;
-  double fps;         // 0 when the stream does not say
-  double duration_s;  // 0 when the container does not say
+  double fps;  // 0 when the stream does not say
   int frames_read;
   double scale;  // the frames' pixels per video pixel
 };

@@ -94,7 +94,6 @@ VideoStream stream_of(const DecodedVideoInfo& info) {
   s.width = info.width;
   s.height = info.height;
   s.fps = info.fps;
-  s.duration_s = info.duration_s;
   s.frames_read = info.frames_read;
   s.scale = info.scale;
   return s;
@@ -146,10 +145,6 @@ void write_rgb_png(const std::string& path, int width, int height,
   char error[1024] = {};
   if (module.write_png(path.c_str(), width, height, rgb.data(), error, sizeof error) != 0)
     throw std::runtime_error(path + ": " + error);
-}
-
-bool reads_videos() {
-  return kDecoderBuilt;
 }
 
 }  // namespace fl

@@ -18,10 +18,9 @@ struct VideoStream {
   std::string codec;      // "h264", "vp9"
   int width = 0;          // the video's own pixels
   int height = 0;
-  double fps = 0.0;         // the stream's average frame rate (0 when it does not say)
-  double duration_s = 0.0;  // as the container says (0 when it does not say)
-  int frames_read = 0;      // frames decoded and handed on
-  double scale = 1.0;       // the frames' pixels per video pixel (<= 1)
+  double fps = 0.0;     // the stream's average frame rate (0 when it does not say)
+  int frames_read = 0;  // frames decoded and handed on
+  double scale = 1.0;   // the frames' pixels per video pixel (<= 1)
 };
 
 // Takes each frame; returns false to stop reading.
@@ -41,8 +40,5 @@ VideoStream read_video_frames(const std::string& path, int most_width, const Fra
 // the module, std::runtime_error when it cannot write.
 void write_rgb_png(const std::string& path, int width, int height,
                    const std::vector<unsigned char>& rgb);
-
-// Whether this build reads videos (libav was found when it was configured).
-bool reads_videos();
 
 }  // namespace fl

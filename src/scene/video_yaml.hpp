@@ -39,6 +39,9 @@ struct VideoDesc {
   bool end_card = false;          // an end card (kEndCardSeconds) with the run's T, mu_k and regime
   bool phase_portrait = false;    // v against x with the theory's ellipse and the slip limit
   std::vector<Caption> captions;  // subtitles at simulated times (captions_yaml.hpp)
+  // The teaching overlay (panels, force arrows, captions, cards); off for a phone's recording,
+  // which is the picture alone (lab/video/video_settings.hpp effective_video).
+  bool overlay = true;
 };
 
 // Seconds of video the title card lasts (frames rendered before the run's first frame).

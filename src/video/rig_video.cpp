@@ -196,7 +196,7 @@ RigVideo::RigVideo(std::shared_ptr<const CompiledRig> compiled, const VideoDesc&
     camera = render::rig_camera(model, video);
     force_scale = render::force_scale(camera, video.width, video.height, Eigen::Vector3f::Zero(),
                                       rig.rollers.spacing, rig.plate.mass * rig.gravity_normal);
-    force_arrows = video.placed || (video.camera != "sensor" && video.camera != "phone");
+    force_arrows = video.overlay && (video.placed || video.camera != "sensor");
     // A camera that stays put never sees the frame's back faces: leave them out.
     if (video.orbit == 0.0) render::cull_back_faces(model, model.tilt.inverse() * camera.position);
     forces.rig_to_world = model.tilt;
@@ -372,8 +372,7 @@ void RigVideo::draw(const render::RigPose& pose, double t, double video_time, fl
         renderer->overlay(), scale,
         render::force_arrows(render::orbit_camera(camera, video.orbit * video_time), video.width,
                              video.height, forces, force_scale));
-  // A phone's recording is the picture alone (scene/video_yaml.hpp kCameraPresets).
-  if (video.camera == "phone" && !video.placed) return;
+  if (!video.overlay) return;
   render::draw_rig_overlay(renderer->overlay(), video.width, video.height, overlay_state(t));
   if (const auto caption = render::caption_at(video.captions, t))
     render::draw_caption(renderer->overlay(), video.width, video.height, *caption);

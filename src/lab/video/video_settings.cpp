@@ -67,6 +67,7 @@ VideoDesc effective_video(const Scene& scene, const VideoRequest& request) {
   if (request.captions) v.captions = *request.captions;
   if (v.camera == "phone" && !v.placed) {
     // A phone records the picture alone.
+    v.overlay = false;
     v.title = false;
     v.end_card = false;
     v.phase_portrait = false;

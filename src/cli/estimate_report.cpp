@@ -78,6 +78,10 @@ std::string instrument_text(const HallLog& log) {
   if (log.instrument == MeasurementFile::kPhyphoxMagnetometer)
     return fmt::format("{} ({} {}, the clearest pulses)", words,
                        log.channel == "|B|" ? "the field's magnitude" : "component", log.channel);
+  // An accelerometer lying between its axes is read along the motion, its axes combined.
+  if (log.channel.find(' ') != std::string::npos)
+    return fmt::format("{} (along {}, the direction of the swing, timed at its upper turns)", words,
+                       log.channel);
   return fmt::format("{} (column {}, the clearest swing, timed at its upper turns)", words,
                      log.channel);
 }
@@ -157,7 +161,7 @@ void print_estimate(const HallLog& log, const LogEstimate& est, const GeometryCh
     fmt::print("  amplitude            {:.4g} {}{}\n", *amplitude,
                unit.empty() ? "(the file's unit)" : unit,
                is_accelerometer(log.instrument)
-                   ? fmt::format(" (the axis's {:.4g} {} over (2 pi / T)^2)", *log.half_swing,
+                   ? fmt::format(" (the swing's {:.4g} {} over (2 pi / T)^2)", *log.half_swing,
                                  log.swing_unit)
                    : std::string(""));
   if (const std::optional<double> thick = mu_k_thick(est))

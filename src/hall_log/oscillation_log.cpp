@@ -5,6 +5,9 @@
 #include <optional>
 #include <vector>
 
+#include <fmt/format.h>
+
+#include "core/units.hpp"
 #include "hall_log/instrument_signal.hpp"
 #include "hall_log/measurement_table.hpp"
 #include "hall_log/periodic_motion.hpp"
@@ -58,6 +61,102 @@ std::vector<double> turns_at_upper_end(const std::vector<double>& values) {
   return pulses;
 }
 
+// The channel averaged over a centred window of a twentieth of the period `period_s` (an odd
+// number of samples, shrunk symmetrically at the ends): a phone's noise, sample to sample, would
+// otherwise cross the timing level several times at each turn. A centred average shifts no turn,
+// and dims a sinusoid's by sinc(1/20), 0.4 %. Gaps (NaN) stay gaps and are left out of the sums.
+std::vector<double> averaged_over_period_twentieth(const Series& channel, double period_s) {
+  const std::size_t n = channel.values.size();
+  if (n < 2 || !(period_s > 0.0)) return channel.values;
+  const double interval = (channel.t_s.back() - channel.t_s.front()) / static_cast<double>(n - 1);
+  if (!(interval > 0.0)) return channel.values;
+  const auto half = static_cast<std::size_t>(std::floor(0.5 * (period_s / 20.0) / interval));
+  if (half == 0) return channel.values;
+  std::vector<double> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (std::isnan(channel.values[i])) {
+      out[i] = channel.values[i];
+      continue;
+    }
+    const std::size_t reach = std::min({half, i, n - 1 - i});
+    double sum = 0.0;
+    int count = 0;
+    for (std::size_t k = i - reach; k <= i + reach; ++k) {
+      if (std::isnan(channel.values[k])) continue;
+      sum += channel.values[k];
+      ++count;
+    }
+    out[i] = sum / count;
+  }
+  return out;
+}
+
+// "0.500 x", then " + 0.866 y" (or " - ...").
+std::string weighted_axis(double w, const std::string& axis, bool first) {
+  const char* sign = first ? (w < 0.0 ? "-" : "") : (w < 0.0 ? " - " : " + ");
+  return fmt::format("{}{:.3f} {}", sign, std::fabs(w), axis);
+}
+
+// An accelerometer's axes combined along the plate's motion: the principal direction of their
+// covariance (the first principal component of the samples, by power iteration from the clearest
+// axis), so that a phone lying turned on the plate reads the plate's whole swing rather than its
+// share on one axis (cos 60 deg = half on each of two). The weights, one per axis; an empty list
+// when the direction lies within 1 degree of one axis, which is then read as it is.
+std::vector<double> direction_of_motion(const std::vector<const std::vector<double>*>& axes,
+                                        std::size_t clearest_axis) {
+  const std::size_t k = axes.size(), n = axes.front()->size();
+  std::vector<double> mean(k, 0.0), cov(k * k, 0.0);
+  std::size_t rows = 0;
+  const auto complete = [&](std::size_t i) {
+    for (const std::vector<double>* a : axes)
+      if (std::isnan((*a)[i])) return false;
+    return true;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!complete(i)) continue;
+    ++rows;
+    for (std::size_t a = 0; a < k; ++a) mean[a] += (*axes[a])[i];
+  }
+  if (rows < 2) return {};
+  for (double& m : mean) m /= static_cast<double>(rows);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!complete(i)) continue;
+    for (std::size_t a = 0; a < k; ++a)
+      for (std::size_t b = 0; b < k; ++b)
+        cov[a * k + b] += ((*axes[a])[i] - mean[a]) * ((*axes[b])[i] - mean[b]);
+  }
+  std::vector<double> w(k, 0.0), next(k);
+  w[clearest_axis] = 1.0;
+  for (int iteration = 0; iteration < 500; ++iteration) {
+    double norm = 0.0;
+    for (std::size_t a = 0; a < k; ++a) {
+      next[a] = 0.0;
+      for (std::size_t b = 0; b < k; ++b) next[a] += cov[a * k + b] * w[b];
+      norm += next[a] * next[a];
+    }
+    if (!(norm > 0.0)) return {};
+    for (std::size_t a = 0; a < k; ++a) w[a] = next[a] / std::sqrt(norm);
+  }
+  // Signed so that its largest weight is positive; one axis when within 1 degree of it.
+  const std::size_t largest = static_cast<std::size_t>(
+      std::max_element(w.begin(), w.end(),
+                       [](double a, double b) { return std::fabs(a) < std::fabs(b); }) -
+      w.begin());
+  if (w[largest] < 0.0)
+    for (double& v : w) v = -v;
+  if (w[largest] >= std::cos(kPi / 180.0)) return {};
+  return w;
+}
+
+// The axes' samples weighted by `w` and summed (NaN where any is missing).
+Series along(const MeasurementTable& table, std::size_t time,
+             const std::vector<const std::vector<double>*>& axes, const std::vector<double>& w) {
+  std::vector<double> values(axes.front()->size(), 0.0);
+  for (std::size_t a = 0; a < axes.size(); ++a)
+    for (std::size_t i = 0; i < values.size(); ++i) values[i] += w[a] * (*axes[a])[i];
+  return series_of(table, time, values);
+}
+
 std::string format_of(MeasurementFile kind) {
   return kind == MeasurementFile::kTracker         ? "tracker"
          : kind == MeasurementFile::kPositionTable ? "table"
@@ -69,7 +168,8 @@ std::string format_of(MeasurementFile kind) {
 HallLog log_of_oscillation(const Series& oscillation, const std::string& name,
                            const std::string& unit, const Periodicity& periodicity) {
   Series pulses = oscillation;
-  pulses.values = turns_at_upper_end(oscillation.values);
+  pulses.values = turns_at_upper_end(
+      averaged_over_period_twentieth(oscillation, 1.0 / periodicity.strongest_hz));
   HallLog log = log_of_signal(pulses, name);
   if (const Oscillation o = strongest_oscillation(oscillation, periodicity); o.amplitude > 0.0)
     log.half_swing = o.amplitude;
@@ -105,15 +205,32 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
                            "after a time column, found none");
   std::vector<const std::vector<double>*> columns;
   for (const Candidate& c : found) columns.push_back(&table.columns[c.column]);
-  const Candidate& chosen = found[clearest(columns)];
-  const Series series = series_of(table, chosen.time, table.columns[chosen.column]);
+  const std::size_t clearest_index = clearest(columns);
+  const Candidate& chosen = found[clearest_index];
+  // An accelerometer's axes (one time column) combine along the motion when it lies between them.
+  std::vector<double> w;
+  if (is_accelerometer(kind) && found.size() > 1 &&
+      std::all_of(found.begin(), found.end(),
+                  [&](const Candidate& c) { return c.time == chosen.time; }))
+    w = direction_of_motion(columns, clearest_index);
+  std::string channel = chosen.channel, column = table.names[chosen.column];
+  if (!w.empty()) {
+    channel.clear();
+    column.clear();
+    for (std::size_t a = 0; a < found.size(); ++a) {
+      if (std::fabs(w[a]) < 0.0005) continue;
+      channel += weighted_axis(w[a], found[a].channel, channel.empty());
+      column += (column.empty() ? "" : ", ") + table.names[found[a].column];
+    }
+  }
+  const Series series = w.empty() ? series_of(table, chosen.time, table.columns[chosen.column])
+                                  : along(table, chosen.time, columns, w);
   const Periodicity periodicity =
       require_periodic_motion(series, SourceLocation(name, table.header_line),
-                              instrument_words(kind), "\"" + table.names[chosen.column] + "\"");
+                              instrument_words(kind), "\"" + column + "\"");
   HallLog log =
       log_of_oscillation(series, name, column_unit(table.names[chosen.column]), periodicity);
-  say_what_was_read(log, table, chosen.time, kind, chosen.channel, format_of(kind),
-                    table.names[chosen.column]);
+  say_what_was_read(log, table, chosen.time, kind, channel, format_of(kind), column);
   return log;
 }
 

@@ -187,6 +187,7 @@ CompiledRig compile_rig(Scene scene) {
   rig.plate_desc = std::move(scene.plate);
   rig.magnets = std::move(scene.magnets);
   rig.sensor = std::move(scene.sensor);
+  rig.phones = std::move(scene.phones);
   rig.frame = std::move(scene.frame);
   rig.friction_source = friction_source(scene.friction);
   return rig;

@@ -54,6 +54,7 @@ struct CompiledRig {
   PlateDesc plate_desc;  // the plate's size, material, payload, blocks and start
   std::vector<MagnetDesc> magnets;
   std::optional<SensorDesc> sensor;
+  std::vector<PhoneDesc> phones;   // phones' sensors (an accelerometer's mass is in `plate`)
   std::optional<FrameDesc> frame;  // absent: no frame, no guides, no mesh
   FrictionSource friction_source;
 

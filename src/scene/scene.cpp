@@ -37,6 +37,15 @@ PlateMass plate_mass(const Scene& scene) {
     parts.push_back({m, magnet.x, p.thickness + magnet.height + 0.5 * magnet.thickness,
                      m * (3.0 * r * r + magnet.thickness * magnet.thickness) / 12.0});
   }
+  // A phone lying on the plate: a uniform box, its extent along x as it is turned.
+  for (const PhoneDesc& phone : scene.phones) {
+    if (phone.sensor != PhoneSensor::kAccelerometer) continue;
+    const double along = std::fabs(phone.size[0] * std::sin(phone.turn)) +
+                         std::fabs(phone.size[1] * std::cos(phone.turn));
+    const double t = phone.size[2];
+    parts.push_back({phone.mass, phone.x, p.thickness + phone.height + 0.5 * t,
+                     phone.mass * (along * along + t * t) / 12.0});
+  }
   PlateMass out;
   double mx = 0.0, mz = 0.0;
   for (const Part& part : parts) {

@@ -132,6 +132,31 @@ struct SensorDesc {
   double clock_error = 0.0;
 };
 
+// A phone's sensor, recorded as phyphox records it (its CSV export): a magnetometer lying beside
+// the rig, or an accelerometer lying on the plate, whose mass then counts in the plate's. The
+// phone lies flat, screen up, its axes phyphox's: x to the screen's right, y toward its top, z out
+// of the screen.
+enum class PhoneSensor { kMagnetometer, kAccelerometer };
+
+struct PhoneDesc {
+  PhoneSensor sensor = PhoneSensor::kMagnetometer;
+  double rate = 100.0;  // Hz, samples a second (by default 100 Hz magnetometer, 400 accelerometer)
+  double noise = 0.2e-6;  // rms on each axis: T (magnetometer) or m/s^2 (accelerometer)
+  // rad about +z from the rig's +x to the phone's top (its y axis): 0 lays its long side along
+  // the plate's motion, its top toward +x.
+  double turn = 0.0;
+  // A magnetometer: where it is [m, world frame] and the Earth's field there [T, the rig's frame].
+  Vec3 position{};
+  Vec3 earth{21e-6, -4e-6, -43e-6};
+  // An accelerometer on the plate: with g (phyphox's "Acceleration") or without it ("Linear
+  // Acceleration"); where it lies on the plate and what it weighs.
+  bool gravity = true;
+  double x = 0.0;       // m, its centre along the plate from the plate's centre
+  double height = 0.0;  // m, its bottom face above the plate's top face (on bricks: 9.6 mm)
+  double mass = 0.180;  // kg
+  Vec3 size{0.075, 0.150, 0.008};  // m: width (its x), length (its y), thickness (its z)
+};
+
 // Rollers that start cold (friction.temperature, e.g. 77 K after liquid nitrogen) and warm toward
 // the room (core/roller_warming.hpp): mu_k follows their temperature, linear between its value
 // at the start and at the room's temperature.
@@ -239,6 +264,7 @@ struct OutputDesc {
   bool cycles = true;      // cycles.csv with --out (the plate's cycles, lab/run/cycle_report.hpp)
   bool periods = true;     // periods.csv with --out: each period the rig's estimator judged
   bool jumps = true;       // jumps.csv with --out, when the plate jumped
+  bool phones = true;      // phone-magnetometer.csv, phone-accelerometer.csv (with phones)
 };
 
 struct Scene {
@@ -252,6 +278,7 @@ struct Scene {
   PlateDesc plate;
   std::vector<MagnetDesc> magnets;
   std::optional<SensorDesc> sensor;
+  std::vector<PhoneDesc> phones;  // phones' sensors, each writing its phyphox CSV
   FrictionDesc friction;
   std::optional<DriveDesc> drive;  // absent: the ideal drive (rollers.speed)
   std::optional<FrameDesc> frame;  // absent: no frame, no guides, no mesh

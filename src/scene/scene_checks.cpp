@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -61,6 +62,21 @@ class Checks {
  private:
   std::vector<SceneProblem>& problems_;
 };
+
+// The magnet whose swept volume (over `amplitude` either side) holds `point`, if any.
+std::optional<std::size_t> magnet_sweeping(const Scene& s, const Vec3& point, double amplitude) {
+  const double top = s.plate.thickness;
+  for (std::size_t i = 0; i < s.magnets.size(); ++i) {
+    const MagnetDesc& m = s.magnets[i];
+    const double r = 0.5 * m.diameter;
+    const bool inside_x = std::fabs(point[0] - m.x) <= amplitude + r;
+    const bool inside_y = std::fabs(point[1]) <= r;
+    const double bottom = top + m.height;
+    const bool inside_z = point[2] >= bottom && point[2] <= bottom + m.thickness;
+    if (inside_x && inside_y && inside_z) return i;
+  }
+  return std::nullopt;
+}
 
 // The world: gravity, tilt, the step and the duration.
 void check_world(const Scene& s, const Checks& c) {
@@ -297,20 +313,75 @@ void check_sensor(const Scene& s, const Checks& c, double amplitude) {
     c.need(sensor.position[2] > 0.0, "sensor.position",
            "the sensor must sit above the rollers' tops (z > 0)");
     // The sensor must not be inside the volume any magnet sweeps.
-    const double top = s.plate.thickness;
-    for (std::size_t i = 0; i < s.magnets.size(); ++i) {
-      const MagnetDesc& m = s.magnets[i];
-      const double r = 0.5 * m.diameter;
-      const bool inside_x = std::fabs(sensor.position[0] - m.x) <= amplitude + r;
-      const bool inside_y = std::fabs(sensor.position[1]) <= r;
-      const double bottom = top + m.height;
-      const bool inside_z =
-          sensor.position[2] >= bottom && sensor.position[2] <= bottom + m.thickness;
-      c.need(!(inside_x && inside_y && inside_z), "sensor.position",
-             describe("the sensor lies inside the volume magnet ", i,
+    if (const std::optional<std::size_t> i = magnet_sweeping(s, sensor.position, amplitude)) {
+      const MagnetDesc& m = s.magnets[*i];
+      c.need(false, "sensor.position",
+             describe("the sensor lies inside the volume magnet ", *i,
                       " sweeps as the plate moves; raise it above the magnet's top at ",
-                      (top + m.height + m.thickness) * 1e3, " mm"));
+                      (s.plate.thickness + m.height + m.thickness) * 1e3, " mm"));
     }
+  }
+}
+
+// The phones: their sampling, a magnetometer's field and place, an accelerometer's mass, size
+// and place on the plate (what the plate's mass needs, so checked before the motion).
+void check_phones(const Scene& s, const Checks& c) {
+  for (std::size_t i = 0; i < s.phones.size(); ++i) {
+    const PhoneDesc& p = s.phones[i];
+    const std::string phone = describe("phone ", i, ": ");
+    c.need(std::isfinite(p.rate) && p.rate >= 1.0 && p.rate <= 10000.0, "phones",
+           describe(phone,
+                    "rate must lie from 1 Hz to 10 kHz (phyphox records at 50 to 500 Hz), "
+                    "found ",
+                    p.rate, " Hz"));
+    c.need(std::isfinite(p.noise) && p.noise >= 0.0, "phones",
+           describe(phone, "noise must be >= 0, found ", p.noise));
+    c.need(std::isfinite(p.turn), "phones", describe(phone, "turn must be finite"));
+    if (p.sensor == PhoneSensor::kMagnetometer) {
+      const double earth = std::hypot(p.earth[0], p.earth[1], p.earth[2]);
+      c.need(std::isfinite(earth) && earth <= 1e-3, "phones",
+             describe(phone,
+                      "the Earth's field must be finite and at most 1 mT (it is 25 to 65 "
+                      "uT), found ",
+                      earth * 1e6, " uT"));
+      c.need(std::isfinite(p.position[0]) && std::isfinite(p.position[1]) &&
+                 std::isfinite(p.position[2]),
+             "phones", describe(phone, "position must be finite"));
+      continue;
+    }
+    c.need(finite_positive(p.mass), "phones",
+           describe(phone, "mass must be positive, found ", p.mass, " kg"));
+    c.need(finite_positive(p.size[0]) && finite_positive(p.size[1]) && finite_positive(p.size[2]),
+           "phones", describe(phone, "size (width, length, thickness) must be positive"));
+    c.need(std::isfinite(p.height) && p.height >= 0.0, "phones",
+           describe(phone, "height must be >= 0, found ", p.height * 1e3, " mm"));
+    c.need(std::isfinite(p.x) && std::fabs(p.x) <= 0.5 * s.plate.length, "phones",
+           describe(phone, "x = ", p.x * 1e3,
+                    " mm puts the phone's centre off the plate (half "
+                    "length ",
+                    0.5e3 * s.plate.length, " mm)"));
+  }
+}
+
+// A phone's magnetometer lies outside what the plate and its magnets sweep over `amplitude`.
+void check_magnetometer_places(const Scene& s, const Checks& c, double amplitude) {
+  for (std::size_t i = 0; i < s.phones.size(); ++i) {
+    const PhoneDesc& p = s.phones[i];
+    if (p.sensor != PhoneSensor::kMagnetometer) continue;
+    const Vec3& at = p.position;
+    const bool in_slab = std::fabs(at[0]) <= 0.5 * s.plate.length + amplitude &&
+                         std::fabs(at[1]) <= 0.5 * s.plate.width && at[2] >= 0.0 &&
+                         at[2] <= s.plate.thickness;
+    c.need(!in_slab, "phones",
+           describe("phone ", i, ": the magnetometer at [", at[0] * 1e3, ", ", at[1] * 1e3, ", ",
+                    at[2] * 1e3,
+                    "] mm lies inside the volume the plate sweeps; lay the phone beside the rig "
+                    "(|y| above ",
+                    0.5e3 * s.plate.width, " mm)"));
+    if (const std::optional<std::size_t> m = magnet_sweeping(s, at, amplitude))
+      c.need(false, "phones",
+             describe("phone ", i, ": the magnetometer lies inside the volume magnet ", *m,
+                      " sweeps as the plate moves; lay the phone beside the rig"));
   }
 }
 
@@ -326,12 +397,14 @@ std::vector<SceneProblem> check_scene(const Scene& s) {
   check_plate(s, c);
   check_friction(s, c, ramps_hold);
   check_magnets(s, c);
+  check_phones(s, c);
   if (!problems.empty()) return problems;
   // The physics of the set-up as a whole.
   const std::optional<double> amplitude = check_motion(s, c);
   if (!amplitude) return problems;
   check_drive(s, c);
   check_sensor(s, c, *amplitude);
+  check_magnetometer_places(s, c, *amplitude);
   return problems;
 }
 

@@ -8,6 +8,7 @@
 #include "io/input_error.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
+#include "scene/phones_yaml.hpp"
 #include "scene/ramp_yaml.hpp"
 #include "scene/rig_parts_yaml.hpp"
 #include "scene/scene_checks.hpp"
@@ -241,13 +242,14 @@ void read_friction(const YamlNode& n, const std::string& plate_material, Frictio
 }
 
 void read_output(const YamlNode& n, OutputDesc& o) {
-  n.allow_keys({"trajectory", "hall", "summary", "cycles", "periods", "jumps"});
+  n.allow_keys({"trajectory", "hall", "summary", "cycles", "periods", "jumps", "phones"});
   if (auto v = n.find("trajectory")) o.trajectory = v->boolean();
   if (auto v = n.find("hall")) o.hall = v->boolean();
   if (auto v = n.find("summary")) o.summary = v->boolean();
   if (auto v = n.find("cycles")) o.cycles = v->boolean();
   if (auto v = n.find("periods")) o.periods = v->boolean();
   if (auto v = n.find("jumps")) o.jumps = v->boolean();
+  if (auto v = n.find("phones")) o.phones = v->boolean();
 }
 
 // The node of a dotted key (or its nearest existing parent), to locate a problem.
@@ -279,7 +281,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   root.expect_map();
   for (const SceneOverride& o : overrides) root.set_path(o.path, o.value, override_location(o));
   root.allow_keys({"format", "name", "expect", "world", "rollers", "plate", "magnets", "sensor",
-                   "friction", "drive", "frame", "output", "video"});
+                   "phones", "friction", "drive", "frame", "output", "video"});
   const YamlNode format = root.at("format");
   if (format.integer() != 1) format.fail("this build reads scene format 1, found " + format.text());
   Scene scene;
@@ -316,6 +318,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
     for (std::size_t i = 0; i < v->size(); ++i) scene.magnets.push_back(read_magnet((*v)[i]));
   }
   if (auto v = root.find("sensor")) scene.sensor = read_sensor(*v);
+  if (auto v = root.find("phones")) scene.phones = read_phones(*v);
   read_friction(root.at("friction"), scene.plate.material, scene.friction, paper);
   if (auto v = root.find("output")) read_output(*v, scene.output);
   if (auto v = root.find("video")) scene.video = read_video(*v);

@@ -7,26 +7,16 @@
 #include <cstdint>
 #include <functional>
 #include <random>
-#include <vector>
 
 #include "scene/compiled_rig.hpp"
+#include "sensor/plate_magnets.hpp"
+#include "sensor/plate_pose.hpp"
 
 namespace fl {
 
 struct HallSample {
   std::uint32_t t_us = 0;  // the ADC clock's time stamp, microseconds
   std::uint16_t adc = 0;   // 0 .. 2^bits - 1
-};
-
-// The plate's pose at one instant, enough to place the magnets.
-struct PlatePose {
-  double t = 0.0;      // s
-  double x = 0.0;      // m, centre of mass
-  double z = 0.0;      // m, centre of mass
-  double pitch = 0.0;  // rad about +y
-  double vx = 0.0, vz = 0.0, pitch_rate = 0.0;
-  double y = 0.0;    // m, sideways (a plate the guides let move)
-  double yaw = 0.0;  // rad about +z
 };
 
 class HallSignal {
@@ -54,11 +44,7 @@ class HallSignal {
   }
 
  private:
-  struct MagnetOnPlate {
-    Vec3 offset;    // m, from the plate's centre of mass in the plate's frame
-    double moment;  // A m^2 along the plate's +z
-  };
-  std::vector<MagnetOnPlate> magnets_;
+  PlateMagnets magnets_;
   SensorDesc sensor_;
   Vec3 axis_{};
   double offset_volts_ = 0.0;

@@ -149,6 +149,35 @@ TEST(OscillationLog, APhoneOnThePlateFeelsThePeriod) {
   }
 }
 
+// A phone lying turned on the plate, its top 40 deg from the motion: each horizontal axis feels a
+// share of it (cos 40 deg on y, sin 40 deg on x). The axes are read combined along the motion
+// (their covariance's principal direction): the plate's whole amplitude, not one axis's share, and
+// the aligned phone's period.
+TEST(OscillationLog, APhoneLyingTurnedIsReadAlongTheMotion) {
+  std::mt19937 random(11);
+  std::normal_distribution<double> noise(0.0, 0.05);
+  const double omega = 2.0 * std::numbers::pi / kPeriod, turn = 40.0 * std::numbers::pi / 180.0;
+  std::string text =
+      "\"Time (s)\",\"Acceleration x (m/s^2)\",\"Acceleration y (m/s^2)\",\"Acceleration z "
+      "(m/s^2)\",\"Absolute acceleration (m/s^2)\"\n";
+  for (int i = 0; i < static_cast<int>(kSeconds * 400.0); ++i) {
+    const double t = i / 400.0;
+    const double a = -omega * omega * plate_x(t);
+    const double ax = std::sin(turn) * a + noise(random);
+    const double ay = std::cos(turn) * a + noise(random);
+    const double az = 9.81 + noise(random);
+    text += fmt::format("{:.6E},{:.6E},{:.6E},{:.6E},{:.6E}\n", t, ax, ay, az,
+                        std::sqrt(ax * ax + ay * ay + az * az));
+  }
+  const HallLog log = parse_hall_log(text, "Raw Data.csv");
+  EXPECT_EQ(log.channel, "0.643 x + 0.766 y");
+  EXPECT_NEAR(period_of(log), kPeriod, 5e-4 * kPeriod);
+  const std::optional<double> amplitude =
+      plate_amplitude(log, estimate_log(log, LogSetUp{}, false));
+  ASSERT_TRUE(amplitude.has_value());
+  EXPECT_NEAR(*amplitude, kAmplitude, 0.01 * kAmplitude);
+}
+
 TEST(OscillationLog, ATableWithoutAPositionIsRefusedAtItsHeader) {
   try {
     read_oscillation_log("comment\nt\tvx\n0\t1\n", "v.txt", MeasurementFile::kTracker);

@@ -264,6 +264,86 @@ TEST(PlateMass, SlabPayloadAndMagnetsByHand) {
   EXPECT_NEAR(pm.h_c, (0.060 * 0.0025 + 0.040 * 0.015 + mm * 0.0065) / (0.1 + mm), 1e-15);
 }
 
+TEST(PlateMass, APhoneOnThePlateByHand) {
+  Scene s;
+  s.plate.length = 0.2;
+  s.plate.thickness = 0.005;
+  s.plate.mass = 0.060;
+  PhoneDesc phone;
+  phone.sensor = PhoneSensor::kAccelerometer;
+  phone.mass = 0.180;
+  phone.x = 0.010;
+  phone.height = 0.002;
+  phone.size = {0.075, 0.150, 0.008};
+  s.phones = {phone};
+  // h_c = (60 g * 2.5 mm + 180 g * (5 + 2 + 4) mm) / 240 g = 8.875 mm; x_c = 180 g * 10 mm / 240 g.
+  const PlateMass pm = plate_mass(s);
+  EXPECT_NEAR(pm.mass, 0.240, 1e-15);
+  EXPECT_NEAR(pm.h_c, 0.008875, 1e-15);
+  EXPECT_NEAR(pm.x_c, 0.0075, 1e-15);
+  // Pitch inertia: the slab's and the phone's own (a box 150 mm along x, 8 mm thick) and their
+  // offsets from the centre of mass (parallel axes).
+  const double slab = 0.060 * (0.2 * 0.2 + 0.005 * 0.005) / 12.0 +
+                      0.060 * (0.0075 * 0.0075 + (0.008875 - 0.0025) * (0.008875 - 0.0025));
+  const double own = 0.180 * (0.150 * 0.150 + 0.008 * 0.008) / 12.0 +
+                     0.180 * (0.0025 * 0.0025 + (0.011 - 0.008875) * (0.011 - 0.008875));
+  EXPECT_NEAR(pm.inertia_pitch, slab + own, 1e-15);
+  // A magnetometer lies beside the rig: it weighs nothing on the plate.
+  s.phones[0].sensor = PhoneSensor::kMagnetometer;
+  EXPECT_NEAR(plate_mass(s).h_c, 0.0025, 1e-15);
+}
+
+TEST(SceneYaml, PhonesLoadInSiAndTheirErrorsAreLocated) {
+  const Scene s = load(kBase + R"(magnets:
+  - {x: 95 mm}
+phones:
+  - {sensor: magnetometer, position: [114 mm, 60 mm, -10 mm], earth: [20 uT, 0 uT, -40 uT]}
+  - {sensor: accelerometer, gravity: false, turn: 90 deg, mass: 150 g, height: 9.6 mm}
+)");
+  ASSERT_EQ(s.phones.size(), 2u);
+  EXPECT_EQ(s.phones[0].sensor, PhoneSensor::kMagnetometer);
+  EXPECT_DOUBLE_EQ(s.phones[0].rate, 100.0);
+  EXPECT_DOUBLE_EQ(s.phones[0].noise, 0.2e-6);
+  EXPECT_DOUBLE_EQ(s.phones[0].position[1], 0.060);
+  EXPECT_DOUBLE_EQ(s.phones[0].earth[2], -40e-6);
+  EXPECT_EQ(s.phones[1].sensor, PhoneSensor::kAccelerometer);
+  EXPECT_DOUBLE_EQ(s.phones[1].rate, 400.0);
+  EXPECT_DOUBLE_EQ(s.phones[1].noise, 0.05);
+  EXPECT_FALSE(s.phones[1].gravity);
+  EXPECT_NEAR(s.phones[1].turn, std::numbers::pi / 2, 1e-15);
+  EXPECT_DOUBLE_EQ(s.phones[1].mass, 0.150);
+
+  // A key of the other sensor, a sensor no phone has, a magnetometer without its place.
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: magnetometer, position: [0, 0.1, 0], mass: 1 g}]")
+                .find("'mass' is an accelerometer's key (a phone lying on the plate)"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: accelerometer, position: [0, 0.1, 0]}]")
+                .find("'position' is a magnetometer's key"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: gps}]")
+                .find("t.yaml:11:19: error: phones[0].sensor: expected magnetometer (a phone "
+                      "beside the rig) or accelerometer (a phone on the plate), found \"gps\""),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: magnetometer}]").find("'position' is required"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: accelerometer, noise: 0.2 uT}]").find("noise"),
+            std::string::npos);
+  // Impossible places and values, said with the phone's index.
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: magnetometer, position: [50 mm, 0 mm, 2 mm]}]")
+                .find("phone 0: the magnetometer at [50, 0, 2] mm lies inside the volume the "
+                      "plate sweeps"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: accelerometer, x: 150 mm}]")
+                .find("phone 0: x = 150 mm puts the phone's centre off the plate"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: accelerometer, rate: 0.5 Hz}]")
+                .find("phone 0: rate must lie from 1 Hz to 10 kHz"),
+            std::string::npos);
+  EXPECT_NE(error_of(kBase + "phones: [{sensor: accelerometer, mass: 0 g}]")
+                .find("phone 0: mass must be positive"),
+            std::string::npos);
+}
+
 TEST(SceneYaml, AnUnknownMaterialIsAnsweredWithTheTablesMaterials) {
   const std::string message = error_of("format: 1\nfriction: {mu_k: plexiglass}\n");
   EXPECT_NE(message.find("found \"plexiglass\"; the paper's materials are lego, paper, "),

@@ -4,7 +4,9 @@
 #include <cctype>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -15,6 +17,7 @@
 #include "lab/request/lab_data.hpp"
 #include "lab/request/output_paths.hpp"
 #include "lab/request/plot_script.hpp"
+#include "lab/run/phone_csv.hpp"
 #include "lab/run/run_files.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "lab/run/step_choice.hpp"
@@ -96,10 +99,11 @@ void make_output_places(const RunRequest& r, const Scene& scene, const CompiledR
   // Outputs that would replace the scene or the captions read are refused before any is made.
   const std::vector<InputFile> inputs = {{r.scene.file, "the scene"},
                                          {r.captions, "the captions file"}};
-  refuse_overwriting_inputs(r.out,
-                            {"summary.json", "timing.json", "trajectory.csv", "hall.csv",
-                             "periods.csv", "cycles.csv", "jumps.csv", "periods.png"},
-                            "out", inputs);
+  std::vector<std::string> written = {"summary.json", "timing.json", "trajectory.csv",
+                                      "hall.csv",     "periods.csv", "cycles.csv",
+                                      "jumps.csv",    "periods.png"};
+  for (std::size_t i = 0; i < rig.phones.size(); ++i) written.push_back(phone_csv_name(rig, i));
+  refuse_overwriting_inputs(r.out, written, "out", inputs);
   refuse_overwriting_inputs(r.video, "video", inputs);
   refuse_overwriting_inputs(r.still, "still", inputs);
   if (!r.out.empty()) {
@@ -245,7 +249,8 @@ RunResult execute_run(const PreparedRun& run, const RunControl& control) {
   // `record` keeps everything; `out` what its files need.
   RunOptions options;
   if (run.record)
-    options.record_trajectory = options.record_hall = options.record_cycles = true;
+    options.record_trajectory = options.record_hall = options.record_cycles =
+        options.record_phones = true;
   else if (!run.out.empty())
     options = recording_for(run.output);
   // A run that asks for no frames makes no recorder: no GL context, no mesh, no encoder.

@@ -216,6 +216,7 @@ struct RunLoop::Impl {
   std::optional<SidewaysDrift> drift;
   std::optional<StepObserver> observer;
   std::optional<HallChannel> hall;
+  std::vector<PhoneChannel> phones;
   std::optional<TrajectoryRecorder> trajectory;
   RunExtremes extremes;
   std::optional<DriveStats> drive;
@@ -244,6 +245,11 @@ RunLoop::RunLoop(const CompiledRig& rig, const RunOptions& options, RunRecording
                    r.observer ? r.observer->new_samples() : nullptr);
     r.monitors.push_back(&*r.hall);
     if (r.observer) r.observer->set_estimator(&r.hall->estimator());
+  }
+  if (options.record_phones && r.keep != nullptr) {
+    r.phones.reserve(rig.phones.size());  // the monitors point into it
+    for (std::size_t i = 0; i < rig.phones.size(); ++i)
+      r.monitors.push_back(&r.phones.emplace_back(rig, i, *r.keep));
   }
   if (options.record_trajectory && r.keep != nullptr)
     r.monitors.push_back(&r.trajectory.emplace(*r.keep));

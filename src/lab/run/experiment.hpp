@@ -20,6 +20,7 @@
 #include "physics/rig_world.hpp"
 #include "scene/compiled_rig.hpp"
 #include "sensor/hall_signal.hpp"
+#include "sensor/phone_signals.hpp"
 
 namespace fl {
 
@@ -30,10 +31,11 @@ struct TrajectoryRow {
 };
 
 struct RunRecording {
-  std::vector<TrajectoryRow> trajectory;  // every step, when asked for
-  std::vector<HallSample> hall;           // every sample, when asked for
-  std::vector<CycleRecord> cycles;        // every complete cycle of the plate, when asked for
-  std::vector<PlateJump> jumps;           // every jump, when the run had jumps
+  std::vector<TrajectoryRow> trajectory;         // every step, when asked for
+  std::vector<HallSample> hall;                  // every sample, when asked for
+  std::vector<std::vector<PhoneSample>> phones;  // each phone's samples, when asked for
+  std::vector<CycleRecord> cycles;  // every complete cycle of the plate, when asked for
+  std::vector<PlateJump> jumps;     // every jump, when the run had jumps
   // Every period the rig's estimator judged (accepted or rejected), when the Hall samples are
   // recorded.
   std::vector<EstimatedPeriod> periods;
@@ -48,6 +50,8 @@ class RecordSink {
   virtual ~RecordSink() = default;
   virtual void trajectory_row(const TrajectoryRow& row) = 0;
   virtual void hall_sample(const HallSample& sample) = 0;
+  // A sample of the rig's phone `phone` (CompiledRig::phones).
+  virtual void phone_sample(std::size_t phone, const PhoneSample& sample) = 0;
   // The run starts again from t = 0 (at more solver iterations): what came so far is forgotten.
   virtual void restart() = 0;
 };
@@ -71,8 +75,9 @@ struct RunOptions {
   bool record_trajectory = false;
   bool record_hall = false;
   bool record_cycles = false;
-  // When set, the trajectory and Hall samples asked for go here, not into the recording (whose
-  // cycles, periods and jumps are kept as before).
+  bool record_phones = false;
+  // When set, the trajectory, Hall and phone samples asked for go here, not into the recording
+  // (whose cycles, periods and jumps are kept as before).
   RecordSink* stream = nullptr;
   // Called after every step (and once at t = 0) when set.
   std::function<void(const StepView&)> observer;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "io/atomic_file.hpp"
+#include "lab/run/phone_csv.hpp"
 #include "lab/run/run_outputs.hpp"
 
 namespace fl {
@@ -16,6 +17,10 @@ RunFiles::RunFiles(const std::string& folder, const OutputDesc& output, const Co
   if (output.hall && rig.sensor) {
     hall_.emplace(folder + "/hall.csv");
     hall_->pending() = kHallCsvHeader;
+  }
+  for (std::size_t i = 0; output.phones && i < rig.phones.size(); ++i) {
+    phones_.push_back(std::make_unique<StreamedFile>(folder + "/" + phone_csv_name(rig, i)));
+    phones_.back()->pending() = phone_csv_header(rig.phones[i]);
   }
 }
 
@@ -37,6 +42,12 @@ void RunFiles::hall_sample(const HallSample& sample) {
   hall_->wrote();
 }
 
+void RunFiles::phone_sample(std::size_t phone, const PhoneSample& sample) {
+  if (phone >= phones_.size()) return;
+  append_phone_row(phones_[phone]->pending(), rig_.phones[phone], sample);
+  phones_[phone]->wrote();
+}
+
 void RunFiles::restart() {
   if (trajectory_) {
     trajectory_->restart();
@@ -46,6 +57,10 @@ void RunFiles::restart() {
     hall_->restart();
     hall_->pending() = kHallCsvHeader;
   }
+  for (std::size_t i = 0; i < phones_.size(); ++i) {
+    phones_[i]->restart();
+    phones_[i]->pending() = phone_csv_header(rig_.phones[i]);
+  }
 }
 
 void RunFiles::finish(const RunSummary& summary, const RunRecording& recording) {
@@ -54,6 +69,7 @@ void RunFiles::finish(const RunSummary& summary, const RunRecording& recording) 
     write_file_atomic(folder_ + "/" + name, text);
   if (trajectory_) trajectory_->commit();
   if (hall_) hall_->commit();
+  for (const std::unique_ptr<StreamedFile>& phone : phones_) phone->commit();
 }
 
 double run_files_bytes_at_most(const OutputDesc& output, const CompiledRig& rig) {
@@ -66,6 +82,8 @@ double run_files_bytes_at_most(const OutputDesc& output, const CompiledRig& rig)
   if (output.hall && rig.sensor)
     bytes += (rig.world.duration * rig.sensor->sample_rate * (1.0 + rig.sensor->clock_error) + 2) *
              kHallRow;
+  for (std::size_t i = 0; output.phones && i < rig.phones.size(); ++i)
+    bytes += phone_csv_bytes_at_most(rig.phones[i], rig.world.duration);
   return bytes;
 }
 

@@ -1,12 +1,15 @@
-// A run's files (`run --out DIR`) written as the run goes: trajectory.csv and hall.csv stream to
+// A run's files (`run --out DIR`) written as the run goes: trajectory.csv, hall.csv and the
+// phones' files stream to
 // temporary files beside their places as the steps and samples come, so a run keeps none of its
 // steps in memory, however long; finish() writes the rest (summary.json, periods.csv, ...) and
 // moves every file into place, each whole. A run that throws before finish() leaves the folder's
 // files as they were.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "io/streamed_file.hpp"
 #include "lab/run/experiment.hpp"
@@ -23,6 +26,7 @@ class RunFiles final : public RecordSink {
 
   void trajectory_row(const TrajectoryRow& row) override;
   void hall_sample(const HallSample& sample) override;
+  void phone_sample(std::size_t phone, const PhoneSample& sample) override;
   void restart() override;
 
   // Writes the files the recording holds (cycles, periods, jumps) and the summary's, then moves
@@ -35,6 +39,7 @@ class RunFiles final : public RecordSink {
   const CompiledRig& rig_;
   std::optional<StreamedFile> trajectory_;
   std::optional<StreamedFile> hall_;
+  std::vector<std::unique_ptr<StreamedFile>> phones_;  // each phone's, in the rig's order
 };
 
 // The most bytes a run's files take on disk (the steps' and samples' rows at their widest, and

@@ -50,6 +50,16 @@ void HallChannel::record(const StepContext& step) {
                        });
 }
 
+void PhoneChannel::record(const StepContext& step) {
+  signal_.sample_between(pose_of(step.t_previous, step.previous), pose_of(step.t, step.plate),
+                         [this](const PhoneSample& sample) { keep_.phone_sample(phone_, sample); });
+}
+
+void RecordingSink::phone_sample(std::size_t phone, const PhoneSample& sample) {
+  if (recording_.phones.size() <= phone) recording_.phones.resize(phone + 1);
+  recording_.phones[phone].push_back(sample);
+}
+
 void CycleRecorder::start(const RigWorld& world, const PlateState& plate) {
   tracker_.add(0.0, plate.x, plate.vx, world.roller_surface_speeds());
 }

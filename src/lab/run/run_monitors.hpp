@@ -86,6 +86,19 @@ class HallChannel final : public RunMonitor {
   std::vector<HallSample>* view_samples_;
 };
 
+// Each phone's sensor sampled between the steps (sensor/phone_signals.hpp), each sample kept.
+class PhoneChannel final : public RunMonitor {
+ public:
+  PhoneChannel(const CompiledRig& rig, std::size_t phone, RecordSink& keep)
+      : signal_(rig, phone), phone_(phone), keep_(keep) {}
+  void record(const StepContext& step) override;
+
+ private:
+  PhoneSignal signal_;
+  std::size_t phone_;
+  RecordSink& keep_;
+};
+
 // Every complete cycle of the plate (cycles.csv).
 class CycleRecorder final : public RunMonitor {
  public:
@@ -114,6 +127,7 @@ class RecordingSink final : public RecordSink {
   explicit RecordingSink(RunRecording& recording) : recording_(recording) {}
   void trajectory_row(const TrajectoryRow& row) override { recording_.trajectory.push_back(row); }
   void hall_sample(const HallSample& sample) override { recording_.hall.push_back(sample); }
+  void phone_sample(std::size_t phone, const PhoneSample& sample) override;
   void restart() override { recording_ = RunRecording{}; }
 
  private:

@@ -8,6 +8,7 @@
 #include "core/units.hpp"
 #include "io/atomic_file.hpp"
 #include "lab/run/cycle_report.hpp"
+#include "lab/run/phone_csv.hpp"
 #include "lab/run/summary_fields.hpp"
 
 namespace fl {
@@ -59,6 +60,7 @@ RunOptions recording_for(const OutputDesc& output) {
   options.record_trajectory = output.trajectory;
   options.record_hall = output.hall;
   options.record_cycles = output.cycles;
+  options.record_phones = output.phones;
   return options;
 }
 
@@ -73,6 +75,11 @@ std::vector<std::pair<std::string, std::string>> run_output_files(const OutputDe
   if (steps == StepFiles::kFromRecording) {
     if (output.trajectory) files.emplace_back("trajectory.csv", trajectory_csv(recording));
     if (output.hall && rig.sensor) files.emplace_back("hall.csv", hall_csv(recording));
+    for (std::size_t i = 0; output.phones && i < rig.phones.size(); ++i)
+      files.emplace_back(
+          phone_csv_name(rig, i),
+          phone_csv(rig.phones[i], i < recording.phones.size() ? recording.phones[i]
+                                                               : std::vector<PhoneSample>{}));
   }
   if (output.periods && output.hall && rig.sensor)
     files.emplace_back("periods.csv", periods_csv(recording));

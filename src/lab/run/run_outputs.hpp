@@ -33,12 +33,12 @@ std::string periods_csv(const RunRecording& recording);
 // Each jump of the plate: the roller it left, when, how high, at which roller angle.
 std::string jumps_csv(const RunRecording& recording);
 
-// What a run records so that its files can be written: the steps, the Hall samples and the
-// cycles the scene's output part names (`run --out` and a live session ask the same).
+// What a run records so that its files can be written: the steps, the Hall and phone samples and
+// the cycles the scene's output part names (`run --out` and a live session ask the same).
 RunOptions recording_for(const OutputDesc& output);
 
-// Whether trajectory.csv and hall.csv are made from the recording, or were streamed to their
-// files as the run went (lab/run/run_files.hpp) and are left out here.
+// Whether trajectory.csv, hall.csv and the phones' files are made from the recording, or were
+// streamed to their files as the run went (lab/run/run_files.hpp) and are left out here.
 enum class StepFiles { kFromRecording, kStreamed };
 
 // The files of a run, by name, as the scene's output part asks: what write_run_outputs writes.
@@ -46,9 +46,9 @@ std::vector<std::pair<std::string, std::string>> run_output_files(
     const OutputDesc& output, const CompiledRig& rig, const RunSummary& summary,
     const RunRecording& recording, StepFiles steps = StepFiles::kFromRecording);
 
-// Writes summary.json, timing.json, trajectory.csv, hall.csv, periods.csv, cycles.csv and (when
-// the plate jumped) jumps.csv, as the scene's output part asks, into `folder`, each file
-// atomically. All but timing.json are bit-identical between runs.
+// Writes summary.json, timing.json, trajectory.csv, hall.csv, the phones' files (phone_csv.hpp),
+// periods.csv, cycles.csv and (when the plate jumped) jumps.csv, as the scene's output part asks,
+// into `folder`, each file atomically. All but timing.json are bit-identical between runs.
 void write_run_outputs(const std::string& folder, const OutputDesc& output, const CompiledRig& rig,
                        const RunSummary& summary, const RunRecording& recording);
 

@@ -1,9 +1,11 @@
 // A run's files streamed as the run goes (lab/run/run_files.hpp) are byte for byte the files made
 // from a run kept in memory: for the minimal scene (every file), and for a run that starts again
 // at more solver iterations (what came before the restart is forgotten). The run keeps none of
-// its steps or samples in memory while it streams them.
+// its steps or samples in memory while it streams them. The phones' files likewise.
 #include "lab/run/run_files.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -63,19 +65,38 @@ TEST_F(RunFilesTest, EveryFileOfTheMinimalSceneIsTheRecordingsFile) {
   Scene scene =
       test::scene_file("minimal.yaml", std::vector<SceneOverride>{{"world.duration", "5 s"}});
   scene.output.cycles = true;
+  // Two phones beside the rig and one on the plate, each its own file.
+  PhoneDesc beside;
+  beside.position = {0.12, 0.06, -0.01};
+  PhoneDesc on_plate;
+  on_plate.sensor = PhoneSensor::kAccelerometer;
+  on_plate.rate = 400.0;
+  scene.phones = {beside, on_plate, beside};
+  scene.phones[2].position[1] = -0.06;
   run_both(scene);
   expect_same_files();
   for (const char* name :
-       {"trajectory.csv", "hall.csv", "periods.csv", "cycles.csv", "summary.json"})
+       {"trajectory.csv", "hall.csv", "periods.csv", "cycles.csv", "summary.json",
+        "phone-magnetometer.csv", "phone-accelerometer.csv", "phone-magnetometer-2.csv"})
     EXPECT_TRUE(fs::exists(dir_ / "streamed" / name)) << name;
+  // 5 s at 400 Hz: a header and 2001 samples (t = 0 and every 2.5 ms to 5 s).
+  const std::string phone = test::read_text(dir_ / "streamed" / "phone-accelerometer.csv");
+  EXPECT_EQ(std::count(phone.begin(), phone.end(), '\n'), 2002);
 }
 
 TEST_F(RunFilesTest, ARunThatStartsAgainStreamsOnlyTheRunItEndsWith) {
   Scene scene = test::stuck_on_close_rollers();
   scene.output.trajectory = true;
+  PhoneDesc phone;
+  phone.sensor = PhoneSensor::kAccelerometer;
+  scene.phones = {phone};
   const RunSummary summary = run_both(scene);
   ASSERT_TRUE(summary.solver_iterations_raised.has_value());
   expect_same_files();
+  // The phone's file holds the run it ended with: its samples once, from t = 0.
+  const std::string samples = test::read_text(dir_ / "streamed" / "phone-accelerometer.csv");
+  EXPECT_EQ(static_cast<double>(std::count(samples.begin(), samples.end(), '\n')),
+            std::floor(summary.duration * phone.rate + 1e-9) + 2.0);
   // One header, and one row per step of the run it ended with.
   const std::string trajectory = test::read_text(dir_ / "streamed" / "trajectory.csv");
   EXPECT_EQ(static_cast<long long>(std::count(trajectory.begin(), trajectory.end(), '\n')),

@@ -146,6 +146,19 @@ class Scene:
         jitter: float
         clock_error: float
 
+    class Phone:
+        sensor: str  # "magnetometer" or "accelerometer"
+        rate: float
+        noise: float
+        turn: float
+        position: list[float]
+        earth: list[float]
+        gravity: bool
+        x: float
+        height: float
+        mass: float
+        size: list[float]
+
     class Warming:
         room: float
         time_constant: float
@@ -200,6 +213,7 @@ class Scene:
         cycles: bool
         periods: bool
         jumps: bool
+        phones: bool
 
     name: str
     file: Optional[str]
@@ -210,6 +224,7 @@ class Scene:
     plate: Scene.Plate
     magnets: list[Scene.Magnet]
     sensor: Optional[Scene.Sensor]
+    phones: list[Scene.Phone]
     friction: Scene.Friction
     drive: Optional[Scene.Drive]
     frame: Optional[Scene.Frame]
@@ -375,6 +390,7 @@ class RunResult(RunSummary):
     cycles: Optional[npt.NDArray[np.void]]
     periods: Optional[npt.NDArray[np.void]]
     jump_list: Optional[npt.NDArray[np.void]]
+    phones: Optional[list[npt.NDArray[np.void]]]
     video: Optional[VideoReport]
     plot_failure: Optional[str]
 

@@ -96,3 +96,37 @@ def test_columns_are_views_of_the_recording():
     x = r.trajectory["x_m"]
     assert not x.flags["OWNDATA"] and x.base is not None
     assert r.trajectory.strides[0] >= 8 * 9  # one row per step, fields side by side
+
+
+def test_phones_record_what_the_plate_does_in_their_own_axes(tmp_path):
+    # A still-air phone far from the magnets reads the Earth's field; one lying on the plate
+    # (its top along +x, no g, no noise) reads -omega^2 x along its y, omega from the plate's own
+    # period (its trajectory's), to within what a step's acceleration changes by (A omega^3 dt):
+    # Bullet's semi-implicit step changes the velocity by the force at the step's start, so each
+    # sample reads the acceleration of up to one step earlier.
+    phones = ("[{sensor: magnetometer, noise: 0 uT, position: [50 m, 50 m, 0 m]},"
+              " {sensor: accelerometer, noise: 0 m/s^2, gravity: false, mass: 100 g}]")
+    scene = fl.load_scene(SCENES / "minimal.yaml", set={"phones": phones})
+    assert [p.sensor for p in scene.phones] == ["magnetometer", "accelerometer"]
+    r = fl.run(scene, duration="4s", out=tmp_path)
+    far, on_plate = r.phones
+    assert far.shape == (401,) and on_plate.shape == (1601,)  # 100 Hz and 400 Hz, t = 0 included
+    np.testing.assert_allclose(far["t_s"], np.arange(401) / 100.0, rtol=0, atol=1e-12)
+    # The Earth's default field, [21, -4, -43] uT in the rig's frame: in the phone's axes
+    # (top along +x) x = -(-4), y = 21, z = -43; the magnets 70 m away add 5e-14 T.
+    np.testing.assert_allclose(far["bx_t"], 4e-6, atol=1e-12)
+    np.testing.assert_allclose(far["by_t"], 21e-6, atol=1e-12)
+    np.testing.assert_allclose(far["bz_t"], -43e-6, atol=1e-12)
+    t = on_plate["t_s"]
+    x = np.interp(t, r.trajectory["t_s"], r.trajectory["x_m"])
+    omega = 2 * np.pi / r.period_trajectory
+    step = scene["world.time_step"]
+    amplitude = scene["plate.offset"]
+    np.testing.assert_allclose(on_plate["ay_m_s2"], -omega**2 * x,
+                               rtol=0, atol=1.05 * amplitude * omega**3 * step)
+    np.testing.assert_allclose(on_plate["ax_m_s2"], 0.0, atol=1e-12)
+    # The files are the same samples, as phyphox writes them (nine decimals, the field in uT).
+    rows = np.loadtxt(tmp_path / "phone-magnetometer.csv", delimiter=",", skiprows=1)
+    np.testing.assert_allclose(rows[:, 2], far["by_t"] * 1e6, rtol=1e-9)
+    rows = np.loadtxt(tmp_path / "phone-accelerometer.csv", delimiter=",", skiprows=1)
+    np.testing.assert_allclose(rows[:, 2], on_plate["ay_m_s2"], rtol=1e-9, atol=1e-15)

@@ -62,6 +62,17 @@ py::array hall_array(std::vector<HallSample>&& samples) {
   return rows_array(std::move(samples), fields);
 }
 
+py::array phone_array(std::vector<PhoneSample>&& samples, PhoneSensor sensor) {
+  const bool field = sensor == PhoneSensor::kMagnetometer;
+  const std::size_t value = offsetof(PhoneSample, value);
+  const std::vector<RecordField> fields{
+      {"t_s", "<f8", offsetof(PhoneSample, t)},
+      {field ? "bx_t" : "ax_m_s2", "<f8", value},
+      {field ? "by_t" : "ay_m_s2", "<f8", value + sizeof(double)},
+      {field ? "bz_t" : "az_m_s2", "<f8", value + 2 * sizeof(double)}};
+  return rows_array(std::move(samples), fields);
+}
+
 py::array cycles_array(std::vector<CycleRecord>&& cycles) {
   const std::vector<RecordField> fields{
       {"start_s", "<f8", offsetof(CycleRecord, start)},

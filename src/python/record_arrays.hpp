@@ -58,6 +58,10 @@ py::array trajectory_array(std::vector<TrajectoryRow>&& rows);
 // Shape (samples,): t_us (uint32, the sensor board's microsecond clock) and adc (uint16, counts).
 py::array hall_array(std::vector<HallSample>&& samples);
 
+// Shape (samples,): a phone's, in its axes: t_s and bx_t, by_t, bz_t (a magnetometer) or
+// ax_m_s2, ay_m_s2, az_m_s2 (an accelerometer).
+py::array phone_array(std::vector<PhoneSample>&& samples, PhoneSensor sensor);
+
 // Shape (cycles,): start_s, period_s, amplitude_m, x_min_m, x_max_m, surface_speed_m_s, stick_s.
 py::array cycles_array(std::vector<CycleRecord>&& cycles);
 

@@ -36,6 +36,7 @@ struct PythonRunResult : RunSummary {
   py::object cycles = py::none();
   py::object periods = py::none();
   py::object jump_list = py::none();
+  py::object phones = py::none();
   std::optional<VideoReport> video;
   std::string plot_failure;
 };
@@ -127,6 +128,12 @@ PythonRunResult run(const SceneArgument& scene_to_run, const std::optional<Quant
     result.cycles = cycles_array(std::move(recording.cycles));
     if (sensor) result.periods = periods_array(std::move(recording.periods));
     result.jump_list = jumps_array(std::move(recording.jumps));
+    py::list phones;
+    for (std::size_t i = 0; i < prepared.rig->phones.size(); ++i)
+      phones.append(phone_array(
+          i < recording.phones.size() ? std::move(recording.phones[i]) : std::vector<PhoneSample>{},
+          prepared.rig->phones[i].sensor));
+    result.phones = phones;
   }
   return result;
 }
@@ -296,6 +303,9 @@ periods: structured array, shape (periods,): each period the rig's estimator jud
   scene without a sensor.
 jump_list: structured array, shape (jumps,): each time the plate left a roller, roller,
   start_s, end_s, height_m, roller_angle_rad, open (jumps.csv; `jumps` is their count).
+phones: a list, one structured array per phone of the scene, in its order: t_s and, in the
+  phone's axes, bx_t, by_t, bz_t (a magnetometer, T) or ax_m_s2, ay_m_s2, az_m_s2 (an
+  accelerometer), each sample before phyphox's CSV rounds it.
 Each is None when the run was made with record=False. Each column (result.trajectory["x_m"])
 is a view, not a copy.)")
       .def_readonly("trajectory", &PythonRunResult::trajectory)
@@ -303,6 +313,7 @@ is a view, not a copy.)")
       .def_readonly("cycles", &PythonRunResult::cycles)
       .def_readonly("periods", &PythonRunResult::periods)
       .def_readonly("jump_list", &PythonRunResult::jump_list)
+      .def_readonly("phones", &PythonRunResult::phones)
       .def_readonly("video", &PythonRunResult::video, "the frames drawn, or None")
       .def_property_readonly(
           "plot_failure",

@@ -176,6 +176,22 @@ void bind_rig_parts(py::class_<LoadedScene>& scene) {
       .def_readonly("noise", &SensorDesc::noise, "V rms")
       .def_readonly("jitter", &SensorDesc::jitter, "s rms")
       .def_readonly("clock_error", &SensorDesc::clock_error, "relative");
+  py::class_<PhoneDesc>(scene, "Phone", "phones[]: a phone's sensor as phyphox records it (SI).")
+      .def_property_readonly("sensor",
+                             [](const PhoneDesc& p) {
+                               return p.sensor == PhoneSensor::kMagnetometer ? "magnetometer"
+                                                                             : "accelerometer";
+                             })
+      .def_readonly("rate", &PhoneDesc::rate, "Hz")
+      .def_readonly("noise", &PhoneDesc::noise, "rms per axis: T or m/s^2")
+      .def_readonly("turn", &PhoneDesc::turn, "rad, from +x to the phone's top")
+      .def_readonly("position", &PhoneDesc::position, "m, world (a magnetometer)")
+      .def_readonly("earth", &PhoneDesc::earth, "T, the rig's frame (a magnetometer)")
+      .def_readonly("gravity", &PhoneDesc::gravity, "records g (an accelerometer)")
+      .def_readonly("x", &PhoneDesc::x, "m along the plate (an accelerometer)")
+      .def_readonly("height", &PhoneDesc::height, "m above the plate's top (an accelerometer)")
+      .def_readonly("mass", &PhoneDesc::mass, "kg (an accelerometer)")
+      .def_readonly("size", &PhoneDesc::size, "m: width, length, thickness (an accelerometer)");
 }
 
 // The friction law, the rollers warming, and the drive.
@@ -245,7 +261,8 @@ void bind_frame_and_output(py::class_<LoadedScene>& scene) {
       .def_readonly("summary", &OutputDesc::summary)
       .def_readonly("cycles", &OutputDesc::cycles)
       .def_readonly("periods", &OutputDesc::periods)
-      .def_readonly("jumps", &OutputDesc::jumps);
+      .def_readonly("jumps", &OutputDesc::jumps)
+      .def_readonly("phones", &OutputDesc::phones);
 }
 
 void bind_scene_parts(py::class_<LoadedScene>& scene) {
@@ -264,6 +281,7 @@ void bind_scene_parts(py::class_<LoadedScene>& scene) {
       .def_property_readonly("plate", part(&Scene::plate), ref)
       .def_property_readonly("magnets", part(&Scene::magnets))
       .def_property_readonly("sensor", part(&Scene::sensor), "None without a sensor")
+      .def_property_readonly("phones", part(&Scene::phones), "the phones' sensors")
       .def_property_readonly("friction", part(&Scene::friction), ref)
       .def_property_readonly("drive", part(&Scene::drive), "None for the ideal drive")
       .def_property_readonly("frame", part(&Scene::frame), "None without a frame")

@@ -1,5 +1,8 @@
 #include "api/api_fields.hpp"
 
+#include <string_view>
+
+#include "lab/logs/estimate_fields.hpp"
 #include "lab/run/summary_fields.hpp"
 
 namespace fl::api {
@@ -277,6 +280,28 @@ std::vector<ApiObject> live_rig_objects() {
   };
 }
 
+// A measurement file's estimate: the keys of `frictionlab estimate --json` the page shows, each
+// typed and explained where the estimate's keys are declared (lab/logs/estimate_fields.hpp).
+ApiObject measurement_estimate() {
+  ApiObject o{.name = "MeasurementEstimate",
+              .meaning =
+                  "`POST /api/estimate?name=FILE`: a measurement file's estimate, the keys "
+                  "of `frictionlab estimate --json` (docs/cli.md) the page shows."};
+  for (const char* name :
+       {"file", "instrument", "channel", "samples", "sample_rate_hz", "duration_s", "periods_used",
+        "periods_discarded", "period_s", "period_std_s", "period_sem_s", "mu_k", "mu_k_err_worst",
+        "mu_k_err_quadrature", "mu_k_thick", "spacing_m", "amplitude", "amplitude_unit"}) {
+    for (const EstimateField& f : estimate_fields())
+      if (std::string_view(f.json) == name)
+        o.keys.push_back({.name = f.json,
+                          .type = summary_type(f.type),
+                          .unit = f.unit,
+                          .meaning = f.meaning,
+                          .nullable = f.null_when != nullptr});
+  }
+  return o;
+}
+
 ApiDeclaration declare() {
   ApiDeclaration d;
   d.aliases = {
@@ -299,6 +324,7 @@ ApiDeclaration declare() {
     std::vector<ApiObject> part = group();
     d.objects.insert(d.objects.end(), part.begin(), part.end());
   }
+  d.objects.push_back(measurement_estimate());
   // The run's summary (the `done` event, summary.json): its keys are the run's fields'.
   ApiObject summary{.name = "RunSummaryJson",
                     .meaning = "`event: done`: the run's summary, summary.json's object.",

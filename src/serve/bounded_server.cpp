@@ -186,8 +186,22 @@ std::optional<std::uint64_t> declared_length(const httplib::Request& req) {
 
 BoundedServer::BoundedServer(std::size_t most_head_bytes, std::size_t most_body_bytes)
     : most_head_bytes_(most_head_bytes), most_body_bytes_(most_body_bytes) {
-  // A Content-Length beyond the body's bound is refused (413) before a byte of it is read.
+  // A Content-Length beyond every path's bound is refused (413) by the library before a byte of
+  // it is read; one beyond its own path's bound, by the stream (process_and_close_socket).
   set_payload_max_length(most_body_bytes);
+}
+
+void BoundedServer::allow_larger_body(std::string path, std::size_t most_bytes) {
+  larger_bodies_.emplace_back(std::move(path), most_bytes);
+  std::size_t most = most_body_bytes_;
+  for (const auto& [p, bytes] : larger_bodies_) most = std::max(most, bytes);
+  set_payload_max_length(most);
+}
+
+std::size_t BoundedServer::most_body_bytes(const std::string& path) const {
+  for (const auto& [p, bytes] : larger_bodies_)
+    if (p == path) return bytes;
+  return most_body_bytes_;
 }
 
 RequestBound BoundedServer::bound_passed() {
@@ -217,8 +231,10 @@ bool BoundedServer::process_and_close_socket(socket_t sock) {
     // request begins after a body read whole only. Unset: the head itself was refused.
     std::optional<std::optional<std::uint64_t>> length;
     ok = process_request(stream, count == 1, closed, [&](httplib::Request& req) {
-      stream.begin_body(most_body_bytes_ + kMostFraming);
       length = declared_length(req);
+      // A Content-Length beyond the path's bound: not a byte of the body is read.
+      const std::size_t most = most_body_bytes(req.path);
+      stream.begin_body(*length && **length > most ? 0 : most + kMostFraming);
     });
     const bool read_whole = length && *length && stream.body_read() >= **length;
     if (!ok || closed || !read_whole || stream.passed() != RequestBound::kWithin) break;

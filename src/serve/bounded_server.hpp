@@ -8,6 +8,9 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <httplib.h>
 
@@ -20,6 +23,12 @@ class BoundedServer : public httplib::Server {
  public:
   BoundedServer(std::size_t most_head_bytes, std::size_t most_body_bytes);
 
+  // Lets a request to `path` (exactly: a file a page sends) carry a body of `most_bytes`
+  // instead; call before listening.
+  void allow_larger_body(std::string path, std::size_t most_bytes);
+  // The most bytes a request to `path` may carry in its body.
+  std::size_t most_body_bytes(const std::string& path) const;
+
   // For the error handler, answering on the request's own thread.
   static RequestBound bound_passed();
 
@@ -28,6 +37,7 @@ class BoundedServer : public httplib::Server {
 
   const std::size_t most_head_bytes_;
   const std::size_t most_body_bytes_;
+  std::vector<std::pair<std::string, std::size_t>> larger_bodies_;
 };
 
 }  // namespace fl::serve

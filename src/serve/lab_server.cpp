@@ -30,6 +30,7 @@
 #include "serve/bounded_server.hpp"
 #include "serve/class_table.hpp"
 #include "serve/lab_session.hpp"
+#include "serve/measurement_upload.hpp"
 #include "serve/path_scrubber.hpp"
 #include "serve/rate_limit.hpp"
 #include "serve/session_key.hpp"
@@ -41,6 +42,11 @@ using nlohmann::json;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
 constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
+// Bytes of a measurement file a page sends: a phone's CSVs of minutes at 500 Hz, a phyphox zip, a
+// short phone video (a longer one is for frictionlab estimate on the student's machine).
+constexpr std::size_t kMostUpload = 32 * 1024 * 1024;
+// Measurement files estimated at once (a video's tracking takes a core for seconds).
+constexpr int kMostEstimatesAtOnce = 2;
 constexpr std::size_t kMostHead = 16 * 1024;  // bytes of a request's line and headers together
 // Each stream holds a thread while its page listens: two streams a session (a page reloading)
 // and some for the other requests.
@@ -77,11 +83,16 @@ void say_connection_ends(const httplib::Request& req) {
   headers.emplace("Connection", "close");
 }
 
-void send_body_too_large(httplib::Response& res) {
+void send_body_too_large(httplib::Response& res, std::size_t most = kMostBody) {
   send_json(res, 413,
-            error_json(fmt::format("the request's body is larger than {} KiB, the most the lab "
-                                   "takes: send a smaller one",
-                                   kMostBody / 1024)));
+            error_json(most == kMostUpload
+                           ? fmt::format("the file is larger than {} MiB, the most the lab's "
+                                         "server takes: estimate it with frictionlab estimate on "
+                                         "your machine, or send a shorter recording",
+                                         most / (1024 * 1024))
+                           : fmt::format("the request's body is larger than {} KiB, the most the "
+                                         "lab takes: send a smaller one",
+                                         most / 1024)));
 }
 
 // A body beyond the bound, sent in chunks the stream let through with their framing: 413.
@@ -129,6 +140,7 @@ struct LabServer::Impl {
   std::atomic<bool> stopping{false};
   std::atomic<bool> listening{false};
   std::atomic<int> streams{0};
+  std::atomic<int> estimating{0};  // measurement files being estimated
   // The live rig: the port open or last open (replaced when a page opens another).
   mutable std::mutex rig_mutex;
   std::shared_ptr<BoardFeed> rig;
@@ -220,6 +232,7 @@ struct LabServer::Impl {
   }
   void routes();
   void create(const httplib::Request& req, httplib::Response& res);
+  void estimate(const httplib::Request& req, httplib::Response& res);
   void stream(const std::shared_ptr<LabSession>& session, httplib::Response& res);
   void control(LabSession& session, const httplib::Request& req, httplib::Response& res);
 };
@@ -301,6 +314,9 @@ void LabServer::Impl::routes() {
   server.Get("/api/rig", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200, rig_status_json());
   });
+  server.allow_larger_body("/api/estimate", kMostUpload);
+  server.Post("/api/estimate",
+              [this](const httplib::Request& req, httplib::Response& res) { estimate(req, res); });
   server.Post("/api/rig", [this](const httplib::Request& req, httplib::Response& res) {
     if (refuse_large_body(req, res)) return;
     const auto read = read_rig_body(req.body);
@@ -355,6 +371,29 @@ void LabServer::Impl::routes() {
     send_json(res, ended ? 200 : 404,
               ended ? json{{"ended", true}} : error_json("no such session"));
   });
+}
+
+void LabServer::Impl::estimate(const httplib::Request& req, httplib::Response& res) {
+  if (!req.has_param("name"))
+    return send_json(res, 400,
+                     error_json("expected the file's name as ?name= (e.g. "
+                                "/api/estimate?name=phone.csv), found none"));
+  MeasurementUpload upload{req.get_param_value("name"), req.body, std::nullopt, std::nullopt};
+  if (req.has_param("spacing")) upload.spacing = req.get_param_value("spacing");
+  if (req.has_param("h_c")) upload.h_c = req.get_param_value("h_c");
+  // A few at once: the others are asked to wait, not queued behind a video's seconds.
+  if (estimating.fetch_add(1) >= kMostEstimatesAtOnce) {
+    estimating.fetch_sub(1);
+    return send_json(res, 503,
+                     error_json("the lab is reading other students' files: send yours again in "
+                                "a few seconds"));
+  }
+  struct Done {
+    std::atomic<int>& count;
+    ~Done() { count.fetch_sub(1); }
+  } done{estimating};
+  const UploadAnswer answer = estimate_upload(upload, options.asset_dir);
+  send_json(res, answer.status, answer.body);
 }
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
@@ -499,29 +538,37 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
   // Every error's body is JSON naming the server's folders by what they are (answered before
   // the library compresses it), and a request past the stream's bounds (bounded_server.hpp) is
   // answered so, on a connection that then ends.
-  s.set_error_handler(httplib::Server::HandlerWithResponse(
-      [this](const httplib::Request& req, httplib::Response& res) {
-        const RequestBound passed = BoundedServer::bound_passed();
-        if (passed == RequestBound::kBodyTooLarge || res.status == 413) {
-          say_connection_ends(req);
-          send_body_too_large(res);
-          return httplib::Server::HandlerResponse::Handled;
-        }
-        if (passed == RequestBound::kHeadTooLarge) {
-          say_connection_ends(req);
-          send_json(res, 431,
-                    error_json(fmt::format("the request's line and headers are larger than {} KiB, "
-                                           "the most the lab takes",
-                                           kMostHead / 1024)));
-          return httplib::Server::HandlerResponse::Handled;
-        }
-        if (res.get_header_value("Content-Type") != "application/json")
-          return httplib::Server::HandlerResponse::Unhandled;
-        json body = json::parse(res.body, nullptr, /*allow_exceptions=*/false);
-        if (body.is_discarded()) return httplib::Server::HandlerResponse::Unhandled;
-        send_json(res, res.status, impl_->public_paths.scrubbed_body(std::move(body)));
+  s.set_error_handler(httplib::Server::HandlerWithResponse([this](const httplib::Request& req,
+                                                                  httplib::Response& res) {
+    const RequestBound passed = BoundedServer::bound_passed();
+    if (passed == RequestBound::kBodyTooLarge || res.status == 413) {
+      say_connection_ends(req);
+      // cpp-httplib reads a form's body (curl's default type) up to 8 KiB only.
+      if (passed != RequestBound::kBodyTooLarge &&
+          req.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded")) {
+        send_json(res, 413,
+                  error_json("a form's body is read up to 8 KiB only: send the file itself "
+                             "as the body, with Content-Type: application/octet-stream"));
         return httplib::Server::HandlerResponse::Handled;
-      }));
+      }
+      send_body_too_large(res, impl_->server.most_body_bytes(req.path));
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (passed == RequestBound::kHeadTooLarge) {
+      say_connection_ends(req);
+      send_json(res, 431,
+                error_json(fmt::format("the request's line and headers are larger than {} KiB, "
+                                       "the most the lab takes",
+                                       kMostHead / 1024)));
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (res.get_header_value("Content-Type") != "application/json")
+      return httplib::Server::HandlerResponse::Unhandled;
+    json body = json::parse(res.body, nullptr, /*allow_exceptions=*/false);
+    if (body.is_discarded()) return httplib::Server::HandlerResponse::Unhandled;
+    send_json(res, res.status, impl_->public_paths.scrubbed_body(std::move(body)));
+    return httplib::Server::HandlerResponse::Handled;
+  }));
   s.set_exception_handler(
       [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
         std::string what = "an internal error";

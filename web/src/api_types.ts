@@ -413,4 +413,44 @@ export interface ClassTable {
   /** the live rig; null when no port was opened */
   rig: ClassLiveRig | null;
 }
+
+/** `POST /api/estimate?name=FILE`: a measurement file's estimate, the keys of `frictionlab estimate --json` (docs/cli.md) the page shows. */
+export interface MeasurementEstimate {
+  /** the file read (a folder's log; a followed port's raw log, or the port) */
+  file: string;
+  /** what measured: `Hall sensor` (the rig's), `phyphox magnetometer` (a phone beside the rig), `phyphox accelerometer` or `phyphox accelerometer (without g)` (a phone on the plate), `Tracker` (a video's marks), `position-time table`, `video` (a phone's video, the plate followed without clicks) */
+  instrument: string;
+  /** the channel read of the instrument's several, the one that swings clearest: a magnetometer's `x`, `y`, `z` or `|B|`, an accelerometer's axis (or, for a phone lying between them, its axes combined along the motion: `0.866 x + 0.500 y`), a table's position column, a video's `x (px)` or `x (mm)` */
+  channel: string | null;
+  /** samples used */
+  samples: number;
+  /** [Hz] the mean sample rate */
+  sample_rate_hz: number;
+  /** [s] last sample time minus first */
+  duration_s: number;
+  /** N, the accepted periods */
+  periods_used: number;
+  /** rejected periods: outliers and periods at broken turning points */
+  periods_discarded: number;
+  /** [s] T, the mean accepted period */
+  period_s: number;
+  /** [s] dT, the accepted periods' standard deviation (the paper's) */
+  period_std_s: number;
+  /** [s] the standard error of the mean, dT/sqrt(N) */
+  period_sem_s: number;
+  /** mu_k = 2 pi^2 l / (g T^2), the paper's (thin) formula */
+  mu_k: number;
+  /** d mu_k, the paper's worst case: mu_k (dl/l + 2 dT/T) */
+  mu_k_err_worst: number;
+  /** d mu_k in quadrature: mu_k sqrt((dl/l)^2 + (2 dT/T)^2) */
+  mu_k_err_quadrature: number;
+  /** mu_k through the thick formula, 2 pi^2 l / (g T^2 + 4 pi^2 h_c), with the request's h_c (the plate's centre of mass above the contact line) */
+  mu_k_thick: number | null;
+  /** [m] l used */
+  spacing_m: number;
+  /** the plate's amplitude in `amplitude_unit`: the least-squares sinusoid's at the strongest frequency of the positions read, or of the accelerometer's axis over omega^2 = (2 pi / T)^2 (a mean over the record, if the swing changes) */
+  amplitude: number | null;
+  /** the amplitude's unit: the position column's (`m`, `mm`, `px`), `m` from an accelerometer */
+  amplitude_unit: string | null;
+}
 // end generated

@@ -57,15 +57,17 @@ std::vector<EstimateField> reading_fields() {
        .type = T::kText,
        .meaning = "what measured: `Hall sensor` (the rig's), `phyphox magnetometer` (a phone "
                   "beside the rig), `phyphox accelerometer` or `phyphox accelerometer (without g)` "
-                  "(a phone on the plate), `Tracker` (a video's marks), `position-time table`",
+                  "(a phone on the plate), `Tracker` (a video's marks), `position-time table`, "
+                  "`video` (a phone's video, the plate followed without clicks)",
        .get = [](E e) { return V::text(instrument_words(e.log.instrument)); }},
       {.json = "channel",
        .python = "channel",
        .part = P::kReading,
        .type = T::kText,
        .meaning = "the channel read of the instrument's several, the one that swings clearest: "
-                  "a magnetometer's `x`, `y`, `z` or `|B|`, an accelerometer's axis, a table's "
-                  "position column",
+                  "a magnetometer's `x`, `y`, `z` or `|B|`, an accelerometer's axis (or, for a "
+                  "phone lying between them, its axes combined along the motion: `0.866 x + 0.500 "
+                  "y`), a table's position column, a video's `x (px)` or `x (mm)`",
        .null_when = "the instrument has one channel (the rig's Hall sensor)",
        .get = [](E e) { return escaped_text_or_none(e.log.channel); }},
       {.json = "format",

@@ -9,6 +9,7 @@ import type {
   Lab,
   LabState,
   LiveRig,
+  MeasurementEstimate,
   PlaybackSpeed,
   Problem,
   LiveRigEvent,
@@ -237,6 +238,33 @@ export async function control(
     body: JSON.stringify(body),
   });
   return expectOk<ControlReply>(response);
+}
+
+/** A measurement file the student chose, read by the lab's readers with the set-up's spacing
+ * [m]. A file that gives no period is refused with the reader's message, located in the file. */
+export async function estimateFile(
+  file: Blob,
+  name: string,
+  spacing: number,
+): Promise<MeasurementEstimate> {
+  const response = await fetch(api("/api/estimate", { name, spacing: String(spacing) }), {
+    method: "POST",
+    headers: { "Content-Type": "application/octet-stream" },
+    body: file,
+  });
+  if (response.status === 429) throw await rateLimited(response);
+  if (!response.ok) {
+    const body = await readJson<{ error?: unknown; problems?: Problem[] }>(response).catch(
+      () => null,
+    );
+    const first = body?.problems?.[0]?.message;
+    const message = typeof body?.error === "string" ? body.error : "";
+    throw new LabError(
+      first ?? (message || `the lab answered ${response.status}`),
+      response.status,
+    );
+  }
+  return readJson<MeasurementEstimate>(response);
 }
 
 /** Where a finished run's file is served (summary.json, trajectory.csv, hall.csv, ...). */

@@ -5,6 +5,7 @@ import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
 import { getLab, LabFullError, pageUrl, RateLimitedError, SetupError } from "./lab_client";
 import { LabModel } from "./lab_model";
+import { MeasurementPanel } from "./measurement_panel";
 import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
@@ -48,6 +49,7 @@ const stopwatch = new Stopwatch(model);
 const studentName = new StudentName();
 byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
 const rigPanel = new RigPanel({ connected: () => void runBesideRig() });
+const measurement = new MeasurementPanel();
 
 function showPageProblem(error: unknown): void {
   if (error instanceof RateLimitedError) {
@@ -73,6 +75,7 @@ model.rig.lazyLink((rig) => {
   positionPlot.setRig(rig);
   if (lab) readouts.setRig(rig, lab);
   hallNote.hidden = rig.sensor !== null;
+  measurement.setSpacing(rig.spacing);
 });
 model.state.lazyLink((state) => {
   if (state === null) {

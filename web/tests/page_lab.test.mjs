@@ -2,8 +2,9 @@
 // WebGL): it loads without console errors, a set-up from a link runs and its period is the one
 // `frictionlab run` gives for it (the same number, to the last bit), changing the spacing and
 // the material changes the period as the thick-plate theory says, an invalid value shows its
-// message beside its control, a screenshot is written, a shared server's limits, and the live rig
-// on a pseudo-terminal (its periods in the page are `estimate`'s on the log it downloads).
+// message beside its control, a measurement file chosen on the page gives `estimate`'s period, a
+// screenshot is written, a shared server's limits, and the live rig on a pseudo-terminal (its
+// periods in the page are `estimate`'s on the log it downloads).
 //
 //   node tests/page_lab.test.mjs --exe build/release/src/cli/frictionlab
 //                                --web build/release/src/cli/web [--shot FILE]
@@ -169,6 +170,45 @@ await check("the paper's rig loads without console errors; a screenshot is writt
   await page.screenshot({ path: options.shot });
   expect(existsSync(options.shot), "no screenshot");
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a measurement file chosen on the page gives estimate's period", async () => {
+  const { page, context, complaints } = await openPage("/?scene=paper-rig");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  const input = page.getByTestId("measurement-file");
+  const shown = page.getByTestId("measured-period");
+  const detail = page.getByTestId("measured-detail");
+  const instruments = `${repository}/assets/examples/instruments`;
+  for (const [name, instrument] of [
+    ["phone-magnetometer.csv", "phyphox magnetometer"],
+    ["phone-video.mp4", "video"],
+  ]) {
+    await input.setInputFiles(`${instruments}/${name}`);
+    await detail.filter({ hasText: `${name}: ${instrument}` }).waitFor({ timeout: 60000 });
+    const value = Number(await shown.getAttribute("data-value"));
+    const expected = JSON.parse(
+      execFileSync(options.exe, ["estimate", `${instruments}/${name}`, "--json"], {
+        encoding: "utf8",
+      }),
+    ).period_s;
+    expect(value === expected, `${name}: page ${value} s, estimate ${expected} s`);
+  }
+  // Another spacing: the file is read again, mu_k with it.
+  await page.fill("#spacing-mm", "70");
+  await page.press("#spacing-mm", "Enter");
+  await detail.filter({ hasText: "l = 70 mm" }).waitFor({ timeout: 60000 });
+  // A file of no oscillation: the reader's message, at the file as the student named it.
+  await input.setInputFiles({
+    name: "still.csv",
+    mimeType: "text/csv",
+    buffer: Buffer.from("t_s,adc\n0,500\n0.001,501\n0.002,500\n0.003,499\n"),
+  });
+  await page.getByTestId("problem-measurement").filter({ hasText: "still.csv" }).waitFor();
+  expect((await shown.textContent()) === "T = — s", "a refused file left a period shown");
+  // The browser logs the refusal's 400 itself; nothing else may complain.
+  const others = complaints.filter((c) => !c.includes("status of 400"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
   await context.close();
 });
 

@@ -1,0 +1,67 @@
+// Your measurement: a file the student chose, read by the lab's own readers (the instrument
+// recognised from its content, as `frictionlab estimate` does), its T +- dT and mu_k with this
+// set-up's spacing, shown beside the simulation's.
+import { byTestId, setText } from "./dom";
+import { estimateFile } from "./lab_client";
+import type { MeasurementEstimate } from "./lab_types";
+import { trimmed, withError } from "./format";
+
+export class MeasurementPanel {
+  private readonly input = byTestId<HTMLInputElement>("measurement-file");
+  private readonly period = byTestId("measured-period");
+  private readonly detail = byTestId("measured-detail");
+  private readonly problem = byTestId("problem-measurement");
+  private file: File | null = null;
+  private spacing: number | null = null; // m, the set-up's l the shown mu_k was computed with
+  private asked = 0; // the latest estimate asked for: an older answer is not shown
+
+  constructor() {
+    this.input.addEventListener("change", () => {
+      this.file = this.input.files?.[0] ?? null;
+      void this.estimate();
+    });
+  }
+
+  /** The set-up's spacing [m]: a file already read is read again with it. */
+  setSpacing(spacing: number): void {
+    if (spacing === this.spacing) return;
+    this.spacing = spacing;
+    if (this.file) void this.estimate();
+  }
+
+  private async estimate(): Promise<void> {
+    const file = this.file;
+    if (!file || this.spacing === null) return;
+    const asked = ++this.asked;
+    setText(this.problem, "");
+    setText(this.period, "T = … s");
+    setText(this.detail, `reading ${file.name}`);
+    this.period.removeAttribute("data-value");
+    try {
+      const estimate = await estimateFile(file, file.name, this.spacing);
+      if (asked === this.asked) this.show(estimate);
+    } catch (error) {
+      if (asked !== this.asked) return;
+      setText(this.period, "T = — s");
+      setText(this.detail, "");
+      setText(this.problem, error instanceof Error ? error.message : String(error));
+    }
+  }
+
+  private show(e: MeasurementEstimate): void {
+    this.period.dataset.value = String(e.period_s);
+    setText(this.period, `T = ${withError(e.period_s, e.period_std_s, 4)} s`);
+    const channel = e.channel === null ? "" : ` (${e.channel})`;
+    setText(
+      this.detail,
+      `${e.file}: ${e.instrument}${channel}, N = ${e.periods_used} periods; ` +
+        `μₖ = ${withError(e.mu_k, e.mu_k_err_quadrature, 3)} with l = ` +
+        `${trimmed(e.spacing_m * 1e3, 1)} mm` +
+        // A phone lying on the plate raises its centre of mass: the thin formula reads mu_k high.
+        (e.instrument.startsWith("phyphox accelerometer")
+          ? ". A phone on the plate raises its centre of mass: this μₖ, by the paper's formula, " +
+            "is high by the fraction 4π²h_c/(gT²) (frictionlab estimate --h-c gives the thick formula's)"
+          : ""),
+    );
+  }
+}

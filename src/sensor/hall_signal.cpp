@@ -7,11 +7,13 @@
 namespace fl {
 
 HallSignal::HallSignal(const CompiledRig& rig)
-    : magnets_(rig), sensor_(rig.sensor.value()), rng_(rig.world.seed) {
+    : magnets_(rig),
+      sensor_(rig.sensor.value()),
+      clock_(sensor_.sample_rate, sensor_.clock_error),
+      rng_(rig.world.seed) {
   const double norm = std::hypot(sensor_.axis[0], sensor_.axis[1], sensor_.axis[2]);
   axis_ = {sensor_.axis[0] / norm, sensor_.axis[1] / norm, sensor_.axis[2] / norm};
   offset_volts_ = sensor_.offset ? *sensor_.offset : 0.5 * sensor_.supply;
-  interval_ = 1.0 / sensor_.sample_rate;
 }
 
 double HallSignal::field_along_axis(const PlatePose& pose) const {
@@ -33,7 +35,7 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
   const double h = b.t - a.t;
   if (!(h > 0.0)) return;
   const auto take = [&](long long index) {
-    const double clock = static_cast<double>(index) * interval_;
+    const double clock = static_cast<double>(index) * clock_.interval();
     // The ADC converts at the board's clock time (true time clock / (1 + e) for a clock running
     // fast by e) plus jitter; the firmware stamps the clock's own time.
     const double when =
@@ -46,14 +48,7 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
     sample.adc = adc_code(voltage(field_along_axis(p)) + noise);
     emit(sample);
   };
-  if (first_) {
-    first_ = false;
-    if (a.t <= 0.0) take(0);
-  }
-  while (true_time(next_index_) <= b.t + 1e-12 * interval_) {
-    take(next_index_);
-    ++next_index_;
-  }
+  clock_.due(a.t, b.t, take);
 }
 
 }  // namespace fl

@@ -11,6 +11,7 @@
 #include "scene/compiled_rig.hpp"
 #include "sensor/plate_magnets.hpp"
 #include "sensor/plate_pose.hpp"
+#include "sensor/sample_clock.hpp"
 
 namespace fl {
 
@@ -36,21 +37,17 @@ class HallSignal {
   void sample_between(const PlatePose& a, const PlatePose& b,
                       const std::function<void(const HallSample&)>& emit);
 
-  double sample_interval() const { return interval_; }
+  double sample_interval() const { return clock_.interval(); }
 
   // The true time [s] at which the board's clock reads sample `index`'s time.
-  double true_time(long long index) const {
-    return static_cast<double>(index) * interval_ / (1.0 + sensor_.clock_error);
-  }
+  double true_time(long long index) const { return clock_.true_time(index); }
 
  private:
   PlateMagnets magnets_;
   SensorDesc sensor_;
   Vec3 axis_{};
   double offset_volts_ = 0.0;
-  double interval_ = 0.0;
-  long long next_index_ = 1;  // sample 0 is at t = 0, taken by the first call
-  bool first_ = true;
+  SampleClock clock_;
   std::mt19937_64 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
 };

@@ -22,13 +22,15 @@ Vec3 in_phone_axes(const Vec3& v, double turn) {
 }
 
 PhoneSignal::PhoneSignal(const CompiledRig& rig, std::size_t index)
-    : phone_(rig.phones.at(index)), magnets_(rig), rng_(phone_noise(rig.world.seed, index)) {
+    : phone_(rig.phones.at(index)),
+      magnets_(rig),
+      clock_(phone_.rate),
+      rng_(phone_noise(rig.world.seed, index)) {
   const double g = rig.world.gravity;
   gravity_ = {-g * std::sin(rig.contact_tilt), 0.0, -g * std::cos(rig.contact_tilt)};
   offset_on_plate_ = {
       phone_.x - rig.plate.x_c, 0.0,
       rig.plate_desc.thickness + phone_.height + 0.5 * phone_.size[2] - rig.plate.h_c};
-  interval_ = 1.0 / phone_.rate;
 }
 
 Vec3 PhoneSignal::magnetic_field(const PlatePose& pose) const {
@@ -64,21 +66,14 @@ void PhoneSignal::sample_between(const PlatePose& a, const PlatePose& b,
   const bool magnetometer = phone_.sensor == PhoneSensor::kMagnetometer;
   const auto take = [&](long long index) {
     PhoneSample sample;
-    sample.t = static_cast<double>(index) * interval_;
+    sample.t = clock_.true_time(index);
     const PlatePose p = pose_between(a, b, sample.t);
     sample.value = magnetometer ? magnetic_field(p) : acceleration(p, step);
     if (phone_.noise > 0.0)
       for (double& axis : sample.value) axis += phone_.noise * unit_normal_(rng_);
     emit(sample);
   };
-  if (first_) {
-    first_ = false;
-    if (a.t <= 0.0) take(0);
-  }
-  while (static_cast<double>(next_index_) * interval_ <= b.t + 1e-12 * interval_) {
-    take(next_index_);
-    ++next_index_;
-  }
+  clock_.due(a.t, b.t, take);
 }
 
 }  // namespace fl

@@ -12,6 +12,7 @@
 #include "scene/compiled_rig.hpp"
 #include "sensor/plate_magnets.hpp"
 #include "sensor/plate_pose.hpp"
+#include "sensor/sample_clock.hpp"
 
 namespace fl {
 
@@ -49,16 +50,14 @@ class PhoneSignal {
   void sample_between(const PlatePose& a, const PlatePose& b,
                       const std::function<void(const PhoneSample&)>& emit);
 
-  double sample_interval() const { return interval_; }
+  double sample_interval() const { return clock_.interval(); }
 
  private:
   PhoneDesc phone_;
   PlateMagnets magnets_;
   Vec3 gravity_{};        // m/s^2, in the world's frame (the contact line's)
   Vec3 offset_on_plate_;  // m, the phone's centre from the plate's centre of mass, plate frame
-  double interval_ = 0.0;
-  long long next_index_ = 1;  // sample 0 is at t = 0, taken by the first call
-  bool first_ = true;
+  SampleClock clock_;     // the phone's clock is the run's
   std::mt19937_64 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
 };

@@ -2,9 +2,12 @@
 // recognised from its content, as `frictionlab estimate` does), its T +- dT and mu_k with this
 // set-up's spacing, shown beside the simulation's.
 import { byTestId, setText } from "./dom";
-import { estimateFile } from "./lab_client";
+import { estimateFile, LabError } from "./lab_client";
 import type { MeasurementEstimate } from "./lab_types";
 import { trimmed, withError } from "./format";
+
+const BUSY_TRIES = 10;
+const BUSY_WAIT_MS = 2000;
 
 export class MeasurementPanel {
   private readonly input = byTestId<HTMLInputElement>("measurement-file");
@@ -38,8 +41,21 @@ export class MeasurementPanel {
     setText(this.detail, `reading ${file.name}`);
     this.period.removeAttribute("data-value");
     try {
-      const estimate = await estimateFile(file, file.name, this.spacing);
-      if (asked === this.asked) this.show(estimate);
+      // The server reads two files at once for the whole class: busy (503), it is asked again.
+      for (let attempt = 1; ; attempt++) {
+        try {
+          const estimate = await estimateFile(file, file.name, this.spacing);
+          if (asked === this.asked) this.show(estimate);
+          return;
+        } catch (error) {
+          if (!(error instanceof LabError && error.status === 503) || attempt === BUSY_TRIES)
+            throw error;
+          if (asked !== this.asked) return;
+          setText(this.detail, `the lab is reading other files; ${file.name} again in a moment`);
+          await new Promise((resume) => setTimeout(resume, BUSY_WAIT_MS));
+          if (asked !== this.asked) return;
+        }
+      }
     } catch (error) {
       if (asked !== this.asked) return;
       setText(this.period, "T = — s");

@@ -100,8 +100,9 @@ std::string weighted_axis(double w, const std::string& axis, bool first) {
 // An accelerometer's axes combined along the plate's motion: the principal direction of their
 // covariance (the first principal component of the samples, by power iteration from the clearest
 // axis), so that a phone lying turned on the plate reads the plate's whole swing rather than its
-// share on one axis (cos 60 deg = half on each of two). The weights, one per axis; an empty list
-// when the direction lies within 1 degree of one axis, which is then read as it is.
+// share on one axis (cos 60 deg = half on each of two). The weights, one per axis (those below
+// 0.01, the noise's, left out); an empty list when the direction lies within 1 degree of one axis,
+// which is then read as it is.
 std::vector<double> direction_of_motion(const std::vector<const std::vector<double>*>& axes,
                                         std::size_t clearest_axis) {
   const std::size_t k = axes.size(), n = axes.front()->size();
@@ -137,6 +138,13 @@ std::vector<double> direction_of_motion(const std::vector<const std::vector<doub
     if (!(norm > 0.0)) return {};
     for (std::size_t a = 0; a < k; ++a) w[a] = next[a] / std::sqrt(norm);
   }
+  // A weight below 0.01 (half a degree) is the noise's, not the phone's tilt: left out.
+  double kept = 0.0;
+  for (double& v : w) {
+    if (std::fabs(v) < 0.01) v = 0.0;
+    kept += v * v;
+  }
+  for (double& v : w) v /= std::sqrt(kept);
   // Signed so that its largest weight is positive; one axis when within 1 degree of it.
   const std::size_t largest = static_cast<std::size_t>(
       std::max_element(w.begin(), w.end(),
@@ -218,7 +226,7 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
     channel.clear();
     column.clear();
     for (std::size_t a = 0; a < found.size(); ++a) {
-      if (std::fabs(w[a]) < 0.0005) continue;
+      if (w[a] == 0.0) continue;
       channel += weighted_axis(w[a], found[a].channel, channel.empty());
       column += (column.empty() ? "" : ", ") + table.names[found[a].column];
     }

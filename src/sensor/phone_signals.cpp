@@ -6,11 +6,13 @@
 namespace fl {
 namespace {
 
-std::mt19937_64 phone_noise(std::uint64_t seed, std::size_t index) {
-  // Its own stream: not the Hall sensor's (seeded by world.seed alone), not another phone's.
-  std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
-                    static_cast<std::uint32_t>(index) + 1u, 0x70686f6eu /* "phon" */};
-  return std::mt19937_64(seq);
+// SplitMix64's finaliser: a 64-bit seed for phone `index` from the run's, far from both.
+std::uint64_t phone_seed(std::uint64_t seed, std::size_t index) {
+  std::uint64_t z = seed + 0x9e3779b97f4a7c15ULL * (static_cast<std::uint64_t>(index) + 1) +
+                    0x70686f6e65ULL;  // "phone"
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
 }
 
 }  // namespace
@@ -25,7 +27,7 @@ PhoneSignal::PhoneSignal(const CompiledRig& rig, std::size_t index)
     : phone_(rig.phones.at(index)),
       magnets_(rig),
       clock_(phone_.rate),
-      rng_(phone_noise(rig.world.seed, index)) {
+      noise_(phone_seed(rig.world.seed, index)) {
   const double g = rig.world.gravity;
   gravity_ = {-g * std::sin(rig.contact_tilt), 0.0, -g * std::cos(rig.contact_tilt)};
   offset_on_plate_ = {
@@ -70,7 +72,7 @@ void PhoneSignal::sample_between(const PlatePose& a, const PlatePose& b,
     const PlatePose p = pose_between(a, b, sample.t);
     sample.value = magnetometer ? magnetic_field(p) : acceleration(p, step);
     if (phone_.noise > 0.0)
-      for (double& axis : sample.value) axis += phone_.noise * unit_normal_(rng_);
+      for (double& axis : sample.value) axis += phone_.noise * noise_.standard();
     emit(sample);
   };
   clock_.due(a.t, b.t, take);

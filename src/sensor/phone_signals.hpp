@@ -7,8 +7,8 @@
 
 #include <cstddef>
 #include <functional>
-#include <random>
 
+#include "core/normal_draws.hpp"
 #include "scene/compiled_rig.hpp"
 #include "sensor/plate_magnets.hpp"
 #include "sensor/plate_pose.hpp"
@@ -35,7 +35,8 @@ struct PlateAcceleration {
 
 class PhoneSignal {
  public:
-  // Phone `index` of the rig's phones. Its noise comes from world.seed and the index.
+  // Phone `index` of the rig's phones. Its noise comes from world.seed and the index: a stream
+  // of its own, not the Hall sensor's nor another phone's.
   PhoneSignal(const CompiledRig& rig, std::size_t index);
 
   // The noiseless magnetometer [T, phone axes] with the plate at `pose`.
@@ -58,8 +59,8 @@ class PhoneSignal {
   Vec3 gravity_{};        // m/s^2, in the world's frame (the contact line's)
   Vec3 offset_on_plate_;  // m, the phone's centre from the plate's centre of mass, plate frame
   SampleClock clock_;     // the phone's clock is the run's
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  // Its noise: the same bits on every standard library (core/normal_draws.hpp).
+  NormalDraws noise_;
 };
 
 }  // namespace fl

@@ -236,6 +236,7 @@ bool BoundedServer::process_and_close_socket(socket_t sock) {
       const std::size_t most = most_body_bytes(req.path);
       stream.begin_body(*length && **length > most ? 0 : most + kMostFraming);
     });
+    if (request_done_) request_done_();
     const bool read_whole = length && *length && stream.body_read() >= **length;
     if (!ok || closed || !read_whole || stream.passed() != RequestBound::kWithin) break;
   }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -29,6 +30,11 @@ class BoundedServer : public httplib::Server {
   // The most bytes a request to `path` may carry in its body.
   std::size_t most_body_bytes(const std::string& path) const;
 
+  // Called on the request's own thread after each request is answered, however it ended (a
+  // body cut short, a handler's exception): what a pre-routing handler took for the request is
+  // given back there. Set before listening.
+  void on_request_done(std::function<void()> done) { request_done_ = std::move(done); }
+
   // For the error handler, answering on the request's own thread.
   static RequestBound bound_passed();
 
@@ -38,6 +44,7 @@ class BoundedServer : public httplib::Server {
   const std::size_t most_head_bytes_;
   const std::size_t most_body_bytes_;
   std::vector<std::pair<std::string, std::size_t>> larger_bodies_;
+  std::function<void()> request_done_;
 };
 
 }  // namespace fl::serve

@@ -45,8 +45,12 @@ constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a re
 // Bytes of a measurement file a page sends: a phone's CSVs of minutes at 500 Hz, a phyphox zip, a
 // short phone video (a longer one is for frictionlab estimate on the student's machine).
 constexpr std::size_t kMostUpload = 32 * 1024 * 1024;
-// Measurement files estimated at once (a video's tracking takes a core for seconds).
-constexpr int kMostEstimatesAtOnce = 2;
+// Measurement files taken at once, from their first byte to the answer: each holds up to
+// kMostUpload of memory while it comes, and a video's tracking takes a core for seconds.
+constexpr int kMostUploadsAtOnce = 2;
+// Whether the request this thread answers holds one of those places (lab_server's pre-routing
+// handler takes it before the body is read; the bounded server's request-done hook gives it back).
+thread_local bool t_holds_upload = false;
 constexpr std::size_t kMostHead = 16 * 1024;  // bytes of a request's line and headers together
 // Each stream holds a thread while its page listens: two streams a session (a page reloading)
 // and some for the other requests.
@@ -140,7 +144,7 @@ struct LabServer::Impl {
   std::atomic<bool> stopping{false};
   std::atomic<bool> listening{false};
   std::atomic<int> streams{0};
-  std::atomic<int> estimating{0};  // measurement files being estimated
+  std::atomic<int> uploads{0};  // measurement files being received or estimated
   // The live rig: the port open or last open (replaced when a page opens another).
   mutable std::mutex rig_mutex;
   std::shared_ptr<BoardFeed> rig;
@@ -381,17 +385,6 @@ void LabServer::Impl::estimate(const httplib::Request& req, httplib::Response& r
   MeasurementUpload upload{req.get_param_value("name"), req.body, std::nullopt, std::nullopt};
   if (req.has_param("spacing")) upload.spacing = req.get_param_value("spacing");
   if (req.has_param("h_c")) upload.h_c = req.get_param_value("h_c");
-  // A few at once: the others are asked to wait, not queued behind a video's seconds.
-  if (estimating.fetch_add(1) >= kMostEstimatesAtOnce) {
-    estimating.fetch_sub(1);
-    return send_json(res, 503,
-                     error_json("the lab is reading other students' files: send yours again in "
-                                "a few seconds"));
-  }
-  struct Done {
-    std::atomic<int>& count;
-    ~Done() { count.fetch_sub(1); }
-  } done{estimating};
   const UploadAnswer answer = estimate_upload(upload, options.asset_dir);
   send_json(res, answer.status, answer.body);
 }
@@ -593,6 +586,19 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
       return httplib::Server::HandlerResponse::Handled;
     }
     if (req.path.starts_with("/api/")) impl_->end_idle();
+    // A measurement file takes one of few places before its body is read: the others are told to
+    // send it again, and the server never holds more than that many files in memory.
+    if (req.path == "/api/estimate" && req.method == "POST") {
+      if (impl_->uploads.fetch_add(1) >= kMostUploadsAtOnce) {
+        impl_->uploads.fetch_sub(1);
+        say_connection_ends(req);  // its body is left unread
+        send_json(res, 503,
+                  error_json("the lab is reading other students' files: send yours again in "
+                             "a few seconds"));
+        return httplib::Server::HandlerResponse::Handled;
+      }
+      t_holds_upload = true;
+    }
     // Each client's share: a page that asks too fast waits, and the others do not.
     double wait_s = 0.0;
     if (req.path.starts_with("/api/") &&
@@ -620,6 +626,11 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
       }
     }
     return httplib::Server::HandlerResponse::Unhandled;
+  });
+  impl_->server.on_request_done([this] {
+    if (!t_holds_upload) return;
+    t_holds_upload = false;
+    impl_->uploads.fetch_sub(1);
   });
   impl_->routes();
   if (!impl_->options.web_dir.empty() && !s.set_mount_point("/", impl_->options.web_dir))

@@ -237,6 +237,16 @@ struct LabServer::Impl {
   void routes();
   void create(const httplib::Request& req, httplib::Response& res);
   void estimate(const httplib::Request& req, httplib::Response& res);
+  // Every error's answer (the error handler's): JSON naming the server's folders by what they
+  // are; a request past the stream's bounds (bounded_server.hpp) answered so, on a connection
+  // that then ends.
+  httplib::Server::HandlerResponse answer_error(const httplib::Request& req,
+                                                httplib::Response& res);
+  // A measurement file takes one of kMostUploadsAtOnce places before its body is read; false
+  // (answered 503, its body left unread) when none is free.
+  bool take_upload_place(const httplib::Request& req, httplib::Response& res);
+  // After each request: the place its file held, if it held one.
+  void give_back_upload_place();
   void stream(const std::shared_ptr<LabSession>& session, httplib::Response& res);
   void control(LabSession& session, const httplib::Request& req, httplib::Response& res);
 };
@@ -389,6 +399,57 @@ void LabServer::Impl::estimate(const httplib::Request& req, httplib::Response& r
   send_json(res, answer.status, answer.body);
 }
 
+httplib::Server::HandlerResponse LabServer::Impl::answer_error(const httplib::Request& req,
+                                                               httplib::Response& res) {
+  const RequestBound passed = BoundedServer::bound_passed();
+  if (passed == RequestBound::kBodyTooLarge || res.status == 413) {
+    say_connection_ends(req);
+    // cpp-httplib reads a form's body (curl's default type) up to 8 KiB only.
+    if (passed != RequestBound::kBodyTooLarge &&
+        req.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded")) {
+      send_json(res, 413,
+                error_json("a form's body is read up to 8 KiB only: send the file itself "
+                           "as the body, with Content-Type: application/octet-stream"));
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    send_body_too_large(res, server.most_body_bytes(req.path));
+    return httplib::Server::HandlerResponse::Handled;
+  }
+  if (passed == RequestBound::kHeadTooLarge) {
+    say_connection_ends(req);
+    send_json(res, 431,
+              error_json(fmt::format("the request's line and headers are larger than {} KiB, "
+                                     "the most the lab takes",
+                                     kMostHead / 1024)));
+    return httplib::Server::HandlerResponse::Handled;
+  }
+  if (res.get_header_value("Content-Type") != "application/json")
+    return httplib::Server::HandlerResponse::Unhandled;
+  json body = json::parse(res.body, nullptr, /*allow_exceptions=*/false);
+  if (body.is_discarded()) return httplib::Server::HandlerResponse::Unhandled;
+  send_json(res, res.status, public_paths.scrubbed_body(std::move(body)));
+  return httplib::Server::HandlerResponse::Handled;
+}
+
+bool LabServer::Impl::take_upload_place(const httplib::Request& req, httplib::Response& res) {
+  if (uploads.fetch_add(1) < kMostUploadsAtOnce) {
+    t_holds_upload = true;
+    return true;
+  }
+  uploads.fetch_sub(1);
+  say_connection_ends(req);
+  send_json(res, 503,
+            error_json("the lab is reading other students' files: send yours again in a few "
+                       "seconds"));
+  return false;
+}
+
+void LabServer::Impl::give_back_upload_place() {
+  if (!t_holds_upload) return;
+  t_holds_upload = false;
+  uploads.fetch_sub(1);
+}
+
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
   if (refuse_large_body(req, res)) return;
   auto read = read_session_body(req.body);
@@ -528,40 +589,11 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
   if (const char* home = std::getenv("HOME")) paths.add(home, "~/", "~");
   std::error_code here_unknown;
   paths.add(std::filesystem::current_path(here_unknown).string(), "", ".");
-  // Every error's body is JSON naming the server's folders by what they are (answered before
-  // the library compresses it), and a request past the stream's bounds (bounded_server.hpp) is
-  // answered so, on a connection that then ends.
-  s.set_error_handler(httplib::Server::HandlerWithResponse([this](const httplib::Request& req,
-                                                                  httplib::Response& res) {
-    const RequestBound passed = BoundedServer::bound_passed();
-    if (passed == RequestBound::kBodyTooLarge || res.status == 413) {
-      say_connection_ends(req);
-      // cpp-httplib reads a form's body (curl's default type) up to 8 KiB only.
-      if (passed != RequestBound::kBodyTooLarge &&
-          req.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded")) {
-        send_json(res, 413,
-                  error_json("a form's body is read up to 8 KiB only: send the file itself "
-                             "as the body, with Content-Type: application/octet-stream"));
-        return httplib::Server::HandlerResponse::Handled;
-      }
-      send_body_too_large(res, impl_->server.most_body_bytes(req.path));
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    if (passed == RequestBound::kHeadTooLarge) {
-      say_connection_ends(req);
-      send_json(res, 431,
-                error_json(fmt::format("the request's line and headers are larger than {} KiB, "
-                                       "the most the lab takes",
-                                       kMostHead / 1024)));
-      return httplib::Server::HandlerResponse::Handled;
-    }
-    if (res.get_header_value("Content-Type") != "application/json")
-      return httplib::Server::HandlerResponse::Unhandled;
-    json body = json::parse(res.body, nullptr, /*allow_exceptions=*/false);
-    if (body.is_discarded()) return httplib::Server::HandlerResponse::Unhandled;
-    send_json(res, res.status, impl_->public_paths.scrubbed_body(std::move(body)));
-    return httplib::Server::HandlerResponse::Handled;
-  }));
+  // Errors are answered before the library compresses them (Impl::answer_error).
+  s.set_error_handler(httplib::Server::HandlerWithResponse(
+      [this](const httplib::Request& req, httplib::Response& res) {
+        return impl_->answer_error(req, res);
+      }));
   s.set_exception_handler(
       [](const httplib::Request&, httplib::Response& res, std::exception_ptr ep) {
         std::string what = "an internal error";
@@ -586,19 +618,8 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
       return httplib::Server::HandlerResponse::Handled;
     }
     if (req.path.starts_with("/api/")) impl_->end_idle();
-    // A measurement file takes one of few places before its body is read: the others are told to
-    // send it again, and the server never holds more than that many files in memory.
-    if (req.path == "/api/estimate" && req.method == "POST") {
-      if (impl_->uploads.fetch_add(1) >= kMostUploadsAtOnce) {
-        impl_->uploads.fetch_sub(1);
-        say_connection_ends(req);  // its body is left unread
-        send_json(res, 503,
-                  error_json("the lab is reading other students' files: send yours again in "
-                             "a few seconds"));
-        return httplib::Server::HandlerResponse::Handled;
-      }
-      t_holds_upload = true;
-    }
+    if (req.path == "/api/estimate" && req.method == "POST" && !impl_->take_upload_place(req, res))
+      return httplib::Server::HandlerResponse::Handled;
     // Each client's share: a page that asks too fast waits, and the others do not.
     double wait_s = 0.0;
     if (req.path.starts_with("/api/") &&
@@ -627,11 +648,7 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
     }
     return httplib::Server::HandlerResponse::Unhandled;
   });
-  impl_->server.on_request_done([this] {
-    if (!t_holds_upload) return;
-    t_holds_upload = false;
-    impl_->uploads.fetch_sub(1);
-  });
+  impl_->server.on_request_done([this] { impl_->give_back_upload_place(); });
   impl_->routes();
   if (!impl_->options.web_dir.empty() && !s.set_mount_point("/", impl_->options.web_dir))
     throw std::runtime_error("the page's folder " + impl_->options.web_dir +

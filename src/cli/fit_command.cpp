@@ -3,6 +3,7 @@
 // --mc, its Monte Carlo; with --through-rig, refitted through simulations of a scene
 // (lab/fit_through_rig). Reading the series is io/spacing_series_csv, the report
 // lab/spacing_fit_report; this command reads the options, checks what the fit says, and prints.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -133,7 +134,10 @@ void print_report(const SpacingFitReport& r) {
         "\n  through the rig        scene {}: every row simulated at its spacing ({} simulations, "
         "{} iteration{}{})\n",
         rig.scene, rig.simulations, rig.iterations, rig.iterations == 1 ? "" : "s",
-        rig.converged ? "" : ", NOT converged");
+        rig.converged
+            ? fmt::format(", mu_k settled within {:.1e}{}", std::max(rig.tolerance, rig.resolution),
+                          rig.resolution > rig.tolerance ? ", what the simulations resolve" : "")
+            : ", NOT converged");
     fmt::print("    mu_k                 {} (closed form {:.4f}; {:+.2e} relative)\n",
                pm(g.mu_k, g.mu_k_err, 1.0, 4), *rig.closed_form.mu_k,
                *g.mu_k / *rig.closed_form.mu_k - 1.0);

@@ -54,6 +54,23 @@ std::vector<SimulatedPeriod> simulate_rows(std::span<const SpacingPeriod> series
   return out;
 }
 
+// FitThroughRig::resolution: the corrected series fitted again with each row's period error the
+// part its simulation's standard error brings (the correction's relative error, sigma_sim / T_sim).
+double simulations_resolution(std::span<const SpacingPeriod> corrected,
+                              std::span<const SimulatedPeriod> simulated,
+                              const ThickPlateFitOptions& options) {
+  std::vector<SpacingPeriod> scatter(corrected.begin(), corrected.end());
+  for (std::size_t i = 0; i < scatter.size(); ++i) {
+    if (!simulated[i].period_std_error || !(*simulated[i].period_std_error > 0.0)) return 0.0;
+    scatter[i].period_err =
+        scatter[i].period * *simulated[i].period_std_error / *simulated[i].period;
+    scatter[i].spacing_err.reset();
+  }
+  const ThickPlateFit fit = fit_thick_plate(scatter, options);
+  if (!fit.mu_k || !fit.mu_k_err) return 0.0;
+  return std::sqrt(2.0) * *fit.mu_k_err / *fit.mu_k;
+}
+
 }  // namespace
 
 FitThroughRig fit_through_rig(std::span<const SpacingPeriod> series,
@@ -62,6 +79,7 @@ FitThroughRig fit_through_rig(std::span<const SpacingPeriod> series,
   out.scene = request.scene.name;
   out.h_c_scene = plate_mass(request.scene).h_c;
   out.gravity = request.gravity;
+  out.tolerance = request.tolerance;
   const ThickPlateFitOptions options{.gravity = request.gravity};
   out.closed_form = fit_thick_plate(series, options);
   if (!out.closed_form.mu_k)
@@ -94,9 +112,10 @@ FitThroughRig fit_through_rig(std::span<const SpacingPeriod> series,
     out.fit = fit_thick_plate(corrected, options);
     if (!out.fit.mu_k)
       throw DomainError("the corrected series' fit has no mu_k (its line falls as l grows)");
+    out.resolution = simulations_resolution(corrected, simulated, options);
     const double next = *out.fit.mu_k;
     out.mu_k_path.push_back(next);
-    const bool settled = std::fabs(next / mu_k - 1.0) < request.tolerance;
+    const bool settled = std::fabs(next / mu_k - 1.0) < std::max(request.tolerance, out.resolution);
     mu_k = next;
     if (settled) {
       out.converged = true;

@@ -28,8 +28,10 @@ class FitThroughRigError : public std::runtime_error {
 struct FitThroughRigRequest {
   Scene scene;  // the rig; each run sets rollers.spacing, friction.mu_k and world.gravity
   double gravity = kDefaultGravity;  // [m/s^2], the series' (the scene is simulated at it)
-  double tolerance = 1e-4;           // stop when mu_k changes by less than this, relative
-  int max_iterations = 6;            // rounds of simulations (one per row each)
+  // Stop when mu_k changes by less than this, relative, or by less than the simulations
+  // themselves resolve it (FitThroughRig::resolution).
+  double tolerance = 1e-4;
+  int max_iterations = 6;  // rounds of simulations (one per row each)
   // Each run simulates at least this many of the row's periods (or the scene's duration if
   // longer), as compare does: enough for the rig's estimator to average over.
   int min_periods = 15;
@@ -53,7 +55,13 @@ struct FitThroughRig {
   std::vector<FitThroughRigRow> rows;  // in the series' order
   std::vector<double> mu_k_path;       // mu_k at the start and after each iteration
   int iterations = 0;
-  bool converged = false;
+  // How far mu_k moves, relative, from the simulations' own scatter alone: the fit's error on
+  // mu_k when each row's period carries only its simulation's standard error, times sqrt(2) (two
+  // rounds' estimates differ). Two rounds closer than this cannot be told apart. 0 when the
+  // simulations give no standard error (a period from the trajectory).
+  double resolution = 0.0;
+  double tolerance = 0.0;  // the request's
+  bool converged = false;  // mu_k changed by less than the tolerance or the resolution
   int simulations = 0;
 };
 

@@ -34,6 +34,8 @@ SimulatedPeriod simulate_period(const Scene& scene) {
   s.from_trajectory = !summary.period && summary.period_trajectory.has_value();
   if (summary.estimator && summary.estimator->periods_used > 0)
     s.period_std = summary.estimator->period_std;
+  if (summary.estimator && !s.from_trajectory && summary.estimator->has_spread())
+    s.period_std_error = summary.estimator->period_std_error;
   s.regime = summary.regime;
   s.evidence = summary.regime_evidence;
   s.failure = summary.failure;

@@ -15,7 +15,9 @@ namespace fl {
 struct SimulatedPeriod {
   std::optional<double> period;      // s
   std::optional<double> period_std;  // s, standard deviation of the estimator's periods
-  bool from_trajectory = false;      // the estimator accepted no period: the trajectory's instead
+  // s, the standard error of their mean (two accepted periods or more)
+  std::optional<double> period_std_error;
+  bool from_trajectory = false;  // the estimator accepted no period: the trajectory's instead
   std::optional<Regime> regime;
   std::string evidence;                // what showed the regime
   std::optional<std::string> failure;  // a guard's message when one stopped the run

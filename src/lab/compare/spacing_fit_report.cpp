@@ -44,6 +44,7 @@ nlohmann::json rig_json(const FitThroughRig& rig) {
           {"chi2_per_dof", json_or_null(f.chi2_per_dof)},
           {"mu_k_path", rig.mu_k_path},
           {"iterations", rig.iterations},
+          {"resolution", rig.resolution},
           {"converged", rig.converged},
           {"simulations", rig.simulations}};
 }

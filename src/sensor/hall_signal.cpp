@@ -10,7 +10,7 @@ HallSignal::HallSignal(const CompiledRig& rig)
     : magnets_(rig),
       sensor_(rig.sensor.value()),
       clock_(sensor_.sample_rate, sensor_.clock_error),
-      rng_(rig.world.seed) {
+      normal_(rig.world.seed) {
   const double norm = std::hypot(sensor_.axis[0], sensor_.axis[1], sensor_.axis[2]);
   axis_ = {sensor_.axis[0] / norm, sensor_.axis[1] / norm, sensor_.axis[2] / norm};
   offset_volts_ = sensor_.offset ? *sensor_.offset : 0.5 * sensor_.supply;
@@ -39,9 +39,9 @@ void HallSignal::sample_between(const PlatePose& a, const PlatePose& b,
     // The ADC converts at the board's clock time (true time clock / (1 + e) for a clock running
     // fast by e) plus jitter; the firmware stamps the clock's own time.
     const double when =
-        true_time(index) + (sensor_.jitter > 0.0 ? sensor_.jitter * unit_normal_(rng_) : 0.0);
+        true_time(index) + (sensor_.jitter > 0.0 ? sensor_.jitter * normal_.standard() : 0.0);
     const PlatePose p = pose_between(a, b, when);
-    const double noise = sensor_.noise > 0.0 ? sensor_.noise * unit_normal_(rng_) : 0.0;
+    const double noise = sensor_.noise > 0.0 ? sensor_.noise * normal_.standard() : 0.0;
     HallSample sample;
     sample.t_us = static_cast<std::uint32_t>(static_cast<std::uint64_t>(std::llround(clock * 1e6)) &
                                              0xffffffffu);

@@ -6,8 +6,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <random>
 
+#include "core/normal_draws.hpp"
 #include "scene/compiled_rig.hpp"
 #include "sensor/plate_magnets.hpp"
 #include "sensor/plate_pose.hpp"
@@ -48,8 +48,8 @@ class HallSignal {
   Vec3 axis_{};
   double offset_volts_ = 0.0;
   SampleClock clock_;
-  std::mt19937_64 rng_;
-  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  // The noise and the jitter: the same bits on every standard library (core/normal_draws.hpp).
+  NormalDraws normal_;
 };
 
 }  // namespace fl

@@ -46,10 +46,7 @@ void BM_PaperRigWithPhonesTenSeconds(benchmark::State& state) {
   fl::Scene scene = paper_rig();
   fl::PhoneDesc beside;
   beside.position = {0.114, 0.060, -0.050};
-  fl::PhoneDesc on_plate;
-  on_plate.sensor = fl::PhoneSensor::kAccelerometer;
-  on_plate.rate = 400.0;
-  on_plate.noise = 0.05;
+  fl::PhoneDesc on_plate = fl::phone_with(fl::PhoneSensor::kAccelerometer);
   on_plate.height = 0.0096;
   scene.phones = {beside, on_plate};
   fl::RunOptions options;

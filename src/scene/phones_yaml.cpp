@@ -35,21 +35,15 @@ void refuse_other_sensors_keys(const YamlNode& n, PhoneSensor sensor) {
 PhoneDesc read_phone(const YamlNode& n) {
   n.allow_keys({"sensor", "rate", "noise", "turn", "position", "earth", "gravity", "x", "height",
                 "mass", "size"});
-  PhoneDesc p;
   const YamlNode kind = n.at("sensor");
   const std::string name = kind.text();
-  if (name == "magnetometer") {
-    p.sensor = PhoneSensor::kMagnetometer;
-  } else if (name == "accelerometer") {
-    p.sensor = PhoneSensor::kAccelerometer;
-    p.rate = 400.0;
-    p.noise = 0.05;
-  } else {
+  if (name != "magnetometer" && name != "accelerometer")
     kind.fail(
         "expected magnetometer (a phone beside the rig) or accelerometer (a phone on the "
         "plate), found \"" +
         name + "\"");
-  }
+  PhoneDesc p =
+      phone_with(name == "magnetometer" ? PhoneSensor::kMagnetometer : PhoneSensor::kAccelerometer);
   refuse_other_sensors_keys(n, p.sensor);
   const bool magnetometer = p.sensor == PhoneSensor::kMagnetometer;
   if (auto v = n.find("rate")) p.rate = v->quantity(Dimension::kFrequency);

@@ -64,6 +64,16 @@ PlateMass plate_mass(const Scene& scene) {
   return out;
 }
 
+PhoneDesc phone_with(PhoneSensor sensor) {
+  PhoneDesc p;
+  p.sensor = sensor;
+  if (sensor == PhoneSensor::kAccelerometer) {
+    p.rate = 400.0;
+    p.noise = 0.05;
+  }
+  return p;
+}
+
 FrictionLaw friction_law(const FrictionDesc& f) {
   FrictionLaw law;
   law.kind = f.law;

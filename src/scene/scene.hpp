@@ -157,6 +157,10 @@ struct PhoneDesc {
   Vec3 size{0.075, 0.150, 0.008};  // m: width (its x), length (its y), thickness (its z)
 };
 
+// A phone of `sensor` with its own defaults: a magnetometer at 100 Hz with 0.2 uT of noise, an
+// accelerometer at 400 Hz with 0.05 m/s^2 (phyphox's rates, a phone's noise).
+PhoneDesc phone_with(PhoneSensor sensor);
+
 // Rollers that start cold (friction.temperature, e.g. 77 K after liquid nitrogen) and warm toward
 // the room (core/roller_warming.hpp): mu_k follows their temperature, linear between its value
 // at the start and at the room's temperature.

@@ -16,8 +16,8 @@ struct PlatePose {
 };
 
 // The pose at `when` (a.t <= when <= b.t, a.t < b.t): x, z and the pitch by cubic Hermite
-// interpolation between the two states (their positions and rates), the slow sideways motion and
-// yaw (the guides' play) linearly. The rates are the two states' Hermite derivatives.
+// interpolation between the two states (their positions and rates); the rates, the slow sideways
+// motion and yaw (the guides' play) linearly.
 PlatePose pose_between(const PlatePose& a, const PlatePose& b, double when);
 
 }  // namespace fl

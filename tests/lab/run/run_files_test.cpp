@@ -68,9 +68,7 @@ TEST_F(RunFilesTest, EveryFileOfTheMinimalSceneIsTheRecordingsFile) {
   // Two phones beside the rig and one on the plate, each its own file.
   PhoneDesc beside;
   beside.position = {0.12, 0.06, -0.01};
-  PhoneDesc on_plate;
-  on_plate.sensor = PhoneSensor::kAccelerometer;
-  on_plate.rate = 400.0;
+  const PhoneDesc on_plate = phone_with(PhoneSensor::kAccelerometer);  // 400 Hz
   scene.phones = {beside, on_plate, beside};
   scene.phones[2].position[1] = -0.06;
   run_both(scene);
@@ -87,8 +85,7 @@ TEST_F(RunFilesTest, EveryFileOfTheMinimalSceneIsTheRecordingsFile) {
 TEST_F(RunFilesTest, ARunThatStartsAgainStreamsOnlyTheRunItEndsWith) {
   Scene scene = test::stuck_on_close_rollers();
   scene.output.trajectory = true;
-  PhoneDesc phone;
-  phone.sensor = PhoneSensor::kAccelerometer;
+  const PhoneDesc phone = phone_with(PhoneSensor::kAccelerometer);
   scene.phones = {phone};
   const RunSummary summary = run_both(scene);
   ASSERT_TRUE(summary.solver_iterations_raised.has_value());

@@ -37,8 +37,6 @@ class HallSignal {
   void sample_between(const PlatePose& a, const PlatePose& b,
                       const std::function<void(const HallSample&)>& emit);
 
-  double sample_interval() const { return clock_.interval(); }
-
   // The true time [s] at which the board's clock reads sample `index`'s time.
   double true_time(long long index) const { return clock_.true_time(index); }
 

@@ -51,8 +51,6 @@ class PhoneSignal {
   void sample_between(const PlatePose& a, const PlatePose& b,
                       const std::function<void(const PhoneSample&)>& emit);
 
-  double sample_interval() const { return clock_.interval(); }
-
  private:
   PhoneDesc phone_;
   PlateMagnets magnets_;

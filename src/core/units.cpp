@@ -6,6 +6,7 @@
 #include <numbers>
 #include <span>
 
+#include "text/decimal.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -126,7 +127,7 @@ bool read_number(std::string_view text, Number& out) {
   std::string_view s = text;
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   double value = 0.0;
-  const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  const auto [ptr, ec] = read_decimal(s.data(), s.data() + s.size(), value);
   if (ec != std::errc{} || ptr == s.data()) return false;
   const std::string_view number(s.data(), static_cast<std::size_t>(ptr - s.data()));
   int decimals = 0;

@@ -5,6 +5,7 @@
 #include <string>
 #include <system_error>
 
+#include "text/decimal.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -78,7 +79,7 @@ bool parse_log_number(std::string_view text, char delimiter, double* out, bool* 
     swapped[comma] = '.';
     text = swapped;
   }
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), *out);
+  const auto [end, ec] = read_decimal(text.data(), text.data() + text.size(), *out);
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(*out)) return false;
   if (comma != std::string_view::npos && decimal_comma != nullptr) *decimal_comma = true;
   return true;

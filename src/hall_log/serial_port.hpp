@@ -34,7 +34,7 @@ class SerialPort {
 
  private:
   std::string path_;
-  int fd_ = -1;
+  [[maybe_unused]] int fd_ = -1;  // (unused by the browser's build, which opens no port)
 };
 
 }  // namespace fl

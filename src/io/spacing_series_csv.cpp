@@ -14,6 +14,7 @@
 #include "io/estimate_table_columns.hpp"
 #include "io/suggest.hpp"
 #include "io/text_file.hpp"
+#include "text/decimal.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -148,7 +149,7 @@ std::vector<std::optional<SeriesColumn>> read_header(const std::vector<CsvCell>&
 
 bool plain_number(std::string_view text) {
   double ignored = 0.0;
-  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), ignored);
+  const auto [ptr, ec] = read_decimal(text.data(), text.data() + text.size(), ignored);
   return ec == std::errc{} && ptr == text.data() + text.size();
 }
 

@@ -33,7 +33,9 @@
 #include "serve/measurement_upload.hpp"
 #include "serve/path_scrubber.hpp"
 #include "serve/rate_limit.hpp"
+#include "serve/session_events.hpp"
 #include "serve/session_key.hpp"
+#include "serve/session_opening.hpp"
 
 namespace fl::serve {
 namespace {
@@ -452,52 +454,27 @@ void LabServer::Impl::give_back_upload_place() {
 
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
   if (refuse_large_body(req, res)) return;
-  auto read = read_session_body(req.body);
-  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) {
-    json body = error_json(refusal->message);
-    // A field at fault is a problem by field, shown beside its control.
-    if (!refusal->field.empty())
-      body["problems"].push_back(
-          {{"field", refusal->field}, {"value", nullptr}, {"message", refusal->message}});
-    return send_json(res, 400, body);
-  }
-  const SessionRequest& request = std::get<SessionBody>(read).request;
+  // A body the lab cannot take is refused for what it is, even when the lab is full.
+  if (const std::optional<json> refusal = session_body_refusal(req.body))
+    return send_json(res, 400, *refusal);
   if (full()) return refuse_full(res);
-  try {
-    // Only a scene inside the folder is read: a link leading outside is as if absent.
-    PreparedSession prepared = prepare_session(request, options.scenes_dir, options.asset_dir);
-    // A session keeps every step and Hall sample for its files (about 0.6 MB a simulated second):
-    // a longer run keeps its summary, cycles and nothing step by step, so that no set-up grows
-    // the server without bound.
-    if (prepared.rig->world.duration > options.most_recorded_seconds) {
-      prepared.output.trajectory = false;
-      prepared.output.hall = false;
-    }
-    auto s = std::make_shared<LabSession>(request.scene, std::move(prepared),
-                                          std::get<SessionBody>(read).name);
-    OpenSession open{std::move(s), new_session_key()};
-    json out{
-        {"id", ""},
-        {"key", open.key},
-        {"rig", rig_json(request.scene, open.session->rig(), paper_table_in(options.asset_dir))}};
-    {
-      // Counted again where the session is added: two pages may have asked at once.
-      const std::lock_guard lock(mutex);
-      if (static_cast<int>(sessions.size()) >= options.max_sessions) return refuse_full(res);
-      std::string id;
-      do {
-        id = fmt::format("{:016x}", ids());
-      } while (sessions.contains(id));
-      out["id"] = id;
-      sessions.emplace(std::move(id), std::move(open));
-    }
-    send_json(res, 201, out);
-  } catch (const InputError& e) {
-    send_json(res, 400, problems_json(e));
-  } catch (const std::invalid_argument& e) {
-    // UnitError, DomainError: a value the lab refused.
-    send_json(res, 400, problems_json(e));
+  SessionOpening opening =
+      open_session(req.body, options.scenes_dir, options.asset_dir, options.most_recorded_seconds);
+  if (!opening.session) return send_json(res, opening.status, opening.body);
+  OpenSession open{std::move(opening.session), new_session_key()};
+  json out{{"id", ""}, {"key", open.key}, {"rig", std::move(opening.body["rig"])}};
+  {
+    // Counted again where the session is added: two pages may have asked at once.
+    const std::lock_guard lock(mutex);
+    if (static_cast<int>(sessions.size()) >= options.max_sessions) return refuse_full(res);
+    std::string id;
+    do {
+      id = fmt::format("{:016x}", ids());
+    } while (sessions.contains(id));
+    out["id"] = id;
+    sessions.emplace(std::move(id), std::move(open));
   }
+  send_json(res, 201, out);
 }
 
 void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib::Response& res) {
@@ -527,18 +504,9 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
           sink.write(bye.data(), bye.size());
           return false;
         }
-        const LabSession::Tick tick = session->tick(Clock::now());
         std::string out;
-        if (state->generation && *state->generation != tick.generation)
-          out += event("reset", json::object());
-        state->generation = tick.generation;
-        out += event("state", tick.state);
-        if (tick.done) {
-          if (const auto failure = tick.done->find("failure");
-              failure != tick.done->end() && !failure->is_null())
-            out += event("failed", {{"message", *failure}});
-          out += event("done", *tick.done);
-        }
+        for (const SessionEvent& e : session_events(*session, Clock::now(), state->generation))
+          out += event(e.name.c_str(), e.data);
         if (const std::shared_ptr<BoardFeed> feed = current_board())
           if (const std::optional<json> watched = state->board_watch.next(feed))
             out += event("rig", *watched);

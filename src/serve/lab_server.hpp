@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hall_log/serial_port.hpp"
+#include "serve/session_opening.hpp"
 
 namespace fl::serve {
 
@@ -31,7 +32,7 @@ struct ServeOptions {
   std::string token;
   // A session keeps its run's steps and Hall samples for its files (about 0.6 MB a simulated
   // second) only for runs up to this long [s]; a longer one offers its summary and cycles.
-  double most_recorded_seconds = 120.0;
+  double most_recorded_seconds = kMostRecordedSeconds;
   // API requests a client (by address) may make a second, on average; three times as many at
   // once. A stream counts once, when it opens.
   double requests_per_second = 20.0;

@@ -25,7 +25,9 @@ LabSession::LabSession(std::string scene, PreparedSession prepared, std::string 
 
 LabSession::~LabSession() {
   run_.reset();
+#ifdef __GLIBC__
   malloc_trim(0);
+#endif
 }
 
 LabSession::Tick LabSession::tick(Clock::time_point now) {

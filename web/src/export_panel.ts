@@ -1,6 +1,6 @@
 // Export: the finished run's files, a PNG of the 3D view, and a link to this set-up.
 import { byId, byTestId } from "./dom";
-import { fileUrl, type SessionHandle } from "./lab_client";
+import { fileHref, type SessionHandle } from "./lab_client";
 
 const FILES = ["summary.json", "trajectory.csv", "hall.csv", "periods.csv"];
 
@@ -43,9 +43,14 @@ export class ExportPanel {
     }
   }
 
-  enableFiles(session: SessionHandle): void {
+  /** Offers the run's files; a file the run did not keep stays disabled. */
+  async enableFiles(session: SessionHandle): Promise<void> {
     for (const { name, anchor } of this.links) {
-      anchor.href = fileUrl(session, name);
+      try {
+        anchor.href = await fileHref(session, name);
+      } catch {
+        continue;
+      }
       anchor.download = name;
       anchor.removeAttribute("aria-disabled");
     }

@@ -1,5 +1,14 @@
 // The one module that speaks to the lab (docs/web-api.md): nothing else in the page calls fetch
 // or EventSource, so a build of the core for the browser can take the server's place here.
+import {
+  LabError,
+  LabFullError,
+  RateLimitedError,
+  SetupError,
+  type SessionHandle,
+  type StreamHandle,
+  type StreamHandlers,
+} from "./lab_errors";
 import type {
   ClassTable,
   Closed,
@@ -17,65 +26,18 @@ import type {
   Summary,
 } from "./lab_types";
 
-/** What a session's controls need: its id, and the key only this page holds. */
-export type SessionHandle = Pick<Session, "id" | "key">;
+export {
+  LabError,
+  LabFullError,
+  RateLimitedError,
+  SetupError,
+  type SessionHandle,
+  type StreamHandle,
+  type StreamHandlers,
+};
 
-/** The lab refused a set-up (400): every problem, by field. */
-export class SetupError extends Error {
-  readonly problems: Problem[];
-  constructor(message: string, problems: Problem[]) {
-    super(message);
-    this.name = "SetupError";
-    this.problems = problems;
-  }
-}
-
-/** The lab is full (503): it runs as many sessions as it may; `message` says so. */
-export class LabFullError extends Error {
-  constructor(message: string) {
-    super(message);
-    this.name = "LabFullError";
-  }
-}
-
-/** The lab asks this page to slow down (429: more requests a second than it takes from one
- * address); `message` is the lab's, `retryAfterS` its Retry-After where it gave one. */
-export class RateLimitedError extends Error {
-  readonly retryAfterS: number | null;
-  constructor(message: string, retryAfterS: number | null) {
-    super(message);
-    this.name = "RateLimitedError";
-    this.retryAfterS = retryAfterS;
-  }
-}
-
-/** The lab answered something other than what the API promises. */
-export class LabError extends Error {
-  readonly status: number;
-  constructor(message: string, status: number) {
-    super(message);
-    this.name = "LabError";
-    this.status = status;
-  }
-}
-
-export interface StreamHandlers {
-  state: (state: LabState) => void;
-  done: (summary: Summary) => void;
-  failed: (failure: Failure) => void;
-  /** The session was started again from t = 0 (the page clears its plots). */
-  reset: () => void;
-  /** The live rig's samples, periods and estimate since the last event (`event: rig`). */
-  rig?: (event: LiveRigEvent) => void;
-  /** The server is stopping (`event: closed`): the stream is closed, nothing more comes. */
-  closed?: (message: string) => void;
-  /** The connection dropped (EventSource retries by itself until closed). */
-  error?: () => void;
-}
-
-export interface StreamHandle {
-  close: () => void;
-}
+/** Which lab this page talks to: a frictionlab server. */
+export const LAB_PLACE: "server" | "browser" = "server";
 
 /** A shared server's token, from the page's own address (`?token=...`), sent with every call. */
 const token = new URLSearchParams(location.search).get("token");
@@ -267,8 +229,8 @@ export async function estimateFile(
   return readJson<MeasurementEstimate>(response);
 }
 
-/** Where a finished run's file is served (summary.json, trajectory.csv, hall.csv, ...). */
-export function fileUrl(session: SessionHandle, name: string): string {
+/** Where a finished run's file downloads from (summary.json, trajectory.csv, hall.csv, ...). */
+export async function fileHref(session: SessionHandle, name: string): Promise<string> {
   return keyedUrl(session, `/files/${encodeURIComponent(name)}`);
 }
 
@@ -284,9 +246,9 @@ export async function endSession(session: SessionHandle): Promise<void> {
   }
 }
 
-/** Where a LEGO part's mesh is served (glTF binary, y up). */
+/** Where a LEGO part's mesh is served (glTF binary, y up), beside the page. */
 export function partUrl(name: string): string {
-  return `/parts/${encodeURIComponent(name)}.glb`;
+  return `parts/${encodeURIComponent(name)}.glb`;
 }
 
 /** The live rig: the serial ports the server sees and the one open. */

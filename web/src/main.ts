@@ -3,7 +3,14 @@
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
-import { getLab, LabFullError, pageUrl, RateLimitedError, SetupError } from "./lab_client";
+import {
+  getLab,
+  LAB_PLACE,
+  LabFullError,
+  pageUrl,
+  RateLimitedError,
+  SetupError,
+} from "./lab_client";
 import { LabModel } from "./lab_model";
 import { MeasurementPanel } from "./measurement_panel";
 import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
@@ -48,6 +55,21 @@ const refused = byId("refused");
 const stopwatch = new Stopwatch(model);
 const studentName = new StudentName();
 byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
+// Which lab the page talks to: its own in this browser (the static site), or a server's.
+setText(
+  byId("lab-place"),
+  LAB_PLACE === "browser"
+    ? "The lab runs in this browser: nothing is sent anywhere."
+    : `The lab runs on the server at ${location.host}.`,
+);
+// The class's table is a classroom server's.
+byId("class-link").hidden = LAB_PLACE === "browser";
+// The static site opens offline once opened (tools/site writes sw.js beside the page).
+if (LAB_PLACE === "browser" && "serviceWorker" in navigator) {
+  navigator.serviceWorker.register("sw.js").catch(() => {
+    // a page opened from a file, or a browser that keeps no workers: it works while online
+  });
+}
 const rigPanel = new RigPanel({ connected: () => void runBesideRig() });
 const measurement = new MeasurementPanel();
 
@@ -102,7 +124,7 @@ model.done.lazyLink((done) => {
   if (done) {
     readouts.setDone(model.headline.value);
     const session = keeper.current;
-    if (session) exportPanel.enableFiles(session);
+    if (session) void exportPanel.enableFiles(session);
   }
   showRun();
 });

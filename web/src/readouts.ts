@@ -75,7 +75,7 @@ export class Readouts {
     if (!e || key === this.lastEstimateKey) return;
     this.lastEstimateKey = key;
     setText(this.period, `T = ${withError(e.period, e.period_sd, 4)} s`);
-    this.period.dataset["periodS"] = String(e.period);
+    this.period.dataset["value"] = String(e.period);
     const periods = `${e.periods_used} period${e.periods_used === 1 ? "" : "s"}`;
     setText(
       this.periodDetail,
@@ -92,8 +92,9 @@ export class Readouts {
     setText(this.status, "done");
     if (headline) {
       setText(this.period, `T = ${withError(headline.period, headline.periodSd, 4)} s`);
-      // The full value, for a test to hold against `frictionlab run`'s period_s.
-      this.period.dataset["periodS"] = String(headline.period);
+      // T in seconds at full precision (data-value), for a test to hold against `frictionlab
+      // run`'s period_s.
+      this.period.dataset["value"] = String(headline.period);
       setText(
         this.periodDetail,
         `the run's result: ± is the standard deviation; standard error ${fixed(headline.periodSe, 4)} s`,

@@ -92,7 +92,7 @@ async function pagePeriod(set) {
   const query = ["scene=minimal", ...set.map((s) => `set=${encodeURIComponent(s)}`)].join("&");
   const { page, context, complaints } = await openPage(`/?${query}`);
   await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
-  const period = Number(await page.getByTestId("period").getAttribute("data-period-s"));
+  const period = Number(await page.getByTestId("period").getAttribute("data-value"));
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
   await context.close();
   return period;

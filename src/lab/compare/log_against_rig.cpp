@@ -33,8 +33,8 @@ TraceFacts facts_of(const LogEstimate& est) {
   f.pulses = static_cast<int>(est.pulses.size());
   f.periods_used = static_cast<int>(s.periods_used);
   f.periods_discarded = static_cast<int>(s.periods_discarded);
-  f.period = s.period_s;
-  f.period_std = s.period_std_s;
+  f.period = static_cast<double>(s.period_s);
+  f.period_std = static_cast<double>(s.period_std_s);
   std::vector<double> widths, heights;
   for (const EstimatedPulse& p : est.pulses) {
     if (p.distorted) continue;
@@ -186,8 +186,8 @@ LogAgainstRig compare_log_with_rig(const HallLog& log, fl_estimator::Geometry ge
   MeasuredRow row;
   row.label = std::filesystem::path(log.path).filename().string();
   row.where = {log.path, 0, 0};
-  row.period.value = measured.stats.period_s;
-  row.period.uncertainty = measured.stats.period_sem_s;
+  row.period.value = static_cast<double>(measured.stats.period_s);
+  row.period.uncertainty = static_cast<double>(measured.stats.period_sem_s);
   row.period.decimals = 6;
   row.period.uncertainty_decimals = 6;
   row.spacing_err = set_up_for_log(log.file, LogSetUp{}, nullptr).spacing_err;

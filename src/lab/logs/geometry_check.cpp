@@ -113,7 +113,8 @@ void measure_shape(const HallLog& log, const LogEstimate& est, GeometryCheck* ch
     double r = 0.0;
     int n = 0;
     bool rail = false;
-    if (!pulse_shape(log, est.pulses[i], est.pulse_baseline[i], est.polarity, &r, &n, &rail))
+    if (!pulse_shape(log, est.pulses[i], static_cast<double>(est.pulse_baseline[i]), est.polarity,
+                     &r, &n, &rail))
       continue;
     ratios.push_back(r);
     across.push_back(n);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -128,8 +129,8 @@ std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
     const HallLog read_so = hall_log_from_samples(
         std::move(t_s), std::vector<double>(log.adc.begin(), log.adc.end()), log.path);
     const fl_estimator::Stats s = estimate_log(read_so, est.set_up, false).stats;
-    if (!periods_of_a_rig(s) || implausible(s.period_s, kPeriodRange) ||
-        implausible(s.mu_k, kMuKRange))
+    if (!periods_of_a_rig(s) || implausible(static_cast<double>(s.period_s), kPeriodRange) ||
+        implausible(static_cast<double>(s.mu_k), kMuKRange))
       continue;
     return fmt::format(
         "; the samples come {:.4g} a second read in {} ({}), where a rig samples 20 to 20000 a "
@@ -145,8 +146,9 @@ std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
 
 void require_plausible(const HallLog& log, const LogEstimate& est, const std::string& note) {
   const fl_estimator::Stats& s = est.stats;
-  const std::optional<std::string> period = implausible(s.period_s, kPeriodRange);
-  const std::optional<std::string> mu_k = implausible(s.mu_k, kMuKRange);
+  const std::optional<std::string> period =
+      implausible(static_cast<double>(s.period_s), kPeriodRange);
+  const std::optional<std::string> mu_k = implausible(static_cast<double>(s.mu_k), kMuKRange);
   if (!period && !mu_k) return;
   throw InputError(
       SourceLocation{log.path, log.line.front(), 0},
@@ -330,7 +332,7 @@ nlohmann::json hall_plot_data(const HallLog& log, const LogEstimate& est) {
 
 std::optional<double> plate_amplitude(const HallLog& log, const LogEstimate& estimate,
                                       std::string* unit) {
-  const double period = estimate.stats.period_s;
+  const double period = static_cast<double>(estimate.stats.period_s);
   if (!log.half_swing || !(period > 0.0)) return std::nullopt;
   if (is_accelerometer(log.instrument)) {
     const double omega = 2.0 * std::numbers::pi / period;
@@ -343,7 +345,7 @@ std::optional<double> plate_amplitude(const HallLog& log, const LogEstimate& est
 
 std::optional<double> mu_k_thick(const LogEstimate& estimate) {
   const LogSetUp& s = estimate.set_up;
-  const double period = estimate.stats.period_s;
+  const double period = static_cast<double>(estimate.stats.period_s);
   if (!s.h_c || !(period > 0.0)) return std::nullopt;
   return mu_k_from_period_thick(period, s.spacing, *s.h_c, s.gravity);
 }

@@ -297,8 +297,9 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
   if (p.paper != nullptr) {
     const MaterialChoice from_sidecar =
         sidecar ? MaterialChoice{sidecar->material, sidecar->temperature} : MaterialChoice{};
-    out.paper = paper_value_for(*p.paper, p.material, from_sidecar, out.estimate.stats.mu_k,
-                                out.estimate.stats.mu_k_err_quadrature);
+    out.paper = paper_value_for(*p.paper, p.material, from_sidecar,
+                                static_cast<double>(out.estimate.stats.mu_k),
+                                static_cast<double>(out.estimate.stats.mu_k_err_quadrature));
   }
   // mu_k by Monte Carlo: T drawn with the periods' standard deviation (the dT of the rules
   // printed), l with dl, h_c with dh_c, through the thick formula (the thin one at h_c = 0).
@@ -309,8 +310,8 @@ OneLogEstimate estimate_one_log(const PreparedEstimate& p) {
     mc.gravity = set_up.gravity;
     mc.h_c = set_up.h_c.value_or(0.0);
     mc.h_c_err = p.h_c_err;
-    out.monte_carlo =
-        analytic_for_period(mc, out.estimate.stats.period_s, out.estimate.stats.period_std_s);
+    out.monte_carlo = analytic_for_period(mc, static_cast<double>(out.estimate.stats.period_s),
+                                          static_cast<double>(out.estimate.stats.period_std_s));
     add_monte_carlo(*out.monte_carlo, *p.monte_carlo);
     if (!p.mc_plot.empty()) {
       try {

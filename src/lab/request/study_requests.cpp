@@ -182,7 +182,7 @@ StabilityResult study_stability(const StabilityRequest& r, const JobControl& con
       scenes.size()));
   std::atomic<unsigned> finished{0};
   {
-    std::vector<std::jthread> pool;
+    std::vector<std::thread> pool;
     for (unsigned w = 0; w < workers; ++w) {
       pool.emplace_back([&] {
         for (std::size_t i = next++; i < scenes.size() && !control.stopping(); i = next++)
@@ -194,6 +194,7 @@ StabilityResult study_stability(const StabilityRequest& r, const JobControl& con
       control.poll_stopping();
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
+    for (std::thread& worker : pool) worker.join();
   }
   for (std::optional<StabilityRow>& row : rows) {
     if (row)

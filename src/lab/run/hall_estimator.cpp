@@ -45,7 +45,7 @@ constexpr std::size_t kMaxLearningSamples = 60000;
 
 void HallEstimator::Impl::find_learning_pulses() {
   const fl_estimator::PeriodEstimator& e = estimator.estimator();
-  const double level = e.timing_level();
+  const double level = static_cast<double>(e.timing_level());
   const int polarity = e.polarity();
   const auto above = [&](const HallSample& s) { return polarity * (s.adc - level) > 0.0; };
   // The instant between two samples where the signal crosses the level (linear).
@@ -136,12 +136,12 @@ EstimatorReport estimator_report(const fl_estimator::Stats& s) {
   r.periods_used = static_cast<int>(s.periods_used);
   r.periods_discarded = static_cast<int>(s.periods_discarded);
   r.pulses = static_cast<int>(s.pulses);
-  r.period = s.period_s;
-  r.period_std = s.period_std_s;
-  r.period_std_error = s.period_sem_s;
-  r.mu_k = s.mu_k;
-  r.mu_k_err_worst = s.mu_k_err_worst;
-  r.mu_k_err_quadrature = s.mu_k_err_quadrature;
+  r.period = static_cast<double>(s.period_s);
+  r.period_std = static_cast<double>(s.period_std_s);
+  r.period_std_error = static_cast<double>(s.period_sem_s);
+  r.mu_k = static_cast<double>(s.mu_k);
+  r.mu_k_err_worst = static_cast<double>(s.mu_k_err_worst);
+  r.mu_k_err_quadrature = static_cast<double>(s.mu_k_err_quadrature);
   return r;
 }
 

@@ -1,4 +1,4 @@
-// A pool of worker threads (std::jthread) that run numbered tasks: each worker takes the next
+// A pool of worker threads that run numbered tasks: each worker takes the next
 // queued index when it finishes one, so long and short tasks balance themselves. Threads sleep on
 // a condition variable when there is nothing to do; the caller collects results as they finish.
 #pragma once
@@ -13,7 +13,6 @@
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <stop_token>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -48,12 +47,19 @@ class WorkPool {
 
   WorkPool(int threads, Task task) : task_(std::move(task)) {
     threads = std::max(1, threads);
-    for (int i = 0; i < threads; ++i)
-      threads_.emplace_back([this](std::stop_token stop) { work(stop); });
+    for (int i = 0; i < threads; ++i) threads_.emplace_back([this] { work(); });
   }
+  // The running tasks finish; the queued ones are not started. (std::thread rather than
+  // std::jthread: Emscripten's libc++ 13, the browser's build, has no std::jthread.)
   ~WorkPool() {
-    close();
-    for (std::jthread& t : threads_) t.request_stop();
+    {
+      std::lock_guard lock(m_);
+      closed_ = true;
+      stopping_ = true;
+    }
+    work_cv_.notify_all();
+    done_cv_.notify_all();
+    for (std::thread& t : threads_) t.join();
   }
   WorkPool(const WorkPool&) = delete;
   WorkPool& operator=(const WorkPool&) = delete;
@@ -104,13 +110,13 @@ class WorkPool {
   }
 
  private:
-  void work(std::stop_token stop) {
+  void work() {
     while (true) {
       std::size_t index = 0;
       {
         std::unique_lock lock(m_);
-        work_cv_.wait(lock, stop, [this] { return !queue_.empty() || closed_; });
-        if (stop.stop_requested() || queue_.empty()) return;
+        work_cv_.wait(lock, [this] { return !queue_.empty() || closed_; });
+        if (stopping_ || queue_.empty()) return;
         index = queue_.front();
         queue_.pop_front();
         ++running_;
@@ -136,15 +142,16 @@ class WorkPool {
   }
 
   mutable std::mutex m_;
-  std::condition_variable_any work_cv_;
+  std::condition_variable work_cv_;
   std::condition_variable done_cv_;
   std::deque<std::size_t> queue_;
   std::size_t running_ = 0;
   bool closed_ = false;
+  bool stopping_ = false;  // the pool is being destroyed: workers take no more tasks
   std::vector<Result> results_;
   std::exception_ptr error_;
   Task task_;
-  std::vector<std::jthread> threads_;  // last: joined before the rest is destroyed
+  std::vector<std::thread> threads_;  // last: joined (by the destructor) before the rest goes
 };
 
 }  // namespace fl

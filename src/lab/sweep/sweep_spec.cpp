@@ -11,6 +11,7 @@
 #include "io/text_file.hpp"
 #include "io/unknown_material.hpp"
 #include "io/yaml_node.hpp"
+#include "text/decimal.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -26,7 +27,7 @@ std::optional<NumberWithUnit> split_number(std::string_view text) {
   std::string_view s = trim(text);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   NumberWithUnit out;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out.number);
+  const auto [end, ec] = read_decimal(s.data(), s.data() + s.size(), out.number);
   if (ec != std::errc() || !std::isfinite(out.number)) return std::nullopt;
   out.unit = trim(std::string_view(end, static_cast<std::size_t>(s.data() + s.size() - end)));
   return out;

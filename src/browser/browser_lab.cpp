@@ -1,0 +1,107 @@
+#include "browser/browser_lab.hpp"
+
+#include <stdexcept>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "lab/request/lab_data.hpp"
+#include "serve/api_json.hpp"
+#include "serve/api_requests.hpp"
+#include "serve/measurement_upload.hpp"
+#include "serve/session_events.hpp"
+#include "serve/session_opening.hpp"
+
+namespace fl::browser {
+namespace {
+
+Answer no_such_session() {
+  return {404, serve::error_json("no such session (it ended or never began)")};
+}
+
+}  // namespace
+
+BrowserLab::BrowserLab(std::string scenes_dir, std::string asset_dir, std::string version)
+    : scenes_dir_(std::move(scenes_dir)),
+      asset_dir_(std::move(asset_dir)),
+      version_(std::move(version)) {}
+
+Answer BrowserLab::lab() const {
+  return {200, serve::lab_json(list_scenes(scenes_dir_), paper_table_in(asset_dir_), version_)};
+}
+
+BrowserLab::Open* BrowserLab::find(const std::string& id) {
+  const auto it = sessions_.find(id);
+  return it == sessions_.end() ? nullptr : &it->second;
+}
+
+Answer BrowserLab::create_session(std::string_view body) {
+  serve::SessionOpening opening =
+      serve::open_session(body, scenes_dir_, asset_dir_, serve::kMostRecordedSeconds);
+  if (!opening.session) return {opening.status, std::move(opening.body)};
+  const std::string id = fmt::format("{:016x}", next_id_++);
+  sessions_.emplace(id, Open{std::move(opening.session), std::nullopt});
+  return {201, {{"id", id}, {"key", ""}, {"rig", std::move(opening.body["rig"])}}};
+}
+
+Answer BrowserLab::events(const std::string& id) {
+  Open* open = find(id);
+  if (open == nullptr) return no_such_session();
+  nlohmann::json out = nlohmann::json::array();
+  for (serve::SessionEvent& e :
+       serve::session_events(*open->session, serve::Clock::now(), open->generation))
+    out.push_back({{"event", std::move(e.name)}, {"data", std::move(e.data)}});
+  return {200, std::move(out)};
+}
+
+Answer BrowserLab::control(const std::string& id, std::string_view body) {
+  Open* open = find(id);
+  if (open == nullptr) return no_such_session();
+  const auto read = serve::read_control_body(body);
+  if (const auto* refusal = std::get_if<serve::BodyRefusal>(&read))
+    return {400, serve::error_json(refusal->message)};
+  serve::LabSession& session = *open->session;
+  const serve::ControlCommand& command = std::get<serve::ControlCommand>(read);
+  switch (command.action) {
+    case serve::ControlCommand::Action::kPlay:
+      return {200, session.play(serve::Clock::now())};
+    case serve::ControlCommand::Action::kPause:
+      return {200, session.pause()};
+    case serve::ControlCommand::Action::kStep:
+      return {200, session.step()};
+    case serve::ControlCommand::Action::kReset:
+      return {200, session.reset()};
+    case serve::ControlCommand::Action::kSpeed:
+      return {200, session.set_speed(command.speed)};
+  }
+  throw std::logic_error("a control action without an answer");
+}
+
+Answer BrowserLab::file(const std::string& id, const std::string& name) {
+  Open* open = find(id);
+  if (open == nullptr) return no_such_session();
+  const std::optional<std::string> text = open->session->file(name);
+  if (!text)
+    return {404, serve::error_json(fmt::format(
+                     "no file \"{}\": the run writes its files when it ends, only those its "
+                     "scene's output part names, and, for a run longer than {:g} s, neither "
+                     "trajectory.csv nor hall.csv nor periods.csv (run it with frictionlab run "
+                     "to have them)",
+                     name, serve::kMostRecordedSeconds))};
+  return {200, {{"text", *text}}};
+}
+
+Answer BrowserLab::end(const std::string& id) {
+  if (sessions_.erase(id) == 0) return no_such_session();
+  return {200, {{"ended", true}}};
+}
+
+Answer BrowserLab::estimate(const std::string& name, std::string bytes,
+                            std::optional<std::string> spacing,
+                            std::optional<std::string> h_c) const {
+  const serve::UploadAnswer answer = serve::estimate_upload(
+      {name, std::move(bytes), std::move(spacing), std::move(h_c)}, asset_dir_);
+  return {answer.status, answer.body};
+}
+
+}  // namespace fl::browser

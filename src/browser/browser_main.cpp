@@ -1,0 +1,80 @@
+// The browser's build's entry (Emscripten, embind): the lab of browser_lab.hpp, one per worker,
+// each call answering JSON text {"status": ..., "body": ...} as the server would (web/src/
+// lab_worker.ts calls these). An exception a request did not expect is a 500 with its message, as
+// the server's.
+#include <emscripten/bind.h>
+
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "browser/browser_lab.hpp"
+#include "serve/api_json.hpp"
+
+namespace fl::browser {
+namespace {
+
+std::unique_ptr<BrowserLab> g_lab;
+
+template <class Ask>
+std::string answered(Ask&& ask) {
+  Answer answer;
+  try {
+    if (!g_lab) throw std::logic_error("the lab is not open: call open_lab first");
+    answer = ask(*g_lab);
+  } catch (const std::exception& e) {
+    answer = {500, serve::error_json(std::string("internal error: ") + e.what())};
+  }
+  return nlohmann::json{{"status", answer.status}, {"body", std::move(answer.body)}}.dump();
+}
+
+std::optional<std::string> given(const std::string& value, bool is_given) {
+  return is_given ? std::optional<std::string>(value) : std::nullopt;
+}
+
+void open_lab(const std::string& scenes_dir, const std::string& asset_dir) {
+  g_lab = std::make_unique<BrowserLab>(scenes_dir, asset_dir,
+                                       std::string("frictionlab ") + FRICTIONLAB_VERSION);
+}
+
+std::string lab() {
+  return answered([](BrowserLab& lab) { return lab.lab(); });
+}
+std::string create_session(const std::string& body) {
+  return answered([&](BrowserLab& lab) { return lab.create_session(body); });
+}
+std::string events(const std::string& id) {
+  return answered([&](BrowserLab& lab) { return lab.events(id); });
+}
+std::string control(const std::string& id, const std::string& body) {
+  return answered([&](BrowserLab& lab) { return lab.control(id, body); });
+}
+std::string file(const std::string& id, const std::string& name) {
+  return answered([&](BrowserLab& lab) { return lab.file(id, name); });
+}
+std::string end(const std::string& id) {
+  return answered([&](BrowserLab& lab) { return lab.end(id); });
+}
+// `bytes`: the file, a Uint8Array (embind copies it into the string).
+std::string estimate(const std::string& name, const std::string& bytes, const std::string& spacing,
+                     bool has_spacing, const std::string& h_c, bool has_h_c) {
+  return answered([&](BrowserLab& lab) {
+    return lab.estimate(name, bytes, given(spacing, has_spacing), given(h_c, has_h_c));
+  });
+}
+
+}  // namespace
+}  // namespace fl::browser
+
+EMSCRIPTEN_BINDINGS(frictionlab) {
+  using namespace fl::browser;
+  emscripten::function("open_lab", &open_lab);
+  emscripten::function("lab", &lab);
+  emscripten::function("create_session", &create_session);
+  emscripten::function("events", &events);
+  emscripten::function("control", &control);
+  emscripten::function("file", &file);
+  emscripten::function("end", &end);
+  emscripten::function("estimate", &estimate);
+}

@@ -1,0 +1,62 @@
+#include "serve/session_opening.hpp"
+
+#include <stdexcept>
+#include <variant>
+
+#include "io/input_error.hpp"
+#include "lab/request/lab_data.hpp"
+#include "serve/api_json.hpp"
+#include "serve/api_requests.hpp"
+
+namespace fl::serve {
+
+namespace {
+
+nlohmann::json refusal_json(const BodyRefusal& refusal) {
+  nlohmann::json out = error_json(refusal.message);
+  // A field at fault is a problem by field, shown beside its control.
+  if (!refusal.field.empty())
+    out["problems"].push_back(
+        {{"field", refusal.field}, {"value", nullptr}, {"message", refusal.message}});
+  return out;
+}
+
+}  // namespace
+
+std::optional<nlohmann::json> session_body_refusal(std::string_view body) {
+  const auto read = read_session_body(body);
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) return refusal_json(*refusal);
+  return std::nullopt;
+}
+
+SessionOpening open_session(std::string_view body, const std::string& scenes_dir,
+                            const std::string& asset_dir, double most_recorded_seconds) {
+  SessionOpening out;
+  auto read = read_session_body(body);
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) {
+    out.body = refusal_json(*refusal);
+    return out;
+  }
+  const SessionBody& asked = std::get<SessionBody>(read);
+  try {
+    // Only a scene inside the folder is read: a link leading outside is as if absent.
+    PreparedSession prepared = prepare_session(asked.request, scenes_dir, asset_dir);
+    if (prepared.rig->world.duration > most_recorded_seconds) {
+      prepared.output.trajectory = false;
+      prepared.output.hall = false;
+    }
+    out.session =
+        std::make_shared<LabSession>(asked.request.scene, std::move(prepared), asked.name);
+    out.status = 201;
+    out.body = {
+        {"rig", rig_json(asked.request.scene, out.session->rig(), paper_table_in(asset_dir))}};
+  } catch (const InputError& e) {
+    out.body = problems_json(e);
+  } catch (const std::invalid_argument& e) {
+    // UnitError, DomainError: a value the lab refused.
+    out.body = problems_json(e);
+  }
+  return out;
+}
+
+}  // namespace fl::serve

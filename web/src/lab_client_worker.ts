@@ -1,0 +1,219 @@
+// The second lab client: the lab in this page's own Web Worker (lab_worker.ts, the core compiled
+// to WebAssembly), for the static site tools/site builds. It offers what lab_client.ts offers, by
+// the same names and types (lab_client_check.ts holds the two to it), answering as the server
+// does: the same bodies, refusals and stream events, with no request leaving the browser.
+import {
+  LabError,
+  LabFullError,
+  RateLimitedError,
+  SetupError,
+  type SessionHandle,
+  type StreamHandle,
+  type StreamHandlers,
+} from "./lab_errors";
+import type {
+  ClassTable,
+  ControlAction,
+  ControlReply,
+  Failure,
+  Lab,
+  LabState,
+  LiveRig,
+  LiveRigEvent,
+  MeasurementEstimate,
+  PlaybackSpeed,
+  Problem,
+  Session,
+  Summary,
+} from "./lab_types";
+import type { WorkerAnswer, WorkerMessage, WorkerRequest } from "./lab_worker";
+
+export {
+  LabError,
+  LabFullError,
+  RateLimitedError,
+  SetupError,
+  type SessionHandle,
+  type StreamHandle,
+  type StreamHandlers,
+};
+
+/** Which lab this page talks to: its own, in this browser. */
+export const LAB_PLACE: "server" | "browser" = "browser";
+
+type Ask = WorkerRequest extends infer R
+  ? R extends { id: number }
+    ? Omit<R, "id">
+    : never
+  : never;
+
+let worker: Worker | null = null;
+let nextId = 1;
+const pending = new Map<number, (answer: WorkerAnswer) => void>();
+const listeners = new Map<string, StreamHandlers>();
+
+function labWorker(): Worker {
+  if (worker) return worker;
+  const made = new Worker(new URL("lab_worker.js", document.baseURI));
+  made.addEventListener("message", (event: MessageEvent<WorkerMessage>) => {
+    const message = event.data;
+    if ("id" in message) {
+      pending.get(message.id)?.(message.answer);
+      pending.delete(message.id);
+      return;
+    }
+    const handlers = listeners.get(message.stream);
+    if (handlers) deliver(handlers, message.events);
+  });
+  made.addEventListener("error", (event) => {
+    const answer = {
+      status: 500,
+      body: { error: `the lab in this browser stopped: ${event.message || "its worker failed"}` },
+    };
+    for (const resolve of pending.values()) resolve(answer);
+    pending.clear();
+  });
+  worker = made;
+  return made;
+}
+
+function ask(request: Ask, transfer: Transferable[] = []): Promise<WorkerAnswer> {
+  const id = nextId++;
+  return new Promise((resolve) => {
+    pending.set(id, resolve);
+    labWorker().postMessage({ ...request, id }, transfer);
+  });
+}
+
+function errorOf(answer: WorkerAnswer): string {
+  const body = answer.body as { error?: unknown } | null;
+  return typeof body?.error === "string" && body.error
+    ? body.error
+    : `the lab answered ${answer.status}`;
+}
+
+function expectOk<T>(answer: WorkerAnswer): T {
+  if (answer.status < 200 || answer.status >= 300)
+    throw new LabError(errorOf(answer), answer.status);
+  return answer.body as T;
+}
+
+function deliver(handlers: StreamHandlers, events: { event: string; data: unknown }[]): void {
+  for (const { event, data } of events) {
+    if (event === "state") handlers.state(data as LabState);
+    else if (event === "done") handlers.done(data as Summary);
+    else if (event === "failed") handlers.failed(data as Failure);
+    else if (event === "reset") handlers.reset();
+    else if (event === "rig") handlers.rig?.(data as LiveRigEvent);
+  }
+}
+
+export async function getLab(): Promise<Lab> {
+  return expectOk<Lab>(await ask({ op: "lab" }));
+}
+
+/** Starts a session paused at t = 0; a refused set-up throws SetupError with its problems. */
+export async function createSession(scene: string, set: string[], name?: string): Promise<Session> {
+  const answer = await ask({
+    op: "create",
+    body: JSON.stringify(name ? { scene, set, name } : { scene, set }),
+  });
+  if (answer.status === 400) {
+    const body = answer.body as { error?: string; problems?: Problem[] };
+    throw new SetupError(body.error ?? "the set-up has problems", body.problems ?? []);
+  }
+  if (answer.status === 503) throw new LabFullError(errorOf(answer));
+  return expectOk<Session>(answer);
+}
+
+/** Listens to a session's events until close(). */
+export function stream(session: SessionHandle, handlers: StreamHandlers): StreamHandle {
+  listeners.set(session.id, handlers);
+  void ask({ op: "stream", session: session.id });
+  return {
+    close: () => {
+      if (listeners.get(session.id) !== handlers) return;
+      listeners.delete(session.id);
+      void ask({ op: "unstream", session: session.id });
+    },
+  };
+}
+
+export async function control(
+  session: SessionHandle,
+  command: ControlAction | { speed: PlaybackSpeed },
+): Promise<ControlReply> {
+  const body = typeof command === "string" ? { action: command } : command;
+  return expectOk<ControlReply>(
+    await ask({ op: "control", session: session.id, body: JSON.stringify(body) }),
+  );
+}
+
+/** A measurement file the student chose, read by the lab's readers in this browser with the
+ * set-up's spacing [m]; a file that gives no period is refused with the reader's message. */
+export async function estimateFile(
+  file: Blob,
+  name: string,
+  spacing: number,
+): Promise<MeasurementEstimate> {
+  const bytes = await file.arrayBuffer();
+  const answer = await ask({ op: "estimate", name, bytes, spacing }, [bytes]);
+  if (answer.status !== 200) {
+    const body = answer.body as { problems?: Problem[] } | null;
+    throw new LabError(body?.problems?.[0]?.message ?? errorOf(answer), answer.status);
+  }
+  return answer.body as MeasurementEstimate;
+}
+
+/** A finished run's file, as a link the browser downloads from (a Blob's address). */
+export async function fileHref(session: SessionHandle, name: string): Promise<string> {
+  const body = expectOk<{ text: string }>(await ask({ op: "file", session: session.id, name }));
+  const type = name.endsWith(".json") ? "application/json" : "text/csv";
+  return URL.createObjectURL(new Blob([body.text], { type }));
+}
+
+export async function endSession(session: SessionHandle): Promise<void> {
+  listeners.delete(session.id);
+  await ask({ op: "end", session: session.id });
+}
+
+/** Where a LEGO part's mesh is (glTF binary, y up), beside the page. */
+export function partUrl(name: string): string {
+  return `parts/${encodeURIComponent(name)}.glb`;
+}
+
+const NO_SERIAL_YET =
+  "the lab in this browser reads the rig from a saved log: choose the file under Your measurement";
+
+/** The live rig through the server's serial ports: none here (404, as a server without one). */
+export async function getRig(): Promise<LiveRig> {
+  throw new LabError(NO_SERIAL_YET, 404);
+}
+
+export async function openRig(_port: string): Promise<LiveRig> {
+  throw new LabError(NO_SERIAL_YET, 404);
+}
+
+export async function closeRig(): Promise<LiveRig> {
+  throw new LabError(NO_SERIAL_YET, 404);
+}
+
+export function rigLogUrl(): string {
+  return "";
+}
+
+const NO_CLASS =
+  "the class's table is a classroom server's (frictionlab serve): this lab runs in one browser";
+
+export async function getClass(): Promise<ClassTable> {
+  throw new LabError(NO_CLASS, 404);
+}
+
+export function classCsvUrl(): string {
+  return "";
+}
+
+/** One of the lab's pages, beside this one. */
+export function pageUrl(path: string): string {
+  return path.replace(/^\//, "") || "./";
+}

@@ -1,0 +1,134 @@
+// The lab in the page's worker (browser/browser_lab.hpp), built natively: a session stepped to its
+// end is `frictionlab run`'s run of the same set-up (summary and files byte for byte), a refused
+// set-up has the request layer's problems by field, the controls and an unknown session answer as
+// the server does, and a measurement file gives the request layer's period for it.
+#include "browser/browser_lab.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/request/estimate_request.hpp"
+#include "lab/run/run_outputs.hpp"
+#include "lab/run/summary_fields.hpp"
+#include "support/run_command.hpp"
+#include "support/scene_fixture.hpp"
+
+namespace fl::browser {
+namespace {
+
+using nlohmann::json;
+
+BrowserLab test_lab() {
+  return BrowserLab(std::string(FRICTIONLAB_TEST_SOURCE_DIR) + "/scenes",
+                    FRICTIONLAB_TEST_ASSET_DIR, "frictionlab test");
+}
+
+// Steps the session (1/30 s of simulated time a step) until its `done`; every event in order.
+std::vector<std::pair<std::string, json>> step_to_done(BrowserLab& lab, const std::string& id) {
+  std::vector<std::pair<std::string, json>> out;
+  for (int i = 0; i < 10000; ++i) {
+    EXPECT_EQ(lab.control(id, R"({"action": "step"})").status, 200);
+    const Answer frame = lab.events(id);
+    EXPECT_EQ(frame.status, 200);
+    for (const json& e : frame.body) out.emplace_back(e["event"], e["data"]);
+    if (!out.empty() && out.back().first == "done") return out;
+  }
+  ADD_FAILURE() << "no done after 10000 steps";
+  return out;
+}
+
+TEST(BrowserLab, OffersTheScenesOfItsFolderAndThePapersMaterials) {
+  const Answer lab = test_lab().lab();
+  ASSERT_EQ(lab.status, 200);
+  std::vector<std::string> names;
+  for (const json& s : lab.body["scenes"]) names.push_back(s["name"]);
+  EXPECT_NE(std::find(names.begin(), names.end(), "paper-rig"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "minimal"), names.end());
+  EXPECT_EQ(lab.body["version"], "frictionlab test");
+  EXPECT_FALSE(lab.body["materials"].empty());
+}
+
+TEST(BrowserLab, ASessionSteppedToItsEndIsRunsRunByteForByte) {
+  BrowserLab lab = test_lab();
+  const Answer made = lab.create_session(
+      R"({"scene": "minimal", "set": ["world.duration=1.5s", "rollers.spacing=70mm"]})");
+  ASSERT_EQ(made.status, 201) << made.body.dump();
+  const std::string id = made.body["id"];
+  EXPECT_EQ(made.body["rig"]["spacing"].get<double>(), 0.07);
+  const auto events = step_to_done(lab, id);
+  ASSERT_FALSE(events.empty());
+
+  const Scene scene = test::scene_file(
+      "minimal.yaml",
+      std::vector<SceneOverride>{{"world.duration", "1.5s"}, {"rollers.spacing", "70mm"}});
+  const CompiledRig rig = compile_rig(scene);
+  RunRecording recording;
+  const RunSummary summary = run_experiment(rig, recording_for(scene.output), &recording);
+  EXPECT_EQ(events.back().second, summary_json(summary));
+  for (const auto& [name, text] : run_output_files(scene.output, rig, summary, recording)) {
+    if (name == "timing.json") continue;
+    const Answer file = lab.file(id, name);
+    ASSERT_EQ(file.status, 200) << name;
+    EXPECT_TRUE(file.body["text"] == text) << name << " differs from run's";
+  }
+  // Simulated time only moves forward, one step's 1/30 s at a time.
+  double previous = -1.0;
+  for (const auto& [name, data] : events) {
+    if (name != "state") continue;
+    EXPECT_GT(data["t"].get<double>(), previous);
+    previous = data["t"].get<double>();
+  }
+}
+
+TEST(BrowserLab, ARefusedSetUpHasItsProblemsByField) {
+  BrowserLab lab = test_lab();
+  const Answer refused =
+      lab.create_session(R"({"scene": "minimal", "set": ["rollers.spacing=-3mm"]})");
+  EXPECT_EQ(refused.status, 400);
+  ASSERT_EQ(refused.body["problems"].size(), 1u);
+  EXPECT_EQ(refused.body["problems"][0]["value"], "rollers.spacing=-3mm");
+  EXPECT_NE(refused.body["problems"][0]["message"].get<std::string>().find("positive"),
+            std::string::npos);
+  const Answer unknown = lab.create_session(R"({"scene": "../etc/passwd"})");
+  EXPECT_EQ(unknown.status, 400);
+  const Answer broken = lab.create_session("{not json");
+  EXPECT_EQ(broken.status, 400);
+  EXPECT_TRUE(broken.body.contains("error"));
+}
+
+TEST(BrowserLab, ControlsAndAnUnknownSessionAnswerAsTheServer) {
+  BrowserLab lab = test_lab();
+  const std::string id = lab.create_session(R"({"scene": "minimal"})").body["id"];
+  EXPECT_EQ(lab.control(id, R"({"action": "play"})").body["playing"], true);
+  EXPECT_EQ(lab.control(id, R"({"speed": 0.25})").body["speed"], 0.25);
+  EXPECT_EQ(lab.control(id, R"({"speed": 3})").status, 400);
+  EXPECT_EQ(lab.control(id, R"({"action": "fly"})").status, 400);
+  // Files come when the run has ended.
+  EXPECT_EQ(lab.file(id, "summary.json").status, 404);
+  EXPECT_EQ(lab.end(id).status, 200);
+  EXPECT_EQ(lab.events(id).status, 404);
+  EXPECT_EQ(lab.control(id, R"({"action": "play"})").status, 404);
+  EXPECT_EQ(lab.end(id).status, 404);
+}
+
+TEST(BrowserLab, AMeasurementFileGivesTheRequestLayersPeriod) {
+  const std::string file = std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                           "/assets/examples/instruments/phone-magnetometer.csv";
+  const Answer answer =
+      test_lab().estimate("phone.csv", test::read_text(file), "0.089", std::nullopt);
+  ASSERT_EQ(answer.status, 200) << answer.body.dump();
+  EstimateRequest request;
+  request.logs = {file};
+  const OneLogEstimate direct = estimate_one_log(prepare_estimate(request));
+  EXPECT_EQ(answer.body["period_s"].get<double>(), direct.json()["period_s"].get<double>());
+  EXPECT_EQ(answer.body["file"], "phone.csv");
+  const Answer refused = test_lab().estimate("notes.txt", "hello\n", std::nullopt, std::nullopt);
+  EXPECT_EQ(refused.status, 400);
+}
+
+}  // namespace
+}  // namespace fl::browser

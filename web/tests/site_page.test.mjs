@@ -1,0 +1,169 @@
+// The static site (tools/site) in Debian's chromium, headless, served by a plain static server
+// (python3 -m http.server): the lab runs in the page's own worker. A link's period is
+// `frictionlab run`'s for the same set-up (data-value, within 1e-9 relative), a refused set-up
+// shows the request layer's message at its control, a rig log and a phone's file chosen in the
+// file input give `frictionlab estimate`'s period, no request leaves for an API, and a reload with
+// the network gone still opens the lab (the service worker).
+//
+//   node tests/site_page.test.mjs --site DIR --exe build/release/src/cli/frictionlab [--shot FILE]
+// Exit status: 0 all passed, 1 a check failed, 77 no chromium or no site (the test is skipped).
+import { execFileSync, spawn } from "node:child_process";
+import { existsSync } from "node:fs";
+import { dirname, join, resolve } from "node:path";
+import { createInterface } from "node:readline";
+import { fileURLToPath } from "node:url";
+import { parseArgs } from "node:util";
+import { chromium } from "playwright-core";
+
+const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
+const { values: options } = parseArgs({
+  options: {
+    site: { type: "string" },
+    exe: { type: "string" },
+    shot: { type: "string", default: "/tmp/frictionlab-site.png" },
+  },
+});
+if (!options.site || !options.exe) {
+  console.error("usage: node tests/site_page.test.mjs --site DIR --exe FRICTIONLAB [--shot FILE]");
+  process.exit(2);
+}
+const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
+if (!existsSync(executablePath)) {
+  console.error(`skipped: no chromium at ${executablePath} (apt-get install chromium)`);
+  process.exit(77);
+}
+if (!existsSync(join(options.site, "frictionlab-lab.wasm"))) {
+  console.error(`skipped: no site in ${options.site} (tools/site ${options.site} builds it)`);
+  process.exit(77);
+}
+
+// Python's own static server on any free port: it names the port on its first line.
+const server = spawn(
+  "python3",
+  ["-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", resolve(options.site)],
+  { stdio: ["ignore", "pipe", "ignore"] },
+);
+const base = await new Promise((done, fail) => {
+  createInterface({ input: server.stdout }).on("line", (line) => {
+    const found = /port (\d+)/.exec(line);
+    if (found) done(`http://127.0.0.1:${found[1]}`);
+  });
+  server.on("exit", (code) => fail(new Error(`python3 -m http.server exited with ${code}`)));
+});
+const browser = await chromium.launch({
+  executablePath,
+  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
+});
+
+let failed = 0;
+async function check(name, body) {
+  const started = Date.now();
+  try {
+    await body();
+    console.log(`ok   ${name} (${Date.now() - started} ms)`);
+  } catch (error) {
+    failed += 1;
+    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
+  }
+}
+function expect(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+/** A page at `path`: the console's errors and warnings, and every address it asked for. */
+async function openPage(path, context = null) {
+  const own = context ?? (await browser.newContext({ viewport: { width: 1366, height: 768 } }));
+  const page = await own.newPage();
+  const complaints = [];
+  const asked = [];
+  page.on("console", (m) => {
+    if (m.type() === "error" || m.type() === "warning") complaints.push(m.text());
+  });
+  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  own.on("request", (request) => asked.push(request.url()));
+  await page.goto(`${base}${path}`);
+  return { page, context: own, complaints, asked };
+}
+
+function runJson(args) {
+  return JSON.parse(execFileSync(options.exe, args, { encoding: "utf8" }));
+}
+
+await check("a link's set-up runs in the page and its period is run's", async () => {
+  const set = ["world.duration=6s", "rollers.spacing=70mm"];
+  const query = ["scene=minimal", ...set.map((s) => `set=${encodeURIComponent(s)}`)].join("&");
+  const { page, context, complaints, asked } = await openPage(`/?${query}`);
+  await page.getByTestId("lab-place").filter({ hasText: "in this browser" }).waitFor();
+  await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  const shown = Number(await page.getByTestId("period").getAttribute("data-value"));
+  const args = ["run", `${repository}/scenes/minimal.yaml`, "--json"];
+  for (const s of set) args.push("--set", s);
+  const expected = runJson(args).period_s;
+  expect(Math.abs(shown / expected - 1) <= 1e-9, `page ${shown} s, run ${expected} s`);
+  await page.screenshot({ path: options.shot });
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  const api = asked.filter((url) => new URL(url).pathname.includes("/api/"));
+  expect(api.length === 0, `requests for an API: ${api.join(", ")}`);
+  const elsewhere = asked.filter((url) => !url.startsWith(base) && !url.startsWith("blob:"));
+  expect(elsewhere.length === 0, `requests beyond the site: ${elsewhere.join(", ")}`);
+  await context.close();
+});
+
+await check("a refused set-up shows the request layer's message at its control", async () => {
+  const { page, context } = await openPage("/?scene=minimal");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });
+  await page.fill("#spacing-mm", "-5");
+  await page.press("#spacing-mm", "Enter");
+  const field = page.locator(".field", { has: page.locator("#spacing-mm") });
+  const problem = field.getByTestId("problem-spacing");
+  await problem.filter({ hasText: "positive" }).waitFor();
+  // The words the request layer writes (BrowserLab answers with them as the server does).
+  const text = await problem.textContent();
+  expect(text.includes("must be positive, found -0.005 m"), `the message: ${text}`);
+  await context.close();
+});
+
+await check("a rig log and a phone's file chosen on the page give estimate's period", async () => {
+  const { page, context, complaints } = await openPage("/?scene=paper-rig");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });
+  const input = page.getByTestId("measurement-file");
+  const shown = page.getByTestId("measured-period");
+  const detail = page.getByTestId("measured-detail");
+  for (const file of [
+    `${repository}/assets/examples/spacing-series/lego-l089.csv`,
+    `${repository}/assets/examples/instruments/phone-magnetometer.csv`,
+  ]) {
+    const name = file.split("/").pop();
+    await input.setInputFiles(file);
+    await detail.filter({ hasText: `${name}: ` }).waitFor({ timeout: 60000 });
+    const value = Number(await shown.getAttribute("data-value"));
+    const expected = runJson(["estimate", file, "--json"]).period_s;
+    expect(value === expected, `${name}: page ${value} s, estimate ${expected} s`);
+  }
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a reload with the network gone still opens the lab", async () => {
+  const { page, context } = await openPage("/?scene=minimal");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });
+  // The service worker has cached the site once it controls the page.
+  await page.evaluate(async () => {
+    await navigator.serviceWorker.ready;
+    if (!navigator.serviceWorker.controller) {
+      await new Promise((done) =>
+        navigator.serviceWorker.addEventListener("controllerchange", done, { once: true }),
+      );
+    }
+  });
+  await context.setOffline(true);
+  await page.reload();
+  await page.getByTestId("lab-place").filter({ hasText: "in this browser" }).waitFor();
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor({ timeout: 30000 });
+  await page.getByTestId("period").filter({ hasText: "±" }).waitFor({ timeout: 60000 });
+  await context.close();
+});
+
+await browser.close();
+server.kill();
+process.exit(failed === 0 ? 0 : 1);

@@ -5,7 +5,8 @@
 # fmt, nlohmann-json) from the host's /usr/include. Only the layers the lab's requests need are
 # built: no drawing, video, MPI, Python, command line, tests or benchmarks.
 set(FRICTIONLAB_WASM_DEPS "" CACHE PATH "tools/wasm-deps' prefix: Bullet and yaml-cpp for WebAssembly")
-if(NOT EXISTS "${FRICTIONLAB_WASM_DEPS}/lib/libBulletDynamics-float64.a")
+if(NOT EXISTS "${FRICTIONLAB_WASM_DEPS}/lib/libBulletDynamics-float64.a" OR
+   NOT EXISTS "${FRICTIONLAB_WASM_DEPS}/lib/libminizip.a")
   message(FATAL_ERROR "the browser's build needs Bullet and yaml-cpp built for WebAssembly: run "
                       "tools/wasm-deps and give its prefix as -DFRICTIONLAB_WASM_DEPS=DIR (found "
                       "none in \"${FRICTIONLAB_WASM_DEPS}\")")
@@ -50,13 +51,22 @@ add_library(fmt::fmt ALIAS frictionlab_wasm_fmt)
 add_library(frictionlab_wasm_json INTERFACE)
 target_include_directories(frictionlab_wasm_json SYSTEM INTERFACE ${host_headers})
 add_library(nlohmann_json::nlohmann_json ALIAS frictionlab_wasm_json)
+# phyphox's zip export: minizip and zlib, from Debian's zlib source package.
+add_library(frictionlab_wasm_minizip INTERFACE)
+target_include_directories(frictionlab_wasm_minizip SYSTEM INTERFACE
+                           ${FRICTIONLAB_WASM_DEPS}/include/minizip ${FRICTIONLAB_WASM_DEPS}/include)
+target_link_libraries(frictionlab_wasm_minizip INTERFACE ${FRICTIONLAB_WASM_DEPS}/lib/libminizip.a
+                      ${FRICTIONLAB_WASM_DEPS}/lib/libz.a)
+add_library(PkgConfig::MINIZIP ALIAS frictionlab_wasm_minizip)
+
 # One thread: the worker is the lab's thread (a pool's threads would need SharedArrayBuffer).
 add_library(frictionlab_wasm_threads INTERFACE)
 add_library(Threads::Threads ALIAS frictionlab_wasm_threads)
 
-foreach(component RENDER OSMESA EGL VIDEO ZIP ASSETS MPI PYTHON SERVE WEB)
+foreach(component RENDER OSMESA EGL VIDEO ASSETS MPI PYTHON SERVE WEB)
   set(FRICTIONLAB_WITH_${component} OFF)
 endforeach()
+set(FRICTIONLAB_WITH_ZIP ON)
 set(FRICTIONLAB_BUILD_TESTS OFF)
 set(FRICTIONLAB_BUILD_BENCH OFF)
 set(FRICTIONLAB_SKIP_PARTS render video decoder)

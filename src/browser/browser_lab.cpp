@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "hall_log/serial_port.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
@@ -40,7 +41,9 @@ Answer BrowserLab::create_session(std::string_view body) {
       serve::open_session(body, scenes_dir_, asset_dir_, serve::kMostRecordedSeconds);
   if (!opening.session) return {opening.status, std::move(opening.body)};
   const std::string id = fmt::format("{:016x}", next_id_++);
-  sessions_.emplace(id, Open{std::move(opening.session), std::nullopt});
+  const CompiledRig& rig = opening.session->rig();
+  sessions_.emplace(id, Open{std::move(opening.session), std::nullopt,
+                             serve::BoardWatch(serve::BoardWatch::set_up_for(rig))});
   return {201, {{"id", id}, {"key", ""}, {"rig", std::move(opening.body["rig"])}}};
 }
 
@@ -51,6 +54,9 @@ Answer BrowserLab::events(const std::string& id) {
   for (serve::SessionEvent& e :
        serve::session_events(*open->session, serve::Clock::now(), open->generation))
     out.push_back({{"event", std::move(e.name)}, {"data", std::move(e.data)}});
+  if (rig_)
+    if (std::optional<nlohmann::json> watched = open->rig_watch.next(rig_))
+      out.push_back({{"event", "rig"}, {"data", std::move(*watched)}});
   return {200, std::move(out)};
 }
 
@@ -102,6 +108,37 @@ Answer BrowserLab::estimate(const std::string& name, std::string bytes,
   const serve::UploadAnswer answer = serve::estimate_upload(
       {name, std::move(bytes), std::move(spacing), std::move(h_c)}, asset_dir_);
   return {answer.status, answer.body};
+}
+
+Answer BrowserLab::rig() const {
+  return {200, serve::live_rig_json(rig_.get(), {}, true, kFirmwareBaud)};
+}
+
+Answer BrowserLab::rig_open(const std::string& port, int baud) {
+  if (const std::optional<std::string> why = baud_problem(baud))
+    return {400, serve::error_json(*why)};
+  if (rig_) rig_->close();
+  rig_ = std::make_shared<serve::BoardFeed>(serve::BoardFeed::FedFromOutside{}, port, baud,
+                                            serve::kMostRigLogBytes);
+  return rig();
+}
+
+Answer BrowserLab::rig_bytes(std::string_view bytes, bool ended) {
+  if (!rig_) return {409, serve::error_json("no port is open: open one before sending its bytes")};
+  rig_->feed(bytes, ended);
+  return rig();
+}
+
+Answer BrowserLab::rig_close() {
+  if (rig_) rig_->close();
+  return rig();
+}
+
+Answer BrowserLab::rig_log() const {
+  const serve::BoardFeedStatus status = rig_ ? rig_->status() : serve::BoardFeedStatus{};
+  if (!rig_ || status.lines == 0)
+    return {404, serve::error_json("no rig log yet: no line has come from a serial port")};
+  return {200, {{"name", status.log_name}, {"text", rig_->raw_log()}}};
 }
 
 }  // namespace fl::browser

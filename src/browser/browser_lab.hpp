@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "serve/board_feed.hpp"
+#include "serve/board_watch.hpp"
 #include "serve/lab_session.hpp"
 
 namespace fl::browser {
@@ -46,10 +48,23 @@ class BrowserLab {
   Answer estimate(const std::string& name, std::string bytes, std::optional<std::string> spacing,
                   std::optional<std::string> h_c) const;
 
+  // The live rig, its port read by the page (Web Serial) and its bytes given here: what
+  // GET /api/rig says (no ports listed: the browser lists them), a port opened under `port`'s
+  // name at `baud` (the one open before closed, a new log begun), the bytes that came (`ended`:
+  // the port went away after them), the port closed. Each answers GET /api/rig's body. The
+  // sessions' streams carry its `rig` events, each with the session's spacing.
+  Answer rig() const;
+  Answer rig_open(const std::string& port, int baud);
+  Answer rig_bytes(std::string_view bytes, bool ended);
+  Answer rig_close();
+  // GET /api/rig/log: {"name", "text"}: every line as received; 404 before a line came.
+  Answer rig_log() const;
+
  private:
   struct Open {
     std::shared_ptr<serve::LabSession> session;
     std::optional<int> generation;  // the last frame's
+    serve::BoardWatch rig_watch;    // the live rig with the session's spacing
   };
   Open* find(const std::string& id);
 
@@ -57,6 +72,7 @@ class BrowserLab {
   std::string asset_dir_;
   std::string version_;
   std::map<std::string, Open> sessions_;
+  std::shared_ptr<serve::BoardFeed> rig_;  // the port open or last open
   unsigned next_id_ = 1;
 };
 

@@ -64,6 +64,23 @@ std::string estimate(const std::string& name, const std::string& bytes, const st
   });
 }
 
+std::string rig() {
+  return answered([](BrowserLab& lab) { return lab.rig(); });
+}
+std::string rig_open(const std::string& port, int baud) {
+  return answered([&](BrowserLab& lab) { return lab.rig_open(port, baud); });
+}
+// `bytes`: what the port gave, a Uint8Array.
+std::string rig_bytes(const std::string& bytes, bool ended) {
+  return answered([&](BrowserLab& lab) { return lab.rig_bytes(bytes, ended); });
+}
+std::string rig_close() {
+  return answered([](BrowserLab& lab) { return lab.rig_close(); });
+}
+std::string rig_log() {
+  return answered([](BrowserLab& lab) { return lab.rig_log(); });
+}
+
 }  // namespace
 }  // namespace fl::browser
 
@@ -77,4 +94,9 @@ EMSCRIPTEN_BINDINGS(frictionlab) {
   emscripten::function("file", &file);
   emscripten::function("end", &end);
   emscripten::function("estimate", &estimate);
+  emscripten::function("rig", &rig);
+  emscripten::function("rig_open", &rig_open);
+  emscripten::function("rig_bytes", &rig_bytes);
+  emscripten::function("rig_close", &rig_close);
+  emscripten::function("rig_log", &rig_log);
 }

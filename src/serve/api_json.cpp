@@ -185,4 +185,26 @@ json error_json(const std::string& message) {
   return {{"error", message}, {"problems", json::array()}};
 }
 
+json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports, bool may_choose,
+                   int baud) {
+  json out{{"ports", may_choose ? json(ports) : json::array()},
+           {"may_choose", may_choose},
+           {"port", nullptr},
+           {"baud", baud},
+           {"state", "closed"},
+           {"message", nullptr},
+           {"lines", 0},
+           {"log_name", nullptr}};
+  if (feed) {
+    const BoardFeedStatus s = feed->status();
+    out["port"] = s.port;
+    out["baud"] = s.baud;
+    out["state"] = s.state;
+    out["message"] = s.message ? json(*s.message) : json(nullptr);
+    out["lines"] = s.lines;
+    out["log_name"] = s.log_name.empty() ? json(nullptr) : json(s.log_name);
+  }
+  return out;
+}
+
 }  // namespace fl::serve

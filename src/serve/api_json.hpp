@@ -13,6 +13,7 @@
 #include "lab/live/live_run.hpp"
 #include "lab/request/session_request.hpp"
 #include "scene/compiled_rig.hpp"
+#include "serve/board_feed.hpp"
 
 namespace fl::serve {
 
@@ -31,6 +32,11 @@ nlohmann::json periods_json(const std::vector<EstimatedPeriod>& periods, std::si
 
 // One `state` event of the stream.
 nlohmann::json frame_json(const LiveFrame& frame, bool playing, double speed);
+
+// GET /api/rig: the serial ports a page may open (`may_choose`), and the port open or last open
+// (`feed`, null before one was), or `baud` the rate one opens at.
+nlohmann::json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports,
+                             bool may_choose, int baud);
 
 // A 400's body: every problem of an InputError (a RequestError's by field), spelled for the page.
 nlohmann::json problems_json(const std::exception& error);

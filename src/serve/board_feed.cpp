@@ -63,24 +63,45 @@ void BoardFeed::read_port() {
   while (!stop_) {
     bytes.clear();
     const bool open = port_->read_some(&bytes, 100);
-    if (!lines_in(bytes, !open)) {
-      const std::lock_guard lock(mutex_);
-      end("full", fmt::format("the log reached its {} MB (about {} minutes at the firmware's "
-                              "1 kHz): the port is closed and the log kept; connect again to "
-                              "start a new one",
-                              most_log_bytes_ >> 20, most_log_bytes_ / (20 * 1000 * 60)));
-      break;
-    }
-    if (!open) {
-      const std::lock_guard lock(mutex_);
-      end("unplugged",
-          fmt::format("{} went away at {} (the board unplugged?): the {} lines received are "
-                      "kept, download them below; plug the board in and connect again",
-                      status_.port, fmt::format("{:%H:%M:%S}", local_now()), status_.lines));
-      break;
-    }
+    if (!take(bytes, !open)) break;
   }
   port_.reset();
+}
+
+BoardFeed::BoardFeed(FedFromOutside, std::string port, int baud, std::size_t most_log_bytes)
+    : most_log_bytes_(most_log_bytes), capture_(port, HallLogOptions{}) {
+  status_.port = std::move(port);
+  status_.baud = baud;
+  status_.state = "waiting";
+}
+
+bool BoardFeed::feed(std::string_view bytes, bool ended) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (status_.state != "waiting" && status_.state != "receiving" && status_.state != "failed")
+      return false;
+  }
+  return take(bytes, ended);
+}
+
+bool BoardFeed::take(std::string_view bytes, bool ended) {
+  if (!lines_in(bytes, ended)) {
+    const std::lock_guard lock(mutex_);
+    end("full", fmt::format("the log reached its {} MB (about {} minutes at the firmware's "
+                            "1 kHz): the port is closed and the log kept; connect again to "
+                            "start a new one",
+                            most_log_bytes_ >> 20, most_log_bytes_ / (20 * 1000 * 60)));
+    return false;
+  }
+  if (ended) {
+    const std::lock_guard lock(mutex_);
+    end("unplugged",
+        fmt::format("{} went away at {} (the board unplugged?): the {} lines received are "
+                    "kept, download them below; plug the board in and connect again",
+                    status_.port, fmt::format("{:%H:%M:%S}", local_now()), status_.lines));
+    return false;
+  }
+  return true;
 }
 
 bool BoardFeed::lines_in(std::string_view bytes, bool ended) {

@@ -22,6 +22,10 @@
 
 namespace fl::serve {
 
+// The most bytes of a rig's log a lab keeps, unless told otherwise: about 55 minutes of the
+// firmware's 1 kHz lines.
+inline constexpr std::size_t kMostRigLogBytes = std::size_t{64} << 20;
+
 struct BoardFeedStatus {
   std::string port;
   int baud = 0;
@@ -41,12 +45,20 @@ class BoardFeed {
   // cannot be opened gives a feed in state "failed" saying why. `most_log_bytes` bounds the log
   // kept (and so the samples): past it the feed closes the port, saying so.
   BoardFeed(std::string port, int baud, std::string record_dir, std::size_t most_log_bytes);
+  // A port read by someone else (the page's Web Serial, in the browser's build), whose bytes come
+  // through feed(); `port` names it for the page.
+  struct FedFromOutside {};
+  BoardFeed(FedFromOutside, std::string port, int baud, std::size_t most_log_bytes);
   ~BoardFeed();
   BoardFeed(const BoardFeed&) = delete;
   BoardFeed& operator=(const BoardFeed&) = delete;
 
   // Stops reading and closes the port and the record file; the log and samples stay.
   void close();
+  // The bytes a port fed from outside gave (`ended`: the port went away after them). False, and
+  // nothing taken, once the feed has ended (closed, unplugged, full); false too when these bytes
+  // filled the log or ended the port.
+  bool feed(std::string_view bytes, bool ended);
 
   BoardFeedStatus status() const;
   // Every line received, as received.
@@ -65,6 +77,9 @@ class BoardFeed {
 
  private:
   void read_port();
+  // The bytes of one read, the feed ended when the port `ended` or the log is full (saying so);
+  // false when it has ended.
+  bool take(std::string_view bytes, bool ended);
   // The bytes a read gave into the log, the record and the capture (lab/logs/live_capture.hpp:
   // complete lines; all of them when the port `ended`); false when the log is full.
   bool lines_in(std::string_view bytes, bool ended);

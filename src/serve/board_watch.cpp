@@ -12,6 +12,11 @@ using nlohmann::json;
 
 BoardWatch::BoardWatch(const LogSetUp& set_up) : set_up_(set_up) {}
 
+LogSetUp BoardWatch::set_up_for(const CompiledRig& rig) {
+  return LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
+                  fl_estimator::kAutoGeometry, std::nullopt};
+}
+
 std::optional<json> BoardWatch::next(const std::shared_ptr<const BoardFeed>& feed) {
   const BoardFeedStatus status = feed->status();
   BoardFeed::Slice slice = feed->samples_from(feed_run_, next_sample_);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lab/logs/live_log_estimate.hpp"
+#include "scene/compiled_rig.hpp"
 #include "serve/board_feed.hpp"
 
 namespace fl::serve {
@@ -22,6 +23,8 @@ class BoardWatch {
 
   // l, dl, g and the pulses per period the estimate is made with.
   explicit BoardWatch(const LogSetUp& set_up);
+  // A session's: its rig's spacing and gravity, the pulses per period found in the signal.
+  static LogSetUp set_up_for(const CompiledRig& rig);
 
   // The next `rig` event of `feed`, or nothing when nothing changed since the last. A feed other
   // than the last one watched (a port opened again) starts the view again, as does the board

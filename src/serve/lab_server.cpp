@@ -254,24 +254,9 @@ struct LabServer::Impl {
 };
 
 json LabServer::Impl::rig_status_json() const {
-  const std::shared_ptr<BoardFeed> feed = current_board();
-  json out{{"ports", may_choose_port ? json(ports()) : json::array()},
-           {"may_choose", may_choose_port},
-           {"port", nullptr},
-           {"baud", options.serial_baud},
-           {"state", "closed"},
-           {"message", nullptr},
-           {"lines", 0},
-           {"log_name", nullptr}};
-  if (feed) {
-    const BoardFeedStatus s = feed->status();
-    out["port"] = s.port;
-    out["state"] = s.state;
-    out["message"] = s.message ? json(*s.message) : json(nullptr);
-    out["lines"] = s.lines;
-    out["log_name"] = s.log_name.empty() ? json(nullptr) : json(s.log_name);
-  }
-  return out;
+  return live_rig_json(current_board().get(),
+                       may_choose_port ? ports() : std::vector<std::string>{}, may_choose_port,
+                       options.serial_baud);
 }
 
 std::vector<ClassRow> LabServer::Impl::class_rows() const {
@@ -480,9 +465,7 @@ void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res
 void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib::Response& res) {
   res.set_header("Cache-Control", "no-cache");
   struct StreamState {
-    explicit StreamState(const CompiledRig& rig)
-        : board_watch(LogSetUp{rig.rollers.spacing, LogSetUp{}.spacing_err, rig.world.gravity,
-                               fl_estimator::kAutoGeometry, std::nullopt}) {}
+    explicit StreamState(const CompiledRig& rig) : board_watch(BoardWatch::set_up_for(rig)) {}
     std::optional<int> generation;
     Clock::time_point next = Clock::now();
     BoardWatch board_watch;  // the live rig with this session's spacing

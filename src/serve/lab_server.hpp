@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hall_log/serial_port.hpp"
+#include "serve/board_feed.hpp"
 #include "serve/session_opening.hpp"
 
 namespace fl::serve {
@@ -45,7 +46,7 @@ struct ServeOptions {
   // machine only. Set by the server from `host` unless given.
   std::optional<bool> pages_choose_port;
   // The most bytes of the rig's raw log kept (and read) before its port is closed.
-  std::size_t most_rig_log_bytes = std::size_t{64} << 20;
+  std::size_t most_rig_log_bytes = kMostRigLogBytes;
   // The serial devices' folder (/dev; another for a test).
   std::string device_dir = "/dev";
 };

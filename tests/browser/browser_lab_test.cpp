@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "hall_log/hall_log.hpp"
+#include "lab/logs/log_estimate.hpp"
 #include "lab/request/estimate_request.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "lab/run/summary_fields.hpp"
@@ -128,6 +130,70 @@ TEST(BrowserLab, AMeasurementFileGivesTheRequestLayersPeriod) {
   EXPECT_EQ(answer.body["file"], "phone.csv");
   const Answer refused = test_lab().estimate("notes.txt", "hello\n", std::nullopt, std::nullopt);
   EXPECT_EQ(refused.status, 400);
+}
+
+TEST(BrowserLab, ARigFedByThePageGivesEstimatesPeriodsOnItsLog) {
+  BrowserLab lab = test_lab();
+  // A simulated run of the paper's rig with a rigid-foam plate (T = 0.30 s), as the firmware's
+  // 1 kHz lines.
+  const Answer made = lab.create_session(
+      R"({"scene": "paper-rig", "set": ["friction.mu_k=rigid-foam", "world.duration=3.5s"]})");
+  ASSERT_EQ(made.status, 201);
+  const std::string id = made.body["id"];
+  const json summary = step_to_done(lab, id).back().second;
+  const double truth = summary["period_trajectory_s"];
+  const std::string hall = lab.file(id, "hall.csv").body["text"];
+  std::string lines =
+      "# frictionlab rig firmware 1: sample_hz=1000 sample_us=1000.0000 "
+      "raw_every=1\r\nt_us,adc\r\n";
+  for (std::size_t at = hall.find('\n') + 1; at < hall.size();) {
+    const std::size_t end = hall.find('\n', at);
+    lines += hall.substr(at, end - at) + "\r\n";
+    at = end + 1;
+  }
+
+  EXPECT_EQ(lab.rig_log().status, 404);
+  EXPECT_EQ(lab.rig_bytes("12,500\r\n", false).status, 409);  // no port open
+  const Answer opened = lab.rig_open("USB 2341:0043", 250000);
+  ASSERT_EQ(opened.status, 200) << opened.body.dump();
+  EXPECT_EQ(opened.body["state"], "waiting");
+  EXPECT_EQ(lab.rig_open("USB 2341:0043", 0).status, 400);
+  // The page reads the port in pieces of any size; a line may be split between two.
+  std::vector<json> events;
+  for (std::size_t at = 0; at < lines.size(); at += 997) {
+    lab.rig_bytes(lines.substr(at, 997), false);
+    for (const json& e : lab.events(id).body)
+      if (e["event"] == "rig") events.push_back(e["data"]);
+  }
+  const Answer gone = lab.rig_bytes("", true);
+  EXPECT_EQ(gone.body["state"], "unplugged");
+  for (const json& e : lab.events(id).body)
+    if (e["event"] == "rig") events.push_back(e["data"]);
+  ASSERT_FALSE(events.empty());
+  EXPECT_EQ(events.back()["state"], "unplugged");
+
+  // The log is every byte sent; `estimate` on it finds the page's periods, each exactly.
+  const Answer log = lab.rig_log();
+  ASSERT_EQ(log.status, 200);
+  EXPECT_TRUE(log.body["text"] == lines);
+  LogSetUp set_up;
+  set_up.spacing = events.back()["spacing"];
+  const LogEstimate estimate =
+      estimate_log(parse_hall_log(log.body["text"].get<std::string>(), "rig.log"), set_up, false);
+  std::vector<json> page;
+  for (const json& e : events)
+    for (const json& p : e["periods"]) page.push_back(p);
+  ASSERT_GE(page.size(), 6u);
+  ASSERT_GE(estimate.periods.size(), page.size());
+  for (std::size_t i = 0; i < page.size(); ++i) {
+    const EstimatedPeriod& p = estimate.periods[i];
+    EXPECT_EQ(page[i], json::array({p.start, p.end, p.period, p.status == fl_estimator::kAccepted}))
+        << i;
+  }
+  ASSERT_FALSE(events.back()["estimate"].is_null());
+  EXPECT_NEAR(events.back()["estimate"]["period"].get<double>(), truth, 5e-4 * truth);
+  // Closed by the page: the log stays.
+  EXPECT_EQ(lab.rig_close().body["lines"], events.back()["lines"]);
 }
 
 }  // namespace

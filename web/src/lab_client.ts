@@ -275,7 +275,7 @@ export async function closeRig(): Promise<LiveRig> {
 }
 
 /** Where the rig's raw log downloads (every line as received; 404 before a line came). */
-export function rigLogUrl(): string {
+export async function rigLogHref(): Promise<string> {
   return api("/api/rig/log");
 }
 

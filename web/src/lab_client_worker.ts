@@ -182,24 +182,142 @@ export function partUrl(name: string): string {
   return `parts/${encodeURIComponent(name)}.glb`;
 }
 
-const NO_SERIAL_YET =
-  "the lab in this browser reads the rig from a saved log: choose the file under Your measurement";
+// The live rig: the page opens the rig's port through the browser's Web Serial (its own port
+// chooser), reads it, and gives the bytes to the lab in the worker, which keeps the log and runs
+// the rig's estimator for each session's stream, as the server does with a port of its own.
 
-/** The live rig through the server's serial ports: none here (404, as a server without one). */
-export async function getRig(): Promise<LiveRig> {
-  throw new LabError(NO_SERIAL_YET, 404);
+/** What the port list shows: the browser asks which port when Connect is pressed. */
+const CHOOSE_PORT = "the port you choose (the browser asks)";
+const NO_WEB_SERIAL =
+  "This browser cannot open the rig's serial port (Web Serial is in Chrome, Edge and Opera on a " +
+  "computer): save the rig's log (the Arduino's serial monitor, or frictionlab log) and choose " +
+  "the file under “Your measurement”";
+
+/** Web Serial's part the page uses (the DOM library's types do not have it yet). */
+interface WebSerialPort {
+  open(options: { baudRate: number }): Promise<void>;
+  close(): Promise<void>;
+  getInfo(): { usbVendorId?: number; usbProductId?: number };
+  readonly readable: ReadableStream<Uint8Array> | null;
+}
+interface WebSerial {
+  requestPort(): Promise<WebSerialPort>;
 }
 
+function webSerial(): WebSerial | null {
+  const serial = (navigator as Navigator & { serial?: WebSerial }).serial;
+  return serial ?? null;
+}
+
+let open: { port: WebSerialPort; reader: ReadableStreamDefaultReader<Uint8Array> | null } | null =
+  null;
+let closing = false;
+
+/** The worker's status of the port, with what this browser offers to open. */
+function offered(rig: LiveRig): LiveRig {
+  if (webSerial()) return { ...rig, ports: [CHOOSE_PORT], may_choose: true };
+  const never = rig.port === null && rig.state === "closed";
+  return { ...rig, ports: [], may_choose: true, message: never ? NO_WEB_SERIAL : rig.message };
+}
+
+function portName(port: WebSerialPort): string {
+  const { usbVendorId, usbProductId } = port.getInfo();
+  const hex = (n: number) => n.toString(16).padStart(4, "0");
+  return usbVendorId === undefined || usbProductId === undefined
+    ? "the chosen serial port"
+    : `USB ${hex(usbVendorId)}:${hex(usbProductId)}`;
+}
+
+/** Reads the port until it ends or is closed, each piece to the worker as it comes. */
+async function readPort(port: WebSerialPort): Promise<void> {
+  let ended = true;
+  try {
+    while (port.readable && open?.port === port) {
+      const reader = port.readable.getReader();
+      open.reader = reader;
+      try {
+        for (;;) {
+          const { value, done } = await reader.read();
+          if (done) break;
+          const bytes = value.slice().buffer;
+          void ask({ op: "rig_bytes", bytes, ended: false }, [bytes]);
+        }
+      } finally {
+        reader.releaseLock();
+      }
+      if (closing) ended = false;
+      break;
+    }
+  } catch {
+    // the port went away (unplugged): said below
+  }
+  if (ended && open?.port === port)
+    void ask({ op: "rig_bytes", bytes: new ArrayBuffer(0), ended: true });
+}
+
+async function closePort(): Promise<void> {
+  const was = open;
+  if (!was) return;
+  closing = true;
+  try {
+    await was.reader?.cancel();
+    await was.port.close();
+  } catch {
+    // already gone
+  } finally {
+    closing = false;
+    open = null;
+  }
+}
+
+/** The live rig: the port this page opened and its state, and what the browser offers. */
+export async function getRig(): Promise<LiveRig> {
+  return offered(expectOk<LiveRig>(await ask({ op: "rig" })));
+}
+
+/** Asks the browser for the rig's port (its own chooser), opens it at the firmware's rate and
+ * starts a new log; the one open before is closed. */
 export async function openRig(_port: string): Promise<LiveRig> {
-  throw new LabError(NO_SERIAL_YET, 404);
+  const serial = webSerial();
+  if (!serial) throw new LabError(NO_WEB_SERIAL, 400);
+  const { baud } = expectOk<LiveRig>(await ask({ op: "rig" }));
+  if (baud === null) throw new LabError("the lab gave no baud rate for the rig's port", 500);
+  let port: WebSerialPort;
+  try {
+    port = await serial.requestPort();
+  } catch {
+    throw new LabError("no port chosen: press Connect again and choose the rig's Arduino", 400);
+  }
+  await closePort();
+  try {
+    await port.open({ baudRate: baud });
+  } catch (error) {
+    const why = error instanceof Error ? error.message : String(error);
+    throw new LabError(
+      `the port could not be opened (${why}): close the Arduino IDE's serial monitor or any ` +
+        "other page using it, and connect again",
+      400,
+    );
+  }
+  const rig = expectOk<LiveRig>(await ask({ op: "rig_open", port: portName(port), baud }));
+  open = { port, reader: null };
+  void readPort(port);
+  return offered(rig);
 }
 
 export async function closeRig(): Promise<LiveRig> {
-  throw new LabError(NO_SERIAL_YET, 404);
+  await closePort();
+  return offered(expectOk<LiveRig>(await ask({ op: "rig_close" })));
 }
 
-export function rigLogUrl(): string {
-  return "";
+let rigLog: string | null = null;
+
+/** Where the rig's raw log downloads from: every line as received, as a Blob's address. */
+export async function rigLogHref(): Promise<string> {
+  const body = expectOk<{ text: string }>(await ask({ op: "rig_log" }));
+  if (rigLog) URL.revokeObjectURL(rigLog);
+  rigLog = URL.createObjectURL(new Blob([body.text], { type: "text/plain" }));
+  return rigLog;
 }
 
 const NO_CLASS =

@@ -21,6 +21,11 @@ interface LabModule {
     hC: string,
     hasHC: boolean,
   ): string;
+  rig(): string;
+  rig_open(port: string, baud: number): string;
+  rig_bytes(bytes: Uint8Array, ended: boolean): string;
+  rig_close(): string;
+  rig_log(): string;
 }
 
 /** What the page asks. */
@@ -33,6 +38,11 @@ export type WorkerRequest = { id: number } & (
   | { op: "estimate"; name: string; bytes: ArrayBuffer; spacing: number | null }
   | { op: "stream"; session: string }
   | { op: "unstream"; session: string }
+  | { op: "rig" }
+  | { op: "rig_open"; port: string; baud: number }
+  | { op: "rig_bytes"; bytes: ArrayBuffer; ended: boolean }
+  | { op: "rig_close" }
+  | { op: "rig_log" }
 );
 
 export interface WorkerAnswer {
@@ -123,6 +133,16 @@ async function handle(request: WorkerRequest): Promise<WorkerAnswer> {
     case "unstream":
       stop(request.session);
       return { status: 200, body: {} };
+    case "rig":
+      return answered(lab.rig());
+    case "rig_open":
+      return answered(lab.rig_open(request.port, request.baud));
+    case "rig_bytes":
+      return answered(lab.rig_bytes(new Uint8Array(request.bytes), request.ended));
+    case "rig_close":
+      return answered(lab.rig_close());
+    case "rig_log":
+      return answered(lab.rig_log());
   }
 }
 

@@ -6,7 +6,7 @@
 // (404) hides the panel.
 import { byId, byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
-import { closeRig, getRig, LabError, openRig, rigLogUrl } from "./lab_client";
+import { closeRig, getRig, LabError, openRig, rigLogHref } from "./lab_client";
 import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { RigPlot } from "./live_rig_plot";
@@ -105,12 +105,15 @@ export class RigPanel {
   /** The panel opens by itself once, when a port or a rig shows; after that it is the user's. */
   private openedItself = false;
   private estimateKey = "";
+  /** The lines the log's link holds, and when it was pointed (performance.now()). */
+  private logLines = -1;
+  private logAt = -Infinity;
+  private logTimer = 0;
 
   constructor(private readonly actions: RigPanelActions) {
     this.connectButton.addEventListener("click", () => void this.connect());
     this.closeButton.addEventListener("click", () => void this.close());
     this.portSelect.addEventListener("change", () => this.showButtons());
-    this.logLink.href = rigLogUrl();
     this.clearRun();
     this.showStatus();
   }
@@ -246,6 +249,7 @@ export class RigPanel {
     setText(this.stateLine, stateWords(status) + (status.message ? `. ${status.message}` : ""));
     this.stateLine.dataset["state"] = status.state;
     this.logLink.hidden = status.lines <= 0;
+    this.offerLog(status);
     const ports = this.rig?.ports.length ?? 0;
     const rigShown = status.state !== "closed" || status.lines > 0;
     setText(
@@ -262,6 +266,28 @@ export class RigPanel {
       this.details.open = true;
     }
     this.showButtons();
+  }
+
+  /** Points the log's link at the log as it stands: at most every 2 s while lines come, and once
+   * more when they stop. */
+  private offerLog(status: PortStatus): void {
+    const receiving = status.state === "receiving" || status.state === "waiting";
+    const stale = status.lines !== this.logLines;
+    if (status.lines <= 0 || !stale) return;
+    if (receiving && performance.now() - this.logAt < POLL_MS) {
+      // Once more when the lines may have stopped coming.
+      if (!this.logTimer)
+        this.logTimer = window.setTimeout(() => {
+          this.logTimer = 0;
+          this.offerLog(this.status);
+        }, POLL_MS);
+      return;
+    }
+    this.logLines = status.lines;
+    this.logAt = performance.now();
+    void rigLogHref()
+      .then((href) => (this.logLink.href = href))
+      .catch(() => (this.logLines = -1));
   }
 
   private showButtons(): void {

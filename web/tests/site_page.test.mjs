@@ -2,13 +2,15 @@
 // (python3 -m http.server): the lab runs in the page's own worker. A link's period is
 // `frictionlab run`'s for the same set-up (data-value, within 1e-9 relative), a refused set-up
 // shows the request layer's message at its control, a rig log and a phone's file chosen in the
-// file input give `frictionlab estimate`'s period, no request leaves for an API, and a reload with
-// the network gone still opens the lab (the service worker).
+// file input give `frictionlab estimate`'s period, no request leaves for an API, a reload with
+// the network gone still opens the lab (the service worker), and the live rig through a stand-in
+// for Web Serial shows the periods `frictionlab estimate` finds in the log the page saves.
 //
 //   node tests/site_page.test.mjs --site DIR --exe build/release/src/cli/frictionlab [--shot FILE]
 // Exit status: 0 all passed, 1 a check failed, 77 no chromium or no site (the test is skipped).
 import { execFileSync, spawn } from "node:child_process";
-import { existsSync } from "node:fs";
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { createInterface } from "node:readline";
 import { fileURLToPath } from "node:url";
@@ -129,17 +131,28 @@ await check("a rig log and a phone's file chosen on the page give estimate's per
   const input = page.getByTestId("measurement-file");
   const shown = page.getByTestId("measured-period");
   const detail = page.getByTestId("measured-detail");
+  const instruments = `${repository}/assets/examples/instruments`;
   for (const file of [
     `${repository}/assets/examples/spacing-series/lego-l089.csv`,
-    `${repository}/assets/examples/instruments/phone-magnetometer.csv`,
+    `${instruments}/phone-magnetometer.csv`,
+    `${instruments}/phone-accelerometer.csv`,
+    `${instruments}/phone-export.zip`,
+    `${instruments}/tracker-plate.txt`,
   ]) {
     const name = file.split("/").pop();
     await input.setInputFiles(file);
-    await detail.filter({ hasText: `${name}: ` }).waitFor({ timeout: 60000 });
+    await detail
+      .filter({ hasText: `${name}` })
+      .filter({ hasText: "N = " })
+      .waitFor({ timeout: 60000 });
     const value = Number(await shown.getAttribute("data-value"));
     const expected = runJson(["estimate", file, "--json"]).period_s;
     expect(value === expected, `${name}: page ${value} s, estimate ${expected} s`);
   }
+  // A video needs a decoder the browser's lab has not: it says where to read it.
+  await input.setInputFiles(`${instruments}/phone-video.mp4`);
+  const problem = page.getByTestId("problem-measurement");
+  await problem.filter({ hasText: "frictionlab estimate on a computer" }).waitFor();
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
   await context.close();
 });
@@ -161,6 +174,114 @@ await check("a reload with the network gone still opens the lab", async () => {
   await page.getByTestId("lab-place").filter({ hasText: "in this browser" }).waitFor();
   await page.getByTestId("status").filter({ hasText: "playing" }).waitFor({ timeout: 30000 });
   await page.getByTestId("period").filter({ hasText: "±" }).waitFor({ timeout: 60000 });
+  await context.close();
+});
+
+await check(
+  "the rig through Web Serial: the page's periods are estimate's on its log",
+  async () => {
+    // A simulated run of the paper's rig with a rigid-foam plate (T = 0.30 s), as the firmware's
+    // lines, from a port that a script in the page stands in for (navigator.serial).
+    const folder = mkdtempSync(join(tmpdir(), "fl-site-rig-"));
+    try {
+      execFileSync(options.exe, [
+        "run",
+        `${repository}/scenes/paper-rig.yaml`,
+        "--set",
+        "friction.mu_k=rigid-foam",
+        "--duration",
+        "4s",
+        "--out",
+        `${folder}/run`,
+      ]);
+      const rows = readFileSync(`${folder}/run/hall.csv`, "utf8").trim().split("\n").slice(1);
+      const sent =
+        "# frictionlab rig firmware 1: sample_hz=1000 sample_us=1000.0000 raw_every=1\r\n" +
+        "t_us,adc\r\n" +
+        rows.map((row) => `${row}\r\n`).join("");
+      const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+      await context.addInitScript((text) => {
+        const bytes = new TextEncoder().encode(text);
+        let at = 0;
+        const readable = new ReadableStream({
+          // Pieces of 1000 bytes every 5 ms: lines split anywhere, as a port gives them.
+          pull: (controller) =>
+            new Promise((done) =>
+              setTimeout(() => {
+                if (at >= bytes.length) controller.close();
+                else controller.enqueue(bytes.slice(at, (at += 1000)));
+                done();
+              }, 5),
+            ),
+        });
+        const port = {
+          readable,
+          open: async ({ baudRate }) => {
+            if (baudRate !== 250000) throw new Error(`opened at ${baudRate} baud`);
+          },
+          close: async () => {},
+          getInfo: () => ({ usbVendorId: 0x2341, usbProductId: 0x0043 }),
+        };
+        Object.defineProperty(navigator, "serial", {
+          value: { requestPort: async () => port },
+          configurable: true,
+        });
+      }, sent);
+      const { page, complaints } = await openPage("/?scene=paper-rig", context);
+      await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });
+      await page.locator("#rig-details").evaluate((details) => (details.open = true));
+      await page.getByTestId("rig-connect").click();
+      const lines = rows.length + 2;
+      await page
+        .getByTestId("rig-state")
+        .filter({ hasText: `unplugged: USB 2341:0043 went away after ${lines} lines` })
+        .waitFor({ timeout: 60000 });
+      const shown = (await page.getByTestId("rig-period").allTextContents()).reverse();
+      expect(shown.length >= 8, `${shown.length} periods shown`);
+      // The log as the page saves it: every byte the port gave.
+      const link = page.getByTestId("rig-log");
+      await page.waitForFunction(
+        async (count) => {
+          const href = document.querySelector('[data-testid="rig-log"]')?.getAttribute("href");
+          if (!href) return false;
+          const text = await (await fetch(href)).text();
+          return text.split("\n").length - 1 === count;
+        },
+        lines,
+        { timeout: 10000 },
+      );
+      const log = await link.evaluate(async (a) => (await fetch(a.href)).text());
+      expect(log === sent, "the saved log is not what the port sent");
+      writeFileSync(`${folder}/rig.log`, log);
+      const estimate = runJson(["estimate", `${folder}/rig.log`, "--spacing", "89mm", "--json"]);
+      const periods = estimate.periods.map((p) => p.period_s.toFixed(6));
+      expect(
+        periods.length === shown.length || periods.length === shown.length + 1,
+        `estimate ${periods.length} periods, page ${shown.length}`,
+      );
+      for (let i = 0; i < shown.length; ++i)
+        expect(
+          shown[i] === periods[i],
+          `period ${i + 1}: page ${shown[i]}, estimate ${periods[i]}`,
+        );
+      expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+      await context.close();
+    } finally {
+      rmSync(folder, { recursive: true, force: true });
+    }
+  },
+);
+
+await check("a browser without Web Serial says so and offers the file", async () => {
+  // Firefox and Safari have no navigator.serial.
+  const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+  await context.addInitScript(() =>
+    Object.defineProperty(navigator, "serial", { value: undefined, configurable: true }),
+  );
+  const { page } = await openPage("/?scene=minimal", context);
+  await page.locator("#rig-details").evaluate((details) => (details.open = true));
+  await page.getByTestId("rig-state").filter({ hasText: "Web Serial" }).waitFor({ timeout: 30000 });
+  expect(await page.getByTestId("rig-connect").isDisabled(), "Connect is offered");
   await context.close();
 });
 

@@ -6,25 +6,34 @@
 //    fresh browsers (no cache);
 //  - the physics' speed in the page's worker: the paper's rig stepped to its end (the session's
 //    events and JSON included), as simulated seconds per wall second;
-//  - the page's frame rate over 5 s with the lab playing the paper's rig, and over 5 s paused.
+//  - the page's frame rate over 5 s with the lab playing the paper's rig, and over 5 s paused;
+//    with --exe and --web, the same page's frame rate with the physics on `frictionlab serve`
+//    on this machine instead (the page's own drawing, not the physics, sets its pace).
 //
-//   node tests/site_bench.mjs --site DIR [--rounds 5]
+//   node tests/site_bench.mjs --site DIR [--rounds 5] [--exe FRICTIONLAB --web DIR]
 import { spawn } from "node:child_process";
 import { readdirSync, readFileSync, statSync } from "node:fs";
-import { join, resolve } from "node:path";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
 import { createInterface } from "node:readline";
 import { parseArgs } from "node:util";
 import { gzipSync } from "node:zlib";
 import { chromium } from "playwright-core";
 
 const { values: options } = parseArgs({
-  options: { site: { type: "string" }, rounds: { type: "string", default: "5" } },
+  options: {
+    site: { type: "string" },
+    rounds: { type: "string", default: "5" },
+    exe: { type: "string" },
+    web: { type: "string" },
+  },
 });
 if (!options.site) {
   console.error("usage: node tests/site_bench.mjs --site DIR [--rounds N]");
   process.exit(2);
 }
 const site = resolve(options.site);
+const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 
 // What the first load fetches: every file but the service worker's own copies (it is the same
 // files again, fetched once in the background).
@@ -72,7 +81,12 @@ for (let round = 0; round < Number(options.rounds); round += 1) {
   ).newPage();
   const start = Date.now();
   await page.goto(`${base}/?scene=paper-rig`);
-  await page.getByTestId("period").filter({ hasText: "±" }).waitFor({ timeout: 60000 });
+  // The first period the estimator accepts: the readout's data-value.
+  await page.waitForFunction(
+    () => document.querySelector('[data-testid="period"]')?.getAttribute("data-value"),
+    null,
+    { timeout: 60000, polling: 20 },
+  );
   firsts.push(Date.now() - start);
   await browser.close();
 }
@@ -87,8 +101,8 @@ await page.goto(`${base}/?scene=paper-rig`);
 await page.getByTestId("status").filter({ hasText: "playing" }).waitFor({ timeout: 60000 });
 
 // Frames the page draws in 5 s (requestAnimationFrame), playing, then paused.
-const frameRate = () =>
-  page.evaluate(
+const frameRateOf = (on) =>
+  on.evaluate(
     () =>
       new Promise((done) => {
         let frames = 0;
@@ -101,6 +115,7 @@ const frameRate = () =>
         requestAnimationFrame(count);
       }),
   );
+const frameRate = () => frameRateOf(page);
 const playing = await frameRate();
 await page.getByRole("button", { name: "Pause" }).click();
 await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
@@ -109,10 +124,11 @@ console.log(`the page's frames: ${playing.toFixed(1)}/s playing, ${paused.toFixe
 
 // The worker's physics: a worker of the site's own, the paper's rig (100 s) stepped to its end.
 const speed = await page
-  .evaluate(async () => {
+  .evaluate(async (site) => {
+    // A Blob's worker resolves names against the Blob's address: the site's are given whole.
     const source = `
-    importScripts("frictionlab-lab.js");
-    createLab({ print: () => {} }).then((lab) => {
+    importScripts("${site}/frictionlab-lab.js");
+    createLab({ print: () => {}, locateFile: (name) => "${site}/" + name }).then((lab) => {
       lab.open_lab("/lab/scenes", "/lab/assets");
       const made = JSON.parse(lab.create_session(JSON.stringify({ scene: "paper-rig", set: ["world.duration=100s"] })));
       const id = made.body.id;
@@ -128,12 +144,11 @@ const speed = await page
     });`;
     const url = URL.createObjectURL(new Blob([source], { type: "text/javascript" }));
     const worker = new Worker(url);
-    // importScripts resolves against the blob's address: give the site's.
     return new Promise((done, fail) => {
       worker.onmessage = (event) => done(event.data);
       worker.onerror = (event) => fail(new Error(event.message));
     });
-  })
+  }, base)
   .catch((error) => `failed: ${error.message}`);
 console.log(
   typeof speed === "number"
@@ -141,4 +156,28 @@ console.log(
     : `the worker's speed: ${speed}`,
 );
 await browser.close();
+
+if (options.exe && options.web) {
+  const lab = spawn(
+    options.exe,
+    ["serve", "--port", "0", "--web", options.web, "--scenes", join(repository, "scenes")],
+    { stdio: ["ignore", "pipe", "ignore"] },
+  );
+  const served = await new Promise((done) => {
+    createInterface({ input: lab.stdout }).on("line", (line) => {
+      const found = /http:\/\/[\d.]+:\d+/.exec(line);
+      if (found) done(found[0]);
+    });
+  });
+  const other = await launch();
+  const page2 = await (
+    await other.newContext({ viewport: { width: 1366, height: 768 } })
+  ).newPage();
+  await page2.goto(`${served}/?scene=paper-rig`);
+  await page2.getByTestId("status").filter({ hasText: "playing" }).waitFor({ timeout: 60000 });
+  const rate = await frameRateOf(page2);
+  console.log(`the same page with the physics on frictionlab serve: ${rate.toFixed(1)}/s playing`);
+  await other.close();
+  lab.kill();
+}
 server.kill();

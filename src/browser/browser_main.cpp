@@ -11,6 +11,9 @@
 
 #include "browser/browser_lab.hpp"
 #include "serve/api_json.hpp"
+#include "serve/measurement_upload.hpp"
+#include "tracking/given_video.hpp"
+#include "tracking/track_video.hpp"
 
 namespace fl::browser {
 namespace {
@@ -81,6 +84,38 @@ std::string rig_log() {
   return answered([](BrowserLab& lab) { return lab.rig_log(); });
 }
 
+// A video the page decoded (web/src/video_decoding.ts), given frame by frame before the lab reads
+// the file: video_begin (with `failure`, why the page could not decode it: then no frames),
+// video_frame for each frame, video_end under the file's name as the page sends it.
+GivenVideo g_video;
+
+void video_begin(const std::string& container, const std::string& codec, int width, int height,
+                 double fps, double scale, const std::string& failure) {
+  g_video = GivenVideo{container, codec, width, height, fps, scale, failure, {}};
+}
+// `levels`: the frame's grey levels, a Uint8Array of width x height.
+void video_frame(double t_s, int width, int height, const std::string& levels) {
+  g_video.frames.push_back(GrayFrame{width, height, t_s, {levels.begin(), levels.end()}});
+}
+std::string video_end(const std::string& name) {
+  return answered([&](BrowserLab&) {
+    try {
+      give_video(serve::upload_name(name), std::move(g_video));
+    } catch (const std::invalid_argument& e) {
+      return Answer{400, serve::error_json(std::string("the page's frames: ") + e.what())};
+    }
+    return Answer{200, nlohmann::json::object()};
+  });
+}
+void forget_videos() {
+  forget_given_videos();
+  g_video = GivenVideo{};
+}
+// The width the lab's tracker reads a video's frames at [pixels].
+int tracked_width() {
+  return kTrackedWidth;
+}
+
 }  // namespace
 }  // namespace fl::browser
 
@@ -99,4 +134,9 @@ EMSCRIPTEN_BINDINGS(frictionlab) {
   emscripten::function("rig_bytes", &rig_bytes);
   emscripten::function("rig_close", &rig_close);
   emscripten::function("rig_log", &rig_log);
+  emscripten::function("video_begin", &video_begin);
+  emscripten::function("video_frame", &video_frame);
+  emscripten::function("video_end", &video_end);
+  emscripten::function("forget_videos", &forget_videos);
+  emscripten::function("tracked_width", &tracked_width);
 }

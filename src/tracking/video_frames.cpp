@@ -10,6 +10,7 @@
 #include <string>
 
 #include "io/input_error.hpp"
+#include "tracking/given_video.hpp"
 #include "tracking/video_decoder_module.hpp"
 
 namespace fl {
@@ -23,17 +24,9 @@ constexpr bool kDecoderBuilt = true;
 constexpr bool kDecoderBuilt = false;
 #endif
 
-#ifdef __EMSCRIPTEN__
-// The browser's build (tools/site) has no libav.
-constexpr const char* kWithoutLibav =
-    "the lab in this browser reads no video: give it to frictionlab estimate on a computer (it "
-    "follows the plate in the video), or follow the plate with Tracker and choose Tracker's data "
-    "file here";
-#else
 constexpr const char* kWithoutLibav =
     "this build of frictionlab reads no video (it was built without libav: apt-get install "
     "libavcodec-dev libavformat-dev libswscale-dev and build again)";
-#endif
 
 // $FRICTIONLAB_DECODER_MODULE, else the module beside the running executable.
 fs::path module_path() {
@@ -55,6 +48,11 @@ struct Opened {
 
 Opened open_module() {
   Opened out;
+#ifdef __EMSCRIPTEN__
+  // The browser's build: the page decodes, with the browser's own decoder.
+  out.module = given_video_decoder();
+  return out;
+#endif
   if (!kDecoderBuilt) {
     out.error = kWithoutLibav;
     return out;

@@ -4,6 +4,8 @@
 // it sends {id, op, ...} and gets {id, answer: {status, body}}; a session's stream comes as
 // {stream: ID, events: [{event, data}, ...]} about 30 times a second while the page listens.
 
+import { decodeVideo, videoContainer, VideoNotDecoded } from "./video_decoding";
+
 /** The module's calls (src/browser/browser_main.cpp): each answers JSON {status, body}. */
 interface LabModule {
   open_lab(scenesDir: string, assetDir: string): void;
@@ -26,6 +28,19 @@ interface LabModule {
   rig_bytes(bytes: Uint8Array, ended: boolean): string;
   rig_close(): string;
   rig_log(): string;
+  video_begin(
+    container: string,
+    codec: string,
+    width: number,
+    height: number,
+    fps: number,
+    scale: number,
+    failure: string,
+  ): void;
+  video_frame(tS: number, width: number, height: number, levels: Uint8Array): void;
+  video_end(name: string): string;
+  forget_videos(): void;
+  tracked_width(): number;
 }
 
 /** What the page asks. */
@@ -100,6 +115,37 @@ function stop(session: string): void {
   streams.delete(session);
 }
 
+/** The video's frames, decoded with the browser's own decoder, given to the lab under the file's
+ * name; or why it could not be decoded, which the lab then says in its answer. */
+async function giveVideo(lab: LabModule, name: string, bytes: ArrayBuffer): Promise<WorkerAnswer> {
+  try {
+    const video = await decodeVideo(bytes, lab.tracked_width());
+    lab.video_begin(
+      video.container,
+      video.codec,
+      video.width,
+      video.height,
+      video.fps,
+      video.scale,
+      "",
+    );
+    for (const frame of video.frames)
+      lab.video_frame(frame.tS, frame.width, frame.height, frame.levels);
+  } catch (error) {
+    const why = error instanceof Error ? error.message : String(error);
+    lab.video_begin(
+      "",
+      "",
+      0,
+      0,
+      0,
+      1,
+      error instanceof VideoNotDecoded ? why : `the browser's decoder failed: ${why}`,
+    );
+  }
+  return answered(lab.video_end(name));
+}
+
 async function handle(request: WorkerRequest): Promise<WorkerAnswer> {
   let lab: LabModule;
   try {
@@ -123,9 +169,18 @@ async function handle(request: WorkerRequest): Promise<WorkerAnswer> {
     case "estimate": {
       const spacing = request.spacing === null ? "" : String(request.spacing);
       const bytes = new Uint8Array(request.bytes);
-      return answered(
-        lab.estimate(request.name, bytes, spacing, request.spacing !== null, "", false),
-      );
+      // A video is decoded here first: the lab's tracker reads the frames the browser decoded.
+      if (videoContainer(bytes) !== null) {
+        const given = await giveVideo(lab, request.name, request.bytes);
+        if (given.status !== 200) return given;
+      }
+      try {
+        return answered(
+          lab.estimate(request.name, bytes, spacing, request.spacing !== null, "", false),
+        );
+      } finally {
+        lab.forget_videos();
+      }
     }
     case "stream":
       listen(lab, request.session);

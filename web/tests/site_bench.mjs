@@ -7,6 +7,8 @@
 //  - the physics' speed in the page's worker: the paper's rig stepped to its end (the session's
 //    events and JSON included), as simulated seconds per wall second;
 //  - the page's frame rate over 5 s with the lab playing the paper's rig, and over 5 s paused;
+//  - a phone's video (assets/examples/instruments/phone-video.mp4, 12 s at 480x270) chosen in
+//    "Your measurement": decoded by the browser, its plate followed by the lab, until T shows;
 //    with --exe and --web, the same page's frame rate with the physics on `frictionlab serve`
 //    on this machine instead (the page's own drawing, not the physics, sets its pace).
 //
@@ -121,6 +123,21 @@ await page.getByRole("button", { name: "Pause" }).click();
 await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
 const paused = await frameRate();
 console.log(`the page's frames: ${playing.toFixed(1)}/s playing, ${paused.toFixed(1)}/s paused`);
+
+// A phone's video read in the page: from choosing the file to its T on screen.
+{
+  const started = Date.now();
+  await page
+    .getByTestId("measurement-file")
+    .setInputFiles(join(repository, "assets/examples/instruments/phone-video.mp4"));
+  await page
+    .getByTestId("measured-detail")
+    .filter({ hasText: "N = " })
+    .waitFor({ timeout: 120000 });
+  console.log(
+    `a phone's 12 s video read in the page: ${((Date.now() - started) / 1000).toFixed(1)} s`,
+  );
+}
 
 // The worker's physics: a worker of the site's own, the paper's rig (100 s) stepped to its end.
 const speed = await page

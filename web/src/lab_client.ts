@@ -26,15 +26,8 @@ import type {
   Summary,
 } from "./lab_types";
 
-export {
-  LabError,
-  LabFullError,
-  RateLimitedError,
-  SetupError,
-  type SessionHandle,
-  type StreamHandle,
-  type StreamHandlers,
-};
+// The errors and stream types both clients share, offered from here as the page imports them.
+export * from "./lab_errors";
 
 /** Which lab this page talks to: a frictionlab server. */
 export const LAB_PLACE: "server" | "browser" = "server";

@@ -28,15 +28,8 @@ import type {
 } from "./lab_types";
 import type { WorkerAnswer, WorkerMessage, WorkerRequest } from "./lab_worker";
 
-export {
-  LabError,
-  LabFullError,
-  RateLimitedError,
-  SetupError,
-  type SessionHandle,
-  type StreamHandle,
-  type StreamHandlers,
-};
+// The errors and stream types both clients share, offered from here as the page imports them.
+export * from "./lab_errors";
 
 /** Which lab this page talks to: its own, in this browser. */
 export const LAB_PLACE: "server" | "browser" = "browser";

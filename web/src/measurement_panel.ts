@@ -10,6 +10,7 @@ const BUSY_TRIES = 10;
 const BUSY_WAIT_MS = 2000;
 
 export class MeasurementPanel {
+  private readonly panel = byTestId("measurement-panel");
   private readonly input = byTestId<HTMLInputElement>("measurement-file");
   private readonly period = byTestId("measured-period");
   private readonly detail = byTestId("measured-detail");
@@ -21,6 +22,22 @@ export class MeasurementPanel {
   constructor() {
     this.input.addEventListener("change", () => {
       this.file = this.input.files?.[0] ?? null;
+      void this.estimate();
+    });
+    // A file dropped on the panel is read as a file chosen.
+    this.panel.addEventListener("dragover", (event) => {
+      if (!event.dataTransfer?.types.includes("Files")) return;
+      event.preventDefault();
+      event.dataTransfer.dropEffect = "copy";
+      this.panel.classList.add("dropping");
+    });
+    this.panel.addEventListener("dragleave", () => this.panel.classList.remove("dropping"));
+    this.panel.addEventListener("drop", (event) => {
+      this.panel.classList.remove("dropping");
+      const file = event.dataTransfer?.files[0];
+      if (!file) return;
+      event.preventDefault();
+      this.file = file;
       void this.estimate();
     });
   }

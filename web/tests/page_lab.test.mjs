@@ -16,7 +16,7 @@ import { dirname, join, resolve } from "node:path";
 import { createInterface } from "node:readline";
 import { fileURLToPath } from "node:url";
 import { parseArgs } from "node:util";
-import { chromium } from "playwright-core";
+import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
 
 const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const { values: options } = parseArgs({
@@ -30,11 +30,7 @@ if (!options.exe || !options.web) {
   console.error("usage: node tests/page_lab.test.mjs --exe FRICTIONLAB --web DIR [--shot FILE]");
   process.exit(2);
 }
-const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
-if (!existsSync(executablePath)) {
-  console.error(`skipped: no chromium at ${executablePath} (apt-get install chromium)`);
-  process.exit(77);
-}
+skipWithoutChromium();
 
 /** A server on any free port, with `more` options; its first line names the address. */
 async function startServer(more = []) {
@@ -54,25 +50,7 @@ async function startServer(more = []) {
   return { child, address };
 }
 const { child: server, address: base } = await startServer();
-const browser = await chromium.launch({
-  executablePath,
-  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
-});
-
-let failed = 0;
-async function check(name, body) {
-  const started = Date.now();
-  try {
-    await body();
-    console.log(`ok   ${name} (${Date.now() - started} ms)`);
-  } catch (error) {
-    failed += 1;
-    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
-  }
-}
-function expect(condition, message) {
-  if (!condition) throw new Error(message);
-}
+const browser = await launchChromium();
 
 /** A page at `path` that records console errors and warnings. */
 async function openPage(path, at = base) {
@@ -304,5 +282,4 @@ await check("the live rig: the page's periods are estimate's on the log it downl
 
 await browser.close();
 server.kill("SIGTERM");
-console.log(failed === 0 ? "all passed" : `${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

@@ -12,48 +12,22 @@
 //
 //   node tests/page_mock.test.mjs        (builds the page into a temporary folder first)
 import { execFileSync } from "node:child_process";
-import { existsSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { chromium } from "playwright-core";
 import { FAKE_RIG_PORT, startMockServer } from "./mock_server.mjs";
+import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const shot = process.env.SHOT ?? "/tmp/web-shot.png";
-const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
-if (!existsSync(executablePath)) {
-  console.error(
-    `skipped: no chromium at ${executablePath} (apt-get install chromium, or set CHROMIUM)`,
-  );
-  process.exit(77);
-}
+skipWithoutChromium();
 
 const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
 execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
 const server = await startMockServer({ dist });
 const base = `http://127.0.0.1:${server.port}`;
-const browser = await chromium.launch({
-  executablePath,
-  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
-});
-
-let passed = 0;
-let failed = 0;
-async function check(name, body) {
-  const started = Date.now();
-  try {
-    await body();
-    passed += 1;
-    console.log(`ok   ${name} (${Date.now() - started} ms)`);
-  } catch (error) {
-    failed += 1;
-    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
-  }
-}
-function expect(condition, message) {
-  if (!condition) throw new Error(message);
-}
+const browser = await launchChromium();
 
 /** A deadline for a wait that fails only when something is wrong, not when the machine is busy
  * (two cores shared with a build, a CPU hog beside the test). */
@@ -605,5 +579,4 @@ await check("the server's `closed` is shown and the page stops streaming", async
 await browser.close();
 await server.close();
 rmSync(dist, { recursive: true, force: true });
-console.log(`${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

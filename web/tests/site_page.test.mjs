@@ -15,7 +15,7 @@ import { dirname, join, resolve } from "node:path";
 import { createInterface } from "node:readline";
 import { fileURLToPath } from "node:url";
 import { parseArgs } from "node:util";
-import { chromium } from "playwright-core";
+import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
 
 const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const { values: options } = parseArgs({
@@ -29,11 +29,7 @@ if (!options.site || !options.exe) {
   console.error("usage: node tests/site_page.test.mjs --site DIR --exe FRICTIONLAB [--shot FILE]");
   process.exit(2);
 }
-const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
-if (!existsSync(executablePath)) {
-  console.error(`skipped: no chromium at ${executablePath} (apt-get install chromium)`);
-  process.exit(77);
-}
+skipWithoutChromium();
 if (!existsSync(join(options.site, "frictionlab-lab.wasm"))) {
   console.error(`skipped: no site in ${options.site} (tools/site ${options.site} builds it)`);
   process.exit(77);
@@ -52,25 +48,7 @@ const base = await new Promise((done, fail) => {
   });
   server.on("exit", (code) => fail(new Error(`python3 -m http.server exited with ${code}`)));
 });
-const browser = await chromium.launch({
-  executablePath,
-  args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
-});
-
-let failed = 0;
-async function check(name, body) {
-  const started = Date.now();
-  try {
-    await body();
-    console.log(`ok   ${name} (${Date.now() - started} ms)`);
-  } catch (error) {
-    failed += 1;
-    console.log(`FAIL ${name}: ${error instanceof Error ? error.stack : error}`);
-  }
-}
-function expect(condition, message) {
-  if (!condition) throw new Error(message);
-}
+const browser = await launchChromium();
 
 /** A page at `path`: the console's errors and warnings, and every address it asked for. */
 async function openPage(path, context = null) {
@@ -149,6 +127,23 @@ await check("a rig log and a phone's file chosen on the page give estimate's per
     const expected = runJson(["estimate", file, "--json"]).period_s;
     expect(value === expected, `${name}: page ${value} s, estimate ${expected} s`);
   }
+  // A file dropped on the panel is read as one chosen.
+  const dropped = `${instruments}/tracker-plate.txt`;
+  await page.getByTestId("measurement-file").setInputFiles([]);
+  const transfer = await page.evaluateHandle(
+    ({ text }) => {
+      const files = new DataTransfer();
+      files.items.add(new File([text], "dropped-tracker.txt"));
+      return files;
+    },
+    { text: readFileSync(dropped, "utf8") },
+  );
+  await page.getByTestId("measurement-panel").dispatchEvent("drop", { dataTransfer: transfer });
+  await detail.filter({ hasText: "dropped-tracker.txt" }).filter({ hasText: "N = " }).waitFor();
+  const fromDrop = Number(await shown.getAttribute("data-value"));
+  const expectedDrop = runJson(["estimate", dropped, "--json"]).period_s;
+  expect(fromDrop === expectedDrop, `dropped: page ${fromDrop} s, estimate ${expectedDrop} s`);
+
   // A phone's video: decoded by the browser's own decoder (not libav), its plate followed by the
   // lab's tracker. The decoders' pictures differ in their grey levels, so the period is held to
   // the native estimate's within its standard error.
@@ -300,4 +295,4 @@ await check("a browser without Web Serial says so and offers the file", async ()
 
 await browser.close();
 server.kill();
-process.exit(failed === 0 ? 0 : 1);
+finish();

@@ -32,6 +32,9 @@ export * from "./lab_errors";
 /** Which lab this page talks to: a frictionlab server. */
 export const LAB_PLACE: "server" | "browser" = "server";
 
+/** Whether GET /api/rig lists the machine's serial ports: the server's, by name. */
+export const RIG_PORTS_LISTED: boolean = true;
+
 /** A shared server's token, from the page's own address (`?token=...`), sent with every call. */
 const token = new URLSearchParams(location.search).get("token");
 

@@ -34,6 +34,9 @@ export * from "./lab_errors";
 /** Which lab this page talks to: its own, in this browser. */
 export const LAB_PLACE: "server" | "browser" = "browser";
 
+/** Whether GET /api/rig lists the machine's serial ports: here the browser asks when connecting. */
+export const RIG_PORTS_LISTED: boolean = false;
+
 type Ask = WorkerRequest extends infer R
   ? R extends { id: number }
     ? Omit<R, "id">
@@ -180,7 +183,7 @@ export function partUrl(name: string): string {
 // the rig's estimator for each session's stream, as the server does with a port of its own.
 
 /** What the port list shows: the browser asks which port when Connect is pressed. */
-const CHOOSE_PORT = "the port you choose (the browser asks)";
+const CHOOSE_PORT = "the browser asks which";
 const NO_WEB_SERIAL =
   "This browser cannot open the rig's serial port (Web Serial is in Chrome, Edge and Opera on a " +
   "computer): save the rig's log (the Arduino's serial monitor, or frictionlab log) and choose " +

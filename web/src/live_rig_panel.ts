@@ -6,7 +6,7 @@
 // (404) hides the panel.
 import { byId, byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
-import { closeRig, getRig, LabError, openRig, rigLogHref } from "./lab_client";
+import { closeRig, getRig, LabError, openRig, RIG_PORTS_LISTED, rigLogHref } from "./lab_client";
 import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { RigPlot } from "./live_rig_plot";
@@ -256,9 +256,13 @@ export class RigPanel {
       this.summary,
       rigShown
         ? `${status.state}${status.lines > 0 ? `, ${linesOf(status.lines)}` : ""}`
-        : ports > 0
-          ? `${ports} serial port${ports === 1 ? "" : "s"} found`
-          : "no serial port found",
+        : !RIG_PORTS_LISTED
+          ? ports > 0
+            ? "connect the rig's Arduino"
+            : "Web Serial missing: choose its log file"
+          : ports > 0
+            ? `${ports} serial port${ports === 1 ? "" : "s"} found`
+            : "no serial port found",
     );
     this.section.classList.toggle("quiet", !rigShown && ports === 0);
     if (!this.openedItself && (rigShown || ports > 0)) {

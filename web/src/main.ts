@@ -62,8 +62,8 @@ setText(
     ? "The lab runs in this browser: nothing is sent anywhere."
     : `The lab runs on the server at ${location.host}.`,
 );
-// The class's table is a classroom server's.
-byId("class-link").hidden = LAB_PLACE === "browser";
+// The class (a student's name, the class's table) is a classroom server's.
+byId("class-section").hidden = LAB_PLACE === "browser";
 // The static site opens offline once opened (tools/site writes sw.js beside the page).
 if (LAB_PLACE === "browser" && "serviceWorker" in navigator) {
   navigator.serviceWorker.register("sw.js").catch(() => {

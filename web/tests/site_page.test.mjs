@@ -74,6 +74,8 @@ await check("a link's set-up runs in the page and its period is run's", async ()
   const query = ["scene=minimal", ...set.map((s) => `set=${encodeURIComponent(s)}`)].join("&");
   const { page, context, complaints, asked } = await openPage(`/?${query}`);
   await page.getByTestId("lab-place").filter({ hasText: "in this browser" }).waitFor();
+  // The class (a student's name, the class's table) is a classroom server's.
+  expect(await page.locator("#class-section").isHidden(), "the class's section is shown");
   await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
   const shown = Number(await page.getByTestId("period").getAttribute("data-value"));
   const args = ["run", `${repository}/scenes/minimal.yaml`, "--json"];

@@ -37,7 +37,9 @@ bool is_student_name(const std::string& name) {
     const bool letter_or_digit =
         (c >= 0xC3 && c <= 0xED && c != 0xE2) || (c < 0x80 && std::isalnum(c) != 0);
     if (characters == 1 && !letter_or_digit) return false;
-    if (!letter_or_digit && c != ' ' && c != '.' && c != '-' && c != '_' && c != '\'') return false;
+    if (!letter_or_digit &&
+        std::string_view(" .-_',()").find(static_cast<char>(c)) == std::string_view::npos)
+      return false;
   }
   return characters >= 1 && characters <= kMostNameCharacters;
 }
@@ -65,11 +67,12 @@ std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) 
   }
   if (const auto name = body.find("name"); name != body.end() && !name->is_null()) {
     if (!name->is_string() || !is_student_name(name->get<std::string>()))
-      return BodyRefusal{"expected a name of up to " + std::to_string(kMostNameCharacters) +
-                             " letters, digits, spaces and . - _ ', beginning with a letter or "
-                             "digit, found " +
-                             quoted(*name),
-                         "name"};
+      return BodyRefusal{
+          "expected a name of up to " + std::to_string(kMostNameCharacters) +
+              " letters, digits, spaces and . - _ ' , ( ), beginning with a letter or "
+              "digit, found " +
+              quoted(*name),
+          "name"};
     out.name = name->get<std::string>();
   }
   return out;

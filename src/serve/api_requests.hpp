@@ -29,13 +29,14 @@ struct SessionBody {
   SessionRequest request;
   std::string name;
 };
-// The most characters of a name; letters (any script), digits, spaces and . - _ '.
+// The most characters of a name; letters (any script), digits, spaces and . - _ ' , ( ).
 inline constexpr std::size_t kMostNameCharacters = 40;
 // A student's name for the class's table, by the one rule the page keeps too (web/src/
 // student_name.ts; both held to tests/data/student_names.json): 1 to 40 characters, each an ASCII
 // letter or digit, a character from U+00C0 to U+DFFF but U+2000 to U+2FFF (the letters of Latin,
 // Greek, Cyrillic, Arabic, Indic and CJK scripts; no general punctuation, symbols, direction marks
-// or emoji), a space, or . - _ ', the first a letter or digit (so that no spreadsheet reads the
+// or emoji), a space, or . - _ ' , ( ) ("Smith, J.", "Anne-Marie (2B)"; the CSV quotes a comma),
+// the first a letter or digit (so that no spreadsheet reads the
 // class's CSV cell as a formula). `name` is valid UTF-8 (the JSON reader has checked it).
 bool is_student_name(const std::string& name);
 std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view body);

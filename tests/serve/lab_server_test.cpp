@@ -289,10 +289,10 @@ TEST_F(SharedServerTest, APageBeyondTheLimitIsToldTheLabIsFull) {
 TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
   const std::string ada = start({{"scene", "minimal"},
                                  {"set", {"plate.material=iron", "world.duration=3s"}},
-                                 {"name", "Ada Lovelace"}});
+                                 {"name", "Lovelace, Ada (2B)"}});
   const std::string bob = start({{"scene", "minimal"}, {"set", {"rollers.spacing=70mm"}}});
   // Names that are not names are refused, saying what a name is.
-  for (const json& name : {json("=1+1"), json("a,b"), json(std::string(41, 'a')), json(3)}) {
+  for (const json& name : {json("=1+1"), json("a;b"), json(std::string(41, 'a')), json(3)}) {
     const auto res = post("/api/sessions", {{"scene", "minimal"}, {"name", name}});
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 400) << name;
@@ -308,7 +308,7 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
   ASSERT_EQ(table["sessions"].size(), 2u);
   const json& first = table["sessions"][0];
   EXPECT_EQ(first["session"], ada);
-  EXPECT_EQ(first["name"], "Ada Lovelace");
+  EXPECT_EQ(first["name"], "Lovelace, Ada (2B)");
   EXPECT_EQ(first["material"], "Iron");
   EXPECT_EQ(first["state"], "done");
   EXPECT_EQ(first["spacing"], 0.089);
@@ -347,7 +347,9 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
                                               "t_s", "period_s", "period_err_s", "period_from",
                                               "mu_k", "mu_k_err", "paper_period_s", "paper_mu_k"}));
   ASSERT_EQ(rows.rows.size(), 2u);
-  EXPECT_EQ(rows.rows[0][1].text, "Ada Lovelace");
+  // A name with a comma is one quoted cell.
+  EXPECT_NE(csv->body.find("\"Lovelace, Ada (2B)\""), std::string::npos);
+  EXPECT_EQ(rows.rows[0][1].text, "Lovelace, Ada (2B)");
   EXPECT_EQ(std::stod(rows.rows[0][5].text), 89.0);
   EXPECT_NEAR(std::stod(rows.rows[0][9].text), headline("period_trajectory_s").get<double>(), 1e-9);
   EXPECT_EQ(rows.rows[0][11].text, "trajectory");

@@ -1,17 +1,28 @@
 // The student's stopwatch: started and stopped by hand (the button, or Space when the focus is
-// not in a control) to time ten periods. It shows the wall time and the simulated time between
-// the presses, so it measures the plate's period in slow motion too.
+// not in a control that Space types into or presses, the run's own buttons excepted: Space is the
+// stopwatch's key and never pauses the run) to time ten periods. It shows the wall time and the
+// simulated time between the presses, so it measures the plate's period in slow motion too, and
+// it stops when the run ends.
 import { byId, setText } from "./dom";
 import { fixed } from "./format";
 import type { LabModel } from "./lab_model";
 
 const PERIODS_TIMED = 10;
 
+/** The run's buttons (Play or Pause, Step, Reset): Space there is the stopwatch's, so that a
+ * student who has just pressed Play times the run without pausing it (Enter presses them). */
+const RUN_BUTTONS = "#play, #step, #reset";
+
 /** Space toggles the stopwatch unless it would also type, pick or press something. */
 function spaceIsFree(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return true;
   if (target.isContentEditable) return false;
+  if (target.closest(RUN_BUTTONS)) return true;
   return !target.closest("input, select, textarea, button, a[href], summary, [role='button']");
+}
+
+function isSpace(event: KeyboardEvent): boolean {
+  return event.code === "Space" || event.key === " ";
 }
 
 export class Stopwatch {
@@ -33,11 +44,24 @@ export class Stopwatch {
     this.toggleButton.addEventListener("click", () => this.toggle());
     this.clearButton.addEventListener("click", () => this.clear());
     document.addEventListener("keydown", (event) => {
-      if (event.code !== "Space" && event.key !== " ") return;
-      if (event.repeat || event.ctrlKey || event.altKey || event.metaKey) return;
+      if (!isSpace(event)) return;
+      if (event.ctrlKey || event.altKey || event.metaKey) return;
       if (!spaceIsFree(event.target)) return;
       event.preventDefault();
-      this.toggle();
+      if (!event.repeat) this.toggle();
+    });
+    // A button takes Space on its release: there, the run's buttons are not pressed.
+    document.addEventListener("keyup", (event) => {
+      if (
+        isSpace(event) &&
+        event.target instanceof HTMLElement &&
+        event.target.closest(RUN_BUTTONS)
+      )
+        event.preventDefault();
+    });
+    // The run's end ends the timing: the wall clock would count on past the plate's last swing.
+    model.done.lazyLink((done) => {
+      if (done && this.running) this.stop();
     });
     this.clear();
   }

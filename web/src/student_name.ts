@@ -1,6 +1,6 @@
 // Who runs the page's sessions, for the class's table: a name kept in this browser
 // (localStorage) and sent with the next session the page starts (docs/web-api.md: up to 40
-// letters, digits, spaces and . - _ ', by the server's rule). A name the page or the lab refuses
+// letters, digits, spaces and . - _ ' , ( ), by the server's rule). A name the page or the lab refuses
 // is shown beside the field and left out: the lab runs without it.
 import { byId, byTestId, setText } from "./dom";
 
@@ -34,7 +34,7 @@ function store(name: string): void {
 /**
  * Why the name cannot be sent, or null when it can (or is empty): the server's rule
  * (src/serve/api_requests.hpp, is_student_name), both held to tests/data/student_names.json.
- * Letters and digits, spaces and . - _ ', beginning with a letter or digit (so that no
+ * Letters and digits, spaces and . - _ ' , ( ), beginning with a letter or digit (so that no
  * spreadsheet reads the class's CSV cell as a formula).
  */
 export function problemOf(name: string): string | null {
@@ -43,11 +43,11 @@ export function problemOf(name: string): string | null {
   if (characters.length > MOST_CHARACTERS) return `at most ${MOST_CHARACTERS} characters`;
   const allowed = characters.every((character, i) => {
     const codePoint = character.codePointAt(0) ?? 0;
-    return letterOrDigit(codePoint) || (i > 0 && " .-_'".includes(character));
+    return letterOrDigit(codePoint) || (i > 0 && " .-_',()".includes(character));
   });
   return allowed
     ? null
-    : "only letters, digits, spaces and . - _ ', beginning with a letter or digit";
+    : "only letters, digits, spaces and . - _ ' , ( ), beginning with a letter or digit";
 }
 
 export class StudentName {

@@ -291,6 +291,48 @@ await check("slow motion, step, reset and the stopwatch with Space", async () =>
   await context.close();
 });
 
+await check("Space after clicking Play times the run and never pauses it", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal&set=world.duration%3D60s");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.getByTestId("play").click(); // pause
+  await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
+  await page.getByTestId("play").click(); // play: the button keeps the focus
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.keyboard.press("Space");
+  const toggle = page.locator("#stopwatch-toggle");
+  await toggle.filter({ hasText: "Stop" }).waitFor();
+  await page.waitForTimeout(500);
+  await page.keyboard.press("Space");
+  await toggle.filter({ hasText: "Start" }).waitFor();
+  expect(
+    (await page.getByTestId("status").textContent()) === "playing",
+    `the run was paused: ${await page.getByTestId("status").textContent()}`,
+  );
+  expect((await page.getByTestId("play").textContent()) === "Pause", "Play was pressed");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("the stopwatch stops when the run ends", async () => {
+  // A recorded 5 s run (tests/mock_recording.json).
+  const set = ["world.duration=5s", "plate.material=iron", "rollers.spacing=60mm"];
+  const { page, context, complaints } = await openPage(
+    `/?scene=minimal&${set.map((s) => `set=${encodeURIComponent(s)}`).join("&")}`,
+  );
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.locator("#stopwatch-toggle").click();
+  await page.getByTestId("status").filter({ hasText: "done" }).waitFor();
+  await page.locator("#stopwatch-toggle").filter({ hasText: "Start" }).waitFor();
+  const wall = await page.locator("#stopwatch-wall").textContent();
+  await page.waitForTimeout(300);
+  expect(
+    (await page.locator("#stopwatch-wall").textContent()) === wall,
+    "the stopwatch counted on after the run's end",
+  );
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
 await check("the layout fits 1920x1080 and every control has a label", async () => {
   const { page, context, complaints } = await openPage("/", { width: 1920, height: 1080 });
   await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();

@@ -65,7 +65,7 @@ Answer BrowserLab::control(const std::string& id, std::string_view body) {
   if (open == nullptr) return no_such_session();
   const auto read = serve::read_control_body(body);
   if (const auto* refusal = std::get_if<serve::BodyRefusal>(&read))
-    return {400, serve::error_json(refusal->message)};
+    return {400, serve::refusal_json(*refusal)};
   serve::LabSession& session = *open->session;
   const serve::ControlCommand& command = std::get<serve::ControlCommand>(read);
   switch (command.action) {
@@ -79,6 +79,8 @@ Answer BrowserLab::control(const std::string& id, std::string_view body) {
       return {200, session.reset()};
     case serve::ControlCommand::Action::kSpeed:
       return {200, session.set_speed(command.speed)};
+    case serve::ControlCommand::Action::kName:
+      return {200, session.set_name(command.name)};
   }
   throw std::logic_error("a control action without an answer");
 }

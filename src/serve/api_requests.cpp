@@ -25,7 +25,21 @@ std::variant<json, BodyRefusal> object_of(std::string_view body) {
   return parsed;
 }
 
+// What a student's name is, for a refusal.
+std::string name_expected() {
+  return "expected a name of up to " + std::to_string(kMostNameCharacters) +
+         " letters, digits, spaces and . - _ ' , ( ), beginning with a letter or digit";
+}
+
 }  // namespace
+
+json refusal_json(const BodyRefusal& refusal) {
+  json out{{"error", refusal.message}};
+  if (!refusal.field.empty())
+    out["problems"].push_back(
+        {{"field", refusal.field}, {"value", nullptr}, {"message", refusal.message}});
+  return out;
+}
 
 bool is_student_name(const std::string& name) {
   std::size_t characters = 0;
@@ -67,12 +81,7 @@ std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) 
   }
   if (const auto name = body.find("name"); name != body.end() && !name->is_null()) {
     if (!name->is_string() || !is_student_name(name->get<std::string>()))
-      return BodyRefusal{
-          "expected a name of up to " + std::to_string(kMostNameCharacters) +
-              " letters, digits, spaces and . - _ ' , ( ), beginning with a letter or "
-              "digit, found " +
-              quoted(*name),
-          "name"};
+      return BodyRefusal{name_expected() + ", found " + quoted(*name), "name"};
     out.name = name->get<std::string>();
   }
   return out;
@@ -83,6 +92,14 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
   if (auto* refusal = std::get_if<BodyRefusal>(&parsed)) return *refusal;
   const json& body = std::get<json>(parsed);
   ControlCommand command;
+  if (const auto name = body.find("name"); name != body.end()) {
+    const bool empty = name->is_string() && name->get<std::string>().empty();
+    if (!name->is_string() || (!empty && !is_student_name(name->get<std::string>())))
+      return BodyRefusal{name_expected() + ", or \"\" for none, found " + quoted(*name), "name"};
+    command.action = ControlCommand::Action::kName;
+    command.name = name->get<std::string>();
+    return command;
+  }
   if (const auto speed = body.find("speed"); speed != body.end()) {
     if (!speed->is_number() || !is_speed(speed->get<double>()))
       return BodyRefusal{"expected \"speed\" as 1, 0.25 or 0.0625, found " + quoted(*speed)};
@@ -103,8 +120,8 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
     command.action = ControlCommand::Action::kReset;
   else
     return BodyRefusal{
-        "expected {\"action\": \"play\", \"pause\", \"step\" or \"reset\"} or {\"speed\": 1, "
-        "0.25 or 0.0625}, found " +
+        "expected {\"action\": \"play\", \"pause\", \"step\" or \"reset\"}, {\"speed\": 1, "
+        "0.25 or 0.0625} or {\"name\": a student's name}, found " +
         quoted(body)};
   return command;
 }

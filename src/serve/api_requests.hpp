@@ -8,6 +8,8 @@
 #include <utility>
 #include <variant>
 
+#include <nlohmann/json.hpp>
+
 #include "lab/request/session_request.hpp"
 
 namespace fl::serve {
@@ -19,6 +21,10 @@ struct BodyRefusal {
   std::string message;
   std::string field;  // the one field at fault ("" : the body as a whole)
 };
+
+// A 400's body for a refusal: {"error": what}, and with a field at fault, the problem by that
+// field, shown beside its control.
+nlohmann::json refusal_json(const BodyRefusal& refusal);
 
 // The most `set` entries a session's body may carry.
 inline constexpr std::size_t kMostSetEntries = 64;
@@ -46,12 +52,14 @@ inline bool is_speed(double speed) {
   return speed == 1.0 || speed == 0.25 || speed == 0.0625;
 }
 
-// POST /api/sessions/ID/control: {"action": "play" | "pause" | "step" | "reset"} or
-// {"speed": 1 | 0.25 | 0.0625}.
+// POST /api/sessions/ID/control: {"action": "play" | "pause" | "step" | "reset"},
+// {"speed": 1 | 0.25 | 0.0625}, or {"name": WHO} (who runs it, for the class's table, as the
+// session's body gives it; "" takes it away).
 struct ControlCommand {
-  enum class Action { kPlay, kPause, kStep, kReset, kSpeed };
+  enum class Action { kPlay, kPause, kStep, kReset, kSpeed, kName };
   Action action = Action::kPause;
   double speed = 1.0;  // with kSpeed
+  std::string name;    // with kName
 };
 std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view body);
 

@@ -504,7 +504,7 @@ void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
                               httplib::Response& res) {
   const auto read = read_control_body(req.body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read))
-    return send_json(res, 400, error_json(refusal->message));
+    return send_json(res, 400, refusal_json(*refusal));
   const ControlCommand& command = std::get<ControlCommand>(read);
   switch (command.action) {
     case ControlCommand::Action::kPlay:
@@ -517,6 +517,8 @@ void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
       return send_json(res, 200, session.reset());
     case ControlCommand::Action::kSpeed:
       return send_json(res, 200, session.set_speed(command.speed));
+    case ControlCommand::Action::kName:
+      return send_json(res, 200, session.set_name(command.name));
   }
 }
 

@@ -97,6 +97,17 @@ nlohmann::json LabSession::set_speed(double speed) {
   return controls_json();
 }
 
+nlohmann::json LabSession::set_name(std::string name) {
+  const std::lock_guard lock(mutex_);
+  name_ = std::move(name);
+  return controls_json();
+}
+
+std::string LabSession::name() const {
+  const std::lock_guard lock(mutex_);
+  return name_;
+}
+
 std::optional<std::string> LabSession::file(const std::string& name) {
   const std::lock_guard lock(mutex_);
   if (!run_->ended()) return std::nullopt;

@@ -46,13 +46,15 @@ class LabSession {
   nlohmann::json step();
   nlohmann::json reset();
   nlohmann::json set_speed(double speed);
+  // Who runs it, for the class's table ("" : not given), as the page's student types it.
+  nlohmann::json set_name(std::string name);
 
   // The run's file by name once it has ended; nullopt before or for a file it does not keep.
   std::optional<std::string> file(const std::string& name);
   const CompiledRig& rig() const { return *prepared_.rig; }
   const std::shared_ptr<const CompiledRig>& rig_shared() const { return prepared_.rig; }
   const std::string& scene() const { return scene_; }
-  const std::string& name() const { return name_; }
+  std::string name() const;
   // Where its run stands, for the class's table.
   SessionStanding standing() const;
   Clock::time_point last_seen() const;
@@ -63,7 +65,7 @@ class LabSession {
 
   const std::string scene_;
   const PreparedSession prepared_;
-  const std::string name_;
+  std::string name_;  // under the mutex: the page may name its student later
   const Clock::time_point created_ = Clock::now();
   mutable std::mutex mutex_;
   std::unique_ptr<LiveRun> run_;

@@ -10,19 +10,6 @@
 
 namespace fl::serve {
 
-namespace {
-
-nlohmann::json refusal_json(const BodyRefusal& refusal) {
-  nlohmann::json out = error_json(refusal.message);
-  // A field at fault is a problem by field, shown beside its control.
-  if (!refusal.field.empty())
-    out["problems"].push_back(
-        {{"field", refusal.field}, {"value", nullptr}, {"message", refusal.message}});
-  return out;
-}
-
-}  // namespace
-
 std::optional<nlohmann::json> session_body_refusal(std::string_view body) {
   const auto read = read_session_body(body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read)) return refusal_json(*refusal);

@@ -356,6 +356,30 @@ TEST_F(LabServerTest, TheClassTableListsEachSessionsSetUpAndResultInOrder) {
   EXPECT_EQ(rows.rows[1][9].text, "");
 }
 
+TEST_F(LabServerTest, AStudentNamedAfterTheSessionBeganReachesTheClassTable) {
+  const std::string id = start({{"scene", "minimal"}});
+  const auto row_name = [&] {
+    const json table = json::parse(client_->Get("/api/class")->body);
+    return table["sessions"][0]["name"];
+  };
+  EXPECT_EQ(row_name(), nullptr);
+  const auto named = command(id, {{"name", "Curie, M. (2B)"}});
+  ASSERT_TRUE(named);
+  EXPECT_EQ(named->status, 200) << named->body;
+  EXPECT_EQ(row_name(), "Curie, M. (2B)");
+  // A name that is not one is refused by field, and the row keeps the name it had.
+  const auto refused = command(id, {{"name", "=HYPERLINK(1)"}});
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->status, 400);
+  const json refusal = json::parse(refused->body);
+  ASSERT_EQ(refusal["problems"].size(), 1u) << refused->body;
+  EXPECT_EQ(refusal["problems"][0]["field"], "name");
+  EXPECT_EQ(row_name(), "Curie, M. (2B)");
+  // An empty name takes it away.
+  EXPECT_EQ(command(id, {{"name", ""}})->status, 200);
+  EXPECT_EQ(row_name(), nullptr);
+}
+
 TEST_F(LabServerTest, StreamsAreToldWhenTheServerStops) {
   const std::string id = start({{"scene", "minimal"}});
   std::vector<std::string> names;

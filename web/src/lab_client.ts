@@ -187,7 +187,7 @@ export function stream(session: SessionHandle, handlers: StreamHandlers): Stream
 
 export async function control(
   session: SessionHandle,
-  command: ControlAction | { speed: PlaybackSpeed },
+  command: ControlAction | { speed: PlaybackSpeed } | { name: string },
 ): Promise<ControlReply> {
   const body = typeof command === "string" ? { action: command } : command;
   const response = await fetch(api(`${sessionPath(session)}/control`), {

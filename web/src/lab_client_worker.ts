@@ -137,7 +137,7 @@ export function stream(session: SessionHandle, handlers: StreamHandlers): Stream
 
 export async function control(
   session: SessionHandle,
-  command: ControlAction | { speed: PlaybackSpeed },
+  command: ControlAction | { speed: PlaybackSpeed } | { name: string },
 ): Promise<ControlReply> {
   const body = typeof command === "string" ? { action: command } : command;
   return expectOk<ControlReply>(

@@ -6,6 +6,7 @@ import { ExportPanel } from "./export_panel";
 import {
   getLab,
   LAB_PLACE,
+  LabError,
   LabFullError,
   pageUrl,
   RateLimitedError,
@@ -53,7 +54,17 @@ const exportPanel = new ExportPanel(() => view.toPng());
 const pageProblem = byId("page-problem");
 const refused = byId("refused");
 const stopwatch = new Stopwatch(model);
-const studentName = new StudentName();
+const studentName = new StudentName((name) => void nameStudent(name));
+
+/** The class's table shows the name typed, on the session that runs now. */
+async function nameStudent(name: string): Promise<void> {
+  try {
+    await keeper.command({ name });
+  } catch (error) {
+    if (error instanceof LabError && error.status === 400) studentName.refuse(error.message);
+    else showPageProblem(error);
+  }
+}
 byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
 // Which lab the page talks to: its own in this browser (the static site), or a server's.
 setText(

@@ -47,8 +47,10 @@ export class SessionKeeper {
     return made;
   }
 
-  /** Plays, pauses, steps, resets or sets the slow motion. */
-  async command(command: ControlAction | { speed: PlaybackSpeed }): Promise<ControlReply | null> {
+  /** Plays, pauses, steps, resets, sets the slow motion or names the student. */
+  async command(
+    command: ControlAction | { speed: PlaybackSpeed } | { name: string },
+  ): Promise<ControlReply | null> {
     const session = this.session;
     if (!session) return null;
     return control(session, command);

@@ -6,6 +6,8 @@ import { byId, byTestId, setText } from "./dom";
 
 const STORED = "frictionlab.student-name";
 const MOST_CHARACTERS = 40;
+/** The pause in typing after which the name is sent [ms]. */
+const TYPING_PAUSE_MS = 600;
 
 /** A letter or digit by the server's rule: ASCII letters and digits, and U+00C0 to U+DFFF but
  * U+2000 to U+2FFF (the letters of Latin, Greek, Cyrillic, Arabic, Indic and CJK scripts). */
@@ -56,13 +58,22 @@ export class StudentName {
   /** The name the lab refused, left out until the field changes. */
   private refused: string | null = null;
 
-  constructor() {
+  private typing = 0;
+
+  /** `changed`: the name to show in the class's table now ("" for none), called once the
+   * student stops typing for a moment, so that a name typed while a run plays reaches the
+   * table without starting the run again. */
+  constructor(changed: (name: string) => void = () => {}) {
     this.input.maxLength = MOST_CHARACTERS;
     this.input.value = stored();
     this.input.addEventListener("input", () => {
       this.refused = null;
       store(this.value);
       this.check();
+      window.clearTimeout(this.typing);
+      this.typing = window.setTimeout(() => {
+        if (problemOf(this.value) === null) changed(this.value);
+      }, TYPING_PAUSE_MS);
     });
     this.check();
   }

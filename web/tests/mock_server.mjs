@@ -433,7 +433,7 @@ export async function startMockServer({
           problems.push({
             field: "name",
             value: String(name),
-            message: "expected up to 40 letters, digits, spaces and . - _ '",
+            message: "expected up to 40 letters, digits, spaces and . - _ ' , ( )",
           });
         }
         if (problems.length > 0) {
@@ -482,7 +482,15 @@ export async function startMockServer({
             run.reset();
             run.resets += 1;
           } else if ([1, 0.25, 0.0625].includes(body.speed)) run.speed = body.speed;
-          else return json(res, 400, errorBody("unknown control"));
+          else if ("name" in body) {
+            // A student named after the session began (the lab's rule; "" takes it away).
+            if (typeof body.name !== "string" || (body.name !== "" && nameProblem(body.name))) {
+              const message =
+                "expected a name of up to 40 letters, digits, spaces and . - _ ' , ( )";
+              return json(res, 400, errorBody(message, [{ field: "name", value: null, message }]));
+            }
+            run.name = body.name === "" ? null : body.name;
+          } else return json(res, 400, errorBody("unknown control"));
           return json(res, 200, { t: run.t, playing: run.playing, speed: run.speed });
         }
         if (rest === "/stream" && req.method === "GET") {

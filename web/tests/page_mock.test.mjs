@@ -468,6 +468,22 @@ await check("a shared lab's port is not the page's to choose", async () => {
   }
 });
 
+await check("a name typed before Play reaches the class's table at once", async () => {
+  const { page, context, complaints } = await openPage("/");
+  await page.getByTestId("status").filter({ hasText: "paused" }).waitFor();
+  await page.getByTestId("student-name").fill("Curie, M. (2B)");
+  const named = async () => {
+    const table = await (await fetch(`${base}/api/class`)).json();
+    return table.sessions.some((s) => s.name === "Curie, M. (2B)");
+  };
+  await waitUntil(named, "the name in the class's table");
+  // No new session: the run the student sees is the one named.
+  const created = (await mockLog()).filter((e) => e.create);
+  expect(!created.some((e) => e.create.name === "Curie, M. (2B)"), "a session was started");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
 await check("the student's name reaches the class's table, class.html and class.csv", async () => {
   const name = "Ada O'Neil-2";
   const { page, context, complaints } = await openPage("/?scene=minimal");

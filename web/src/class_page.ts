@@ -1,6 +1,7 @@
 // The teacher's page (class.html): every open session's set-up and result as the class's table
 // (GET /api/class, docs/web-api.md "The class's table"), the live rig's line, and the table as
-// class.csv; asked again every 2 s.
+// class.csv; asked again every 2 s. The teacher sorts the rows by a column's heading and hides
+// rows from this page (kept in this browser); the sessions themselves are the students'.
 import { byId, byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
 import { classCsvUrl, getClass, pageUrl, RateLimitedError } from "./lab_client";
@@ -8,6 +9,7 @@ import type { ClassRow, ClassTable } from "./lab_types";
 
 const REFRESH_MS = 2000;
 const NONE = "—";
+const HIDDEN = "frictionlab.class-hidden";
 
 const rows = byId<HTMLTableSectionElement>("class-rows");
 const count = byId("class-count");
@@ -39,8 +41,62 @@ function cellsOf(row: ClassRow): string[] {
   ];
 }
 
+/** What each column sorts by: a text or a number; null (none yet) sorts last either way. */
+const SORT_KEYS: Record<string, (row: ClassRow) => string | number | null> = {
+  name: (row) => row.name,
+  scene: (row) => row.scene,
+  material: (row) => row.material,
+  temperature: (row) => row.temperature_k,
+  spacing: (row) => row.spacing,
+  state: (row) => row.state,
+  t: (row) => row.t,
+  period: (row) => row.period,
+  mu_k: (row) => row.mu_k,
+  paper: (row) => row.paper_mu_k,
+};
+let sortBy: string | null = null;
+let ascending = true;
+
+function sorted(sessions: ClassRow[]): ClassRow[] {
+  const key = sortBy === null ? null : SORT_KEYS[sortBy];
+  if (!key) return sessions; // the order they began
+  const sign = ascending ? 1 : -1;
+  return [...sessions].sort((a, b) => {
+    const x = key(a);
+    const y = key(b);
+    if (x === null || y === null) return x === y ? 0 : x === null ? 1 : -1;
+    if (typeof x === "number" && typeof y === "number") return sign * (x - y);
+    return sign * String(x).localeCompare(String(y), undefined, { numeric: true });
+  });
+}
+
+function hiddenIds(): Set<string> {
+  try {
+    return new Set(JSON.parse(localStorage.getItem(HIDDEN) ?? "[]") as string[]);
+  } catch {
+    return new Set();
+  }
+}
+
+function keepHidden(ids: Set<string>): void {
+  try {
+    localStorage.setItem(HIDDEN, JSON.stringify([...ids]));
+  } catch {
+    // kept for this page only
+  }
+}
+
+let hidden = hiddenIds();
+let last: ClassTable | null = null;
+const showHidden = byTestId<HTMLButtonElement>("class-show-hidden");
+
 function showTable(table: ClassTable): void {
-  const made = table.sessions.map((session) => {
+  last = table;
+  // A hidden session that has ended is forgotten.
+  const open = new Set(table.sessions.map((s) => s.session));
+  hidden = new Set([...hidden].filter((id) => open.has(id)));
+  const shown = sorted(table.sessions.filter((s) => !hidden.has(s.session)));
+  const made = shown.map((session) => {
     const tr = document.createElement("tr");
     tr.dataset["session"] = session.session;
     for (const text of cellsOf(session)) {
@@ -48,20 +104,35 @@ function showTable(table: ClassTable): void {
       td.textContent = text;
       tr.append(td);
     }
+    const hide = document.createElement("button");
+    hide.type = "button";
+    hide.textContent = "Hide";
+    hide.setAttribute("aria-label", `Hide ${session.name ?? "the unnamed"} session's row`);
+    hide.addEventListener("click", () => {
+      hidden.add(session.session);
+      keepHidden(hidden);
+      if (last) showTable(last);
+    });
+    const td = document.createElement("td");
+    td.append(hide);
+    tr.append(td);
     return tr;
   });
   if (made.length === 0) {
     const tr = document.createElement("tr");
     const td = document.createElement("td");
-    td.colSpan = 10;
+    td.colSpan = 11;
     td.className = "empty";
-    td.textContent = "No session is open.";
+    td.textContent = table.sessions.length === 0 ? "No session is open." : "Every row is hidden.";
     tr.append(td);
     made.push(tr);
   }
   rows.replaceChildren(...made);
   const n = table.sessions.length;
-  setText(count, `${n} session${n === 1 ? "" : "s"}`);
+  const off = table.sessions.length - shown.length;
+  setText(count, `${n} session${n === 1 ? "" : "s"}${off > 0 ? `, ${off} hidden here` : ""}`);
+  showHidden.hidden = off === 0;
+  setText(showHidden, `Show the ${off} hidden row${off === 1 ? "" : "s"}`);
   const rig = table.rig;
   rigLine.hidden = rig === null;
   if (rig !== null) {
@@ -99,6 +170,22 @@ async function keepRefreshing(): Promise<void> {
   timer = window.setTimeout(() => {
     if (!document.hidden) void keepRefreshing();
   }, wait);
+}
+
+showHidden.addEventListener("click", () => {
+  hidden.clear();
+  keepHidden(hidden);
+  if (last) showTable(last);
+});
+for (const button of document.querySelectorAll<HTMLButtonElement>("th button[data-sort]")) {
+  button.addEventListener("click", () => {
+    const key = button.dataset["sort"] ?? null;
+    ascending = key === sortBy ? !ascending : true;
+    sortBy = key;
+    for (const th of document.querySelectorAll("th")) th.removeAttribute("aria-sort");
+    button.closest("th")?.setAttribute("aria-sort", ascending ? "ascending" : "descending");
+    if (last) showTable(last);
+  });
 }
 
 // A hidden tab asks nothing; shown again, it asks at once.

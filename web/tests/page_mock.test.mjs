@@ -542,8 +542,9 @@ await check("the student's name reaches the class's table, class.html and class.
     name,
   );
   const cells = await mine.first().locator("td").allTextContents();
-  expect(cells.length === 10, `${cells.length} cells`);
-  const [, scene, material, kelvin, spacing, , , period, muK, paperMuK] = cells;
+  expect(cells.length === 11, `${cells.length} cells`);
+  const [, scene, material, kelvin, spacing, , , period, muK, paperMuK, hide] = cells;
+  expect(hide === "Hide", `the last cell: ${hide}`);
   expect(scene === "minimal" && material === "LEGO blocks" && kelvin === "300", cells.join("|"));
   expect(spacing === "89" && paperMuK === "0.29", cells.join("|"));
   expect(/^\d\.\d+ ± \d\.\d+$/.test(period) && / ± /.test(muK), cells.join("|"));
@@ -556,6 +557,46 @@ await check("the student's name reaches the class's table, class.html and class.
     (await page.getByTestId("class-link").getAttribute("href")) === "/class.html",
     "no link to the class's table",
   );
+  // Sorted by a column's heading, both ways; a row hidden stays hidden on a reload, and comes back.
+  const names = () =>
+    teacher.evaluate(() =>
+      Array.from(document.querySelectorAll('[data-testid="class-table"] tbody tr')).map(
+        (tr) => tr.cells[0].textContent,
+      ),
+    );
+  const byName = (list) =>
+    [...list].sort((a, b) => a.localeCompare(b, undefined, { numeric: true }));
+  // A second student, in a browser of their own.
+  const second = await openPage("/");
+  await second.page.getByTestId("student-name").fill("Bea (2B)");
+  await teacher
+    .getByTestId("class-table")
+    .locator("tbody tr", { hasText: "Bea (2B)" })
+    .first()
+    .waitFor();
+  await teacher.locator(`th button[data-sort="name"]`).click();
+  const up = await names();
+  expect(up.length >= 2 && JSON.stringify(up) === JSON.stringify(byName(up)), up.join("|"));
+  await teacher.locator(`th button[data-sort="name"]`).click();
+  const down = await names();
+  expect(JSON.stringify(down) === JSON.stringify(byName(down).reverse()), down.join("|"));
+  const before = (await names()).length;
+  await mine
+    .first()
+    .getByRole("button", { name: /^Hide / })
+    .click();
+  await teacher
+    .getByTestId("class-show-hidden")
+    .filter({ hasText: "Show the 1 hidden row" })
+    .waitFor();
+  expect((await names()).length === before - 1 && !(await names()).includes(name), "not hidden");
+  await teacher.reload();
+  await teacher.getByTestId("class-show-hidden").filter({ hasText: "1 hidden" }).waitFor();
+  expect(!(await names()).includes(name), "a hidden row came back on a reload");
+  await teacher.getByTestId("class-show-hidden").click();
+  await mine.first().waitFor();
+  await second.context.close();
+
   const [download] = await Promise.all([
     teacher.waitForEvent("download"),
     teacher.getByTestId("class-csv").click(),

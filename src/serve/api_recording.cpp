@@ -72,13 +72,13 @@ json recorded_run(const SessionRequest& request, PreparedSession prepared, const
     frames.push_back(
         {{"state", state}, {"row", class_json({row}, table, std::nullopt)["sessions"][0]}});
   };
-  record(session.tick(t0).state);
+  record(*session.tick(t0).state);
   session.play(t0);
   const double frames_at_most = session.rig().world.duration * kFramesPerSecond + 10.0;
   for (int k = 1; k <= frames_at_most; ++k) {
     const auto now = t0 + std::chrono::nanoseconds(std::llround(k * 1e9 / kFramesPerSecond));
     const LabSession::Tick tick = session.tick(now);
-    record(tick.state);
+    if (tick.state) record(*tick.state);
     if (tick.done) {
       summary = *tick.done;
       return frames;

@@ -43,7 +43,9 @@ namespace {
 using nlohmann::json;
 
 constexpr auto kFrameInterval = std::chrono::milliseconds(33);  // about 30 events a second
-constexpr std::size_t kMostBody = 64 * 1024;                    // bytes of a request's body
+// The longest a stream with nothing to say stays silent: then it sends a comment.
+constexpr auto kQuietStream = std::chrono::seconds(2);
+constexpr std::size_t kMostBody = 64 * 1024;  // bytes of a request's body
 // Bytes of a measurement file a page sends: a phone's CSVs of minutes at 500 Hz, a phyphox zip, a
 // short phone video (a longer one is for frictionlab estimate on the student's machine).
 constexpr std::size_t kMostUpload = 32 * 1024 * 1024;
@@ -468,7 +470,8 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
     explicit StreamState(const CompiledRig& rig) : board_watch(BoardWatch::set_up_for(rig)) {}
     std::optional<int> generation;
     Clock::time_point next = Clock::now();
-    BoardWatch board_watch;  // the live rig with this session's spacing
+    Clock::time_point written = Clock::now();  // the last bytes written
+    BoardWatch board_watch;                    // the live rig with this session's spacing
   };
   auto state = std::make_shared<StreamState>(session->rig());
   ++streams;
@@ -493,6 +496,12 @@ void LabServer::Impl::stream(const std::shared_ptr<LabSession>& session, httplib
         if (const std::shared_ptr<BoardFeed> feed = current_board())
           if (const std::optional<json> watched = state->board_watch.next(feed))
             out += event("rig", *watched);
+        // Nothing changed (a paused run): nothing is sent, but a comment now and then, which
+        // EventSource ignores, so that a client that has gone is found out.
+        const Clock::time_point now = Clock::now();
+        if (out.empty() && now - state->written < kQuietStream) return true;
+        if (out.empty()) out = ":\n\n";
+        state->written = now;
         // A client that has gone: the write fails and the stream ends; the session stays for
         // its idle time (the page may come back).
         return sink.write(out.data(), out.size());

@@ -43,7 +43,13 @@ LabSession::Tick LabSession::tick(Clock::time_point now) {
   const LiveFrame frame = run_->advance_to(target_);
   if (frame.estimate) estimate_ = frame.estimate;
   if (run_->ended()) playing_ = false;
-  out.state = frame_json(frame, playing_, speed_);
+  const bool same = frame.t == said_.t && frame.hall.empty() && frame.periods.empty() &&
+                    playing_ == said_.playing && speed_ == said_.speed &&
+                    generation_ == said_.generation;
+  if (!same) {
+    out.state = frame_json(frame, playing_, speed_);
+    said_ = Said{frame.t, playing_, speed_, generation_};
+  }
   if (run_->ended() && !done_sent_) {
     out.done = summary_json(run_->summary());
     done_sent_ = true;

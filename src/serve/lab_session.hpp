@@ -31,9 +31,10 @@ class LabSession {
 
   // What a stream sends now: `state` with what changed since the last tick (the run advanced by
   // the wall time since then times the speed while playing, at most 0.1 s of simulated time a
-  // tick), then, once, `done` with the run's summary. `generation` is bumped by reset.
+  // tick), none when nothing did (a paused run: the time, the controls and the samples as the
+  // last tick's), then, once, `done` with the run's summary. `generation` is bumped by reset.
   struct Tick {
-    nlohmann::json state;
+    std::optional<nlohmann::json> state;
     std::optional<nlohmann::json> done;  // the summary, on the tick the run ended
     int generation = 0;
   };
@@ -75,6 +76,14 @@ class LabSession {
   std::optional<Clock::time_point> last_tick_;
   Clock::time_point last_seen_ = Clock::now();
   bool done_sent_ = false;
+  // What the last state said: a tick that would say the same sends none.
+  struct Said {
+    double t = -1.0;
+    bool playing = false;
+    double speed = 0.0;
+    int generation = -1;
+  };
+  Said said_;
   std::optional<EstimatorReport> estimate_;  // the run's estimate at the last tick
   int generation_ = 0;
 };

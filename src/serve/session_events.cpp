@@ -9,7 +9,7 @@ std::vector<SessionEvent> session_events(LabSession& session, Clock::time_point 
   if (generation && *generation != tick.generation)
     out.push_back({"reset", nlohmann::json::object()});
   generation = tick.generation;
-  out.push_back({"state", tick.state});
+  if (tick.state) out.push_back({"state", *tick.state});
   if (tick.done) {
     if (const auto failure = tick.done->find("failure");
         failure != tick.done->end() && !failure->is_null())

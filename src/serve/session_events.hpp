@@ -1,7 +1,8 @@
 // What a session's stream sends each frame (docs/web-api.md, "The stream"), whatever carries it
 // (frictionlab serve's server-sent events, the browser's worker messages): `reset` when the
-// session was started again since the last frame, `state`, and once, at the run's end, `failed`
-// (a run that failed) and `done` with the summary.
+// session was started again since the last frame, `state` when something changed (none while a
+// paused run stays as it was), and once, at the run's end, `failed` (a run that failed) and
+// `done` with the summary.
 #pragma once
 
 #include <optional>

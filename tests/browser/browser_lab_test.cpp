@@ -86,6 +86,25 @@ TEST(BrowserLab, ASessionSteppedToItsEndIsRunsRunByteForByte) {
   }
 }
 
+TEST(BrowserLab, AnUnchangedStateIsNotSentAgain) {
+  BrowserLab lab = test_lab();
+  const std::string id = lab.create_session(R"({"scene": "minimal"})").body["id"];
+  const auto names = [&] {
+    std::vector<std::string> out;
+    for (const json& e : lab.events(id).body) out.push_back(e["event"]);
+    return out;
+  };
+  EXPECT_EQ(names(), std::vector<std::string>{"state"});  // paused at t = 0
+  EXPECT_TRUE(names().empty());                           // still paused: nothing new
+  EXPECT_EQ(lab.control(id, R"({"action": "step"})").status, 200);
+  EXPECT_EQ(names(), std::vector<std::string>{"state"});  // a step: the plate moved
+  EXPECT_TRUE(names().empty());
+  EXPECT_EQ(lab.control(id, R"({"speed": 0.25})").status, 200);
+  EXPECT_EQ(names(), std::vector<std::string>{"state"});  // the speed changed
+  EXPECT_EQ(lab.control(id, R"({"action": "reset"})").status, 200);
+  EXPECT_EQ(names(), (std::vector<std::string>{"reset", "state"}));
+}
+
 TEST(BrowserLab, ARefusedSetUpHasItsProblemsByField) {
   BrowserLab lab = test_lab();
   const Answer refused =

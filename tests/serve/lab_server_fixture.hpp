@@ -170,6 +170,7 @@ class LabServerTest : public test::TempFolderTest {
       for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
         const std::string block = buffer.substr(0, end);
         buffer.erase(0, end + 2);
+        if (block.starts_with(":")) continue;  // a comment: the stream had nothing to say
         const auto name_end = block.find('\n');
         events.emplace_back(block.substr(7, name_end - 7), json::parse(block.substr(name_end + 7)));
         if (events.back().first == "done") return false;

@@ -101,10 +101,9 @@ function listen(lab: LabModule, session: string): void {
       stop(session);
       return;
     }
-    scope.postMessage({
-      stream: session,
-      events: answer.body as { event: string; data: unknown }[],
-    });
+    const events = answer.body as { event: string; data: unknown }[];
+    // A paused run says nothing new: nothing is posted.
+    if (events.length > 0) scope.postMessage({ stream: session, events });
   };
   streams.set(session, setInterval(frame, FRAME_MS) as unknown as number);
   frame();

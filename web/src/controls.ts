@@ -122,6 +122,15 @@ export class SetupControls {
         sceneValueKnown: true,
         decimals: 1,
       }),
+      // How long the run lasts: a class timing ten periods by hand needs more than a few.
+      number({
+        id: "duration-s",
+        key: "world.duration",
+        unit: "s",
+        fromRig: (rig) => rig.duration,
+        sceneValueKnown: true,
+        decimals: 3,
+      }),
     ];
     this.enableStribeck();
   }

@@ -190,7 +190,7 @@ await check("a link opens its set-up and plays it; unchanged controls send nothi
     JSON.stringify(last) ===
       JSON.stringify({
         scene: "minimal",
-        set: ["world.duration=5s", "plate.material=iron", "rollers.spacing=60mm"],
+        set: ["plate.material=iron", "rollers.spacing=60mm", "world.duration=5s"],
       }),
     `created ${JSON.stringify(last)}`,
   );
@@ -309,6 +309,30 @@ await check("Space after clicking Play times the run and never pauses it", async
     `the run was paused: ${await page.getByTestId("status").textContent()}`,
   );
   expect((await page.getByTestId("play").textContent()) === "Pause", "Play was pressed");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("the run's length is a control: a longer run is a new session", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  const duration = page.getByTestId("duration");
+  expect(
+    (await duration.inputValue()) === "8",
+    `the scene's duration: ${await duration.inputValue()}`,
+  );
+  await duration.fill("60");
+  await duration.press("Enter");
+  await waitUntil(
+    async () =>
+      (await mockLog())
+        .filter((e) => e.create)
+        .at(-1)
+        ?.create.set.includes("world.duration=60s"),
+    "a session of 60 s",
+  );
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  expect((await duration.inputValue()) === "60", "the control does not show the run's length");
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
   await context.close();
 });
@@ -564,8 +588,13 @@ await check("the student's name reaches the class's table, class.html and class.
         (tr) => tr.cells[0].textContent,
       ),
     );
-  const byName = (list) =>
-    [...list].sort((a, b) => a.localeCompare(b, undefined, { numeric: true }));
+  // Named rows sorted; the unnamed (—) last either way.
+  const byName = (list, down = false) => {
+    const named = list.filter((n) => n !== "—");
+    named.sort((a, b) => a.localeCompare(b, undefined, { numeric: true }));
+    if (down) named.reverse();
+    return [...named, ...list.filter((n) => n === "—")];
+  };
   // A second student, in a browser of their own.
   const second = await openPage("/");
   await second.page.getByTestId("student-name").fill("Bea (2B)");
@@ -579,7 +608,7 @@ await check("the student's name reaches the class's table, class.html and class.
   expect(up.length >= 2 && JSON.stringify(up) === JSON.stringify(byName(up)), up.join("|"));
   await teacher.locator(`th button[data-sort="name"]`).click();
   const down = await names();
-  expect(JSON.stringify(down) === JSON.stringify(byName(down).reverse()), down.join("|"));
+  expect(JSON.stringify(down) === JSON.stringify(byName(down, true)), down.join("|"));
   const before = (await names()).length;
   await mine
     .first()

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -160,23 +161,35 @@ class LabServerTest : public test::TempFolderTest {
     return answer;
   }
   // Reads the stream until `done`: every event's name and data.
-  std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
-    std::vector<std::pair<std::string, json>> events;
+  // The session's stream, block by block (an event, or a comment: the stream with nothing to say),
+  // each without its blank line, up to the first block `last` holds for.
+  std::vector<std::string> stream_blocks(const std::string& id,
+                                         const std::function<bool(const std::string&)>& last) {
+    std::vector<std::string> blocks;
     std::string buffer;
     httplib::Client reader("127.0.0.1", port_);
     reader.set_read_timeout(60, 0);
     reader.Get(session(id, "/stream").c_str(), [&](const char* data, std::size_t length) {
       buffer.append(data, length);
       for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
-        const std::string block = buffer.substr(0, end);
+        blocks.push_back(buffer.substr(0, end));
         buffer.erase(0, end + 2);
-        if (block.starts_with(":")) continue;  // a comment: the stream had nothing to say
-        const auto name_end = block.find('\n');
-        events.emplace_back(block.substr(7, name_end - 7), json::parse(block.substr(name_end + 7)));
-        if (events.back().first == "done") return false;
+        if (last(blocks.back())) return false;
       }
       return true;
     });
+    return blocks;
+  }
+
+  // The session's events, name and data, up to its `done`.
+  std::vector<std::pair<std::string, json>> stream_to_done(const std::string& id) {
+    std::vector<std::pair<std::string, json>> events;
+    for (const std::string& block :
+         stream_blocks(id, [](const std::string& b) { return b.starts_with("event: done\n"); })) {
+      if (block.starts_with(":")) continue;  // a comment
+      const auto name_end = block.find('\n');
+      events.emplace_back(block.substr(7, name_end - 7), json::parse(block.substr(name_end + 7)));
+    }
     return events;
   }
 

@@ -383,19 +383,8 @@ TEST_F(LabServerTest, AStudentNamedAfterTheSessionBeganReachesTheClassTable) {
 TEST_F(LabServerTest, APausedRunSendsOneStateThenOnlyAComment) {
   const std::string id = start({{"scene", "minimal"}});
   // Read until the stream's first comment, which it sends after 2 s with nothing to say.
-  std::vector<std::string> blocks;
-  std::string buffer;
-  httplib::Client reader("127.0.0.1", port_);
-  reader.set_read_timeout(60, 0);
-  reader.Get(session(id, "/stream").c_str(), [&](const char* data, std::size_t length) {
-    buffer.append(data, length);
-    for (std::size_t end; (end = buffer.find("\n\n")) != std::string::npos;) {
-      blocks.push_back(buffer.substr(0, end));
-      buffer.erase(0, end + 2);
-      if (blocks.back().starts_with(":")) return false;
-    }
-    return true;
-  });
+  const std::vector<std::string> blocks =
+      stream_blocks(id, [](const std::string& block) { return block.starts_with(":"); });
   ASSERT_GE(blocks.size(), 2u);
   EXPECT_EQ(blocks.back(), ":");
   // The paused run at t = 0, said once: an unchanged state is not sent again.

@@ -10,7 +10,8 @@ export function setupLink(scene: string, entries: string[]): string {
   // A shared server's token goes with the link, so that it opens for whoever is sent it.
   const token = new URLSearchParams(location.search).get("token");
   if (token !== null) params.append("token", token);
-  return `${location.origin}/?${params.toString()}`;
+  // The page's own address: the static site may be served from any folder of a web space.
+  return `${location.origin}${location.pathname}?${params.toString()}`;
 }
 
 function download(href: string, name: string): void {

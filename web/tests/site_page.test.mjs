@@ -91,6 +91,41 @@ await check("a link's set-up runs in the page and its period is run's", async ()
   await context.close();
 });
 
+await check("the site works from a folder of a web space, its links too", async () => {
+  // The static server's folder is the site's parent: the lab is at /NAME/.
+  const folder = resolve(options.site);
+  const name = folder.split("/").pop();
+  const parent = spawn(
+    "python3",
+    ["-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", dirname(folder)],
+    { stdio: ["ignore", "pipe", "ignore"] },
+  );
+  try {
+    const at = await new Promise((done, fail) => {
+      createInterface({ input: parent.stdout }).on("line", (line) => {
+        const found = /port (\d+)/.exec(line);
+        if (found) done(`http://127.0.0.1:${found[1]}`);
+      });
+      parent.on("exit", (code) => fail(new Error(`python3 -m http.server exited with ${code}`)));
+    });
+    const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
+    const page = await context.newPage();
+    await page.goto(
+      `${at}/${name}/?scene=minimal&set=${encodeURIComponent("rollers.spacing=70mm")}`,
+    );
+    await page.getByTestId("status").filter({ hasText: "playing" }).waitFor({ timeout: 60000 });
+    await page.getByTestId("spacing").filter({ hasText: "70 mm" }).waitFor();
+    const link = await page.getByTestId("setup-link").inputValue();
+    expect(
+      link === `${at}/${name}/?scene=minimal&set=rollers.spacing%3D70mm`,
+      `the link to the set-up: ${link}`,
+    );
+    await context.close();
+  } finally {
+    parent.kill();
+  }
+});
+
 await check("a refused set-up shows the request layer's message at its control", async () => {
   const { page, context } = await openPage("/?scene=minimal");
   await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });

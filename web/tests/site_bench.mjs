@@ -20,7 +20,7 @@ import { fileURLToPath } from "node:url";
 import { createInterface } from "node:readline";
 import { parseArgs } from "node:util";
 import { gzipSync } from "node:zlib";
-import { chromium } from "playwright-core";
+import { launchChromium, serveFolder } from "./browser_checks.mjs";
 
 const { values: options } = parseArgs({
   options: {
@@ -55,24 +55,9 @@ const walk = (dir) => {
 walk(site);
 console.log(`the site: ${(raw / 1e6).toFixed(2)} MB, ${(gzipped / 1e6).toFixed(2)} MB gzipped`);
 
-const server = spawn(
-  "python3",
-  ["-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", site],
-  {
-    stdio: ["ignore", "pipe", "ignore"],
-  },
-);
-const base = await new Promise((done) => {
-  createInterface({ input: server.stdout }).on("line", (line) => {
-    const found = /port (\d+)/.exec(line);
-    if (found) done(`http://127.0.0.1:${found[1]}`);
-  });
-});
-const launch = () =>
-  chromium.launch({
-    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-    args: ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox"],
-  });
+const served = await serveFolder(site);
+const base = served.base;
+const launch = launchChromium;
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 const firsts = [];
@@ -197,4 +182,4 @@ if (options.exe && options.web) {
   await other.close();
   lab.kill();
 }
-server.kill();
+served.stop();

@@ -8,14 +8,20 @@
 //
 //   node tests/site_page.test.mjs --site DIR --exe build/release/src/cli/frictionlab [--shot FILE]
 // Exit status: 0 all passed, 1 a check failed, 77 no chromium or no site (the test is skipped).
-import { execFileSync, spawn } from "node:child_process";
+import { execFileSync } from "node:child_process";
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
-import { createInterface } from "node:readline";
 import { fileURLToPath } from "node:url";
 import { parseArgs } from "node:util";
-import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
+import {
+  check,
+  expect,
+  finish,
+  launchChromium,
+  serveFolder,
+  skipWithoutChromium,
+} from "./browser_checks.mjs";
 
 const repository = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const { values: options } = parseArgs({
@@ -35,19 +41,9 @@ if (!existsSync(join(options.site, "frictionlab-lab.wasm"))) {
   process.exit(77);
 }
 
-// Python's own static server on any free port: it names the port on its first line.
-const server = spawn(
-  "python3",
-  ["-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", resolve(options.site)],
-  { stdio: ["ignore", "pipe", "ignore"] },
-);
-const base = await new Promise((done, fail) => {
-  createInterface({ input: server.stdout }).on("line", (line) => {
-    const found = /port (\d+)/.exec(line);
-    if (found) done(`http://127.0.0.1:${found[1]}`);
-  });
-  server.on("exit", (code) => fail(new Error(`python3 -m http.server exited with ${code}`)));
-});
+// Python's own static server: the site as any web space serves it.
+const served = await serveFolder(resolve(options.site));
+const base = served.base;
 const browser = await launchChromium();
 
 /** A page at `path`: the console's errors and warnings, and every address it asked for. */
@@ -95,19 +91,9 @@ await check("the site works from a folder of a web space, its links too", async 
   // The static server's folder is the site's parent: the lab is at /NAME/.
   const folder = resolve(options.site);
   const name = folder.split("/").pop();
-  const parent = spawn(
-    "python3",
-    ["-u", "-m", "http.server", "0", "--bind", "127.0.0.1", "--directory", dirname(folder)],
-    { stdio: ["ignore", "pipe", "ignore"] },
-  );
+  const parent = await serveFolder(dirname(folder));
+  const at = parent.base;
   try {
-    const at = await new Promise((done, fail) => {
-      createInterface({ input: parent.stdout }).on("line", (line) => {
-        const found = /port (\d+)/.exec(line);
-        if (found) done(`http://127.0.0.1:${found[1]}`);
-      });
-      parent.on("exit", (code) => fail(new Error(`python3 -m http.server exited with ${code}`)));
-    });
     const context = await browser.newContext({ viewport: { width: 1366, height: 768 } });
     const page = await context.newPage();
     await page.goto(
@@ -122,7 +108,7 @@ await check("the site works from a folder of a web space, its links too", async 
     );
     await context.close();
   } finally {
-    parent.kill();
+    parent.stop();
   }
 });
 
@@ -331,5 +317,5 @@ await check("a browser without Web Serial says so and offers the file", async ()
 });
 
 await browser.close();
-server.kill();
+served.stop();
 finish();

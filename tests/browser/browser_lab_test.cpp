@@ -105,6 +105,33 @@ TEST(BrowserLab, AnUnchangedStateIsNotSentAgain) {
   EXPECT_EQ(names(), (std::vector<std::string>{"reset", "state"}));
 }
 
+TEST(BrowserLab, NoRegimeIsSaidBeforeThePlateHasTurned) {
+  BrowserLab lab = test_lab();
+  const std::string id = lab.create_session(R"({"scene": "minimal"})").body["id"];
+  // Each state's time, way (the sign of vx) and regime, over 2 s of steps.
+  int first_way = 0;
+  bool turned = false;
+  bool said = false;
+  for (int i = 0; i < 60; ++i) {
+    for (const json& e : lab.events(id).body) {
+      if (e["event"] != "state") continue;
+      const double vx = e["data"]["vx"];
+      const int way = vx > 0.0 ? 1 : vx < 0.0 ? -1 : 0;
+      if (first_way == 0) first_way = way;
+      turned = turned || (way != 0 && way != first_way);
+      const std::string regime = e["data"]["regime"];
+      // A regime is what the trajectory shows: an oscillation once the plate came back.
+      if (!turned) {
+        EXPECT_EQ(regime, "") << "t = " << e["data"]["t"];
+      }
+      said = said || regime == "oscillates";
+    }
+    lab.control(id, R"({"action": "step"})");
+  }
+  EXPECT_TRUE(turned);
+  EXPECT_TRUE(said);
+}
+
 TEST(BrowserLab, ARefusedSetUpHasItsProblemsByField) {
   BrowserLab lab = test_lab();
   const Answer refused =

@@ -20,6 +20,8 @@ struct LiveRun::Impl {
   std::size_t pulses_seen = 0;               // the estimator's pulses already handed out
   std::size_t periods_seen = 0;              // and its judged periods
   double next_regime_t = 0.0;                // s, when the diagnosis is read again
+  int first_direction = 0;                   // the plate's first way (+1, -1; 0: not moved yet)
+  bool turned = false;                       // it has come back: a turning point was seen
   const HallEstimator* estimator = nullptr;  // the run's, live (none without a sensor)
   std::optional<HarmonicMotion> theory;      // from the plate at the start (scene/theory_motion)
   bool started = false;
@@ -49,9 +51,16 @@ void LiveRun::Impl::observe(const StepView& view) {
     for (; periods_seen < judged.size(); ++periods_seen)
       frame.periods.push_back(judged[periods_seen]);
   }
+  const int direction = view.plate.vx > 0.0 ? 1 : view.plate.vx < 0.0 ? -1 : 0;
+  if (first_direction == 0) first_direction = direction;
+  if (direction != 0 && direction != first_direction) turned = true;
   // The diagnosis, read every 10 ms of simulated time (a frame's worth at most), as a video does.
+  // The monitor says "oscillates" until it has evidence of another regime; the trajectory shows an
+  // oscillation only once the plate has turned: before that, no regime is said ("").
   if (view.monitor != nullptr && (frame.regime.empty() || view.t >= next_regime_t)) {
-    frame.regime = regime_so_far(view.monitor->finding(std::nullopt));
+    const RegimeFinding finding = view.monitor->finding(std::nullopt);
+    const bool shown = turned || finding.regime != Regime::kOscillates || finding.jumps > 0;
+    frame.regime = shown ? regime_so_far(finding) : "";
     next_regime_t = view.t + 0.01;
   }
 }

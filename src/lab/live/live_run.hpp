@@ -31,7 +31,7 @@ struct LiveFrame {
   std::vector<double> pulses;               // s, the pulses the estimator found since then
   std::vector<EstimatedPeriod> periods;     // the periods it judged since then
   std::optional<EstimatorReport> estimate;  // once it has accepted a period
-  std::string regime;                       // the diagnosis so far
+  std::string regime;                       // the diagnosis so far ("" : none shown yet)
 };
 
 class LiveRun {

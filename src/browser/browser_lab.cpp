@@ -37,9 +37,12 @@ BrowserLab::Open* BrowserLab::find(const std::string& id) {
 }
 
 Answer BrowserLab::create_session(std::string_view body) {
-  serve::SessionOpening opening =
-      serve::open_session(body, scenes_dir_, asset_dir_, serve::kMostRecordedSeconds);
-  if (!opening.session) return {opening.status, std::move(opening.body)};
+  const auto read = serve::read_session_body(body);
+  if (const auto* refusal = std::get_if<serve::BodyRefusal>(&read))
+    return {400, serve::refusal_json(*refusal)};
+  serve::SessionOpening opening = serve::open_session(
+      std::get<serve::SessionBody>(read), scenes_dir_, asset_dir_, serve::kMostRecordedSeconds);
+  if (!opening.session) return {400, std::move(opening.body)};
   const std::string id = fmt::format("{:016x}", next_id_++);
   const CompiledRig& rig = opening.session->rig();
   sessions_.emplace(id, Open{std::move(opening.session), std::nullopt,
@@ -66,36 +69,14 @@ Answer BrowserLab::control(const std::string& id, std::string_view body) {
   const auto read = serve::read_control_body(body);
   if (const auto* refusal = std::get_if<serve::BodyRefusal>(&read))
     return {400, serve::refusal_json(*refusal)};
-  serve::LabSession& session = *open->session;
-  const serve::ControlCommand& command = std::get<serve::ControlCommand>(read);
-  switch (command.action) {
-    case serve::ControlCommand::Action::kPlay:
-      return {200, session.play(serve::Clock::now())};
-    case serve::ControlCommand::Action::kPause:
-      return {200, session.pause()};
-    case serve::ControlCommand::Action::kStep:
-      return {200, session.step()};
-    case serve::ControlCommand::Action::kReset:
-      return {200, session.reset()};
-    case serve::ControlCommand::Action::kSpeed:
-      return {200, session.set_speed(command.speed)};
-    case serve::ControlCommand::Action::kName:
-      return {200, session.set_name(command.name)};
-  }
-  throw std::logic_error("a control action without an answer");
+  return {200, open->session->control(std::get<serve::ControlCommand>(read), serve::Clock::now())};
 }
 
 Answer BrowserLab::file(const std::string& id, const std::string& name) {
   Open* open = find(id);
   if (open == nullptr) return no_such_session();
   const std::optional<std::string> text = open->session->file(name);
-  if (!text)
-    return {404, serve::error_json(fmt::format(
-                     "no file \"{}\": the run writes its files when it ends, only those its "
-                     "scene's output part names, and, for a run longer than {:g} s, neither "
-                     "trajectory.csv nor hall.csv nor periods.csv (run it with frictionlab run "
-                     "to have them)",
-                     name, serve::kMostRecordedSeconds))};
+  if (!text) return {404, serve::missing_file_json(name, serve::kMostRecordedSeconds)};
   return {200, {{"text", *text}}};
 }
 

@@ -207,4 +207,12 @@ json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports,
   return out;
 }
 
+json missing_file_json(const std::string& name, double most_recorded_seconds) {
+  return error_json(fmt::format(
+      "no file \"{}\": the run writes its files when it ends, only those its scene's output part "
+      "names, and, for a run longer than {:g} s, neither trajectory.csv nor hall.csv nor "
+      "periods.csv (run it with frictionlab run to have them)",
+      name, most_recorded_seconds));
+}
+
 }  // namespace fl::serve

@@ -41,6 +41,10 @@ nlohmann::json live_rig_json(const BoardFeed* feed, const std::vector<std::strin
 // A 400's body: every problem of an InputError (a RequestError's by field), spelled for the page.
 nlohmann::json problems_json(const std::exception& error);
 
+// A 404's body for a run's file it does not have (yet, or at all), saying which it keeps: a run
+// longer than `most_recorded_seconds` keeps neither its steps nor its samples.
+nlohmann::json missing_file_json(const std::string& name, double most_recorded_seconds);
+
 // A 4xx's body for a problem of the API itself (a malformed body, an unknown session).
 nlohmann::json error_json(const std::string& message);
 

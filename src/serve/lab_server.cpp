@@ -297,23 +297,17 @@ void LabServer::Impl::routes() {
     if (!s) return;
     control(*s, req, res);
   });
-  server.Get(session + "/files/([A-Za-z0-9_.-]{1,64})", [this](const httplib::Request& req,
-                                                               httplib::Response& res) {
-    const auto s = find(req, res);
-    if (!s) return;
-    const std::string name = req.matches[2];
-    const std::optional<std::string> text = s->file(name);
-    if (!text)
-      return send_json(res, 404,
-                       error_json(fmt::format(
-                           "no file \"{}\": the run writes its files when it ends, only those its "
-                           "scene's output part names, and, for a run longer than {:g} s, "
-                           "neither trajectory.csv nor hall.csv nor periods.csv (run it with "
-                           "frictionlab run to have them)",
-                           name, options.most_recorded_seconds)));
-    res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
-    res.set_content(*text, content_type(name));
-  });
+  server.Get(session + "/files/([A-Za-z0-9_.-]{1,64})",
+             [this](const httplib::Request& req, httplib::Response& res) {
+               const auto s = find(req, res);
+               if (!s) return;
+               const std::string name = req.matches[2];
+               const std::optional<std::string> text = s->file(name);
+               if (!text)
+                 return send_json(res, 404, missing_file_json(name, options.most_recorded_seconds));
+               res.set_header("Content-Disposition", "attachment; filename=\"" + name + "\"");
+               res.set_content(*text, content_type(name));
+             });
   server.Get("/api/rig", [this](const httplib::Request&, httplib::Response& res) {
     send_json(res, 200, rig_status_json());
   });
@@ -442,12 +436,13 @@ void LabServer::Impl::give_back_upload_place() {
 void LabServer::Impl::create(const httplib::Request& req, httplib::Response& res) {
   if (refuse_large_body(req, res)) return;
   // A body the lab cannot take is refused for what it is, even when the lab is full.
-  if (const std::optional<json> refusal = session_body_refusal(req.body))
-    return send_json(res, 400, *refusal);
+  const auto read = read_session_body(req.body);
+  if (const auto* refusal = std::get_if<BodyRefusal>(&read))
+    return send_json(res, 400, refusal_json(*refusal));
   if (full()) return refuse_full(res);
-  SessionOpening opening =
-      open_session(req.body, options.scenes_dir, options.asset_dir, options.most_recorded_seconds);
-  if (!opening.session) return send_json(res, opening.status, opening.body);
+  SessionOpening opening = open_session(std::get<SessionBody>(read), options.scenes_dir,
+                                        options.asset_dir, options.most_recorded_seconds);
+  if (!opening.session) return send_json(res, 400, opening.body);
   OpenSession open{std::move(opening.session), new_session_key()};
   json out{{"id", ""}, {"key", open.key}, {"rig", std::move(opening.body["rig"])}};
   {
@@ -514,21 +509,7 @@ void LabServer::Impl::control(LabSession& session, const httplib::Request& req,
   const auto read = read_control_body(req.body);
   if (const auto* refusal = std::get_if<BodyRefusal>(&read))
     return send_json(res, 400, refusal_json(*refusal));
-  const ControlCommand& command = std::get<ControlCommand>(read);
-  switch (command.action) {
-    case ControlCommand::Action::kPlay:
-      return send_json(res, 200, session.play(Clock::now()));
-    case ControlCommand::Action::kPause:
-      return send_json(res, 200, session.pause());
-    case ControlCommand::Action::kStep:
-      return send_json(res, 200, session.step());
-    case ControlCommand::Action::kReset:
-      return send_json(res, 200, session.reset());
-    case ControlCommand::Action::kSpeed:
-      return send_json(res, 200, session.set_speed(command.speed));
-    case ControlCommand::Action::kName:
-      return send_json(res, 200, session.set_name(command.name));
-  }
+  send_json(res, 200, session.control(std::get<ControlCommand>(read), Clock::now()));
 }
 
 LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {

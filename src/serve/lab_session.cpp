@@ -109,6 +109,24 @@ nlohmann::json LabSession::set_name(std::string name) {
   return controls_json();
 }
 
+nlohmann::json LabSession::control(const ControlCommand& command, Clock::time_point now) {
+  switch (command.action) {
+    case ControlCommand::Action::kPlay:
+      return play(now);
+    case ControlCommand::Action::kPause:
+      return pause();
+    case ControlCommand::Action::kStep:
+      return step();
+    case ControlCommand::Action::kReset:
+      return reset();
+    case ControlCommand::Action::kSpeed:
+      return set_speed(command.speed);
+    case ControlCommand::Action::kName:
+      return set_name(command.name);
+  }
+  throw std::logic_error("a control the session does not know");
+}
+
 std::string LabSession::name() const {
   const std::lock_guard lock(mutex_);
   return name_;

@@ -13,6 +13,7 @@
 
 #include "lab/live/live_run.hpp"
 #include "lab/request/session_request.hpp"
+#include "serve/api_requests.hpp"
 #include "serve/class_table.hpp"
 
 namespace fl::serve {
@@ -49,6 +50,8 @@ class LabSession {
   nlohmann::json set_speed(double speed);
   // Who runs it, for the class's table ("" : not given), as the page's student types it.
   nlohmann::json set_name(std::string name);
+  // The control a page's body asked for (serve/api_requests.hpp), at `now`.
+  nlohmann::json control(const ControlCommand& command, Clock::time_point now);
 
   // The run's file by name once it has ended; nullopt before or for a file it does not keep.
   std::optional<std::string> file(const std::string& name);

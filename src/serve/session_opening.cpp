@@ -1,30 +1,16 @@
 #include "serve/session_opening.hpp"
 
 #include <stdexcept>
-#include <variant>
 
 #include "io/input_error.hpp"
 #include "lab/request/lab_data.hpp"
 #include "serve/api_json.hpp"
-#include "serve/api_requests.hpp"
 
 namespace fl::serve {
 
-std::optional<nlohmann::json> session_body_refusal(std::string_view body) {
-  const auto read = read_session_body(body);
-  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) return refusal_json(*refusal);
-  return std::nullopt;
-}
-
-SessionOpening open_session(std::string_view body, const std::string& scenes_dir,
+SessionOpening open_session(const SessionBody& asked, const std::string& scenes_dir,
                             const std::string& asset_dir, double most_recorded_seconds) {
   SessionOpening out;
-  auto read = read_session_body(body);
-  if (const auto* refusal = std::get_if<BodyRefusal>(&read)) {
-    out.body = refusal_json(*refusal);
-    return out;
-  }
-  const SessionBody& asked = std::get<SessionBody>(read);
   try {
     // Only a scene inside the folder is read: a link leading outside is as if absent.
     PreparedSession prepared = prepare_session(asked.request, scenes_dir, asset_dir);
@@ -34,7 +20,6 @@ SessionOpening open_session(std::string_view body, const std::string& scenes_dir
     }
     out.session =
         std::make_shared<LabSession>(asked.request.scene, std::move(prepared), asked.name);
-    out.status = 201;
     out.body = {
         {"rig", rig_json(asked.request.scene, out.session->rig(), paper_table_in(asset_dir))}};
   } catch (const InputError& e) {

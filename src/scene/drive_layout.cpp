@@ -7,6 +7,12 @@
 
 namespace fl {
 
+CouplingSpan coupling_span(const DriveDesc& drive) {
+  const double rr = drive.gear(drive.roller_gear).pitch_radius;
+  const double ri = drive.gear(drive.idler_gear).pitch_radius;
+  return {2.0 * ri, 2.0 * rr + 4.0 * ri};
+}
+
 DriveLayout drive_layout(const Scene& scene) {
   const DriveDesc& drive = scene.drive.value();
   const double l = scene.rollers.spacing;
@@ -23,13 +29,14 @@ DriveLayout drive_layout(const Scene& scene) {
   const double ri = drive.gear(drive.idler_gear).pitch_radius;
   const double reach = rr + ri;          // roller axis to idler axis
   const double half_run = 0.5 * l - ri;  // horizontal distance roller axis to idler axis
-  if (half_run < 0.0 || reach < half_run)
+  if (half_run < 0.0 || reach < half_run) {
+    const CouplingSpan span = coupling_span(drive);
     throw std::invalid_argument(
-        describe("drive.coupling: a ", drive.roller_gear, "-tooth roller gear and two ",
-                 drive.idler_gear, "-tooth idlers cannot span the roller spacing of ", l * 1e3,
-                 " mm; choose gears whose chain (2 x roller + 4 x idler pitch radius = ",
-                 (2 * rr + 4 * ri) * 1e3,
-                 " mm) is at least as long and whose idlers fit between the rollers"));
+        describe("the drive's coupling (a ", drive.roller_gear, "-tooth roller gear and two ",
+                 drive.idler_gear, "-tooth idlers) spans roller spacings from ", span.least * 1e3,
+                 " to ", span.most * 1e3, " mm, found ", l * 1e3,
+                 " mm; choose a spacing in that span, or other gears in drive.coupling"));
+  }
   const double drop = std::sqrt(reach * reach - half_run * half_run);
   layout.shafts.push_back({"idler 1", -ri, -a - drop});
   layout.shafts.push_back({"idler 2", ri, -a - drop});

@@ -37,7 +37,17 @@ struct DriveLayout {
   int motor = 0;                 // the motor's shaft (roller 0 itself when there is no gearbox)
 };
 
-// Throws std::invalid_argument when the idlers cannot reach across the rollers' spacing.
+// The roller spacings the drive's coupling spans: from the idlers' meeting between the rollers
+// (l = 2 x idler pitch radius, both idlers on the midline) to the chain stretched straight along
+// the rollers' axis line (l = 2 x roller + 4 x idler pitch radius).
+struct CouplingSpan {
+  double least = 0.0;  // m
+  double most = 0.0;   // m
+};
+CouplingSpan coupling_span(const DriveDesc& drive);
+
+// Throws std::invalid_argument when the idlers cannot reach across the rollers' spacing (outside
+// coupling_span).
 DriveLayout drive_layout(const Scene& scene);
 
 }  // namespace fl

@@ -25,8 +25,9 @@ class Checks {
  public:
   explicit Checks(std::vector<SceneProblem>& problems) : problems_(problems) {}
 
-  void need(bool ok, const char* key, std::string message) const {
-    if (!ok) problems_.push_back({key, std::move(message)});
+  void need(bool ok, const char* key, std::string message,
+            std::vector<std::string> involves = {}) const {
+    if (!ok) problems_.push_back({key, std::move(message), std::move(involves)});
   }
   // A value that must be positive, in its SI unit; a length also in millimetres, as a student
   // gives it.
@@ -100,7 +101,8 @@ void check_world(const Scene& s, const Checks& c) {
            describe("expected a step that resolves the oscillation, shorter than a quarter of its "
                     "period (",
                     quarter, " s for the thin plate), found ", s.world.time_step,
-                    " s; use a step of 1 ms"));
+                    " s; use a step of 1 ms"),
+           {"rollers.spacing", "friction.mu_k", "world.gravity"});
   }
   if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
     c.need(s.world.duration >= s.world.time_step, "world.duration",
@@ -273,7 +275,8 @@ std::optional<double> check_motion(const Scene& s, const Checks& c) {
   c.need(exploring || 0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
          describe("the plate (", s.plate.length * 1e3,
                   " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
-                  " mm: it would leave a roller; use a longer plate or a smaller offset"));
+                  " mm: it would leave a roller; use a longer plate or a smaller offset"),
+         {"rollers.spacing", "plate.offset", "plate.velocity"});
   return amplitude;
 }
 
@@ -283,7 +286,9 @@ void check_drive(const Scene& s, const Checks& c) {
     try {
       drive_layout(s);
     } catch (const std::invalid_argument& e) {
-      c.need(false, "drive.coupling", e.what());
+      // The spacing is what a student changes; the gears are the scene's: the problem is the
+      // spacing's, saying which gears bound it.
+      c.need(false, "rollers.spacing", e.what());
     }
   }
 }
@@ -318,7 +323,8 @@ void check_sensor(const Scene& s, const Checks& c, double amplitude) {
       c.need(false, "sensor.position",
              describe("the sensor lies inside the volume magnet ", *i,
                       " sweeps as the plate moves; raise it above the magnet's top at ",
-                      (s.plate.thickness + m.height + m.thickness) * 1e3, " mm"));
+                      (s.plate.thickness + m.height + m.thickness) * 1e3, " mm"),
+             {"plate.offset", "plate.velocity", "rollers.spacing"});
     }
   }
 }
@@ -377,11 +383,13 @@ void check_magnetometer_places(const Scene& s, const Checks& c, double amplitude
                     at[2] * 1e3,
                     "] mm lies inside the volume the plate sweeps; lay the phone beside the rig "
                     "(|y| above ",
-                    0.5e3 * s.plate.width, " mm)"));
+                    0.5e3 * s.plate.width, " mm)"),
+           {"plate.offset", "plate.velocity"});
     if (const std::optional<std::size_t> m = magnet_sweeping(s, at, amplitude))
       c.need(false, "phones",
              describe("phone ", i, ": the magnetometer lies inside the volume magnet ", *m,
-                      " sweeps as the plate moves; lay the phone beside the rig"));
+                      " sweeps as the plate moves; lay the phone beside the rig"),
+             {"plate.offset", "plate.velocity"});
   }
 }
 

@@ -1,5 +1,6 @@
 #include "scene/scene_yaml.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -326,7 +327,20 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
   const std::vector<SceneProblem> problems = check_scene(scene);
   if (!problems.empty()) {
     const SceneProblem& first = problems.front();
-    const YamlNode where = node_for(root, first.key);
+    // Located at the key's own entry; where only a key it involves was changed by a `set`
+    // entry, at that entry: the change is what to mend.
+    const auto changed = [&overrides](const std::string& key) {
+      return std::any_of(overrides.begin(), overrides.end(),
+                         [&key](const SceneOverride& o) { return o.path == key; });
+    };
+    std::string blamed = first.key;
+    if (!changed(first.key))
+      for (const std::string& key : first.involves)
+        if (changed(key)) {
+          blamed = key;
+          break;
+        }
+    const YamlNode where = node_for(root, blamed);
     throw InputError(where.location(), first.key + ": " + first.message);
   }
   return scene;

@@ -46,8 +46,12 @@ json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable& table,
   return out;
 }
 
-json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable& table) {
+json rig_json(const std::string& scene, const CompiledRig& rig,
+              const std::vector<AcceptedRange>& accepts, const PaperTable& table) {
   const PlateDesc& p = rig.plate_desc;
+  json ranges = json::array();
+  for (const AcceptedRange& r : accepts)
+    ranges.push_back({{"key", r.key}, {"least", r.least}, {"most", r.most}, {"unit", r.unit}});
   json blocks = json::array();
   for (const PlateBlock& b : p.blocks)
     blocks.push_back({{"part", b.part}, {"x", b.x}, {"y", b.y}, {"turn_deg", b.turn}});
@@ -101,6 +105,7 @@ json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable
       {"omega", json_or_null(rig.omega)},
       {"tipping_amplitude", json_or_null(rig.tipping_amplitude)},
       {"paper", paper_json(rig, table)},
+      {"accepts", ranges},
   };
 }
 

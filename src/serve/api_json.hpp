@@ -22,7 +22,8 @@ nlohmann::json lab_json(const std::vector<SceneEntry>& scenes, const PaperTable&
                         const std::string& version);
 
 // A session's rig: its geometry, start, the analytic model's numbers, the paper's values.
-nlohmann::json rig_json(const std::string& scene, const CompiledRig& rig, const PaperTable& table);
+nlohmann::json rig_json(const std::string& scene, const CompiledRig& rig,
+                        const std::vector<AcceptedRange>& accepts, const PaperTable& table);
 
 // The estimator's statistics as `state` and `rig` events carry them: null before a period was
 // accepted; the spreads null with one period.

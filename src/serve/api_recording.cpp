@@ -111,7 +111,7 @@ json recorded_setup(const SessionRequest& asked, const ApiRecordingRequest& requ
     return out;
   }
   out["status"] = 201;
-  out["body"] = {{"rig", rig_json(asked.scene, *prepared->rig, table)}};
+  out["body"] = {{"rig", rig_json(asked.scene, *prepared->rig, prepared->accepts, table)}};
   json summary;
   out["frames"] = recorded_run(asked, std::move(*prepared), table, summary);
   out["summary"] = std::move(summary);

@@ -18,10 +18,11 @@ SessionOpening open_session(const SessionBody& asked, const std::string& scenes_
       prepared.output.trajectory = false;
       prepared.output.hall = false;
     }
+    const std::vector<AcceptedRange> accepts = prepared.accepts;
     out.session =
         std::make_shared<LabSession>(asked.request.scene, std::move(prepared), asked.name);
-    out.body = {
-        {"rig", rig_json(asked.request.scene, out.session->rig(), paper_table_in(asset_dir))}};
+    out.body = {{"rig", rig_json(asked.request.scene, out.session->rig(), accepts,
+                                 paper_table_in(asset_dir))}};
   } catch (const InputError& e) {
     out.body = problems_json(e);
   } catch (const std::invalid_argument& e) {

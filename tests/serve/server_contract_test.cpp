@@ -36,8 +36,8 @@ TEST(ServerContract, EveryShippedScenesRigIsAsDeclared) {
     for (const SceneEntry& entry : list_scenes(folder.string())) {
       const PreparedSession prepared =
           prepare_session({entry.name, {}}, folder.string(), FRICTIONLAB_TEST_ASSET_DIR);
-      const json rig =
-          rig_json(entry.name, *prepared.rig, paper_table_in(FRICTIONLAB_TEST_ASSET_DIR));
+      const json rig = rig_json(entry.name, *prepared.rig, prepared.accepts,
+                                paper_table_in(FRICTIONLAB_TEST_ASSET_DIR));
       EXPECT_EQ(problems_of(rig, "Rig", entry.name), "");
       ++checked;
     }

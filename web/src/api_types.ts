@@ -140,6 +140,18 @@ export interface PaperValues {
   mu_k_err: number;
 }
 
+/** The values the set-up accepts for a key a student turns, every other value as it is. */
+export interface AcceptedRange {
+  /** the scene key, as a `set` entry names it (`rollers.spacing`, `rollers.speed` or `drive.motor.duty`, `plate.offset`, `world.duration`) */
+  key: string;
+  /** the least value accepted, in `unit` */
+  least: number;
+  /** the most accepted, in `unit` */
+  most: number;
+  /** the SI unit of least and most (`m`, `rad/s`, `s`; none for a duty) */
+  unit: string;
+}
+
 /** A session's rig as compiled from its set-up (`POST /api/sessions`). */
 export interface Rig {
   /** the scene's name */
@@ -194,6 +206,8 @@ export interface Rig {
   tipping_amplitude: number | null;
   /** what the paper measured; null when the friction is not a Table I row */
   paper: PaperValues | null;
+  /** what each key a student turns accepts with the rest of the set-up as it is: the page's controls offer these ranges only */
+  accepts: AcceptedRange[];
 }
 
 /** `POST /api/sessions`'s answer (201). */

@@ -85,6 +85,7 @@ export class SetupControls {
         fromRig: (rig) => rig.spacing * 1000,
         sceneValueKnown: true,
         decimals: 1,
+        perSi: 1000,
       }),
       number({
         id: "speed-rpm",
@@ -94,6 +95,8 @@ export class SetupControls {
         sceneValueKnown: true,
         decimals: 0,
         appliesTo: (rig) => !rig.drive,
+        perSi: 60 / (2 * Math.PI),
+        sliderSpan: [0, 5000],
       }),
       number({
         id: "duty-pct",
@@ -103,6 +106,7 @@ export class SetupControls {
         sceneValueKnown: false, // the rig gives the rollers' speed, not the motor's duty
         decimals: 0,
         appliesTo: (rig) => rig.drive,
+        perSi: 100,
       }),
       this.law,
       ...this.stribeck,
@@ -121,6 +125,7 @@ export class SetupControls {
         fromRig: (rig) => rig.offset * 1000,
         sceneValueKnown: true,
         decimals: 1,
+        perSi: 1000,
       }),
       // How long the run lasts: a class timing ten periods by hand needs more than a few.
       number({
@@ -130,6 +135,7 @@ export class SetupControls {
         fromRig: (rig) => rig.duration,
         sceneValueKnown: true,
         decimals: 3,
+        perSi: 1,
       }),
     ];
     this.enableStribeck();
@@ -201,13 +207,17 @@ export class SetupControls {
     }
   }
 
-  /** Shows each problem beside the control whose set entry (or field) it names. */
+  /**
+   * Shows each problem beside the control whose set entry (or field) it names; that control goes
+   * back to what the lab runs, so the other controls go on working.
+   */
   showProblems(problems: Problem[], fallback: string): void {
     this.clearProblems();
     const append = (element: HTMLElement, message: string) => {
       element.textContent = element.textContent ? `${element.textContent} ${message}` : message;
     };
     if (problems.length === 0) append(this.otherProblem, fallback);
+    const refused = new Set<Setting>();
     for (const problem of problems) {
       if (problem.field === "scene") {
         append(this.sceneProblem, problem.message);
@@ -224,8 +234,10 @@ export class SetupControls {
         continue;
       }
       append(setting.problem, problem.message);
-      for (const input of setting.inputs) input.setAttribute("aria-invalid", "true");
+      refused.add(setting);
     }
+    for (const setting of refused) setting.revert();
+    this.enableStribeck();
   }
 
   private enableStribeck(): void {

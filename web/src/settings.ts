@@ -1,7 +1,7 @@
 // One set-up control each: what it shows, the scene's own value, and the `--set` entries it
 // makes, only where the user changed it from the scene's value.
 import { byId } from "./dom";
-import { trimmed } from "./format";
+import { readNumber, showNumber } from "./locale_number";
 import type { Lab, Rig } from "./lab_types";
 
 export interface Setting {
@@ -17,6 +17,8 @@ export interface Setting {
   takeEntry(key: string, value: string): boolean;
   /** Forgets the user's changes (a new scene). */
   forget(): void;
+  /** Shows again what the lab last took (after a refusal), the user's changes in it kept. */
+  revert(): void;
 }
 
 function fieldParts(id: string): { field: HTMLElement; problem: HTMLElement } {
@@ -27,12 +29,13 @@ function fieldParts(id: string): { field: HTMLElement; problem: HTMLElement } {
   return { field, problem };
 }
 
-function sameNumber(a: string, b: string): boolean {
-  return a.trim() !== "" && b.trim() !== "" && Number(a) === Number(b);
-}
-
 function escapeRegExp(text: string): string {
   return text.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+}
+
+/** The page's language, which numbers are read and shown in ("89,5" in French). */
+export function pageLocale(): string {
+  return document.documentElement.lang || "en";
 }
 
 export interface NumberOptions {
@@ -47,9 +50,24 @@ export interface NumberOptions {
   decimals: number;
   /** Shown only for rigs where this holds. */
   appliesTo?: (rig: Rig) => boolean;
+  /** The control's unit per SI unit of the rig's accepted range (1000 for mm); none: no range. */
+  perSi?: number;
+  /** The slider's own span where it is narrower than what the set-up accepts (rpm to 5000). */
+  sliderSpan?: [number, number];
 }
 
-/** A number with its unit, a slider beside it where the page has `#ID-range`. */
+/** What a number control showed and meant when the lab last took its set-up. */
+interface NumberShown {
+  text: string;
+  touched: boolean;
+  fromLink: boolean;
+}
+
+/**
+ * A number with its unit, a slider beside it where the page has `#ID-range`. Typed in the page's
+ * language; offered only in the range the set-up accepts (the rig's `accepts`); a value the lab
+ * refuses goes back to what the lab runs, its message beside it.
+ */
 export class NumberSetting implements Setting {
   readonly keys: string[];
   readonly field: HTMLElement;
@@ -57,10 +75,12 @@ export class NumberSetting implements Setting {
   readonly inputs: HTMLElement[];
   private readonly number: HTMLInputElement;
   private readonly range: HTMLInputElement | null;
-  private sceneValue = "";
+  private readonly acceptsHint: HTMLElement;
+  private sceneValue: number | null = null;
   private touched = false;
   private fromLink = false;
   private applies = true;
+  private taken: NumberShown = { text: "", touched: false, fromLink: false };
 
   constructor(
     private readonly options: NumberOptions,
@@ -71,23 +91,47 @@ export class NumberSetting implements Setting {
     this.range = document.getElementById(`${options.id}-range`) as HTMLInputElement | null;
     ({ field: this.field, problem: this.problem } = fieldParts(options.id));
     this.inputs = this.range ? [this.range, this.number] : [this.number];
+    this.acceptsHint = document.createElement("p");
+    this.acceptsHint.className = "hint accepts";
+    this.acceptsHint.id = `${options.id}-accepts`;
+    this.acceptsHint.dataset.testid = `accepts-${options.id}`;
+    this.acceptsHint.hidden = true;
+    this.problem.before(this.acceptsHint);
+    this.number.setAttribute(
+      "aria-describedby",
+      `${this.acceptsHint.id} ${this.number.getAttribute("aria-describedby") ?? ""}`.trim(),
+    );
     this.number.addEventListener("input", () => {
       this.touched = true;
-      if (this.range && this.number.value !== "") this.range.value = this.number.value;
+      const reading = this.reading();
+      if (this.range && reading !== null) this.range.value = String(reading);
     });
     this.number.addEventListener("change", () => {
       this.touched = true;
+      const read = readNumber(this.number.value, pageLocale());
+      if ("problem" in read && this.number.value.trim() !== "") {
+        // Never sent: its problem beside it, the control back to what the lab runs.
+        this.problem.textContent = read.problem;
+        this.revert();
+        return;
+      }
       onCommit();
     });
     this.range?.addEventListener("input", () => {
       this.touched = true;
-      this.number.value = this.range!.value;
+      this.number.value = showNumber(
+        Number(this.range!.value),
+        this.options.decimals,
+        pageLocale(),
+      );
     });
     this.range?.addEventListener("change", () => onCommit());
   }
 
-  get value(): string {
-    return this.number.value.trim();
+  /** The number the control shows, or null where it shows none (or none it can read). */
+  private reading(): number | null {
+    const read = readNumber(this.number.value, pageLocale());
+    return "value" in read ? read.value : null;
   }
 
   set enabled(on: boolean) {
@@ -95,30 +139,67 @@ export class NumberSetting implements Setting {
   }
 
   private changed(): boolean {
-    if (this.value === "") return false;
+    const value = this.reading();
+    if (value === null) return false;
     if (this.fromLink) return true;
     if (!this.touched) return false;
-    return !this.options.sceneValueKnown || !sameNumber(this.value, this.sceneValue);
+    return !this.options.sceneValueKnown || value !== this.sceneValue;
   }
 
   entries(): string[] {
     if (!this.changed() || (!this.applies && !this.fromLink)) return [];
-    return [`${this.options.key}=${this.value}${this.options.unit}`];
+    return [`${this.options.key}=${String(this.reading())}${this.options.unit}`];
   }
 
-  private show(value: string): void {
-    this.number.value = value;
-    if (this.range && value !== "") this.range.value = value;
+  private show(value: number | null): void {
+    this.number.value =
+      value === null ? "" : showNumber(value, this.options.decimals, pageLocale());
+    if (this.range && value !== null) this.range.value = String(value);
   }
 
   adopt(rig: Rig): void {
     this.applies = this.options.appliesTo?.(rig) ?? true;
     this.field.hidden = !this.applies;
-    if (this.changed()) return;
-    const value = this.options.fromRig(rig);
-    this.sceneValue = value === null ? "" : trimmed(value, this.options.decimals);
-    this.touched = false;
-    this.show(this.sceneValue);
+    this.limit(rig);
+    if (!this.changed()) {
+      const value = this.options.fromRig(rig);
+      this.sceneValue = value === null ? null : Number(value.toFixed(this.options.decimals));
+      this.touched = false;
+      this.show(this.sceneValue);
+    }
+    this.taken = { text: this.number.value, touched: this.touched, fromLink: this.fromLink };
+  }
+
+  /** Offers only what the set-up accepts: the slider's ends, and the range said beside it. */
+  private limit(rig: Rig): void {
+    const perSi = this.options.perSi;
+    const accepted = perSi ? rig.accepts.find((r) => r.key === this.options.key) : undefined;
+    this.acceptsHint.hidden = !accepted;
+    if (!accepted || !perSi) return;
+    const least = accepted.least * perSi;
+    const most = accepted.most * perSi;
+    const locale = pageLocale();
+    const decimals = this.options.decimals;
+    // Rounded inward: the hint's ends are accepted values too.
+    const inward = (value: number, up: boolean) => {
+      const scale = 10 ** decimals;
+      return (up ? Math.ceil(value * scale - 1e-9) : Math.floor(value * scale + 1e-9)) / scale;
+    };
+    this.acceptsHint.textContent = `This set-up accepts ${showNumber(inward(least, true), decimals, locale)} to ${showNumber(inward(most, false), decimals, locale)} ${this.options.unit}.`;
+    if (!this.range) return;
+    const step = Number(this.range.step) || 1;
+    const [spanLeast, spanMost] = this.options.sliderSpan ?? [least, most];
+    // A slider's value lies on its steps from min: its ends are accepted values on them.
+    this.range.min = String(Math.ceil(Math.max(least, spanLeast) / step - 1e-9) * step);
+    this.range.max = String(Math.floor(Math.min(most, spanMost) / step + 1e-9) * step);
+  }
+
+  revert(): void {
+    this.number.value = this.taken.text;
+    const value = this.reading();
+    if (this.range && value !== null) this.range.value = String(value);
+    this.touched = this.taken.touched;
+    this.fromLink = this.taken.fromLink;
   }
 
   takeEntry(key: string, value: string): boolean {
@@ -128,7 +209,7 @@ export class NumberSetting implements Setting {
       `^\\s*([-+]?(?:\\d+\\.?\\d*|\\.\\d+)(?:[eE][-+]?\\d+)?)\\s*${unit}\\s*$`,
     ).exec(value);
     if (!match) return false;
-    this.show(match[1]!);
+    this.show(Number(match[1]!));
     this.fromLink = true;
     return true;
   }
@@ -150,6 +231,7 @@ export class MaterialSetting implements Setting {
   private sceneTemperature: number | null = null;
   private touched = false;
   private linkKeys = new Set<string>();
+  private taken = { value: "", touched: false, linkKeys: [] as string[] };
 
   constructor(onCommit: () => void) {
     this.select = byId<HTMLSelectElement>("material");
@@ -207,11 +289,23 @@ export class MaterialSetting implements Setting {
   }
 
   adopt(rig: Rig): void {
-    if (this.touched || this.linkKeys.size > 0) return;
-    const extra = rig as unknown as { temperature_k?: unknown };
-    this.sceneMaterial = rig.plate.material;
-    this.sceneTemperature = typeof extra.temperature_k === "number" ? extra.temperature_k : null;
-    this.choose(rig.plate.material, this.sceneTemperature ?? 300);
+    if (!this.touched && this.linkKeys.size === 0) {
+      const extra = rig as unknown as { temperature_k?: unknown };
+      this.sceneMaterial = rig.plate.material;
+      this.sceneTemperature = typeof extra.temperature_k === "number" ? extra.temperature_k : null;
+      this.choose(rig.plate.material, this.sceneTemperature ?? 300);
+    }
+    this.taken = {
+      value: this.select.value,
+      touched: this.touched,
+      linkKeys: Array.from(this.linkKeys),
+    };
+  }
+
+  revert(): void {
+    this.select.value = this.taken.value;
+    this.touched = this.taken.touched;
+    this.linkKeys = new Set(this.taken.linkKeys);
   }
 
   takeEntry(key: string, value: string): boolean {
@@ -243,6 +337,7 @@ export class LawSetting implements Setting {
   readonly inputs: HTMLElement[];
   readonly select: HTMLSelectElement;
   private fromLink = false;
+  private taken = "";
 
   constructor(onCommit: () => void) {
     this.select = byId<HTMLSelectElement>("law");
@@ -261,6 +356,11 @@ export class LawSetting implements Setting {
 
   adopt(): void {
     // The rig does not name its law: "as the scene" stays until the user picks one.
+    this.taken = this.select.value;
+  }
+
+  revert(): void {
+    this.select.value = this.taken;
   }
 
   takeEntry(key: string, value: string): boolean {

@@ -152,26 +152,65 @@ await check("the default scene loads paused, plays, fills the period and ends do
 await check("a refused spacing shows its message beside the spacing control", async () => {
   const { page, context, complaints } = await openPage("/?scene=minimal");
   await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
-  await page.fill("#spacing-mm", "-5");
+  const creates = async () =>
+    (await (await fetch(`${base}/__mock/log`)).json()).filter((e) => e.create).length;
+  // A decimal comma on an English page: refused at the control, never read as 705, never sent.
+  const before = await creates();
+  await page.fill("#spacing-mm", "70,5");
   await page.press("#spacing-mm", "Enter");
   const problem = page.getByTestId("problem-spacing");
+  await problem.filter({ hasText: "decimal point" }).waitFor();
+  expect((await page.locator("#spacing-mm").inputValue()) === "89", "the comma's value stays");
+  expect((await creates()) === before, "a value the page cannot read was sent");
+  await page.fill("#spacing-mm", "-5");
+  await page.press("#spacing-mm", "Enter");
   await problem.filter({ hasText: "must be positive, found -0.005 m (-5 mm)" }).waitFor();
   expect((await problem.getAttribute("role")) === "alert", "problem is not an alert");
   const field = page.locator(".field", { has: page.locator("#spacing-mm") });
   expect((await field.getByTestId("problem-spacing").count()) === 1, "problem not beside spacing");
+  // The control shows what the lab runs: the refused value goes, its message stays.
   expect(
-    (await page.locator("#spacing-mm").getAttribute("aria-invalid")) === "true",
-    "not invalid",
+    (await page.locator("#spacing-mm").inputValue()) === "89",
+    `the control shows ${await page.locator("#spacing-mm").inputValue()}, the lab runs 89 mm`,
   );
-  // the page stays usable: the running session goes on, a good value starts a new one
+  expect((await page.getByTestId("spacing").textContent()).includes("89 mm"), "rig changed");
+  // the page stays usable: the running session goes on, another control starts a new one, and a
+  // good value starts a new one
+  await page.fill("#duration-s", "5");
+  await page.press("#duration-s", "Enter");
+  await page.waitForFunction(() =>
+    new URL(document.querySelector('[data-testid="setup-link"]').value).search.includes(
+      "world.duration",
+    ),
+  );
   await page.fill("#spacing-mm", "70");
   await page.press("#spacing-mm", "Enter");
   await page.getByTestId("spacing").filter({ hasText: "70 mm" }).waitFor();
   expect((await problem.textContent()) === "", "problem stays after a good value");
   const link = await page.getByTestId("setup-link").inputValue();
-  expect(link.endsWith("/?scene=minimal&set=rollers.spacing%3D70mm"), `link ${link}`);
+  expect(
+    link.endsWith("/?scene=minimal&set=rollers.spacing%3D70mm&set=world.duration%3D5s"),
+    `link ${link}`,
+  );
   const keeps = complaints.filter((c) => !c.includes("400 (Bad Request)"));
   expect(keeps.length === 0, `console: ${keeps.join("\n")}`);
+  await context.close();
+});
+
+await check("each slider offers only what the set-up accepts", async () => {
+  const { page, context } = await openPage("/?scene=paper-rig");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  // The drive's LEGO gears (1 mm module: 24-40-40-24 teeth) span 40 to 104 mm.
+  const slider = page.locator("#spacing-mm-range");
+  expect((await slider.getAttribute("min")) === "40", `min ${await slider.getAttribute("min")}`);
+  expect((await slider.getAttribute("max")) === "104", `max ${await slider.getAttribute("max")}`);
+  const hint = await page.getByTestId("accepts-spacing-mm").textContent();
+  expect(hint.includes("40 to 104 mm"), `hint: ${hint}`);
+  // Pressed to its end, the slider gives a set-up the lab takes.
+  await slider.focus();
+  await page.keyboard.press("End");
+  await page.getByTestId("spacing").filter({ hasText: "104 mm" }).waitFor();
+  expect((await page.getByTestId("problem-spacing").textContent()) === "", "104 mm refused");
   await context.close();
 });
 

@@ -182,6 +182,7 @@ PreparedRun prepare_run(const RunRequest& r) {
   source.overrides.insert(source.overrides.end(), overrides.begin(), overrides.end());
   const LoadedScene loaded = load_scene_source(std::move(source));
   const Scene& scene = *loaded.scene;
+  out.scene = loaded.scene;
   out.output = scene.output;
   // The rig, compiled once for the whole run: the step the accuracy picks changes only the step
   // and the bias that follows from it.

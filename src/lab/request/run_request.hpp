@@ -58,6 +58,7 @@ struct RunRequest {
 // A run read and checked: the scene loaded (with the chosen step), the frames' request resolved,
 // its files' places made ready. Made by prepare_run only.
 struct PreparedRun {
+  std::shared_ptr<const Scene> scene;      // as loaded, with the request's entries
   std::shared_ptr<const CompiledRig> rig;  // compiled once, at the chosen step
   OutputDesc output;                       // the scene's output part: which files `out` holds
   std::optional<double> chosen_time_step;  // s, when `accuracy` picked it

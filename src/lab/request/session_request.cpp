@@ -91,7 +91,8 @@ PreparedSession prepare_session(const SessionRequest& request, const std::string
   run.scene.asset_dir = asset_dir;
   run.set = request.set;
   PreparedRun prepared = prepare_run(run);
-  return {std::move(prepared.rig), prepared.output, std::move(prepared.warnings)};
+  return {std::move(prepared.rig), prepared.output, std::move(prepared.warnings),
+          accepted_ranges(*prepared.scene)};
 }
 
 }  // namespace fl

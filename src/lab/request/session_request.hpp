@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/accepted_ranges.hpp"
 #include "scene/compiled_rig.hpp"
 #include "scene/scene.hpp"
 
@@ -31,8 +32,9 @@ struct SessionRequest {
 
 struct PreparedSession {
   std::shared_ptr<const CompiledRig> rig;
-  OutputDesc output;                  // the scene's output part: the files the run keeps
-  std::vector<std::string> warnings;  // field_ref mentions, for the front end to spell
+  OutputDesc output;                   // the scene's output part: the files the run keeps
+  std::vector<std::string> warnings;   // field_ref mentions, for the front end to spell
+  std::vector<AcceptedRange> accepts;  // what the set-up's controls may offer (accepted_ranges)
 };
 
 // Reads and checks the request against the scenes `folder` (and the data in `asset_dir`,

@@ -1,0 +1,135 @@
+// The ranges a scene offers its controls, against the rules' own formulas: the rollers' overlap,
+// the plate's length over the amplitude, the LEGO gears' pitch radii, the bench's step count. And
+// each edge is an edge: the value there is accepted, one a micrometre beyond is refused by the
+// loader, located at the `set` entry that made it.
+#include "scene/accepted_ranges.hpp"
+
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "io/input_error.hpp"
+#include "io/paper_table_yaml.hpp"
+#include "scene/scene_yaml.hpp"
+
+namespace fl {
+namespace {
+
+const PaperTable& paper_table() {
+  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return table;
+}
+const PaperTableSource kPaper = []() -> const PaperTable& { return paper_table(); };
+const PartCatalogSource kParts = []() -> const assets::PartCatalog& {
+  static const assets::PartCatalog catalog =
+      assets::load_part_catalog(assets::part_catalog_path(FRICTIONLAB_TEST_ASSET_DIR));
+  return catalog;
+};
+
+// A bare rig: no drive, no sensor, the plate released at rest 20 mm off centre.
+const std::string kBare = R"(format: 1
+world:
+  time_step: 1 ms
+rollers:
+  spacing: 89 mm
+  radius: 10 mm
+  speed: 1600 rpm
+plate:
+  length: 200 mm
+  thickness: 5 mm
+  offset: 20 mm
+friction:
+  mu_k: 0.3
+)";
+
+const AcceptedRange& range_of(const std::vector<AcceptedRange>& ranges, const std::string& key) {
+  for (const AcceptedRange& r : ranges)
+    if (r.key == key) return r;
+  throw std::runtime_error("no range for " + key);
+}
+
+Scene bare(std::vector<SceneOverride> overrides = {}) {
+  return load_scene_text(kBare, "bare.yaml", overrides, kPaper);
+}
+
+Scene paper_rig(std::vector<SceneOverride> overrides = {}) {
+  const std::string file =
+      (std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes" / "paper-rig.yaml").string();
+  return load_scene_file(file, overrides, kPaper, kParts);
+}
+
+// The key of the problem the loader locates at a `set` entry, or "" when it loads.
+std::string refused_entry(const std::function<Scene()>& load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e.where().field_value.value_or("(in the file)");
+  }
+  return "";
+}
+
+constexpr double kClose = 1e-9;  // m: the bisection's edges, far finer than any slider's step
+
+TEST(AcceptedRanges, TheBareRigsSpacingRunsFromTheRollersTouchingToThePlatesLength) {
+  const std::vector<AcceptedRange> ranges = accepted_ranges(bare());
+  const AcceptedRange& spacing = range_of(ranges, "rollers.spacing");
+  EXPECT_EQ(spacing.unit, "m");
+  // The rollers overlap at l = 2 a = 20 mm; the plate (200 mm) leaves a roller at l + 2 A = L,
+  // A = 20 mm released at rest.
+  EXPECT_NEAR(spacing.least, 0.020, kClose);
+  EXPECT_GT(spacing.least, 0.020);
+  EXPECT_NEAR(spacing.most, 0.200 - 2 * 0.020, kClose);
+  EXPECT_LT(spacing.most, 0.160);
+  // The plate stays on both rollers while |offset| < (L - l) / 2.
+  const AcceptedRange& offset = range_of(ranges, "plate.offset");
+  EXPECT_NEAR(offset.most, 0.5 * (0.200 - 0.089), kClose);
+  EXPECT_NEAR(offset.least, -0.5 * (0.200 - 0.089), kClose);
+  // From one step to 1e9 of them.
+  const AcceptedRange& duration = range_of(ranges, "world.duration");
+  EXPECT_DOUBLE_EQ(duration.least, 1e-3);
+  EXPECT_DOUBLE_EQ(duration.most, 1e6);
+  // No drive: the rollers' own speed is turned, not a motor's duty.
+  EXPECT_EQ(range_of(ranges, "rollers.speed").unit, "rad/s");
+  EXPECT_THROW(range_of(ranges, "drive.motor.duty"), std::runtime_error);
+}
+
+TEST(AcceptedRanges, ThePaperRigsSpacingIsWhatItsLegoGearsSpan) {
+  const std::vector<AcceptedRange> ranges = accepted_ranges(paper_rig());
+  const AcceptedRange& spacing = range_of(ranges, "rollers.spacing");
+  // LEGO spur gears have a 1 mm module: a pitch radius of half the tooth count in mm. The idlers
+  // (40 teeth, 20 mm) meet between the rollers at l = 40 mm; the chain of 24-40-40-24 stretched
+  // straight spans 12 + 40 + 40 + 12 = 104 mm.
+  EXPECT_NEAR(spacing.least, 0.040, kClose);
+  EXPECT_NEAR(spacing.most, 0.104, kClose);
+  const AcceptedRange& duty = range_of(ranges, "drive.motor.duty");
+  EXPECT_EQ(duty.unit, "");
+  EXPECT_LE(duty.most, 1.0);
+}
+
+TEST(AcceptedRanges, EachEdgeIsAcceptedAndJustBeyondItTheEntryIsRefused) {
+  for (const bool drive : {false, true}) {
+    const auto load = [drive](std::vector<SceneOverride> o) {
+      return drive ? paper_rig(std::move(o)) : bare(std::move(o));
+    };
+    for (const AcceptedRange& r : accepted_ranges(load({}))) {
+      if (r.key == "world.duration" || r.unit == "rad/s" || r.unit.empty()) continue;
+      for (const auto& [edge, beyond] :
+           {std::pair{r.least, r.least - 1e-6}, std::pair{r.most, r.most + 1e-6}}) {
+        const auto entry = [&](double v) {
+          return SceneOverride{r.key, std::to_string(v * 1e3) + " mm"};
+        };
+        // The edge rounded inward to a micrometre, as a slider's value would be.
+        const double inside = edge == r.least ? edge + 1e-6 : edge - 1e-6;
+        EXPECT_EQ(refused_entry([&] { return load({entry(inside)}); }), "")
+            << r.key << " at " << inside;
+        const SceneOverride out = entry(beyond);
+        EXPECT_EQ(refused_entry([&] { return load({out}); }), out.path + "=" + out.value)
+            << r.key << " at " << beyond << (drive ? " (drive)" : "");
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace fl

@@ -141,24 +141,27 @@ await check("an invalid spacing shows the lab's message beside the spacing contr
   await context.close();
 });
 
-await check("a spacing the drive's gears cannot span is refused at the spacing control", async () => {
-  const { page, context, complaints } = await openPage("/?scene=paper-rig");
-  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
-  await page.fill("#spacing-mm", "120");
-  await page.press("#spacing-mm", "Enter");
-  const problem = page.getByTestId("problem-spacing");
-  await problem.filter({ hasText: "spans roller spacings from 40 to 104 mm" }).waitFor();
-  const text = await problem.textContent();
-  expect(!text.includes("/") && !text.includes(".yaml"), `a path in the message: ${text}`);
-  expect((await page.getByTestId("problem-scene").textContent()) === "", "a problem at Scene");
-  expect((await page.locator("#spacing-mm").inputValue()) === "89", "the control left at 120");
-  // Another control still works: the spacing's refused value is not sent again.
-  await page.selectOption("#material", "iron@300");
-  await page.getByTestId("material").filter({ hasText: "iron" }).waitFor();
-  const others = complaints.filter((c) => !c.includes("status of 400"));
-  expect(others.length === 0, `console: ${others.join("\n")}`);
-  await context.close();
-});
+await check(
+  "a spacing the drive's gears cannot span is refused at the spacing control",
+  async () => {
+    const { page, context, complaints } = await openPage("/?scene=paper-rig");
+    await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+    await page.fill("#spacing-mm", "120");
+    await page.press("#spacing-mm", "Enter");
+    const problem = page.getByTestId("problem-spacing");
+    await problem.filter({ hasText: "spans roller spacings from 40 to 104 mm" }).waitFor();
+    const text = await problem.textContent();
+    expect(!text.includes("/") && !text.includes(".yaml"), `a path in the message: ${text}`);
+    expect((await page.getByTestId("problem-scene").textContent()) === "", "a problem at Scene");
+    expect((await page.locator("#spacing-mm").inputValue()) === "89", "the control left at 120");
+    // Another control still works: the spacing's refused value is not sent again.
+    await page.selectOption("#material", "iron@300");
+    await page.getByTestId("material").filter({ hasText: "iron" }).waitFor();
+    const others = complaints.filter((c) => !c.includes("status of 400"));
+    expect(others.length === 0, `console: ${others.join("\n")}`);
+    await context.close();
+  },
+);
 
 await check("the paper's rig loads without console errors; a screenshot is written", async () => {
   const { page, context, complaints } = await openPage("/?scene=paper-rig");

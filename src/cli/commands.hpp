@@ -30,5 +30,6 @@ Command add_compare_command(CLI::App& app, const GlobalOptions& global);
 Command add_fit_command(CLI::App& app, const GlobalOptions& global);
 Command add_serve_command(CLI::App& app, const GlobalOptions& global);
 Command add_track_command(CLI::App& app, const GlobalOptions& global);
+Command add_report_command(CLI::App& app, const GlobalOptions& global);
 
 }  // namespace fl::cli

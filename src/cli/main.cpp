@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
       fl::cli::add_sweep_command(app, global),     fl::cli::add_merge_command(app, global),
       fl::cli::add_compare_command(app, global),   fl::cli::add_fit_command(app, global),
       fl::cli::add_serve_command(app, global),     fl::cli::add_track_command(app, global),
+      fl::cli::add_report_command(app, global),
   };
 
   // A first word that is no subcommand: say which it was closest to.

@@ -1,0 +1,86 @@
+// What a lab report holds: one part per run or measurement (its set-up, its data, its period and
+// mu_k with their uncertainties, the paper's Table I row and theory beside them), the student's
+// stopwatch timings, and who handed it in. Filled from a run's files (run_report_part.hpp) or from
+// a measurement's estimate; written as HTML by report_html.hpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fl {
+
+// One period as the estimator judged it.
+struct ReportPeriod {
+  double start_s = 0;
+  double end_s = 0;
+  double period_s = 0;
+  bool accepted = false;
+};
+
+// A curve of the part's data: its times and values, in the unit its label says.
+struct ReportCurve {
+  std::string label;  // "x (mm)", "Hall sensor (ADC counts)"
+  std::vector<double> t_s;
+  std::vector<double> value;
+};
+
+// The paper's measurement for the part's material (Table I).
+struct ReportPaperRow {
+  std::string material;  // "LEGO blocks"
+  double temperature_k = 300;
+  double period_s = 0;
+  double period_err_s = 0;
+  double mu_k = 0;
+  double mu_k_err = 0;
+};
+
+// A value the report shows: its number (null where the lab did not measure it) and the summary's
+// field it comes from, so the report's numbers are the files' (data-field, data-value).
+struct ReportNumber {
+  std::optional<double> value;
+  std::string field;  // "period_s"
+};
+
+struct ReportPart {
+  std::string title;  // "Simulation: paper-rig", "Measurement: rig.csv"
+  bool simulated = false;
+  std::string source;  // the folder or file it was read from, as given
+  // The set-up, as rows of a table: what, and its value with its unit.
+  std::vector<std::pair<std::string, std::string>> set_up;
+  double spacing_m = 0.089;
+  double spacing_err_m = 0.002;  // dl, in mu_k's uncertainty
+  double gravity_m_s2 = 9.81;
+  std::optional<ReportCurve> position;  // x(t), the whole run
+  std::optional<ReportCurve> signal;    // the Hall signal or the measurement's channel
+  std::vector<ReportPeriod> periods;
+  ReportNumber period;          // T: the mean of the accepted periods
+  ReportNumber period_sd;       // their standard deviation
+  ReportNumber period_se;       // its standard error, sd / sqrt(N)
+  ReportNumber periods_used;    // N
+  ReportNumber mu_k;            // 2 pi^2 l / (g T^2)
+  ReportNumber mu_k_err;        // in quadrature: dl / l and 2 sd / T
+  ReportNumber mu_k_err_worst;  // their sum
+  ReportNumber period_thin;     // theory for the set mu_k (a simulation)
+  ReportNumber period_thick;
+  ReportNumber mu_k_set;  // what the simulation was given
+  std::string regime;     // what the trajectory showed (a simulation)
+  std::optional<ReportPaperRow> paper;
+};
+
+// The student's stopwatch: periods timed by hand between two presses.
+struct StopwatchTiming {
+  int periods = 10;
+  double wall_s = 0;                  // between the presses, on the wall clock
+  std::optional<double> simulated_s;  // the simulated time between them (a simulation)
+};
+
+struct ReportContent {
+  std::string student;      // "" : not given
+  std::string lab_version;  // "frictionlab 1.2.0"
+  std::string date;         // "2026-11-29"
+  std::vector<ReportPart> parts;
+  std::vector<StopwatchTiming> stopwatch;
+};
+
+}  // namespace fl

@@ -1,0 +1,234 @@
+#include "lab/report/report_parts.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string_view>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "hall_log/measurement_file.hpp"
+#include "text/decimal.hpp"
+#include "text/text.hpp"
+
+namespace fl {
+namespace {
+
+using nlohmann::json;
+
+// A CSV's columns by their header's names; cells that are no number are NaN.
+struct CsvColumns {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> cells;  // rows
+
+  const std::vector<std::string>* row(std::size_t i) const { return &cells[i]; }
+  int column(std::string_view name) const {
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == name) return static_cast<int>(i);
+    return -1;
+  }
+  std::vector<double> numbers(std::string_view name, const std::string& file) const {
+    const int c = column(name);
+    if (c < 0)
+      throw std::invalid_argument(
+          fmt::format("{}: expected a column {}, found none: is it a run's file?", file, name));
+    std::vector<double> out;
+    out.reserve(cells.size());
+    for (const auto& r : cells) {
+      double v = std::nan("");
+      if (static_cast<std::size_t>(c) < r.size()) {
+        const std::string& cell = r[static_cast<std::size_t>(c)];
+        const auto read = read_decimal(cell.data(), cell.data() + cell.size(), v);
+        if (read.ec != std::errc() || read.ptr != cell.data() + cell.size()) v = std::nan("");
+      }
+      out.push_back(v);
+    }
+    return out;
+  }
+};
+
+std::vector<std::string> split_commas(std::string_view line) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = line.find(',', start);
+    out.emplace_back(trim(line.substr(start, comma - start)));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return out;
+}
+
+CsvColumns read_csv(const std::string& text) {
+  CsvColumns out;
+  std::size_t start = 0;
+  bool header = true;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string_view line = trim(std::string_view(text).substr(start, end - start));
+    start = end + 1;
+    if (line.empty()) continue;
+    if (header) {
+      out.names = split_commas(line);
+      header = false;
+    } else {
+      out.cells.push_back(split_commas(line));
+    }
+  }
+  return out;
+}
+
+ReportNumber field(const json& summary, const std::string& name) {
+  const auto it = summary.find(name);
+  if (it == summary.end() || !it->is_number()) return {std::nullopt, name};
+  return {it->get<double>(), name};
+}
+
+std::string mm(double m) {
+  return fmt::format("{:g} mm", std::round(m * 1e4) / 10.0);
+}
+
+// The paper's row the summary names (its material key, and the row whose T it holds).
+std::optional<ReportPaperRow> paper_row(const json& summary, const PaperTable& table) {
+  const auto paper = summary.find("paper");
+  if (paper == summary.end() || !paper->is_object()) return std::nullopt;
+  const PaperMaterial* material = table.find(paper->value("material", ""));
+  if (!material) return std::nullopt;
+  const double period = paper->value("period_s", 0.0);
+  const PaperMeasurement& m = material->cold && std::fabs(material->cold->period.value - period) <
+                                                    std::fabs(material->room.period.value - period)
+                                  ? *material->cold
+                                  : material->room;
+  return ReportPaperRow{material->name,       m.temperature, m.period.value,
+                        m.period.uncertainty, m.mu_k.value,  m.mu_k.uncertainty};
+}
+
+}  // namespace
+
+ReportPart simulation_part(const RunFiles& files, const std::string& source,
+                           const PaperTable& table) {
+  const std::optional<std::string> text = files("summary.json");
+  if (!text)
+    throw std::invalid_argument(fmt::format(
+        "{}: expected a run's summary.json, found none: give a folder `run --out` wrote, or a "
+        "measurement's file",
+        source));
+  const json summary = json::parse(*text, nullptr, false);
+  if (!summary.is_object() || !summary.contains("period_s") || !summary.contains("spacing_m"))
+    throw std::invalid_argument(fmt::format(
+        "{}: its summary.json is not a run's summary (no period_s, no spacing_m)", source));
+  ReportPart part;
+  part.simulated = true;
+  part.source = source;
+  const std::string scene = summary.value("scene", "");
+  part.title = "Simulation: " + (scene.empty() ? source : scene);
+  part.spacing_m = summary.at("spacing_m").get<double>();
+  part.period = field(summary, "period_s");
+  part.period_sd = field(summary, "period_std_s");
+  part.period_se = field(summary, "period_std_error_s");
+  part.periods_used = field(summary, "periods_used");
+  part.mu_k = field(summary, "mu_k_estimator");
+  part.mu_k_err = field(summary, "mu_k_err_quadrature");
+  part.mu_k_err_worst = field(summary, "mu_k_err_worst");
+  part.period_thin = field(summary, "period_thin_s");
+  part.period_thick = field(summary, "period_thick_s");
+  part.mu_k_set = field(summary, "mu_k_set");
+  if (summary.contains("regime") && summary["regime"].is_string())
+    part.regime = summary["regime"].get<std::string>();
+  part.paper = paper_row(summary, table);
+
+  part.set_up.emplace_back("scene", scene);
+  part.set_up.emplace_back("roller spacing l", mm(part.spacing_m));
+  if (const ReportNumber w = field(summary, "roller_speed_rad_s"); w.value)
+    part.set_up.emplace_back("rollers' speed",
+                             fmt::format("{:.0f} rpm", *w.value * 30.0 / std::numbers::pi));
+  if (part.paper) part.set_up.emplace_back("plate", part.paper->material);
+  if (part.mu_k_set.value)
+    part.set_up.emplace_back("μk set in the simulation", fmt::format("{:g}", *part.mu_k_set.value));
+  if (const ReportNumber h = field(summary, "h_c_m"); h.value)
+    part.set_up.emplace_back("plate's centre of mass above the contacts h_c", mm(*h.value));
+  if (const ReportNumber m = field(summary, "plate_mass_kg"); m.value)
+    part.set_up.emplace_back("plate's mass", fmt::format("{:.1f} g", *m.value * 1e3));
+  if (const ReportNumber d = field(summary, "duration_s"); d.value)
+    part.set_up.emplace_back("run", fmt::format("{:g} s of simulated time", *d.value));
+  if (const ReportNumber dt = field(summary, "time_step_s"); dt.value)
+    part.set_up.emplace_back("time step", fmt::format("{:g} ms", *dt.value * 1e3));
+  if (const ReportNumber seed = field(summary, "seed"); seed.value)
+    part.set_up.emplace_back("seed (the sensor's noise)", fmt::format("{:.0f}", *seed.value));
+
+  if (const auto trajectory = files("trajectory.csv")) {
+    const CsvColumns csv = read_csv(*trajectory);
+    ReportCurve x{"x (mm)", csv.numbers("t_s", "trajectory.csv"), {}};
+    for (double v : csv.numbers("x_m", "trajectory.csv")) x.value.push_back(v * 1e3);
+    part.position = std::move(x);
+  }
+  if (const auto hall = files("hall.csv")) {
+    const CsvColumns csv = read_csv(*hall);
+    ReportCurve signal{"Hall sensor (ADC counts)", {}, csv.numbers("adc", "hall.csv")};
+    for (double us : csv.numbers("t_us", "hall.csv")) signal.t_s.push_back(us * 1e-6);
+    part.signal = std::move(signal);
+  }
+  if (const auto periods = files("periods.csv")) {
+    const CsvColumns csv = read_csv(*periods);
+    const std::vector<double> start = csv.numbers("start_s", "periods.csv");
+    const std::vector<double> end = csv.numbers("end_s", "periods.csv");
+    const std::vector<double> period = csv.numbers("period_s", "periods.csv");
+    const int status = csv.column("status");
+    for (std::size_t i = 0; i < period.size(); ++i)
+      part.periods.push_back(
+          {start[i], end[i], period[i],
+           status >= 0 && (*csv.row(i))[static_cast<std::size_t>(status)] == "accepted"});
+  }
+  return part;
+}
+
+ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
+                            const std::optional<PaperComparison>& paper) {
+  ReportPart part;
+  part.source = log.path;
+  part.title = "Measurement: " + log.path;
+  const LogSetUp& s = estimate.set_up;
+  part.spacing_m = s.spacing;
+  part.spacing_err_m = s.spacing_err;
+  part.gravity_m_s2 = s.gravity;
+  const fl_estimator::Stats& st = estimate.stats;
+  const bool measured = st.periods_used > 0;
+  const bool spread = st.periods_used >= 2;
+  const auto value = [](bool known, double v, const char* name) {
+    return ReportNumber{known ? std::optional<double>(v) : std::nullopt, name};
+  };
+  part.period = value(measured, static_cast<double>(st.period_s), "period_s");
+  part.period_sd = value(spread, static_cast<double>(st.period_std_s), "period_std_s");
+  part.period_se = value(spread, static_cast<double>(st.period_sem_s), "period_std_error_s");
+  part.periods_used = value(true, st.periods_used, "periods_used");
+  part.mu_k = value(measured, static_cast<double>(st.mu_k), "mu_k");
+  part.mu_k_err = value(spread, static_cast<double>(st.mu_k_err_quadrature), "mu_k_err_quadrature");
+  part.mu_k_err_worst = value(spread, static_cast<double>(st.mu_k_err_worst), "mu_k_err_worst");
+  part.period_thin.field = "period_thin_s";
+  part.period_thick.field = "period_thick_s";
+  part.mu_k_set.field = "mu_k_set";
+  part.set_up.emplace_back("instrument", instrument_words(log.instrument) +
+                                             (log.channel.empty() ? "" : ", " + log.channel));
+  part.set_up.emplace_back("file", log.path);
+  part.set_up.emplace_back("roller spacing l",
+                           fmt::format("{:g} ± {:g} mm", s.spacing * 1e3, s.spacing_err * 1e3));
+  part.set_up.emplace_back("g", fmt::format("{:g} m/s²", s.gravity));
+  part.set_up.emplace_back("samples", fmt::format("{} over {:.2f} s ({:.0f} Hz)", log.t_s.size(),
+                                                  estimate.duration, estimate.sample_rate));
+  if (paper) {
+    part.set_up.emplace_back("plate", paper->name);
+    part.paper = ReportPaperRow{paper->name,         paper->temperature,
+                                paper->period.value, paper->period.uncertainty,
+                                paper->mu_k.value,   paper->mu_k.uncertainty};
+  }
+  ReportCurve signal{instrument_words(log.instrument) + " (as read)", log.t_s, {}};
+  signal.value.assign(log.adc.begin(), log.adc.end());
+  part.signal = std::move(signal);
+  for (const EstimatedPeriod& p : estimate.periods)
+    part.periods.push_back({p.start, p.end, p.period, p.status == fl_estimator::kAccepted});
+  return part;
+}
+
+}  // namespace fl

@@ -1,0 +1,45 @@
+// A lab report, as every front end asks for it (`frictionlab report`, frictionlab.report, the
+// page's "Lab report"): the runs and measurements it reports, who hands it in, the stopwatch's
+// timings, and where to write it. A run is a folder `run --out` wrote (its summary.json); anything
+// else is a measurement, read and estimated as `estimate` reads it, with `measurement`'s rig.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "lab/report/report_content.hpp"
+#include "lab/report/report_parts.hpp"
+#include "lab/request/estimate_request.hpp"
+
+namespace fl {
+
+struct ReportRequest {
+  std::string assets;                      // "assets": the lab's data folder ("" : the default)
+  std::vector<std::string> inputs;         // "inputs": run folders and measurement files, in order
+  std::string out;                         // "out": the HTML file ("" : not written)
+  std::string student;                     // "student": who hands it in
+  std::vector<StopwatchTiming> stopwatch;  // "stopwatch": periods timed by hand
+  EstimateRequest measurement;  // the measurements' rig and reading (spacing, material, ...)
+  std::string lab_version;      // the front end's version, in the report's footer
+  std::string date;             // "YYYY-MM-DD" ("" : today, UTC)
+};
+
+struct ReportResult {
+  std::string html;
+  std::string written;  // the file written ("" : none)
+  ReportContent content;
+
+  // {"written", "parts": [{"title", "period_s", "mu_k", ...}]}: what the report says, in numbers.
+  nlohmann::json json() const;
+};
+
+// Throws RequestError (every problem by field) or InputError located in the file at fault.
+ReportResult make_report(const ReportRequest& request);
+
+// A report of runs already in hand (a session's), by their files.
+ReportResult report_of_runs(const std::vector<std::pair<std::string, RunFiles>>& runs,
+                            const ReportRequest& request);
+
+}  // namespace fl

@@ -610,6 +610,17 @@ def track(
     scale: Optional[float] = None,
     plate_length: Optional[Quantity] = None,
 ) -> dict[str, Any]: ...
+def report(
+    inputs: list[PathLike],
+    *,
+    out: PathLike,
+    student: str = "",
+    stopwatch: list[tuple[int, float, Optional[float]]] = [],
+    spacing: Quantity = "89 mm",
+    material: Optional[str] = None,
+    temperature: Optional[Quantity] = None,
+    assets: Optional[PathLike] = None,
+) -> dict[str, Any]: ...
 def table(
     *,
     gravity: Quantity = "9.81 m/s^2",

@@ -12,6 +12,7 @@
 #include "serve/measurement_upload.hpp"
 #include "serve/session_events.hpp"
 #include "serve/session_opening.hpp"
+#include "serve/session_report.hpp"
 
 namespace fl::browser {
 namespace {
@@ -78,6 +79,15 @@ Answer BrowserLab::file(const std::string& id, const std::string& name) {
   const std::optional<std::string> text = open->session->file(name);
   if (!text) return {404, serve::missing_file_json(name, serve::kMostRecordedSeconds)};
   return {200, {{"text", *text}}};
+}
+
+Answer BrowserLab::report(const std::string& id, std::string_view body) {
+  Open* open = find(id);
+  if (!open) return no_such_session();
+  const serve::ReportAnswer answer =
+      serve::session_report(*open->session, body, asset_dir_, version_);
+  if (answer.status != 200) return {answer.status, answer.body};
+  return {200, {{"html", answer.html}}};
 }
 
 Answer BrowserLab::end(const std::string& id) {

@@ -42,6 +42,8 @@ class BrowserLab {
   Answer control(const std::string& id, std::string_view body);
   // GET /api/sessions/ID/files/NAME: 200 {"text": the file}, or 404.
   Answer file(const std::string& id, const std::string& name);
+  // POST /api/sessions/ID/report: 200 {"html": the report}, or the error.
+  Answer report(const std::string& id, std::string_view body);
   // DELETE /api/sessions/ID.
   Answer end(const std::string& id);
   // POST /api/estimate?name=&spacing=&h_c=: the file's bytes read by the lab's readers.

@@ -56,6 +56,9 @@ std::string control(const std::string& id, const std::string& body) {
 std::string file(const std::string& id, const std::string& name) {
   return answered([&](BrowserLab& lab) { return lab.file(id, name); });
 }
+std::string report(const std::string& id, const std::string& body) {
+  return answered([&](BrowserLab& lab) { return lab.report(id, body); });
+}
 std::string end(const std::string& id) {
   return answered([&](BrowserLab& lab) { return lab.end(id); });
 }
@@ -127,6 +130,7 @@ EMSCRIPTEN_BINDINGS(frictionlab) {
   emscripten::function("events", &events);
   emscripten::function("control", &control);
   emscripten::function("file", &file);
+  emscripten::function("report", &report);
   emscripten::function("end", &end);
   emscripten::function("estimate", &estimate);
   emscripten::function("rig", &rig);

@@ -19,5 +19,6 @@ void bind_sweep(py::module_& m);         // sweep
 void bind_fit(py::module_& m);           // fit
 void bind_studies(py::module_& m);       // compare, accuracy, stability
 void bind_track(py::module_& m);         // track
+void bind_report(py::module_& m);        // report
 
 }  // namespace fl::python

@@ -58,4 +58,5 @@ PYBIND11_MODULE(frictionlab, m) {
   fl::python::bind_fit(m);
   fl::python::bind_studies(m);
   fl::python::bind_track(m);
+  fl::python::bind_report(m);
 }

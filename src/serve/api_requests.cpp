@@ -1,6 +1,9 @@
 #include "serve/api_requests.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <optional>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -124,6 +127,52 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
         "0.25 or 0.0625} or {\"name\": a student's name}, found " +
         quoted(body)};
   return command;
+}
+
+std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
+  if (text.empty()) return ReportBody{};
+  auto parsed = object_of(text);
+  if (auto* refusal = std::get_if<BodyRefusal>(&parsed)) return *refusal;
+  const json& body = std::get<json>(parsed);
+  ReportBody report;
+  for (const auto& [key, value] : body.items())
+    if (key != "student" && key != "stopwatch")
+      return BodyRefusal{"expected the keys \"student\" and \"stopwatch\", found \"" + key + "\""};
+  if (const auto student = body.find("student"); student != body.end()) {
+    const bool empty = student->is_string() && student->get<std::string>().empty();
+    if (!student->is_string() || (!empty && !is_student_name(student->get<std::string>())))
+      return BodyRefusal{name_expected() + ", or \"\" for none, found " + quoted(*student),
+                         "student"};
+    report.student = student->get<std::string>();
+  }
+  const auto stopwatch = body.find("stopwatch");
+  if (stopwatch == body.end()) return report;
+  if (!stopwatch->is_array() || stopwatch->size() > kMostStopwatchTimings)
+    return BodyRefusal{"expected \"stopwatch\" as a list of at most " +
+                           std::to_string(kMostStopwatchTimings) + " timings, found " +
+                           quoted(*stopwatch),
+                       "stopwatch"};
+  for (const json& t : *stopwatch) {
+    const auto number = [&t](const char* key) {
+      const auto it = t.is_object() ? t.find(key) : t.end();
+      return t.is_object() && it != t.end() && it->is_number() ? std::optional(it->get<double>())
+                                                               : std::nullopt;
+    };
+    const std::optional<double> periods = number("periods"), wall = number("wall_s");
+    const bool simulated_null =
+        t.is_object() && t.contains("simulated_s") && t["simulated_s"].is_null();
+    const std::optional<double> simulated = number("simulated_s");
+    if (!periods || !wall || (!simulated && !simulated_null) ||
+        !(*periods >= 1 && *periods <= 1000) || *periods != std::floor(*periods) ||
+        !(*wall > 0 && *wall < 1e6) || (simulated && !(*simulated > 0 && *simulated < 1e7)))
+      return BodyRefusal{
+          "expected each timing as {\"periods\": 1 to 1000, \"wall_s\": a positive "
+          "time, \"simulated_s\": a positive time or null}, found " +
+              quoted(t),
+          "stopwatch"};
+    report.stopwatch.push_back({static_cast<int>(*periods), *wall, simulated});
+  }
+  return report;
 }
 
 std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view text) {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lab/report/report_content.hpp"
 #include "lab/request/session_request.hpp"
 
 namespace fl::serve {
@@ -71,5 +72,16 @@ struct RigCommand {
   std::string port;  // with kOpen
 };
 std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view body);
+
+// The most stopwatch timings a report's body may carry.
+inline constexpr std::size_t kMostStopwatchTimings = 100;
+
+// POST /api/sessions/ID/report: {"student": WHO, "stopwatch": [{"periods": N, "wall_s": S,
+// "simulated_s": S or null}, ...]}, both optional (the session's name; no timing).
+struct ReportBody {
+  std::optional<std::string> student;
+  std::vector<StopwatchTiming> stopwatch;
+};
+std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view body);
 
 }  // namespace fl::serve

@@ -36,6 +36,7 @@
 #include "serve/session_events.hpp"
 #include "serve/session_key.hpp"
 #include "serve/session_opening.hpp"
+#include "serve/session_report.hpp"
 
 namespace fl::serve {
 namespace {
@@ -296,6 +297,15 @@ void LabServer::Impl::routes() {
     const auto s = find(req, res);
     if (!s) return;
     control(*s, req, res);
+  });
+  server.Post(session + "/report", [this](const httplib::Request& req, httplib::Response& res) {
+    if (refuse_large_body(req, res)) return;
+    const auto s = find(req, res);
+    if (!s) return;
+    const ReportAnswer answer = session_report(*s, req.body, options.asset_dir, options.version);
+    if (answer.status != 200) return send_json(res, answer.status, answer.body);
+    res.set_header("Content-Disposition", "attachment; filename=\"report.html\"");
+    res.set_content(answer.html, "text/html; charset=utf-8");
   });
   server.Get(session + "/files/([A-Za-z0-9_.-]{1,64})",
              [this](const httplib::Request& req, httplib::Response& res) {

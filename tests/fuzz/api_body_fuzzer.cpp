@@ -1,6 +1,7 @@
 // libFuzzer target for the web API's request bodies (serve/api_requests.hpp: a session's, a
-// control's, the live rig's): any bytes are read as a request or refused with a message, within
-// the API's bounds; anything else (a crash, a sanitizer report, an exception, a hang) is a bug.
+// control's, a report's, the live rig's): any bytes are read as a request or refused with a
+// message, within the API's bounds; anything else (a crash, a sanitizer report, an exception, a
+// hang) is a bug.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -22,6 +23,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (const auto* command = std::get_if<fl::serve::ControlCommand>(&control)) {
     if (!fl::serve::is_speed(command->speed)) std::abort();
   } else if (std::get<fl::serve::BodyRefusal>(control).message.empty()) {
+    std::abort();
+  }
+  const auto report = fl::serve::read_report_body(text);
+  if (const auto* body = std::get_if<fl::serve::ReportBody>(&report)) {
+    if (body->stopwatch.size() > fl::serve::kMostStopwatchTimings) std::abort();
+    for (const auto& timing : body->stopwatch)
+      if (!(timing.periods >= 1 && timing.wall_s > 0)) std::abort();
+  } else if (std::get<fl::serve::BodyRefusal>(report).message.empty()) {
     std::abort();
   }
   const auto rig = fl::serve::read_rig_body(text);

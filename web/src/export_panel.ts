@@ -1,6 +1,7 @@
 // Export: the finished run's files, a PNG of the 3D view, and a link to this set-up.
 import { byId, byTestId } from "./dom";
-import { fileHref, type SessionHandle } from "./lab_client";
+import { fileHref, reportHtml, type SessionHandle } from "./lab_client";
+import type { ReportAsk } from "./lab_types";
 
 const FILES = ["summary.json", "trajectory.csv", "hall.csv", "periods.csv"];
 
@@ -30,10 +31,15 @@ export class ExportPanel {
   }));
   private readonly linkField = byId<HTMLInputElement>("setup-link");
   private readonly copyStatus = byId("copy-status");
+  private readonly reportButton = byId<HTMLButtonElement>("export-report");
+  private readonly reportHint = byId("report-hint");
+  private finished: SessionHandle | null = null;
 
-  constructor(viewPng: () => string) {
+  /** `reportAsk`: who hands the report in and what the stopwatch timed, when it is asked. */
+  constructor(viewPng: () => string, reportAsk: () => ReportAsk) {
     byId("png").addEventListener("click", () => download(viewPng(), "frictionlab-view.png"));
     byId("copy-link").addEventListener("click", () => void this.copyLink());
+    this.reportButton.addEventListener("click", () => void this.report(reportAsk()));
     this.disableFiles();
   }
 
@@ -42,10 +48,28 @@ export class ExportPanel {
       anchor.removeAttribute("href");
       anchor.setAttribute("aria-disabled", "true");
     }
+    this.finished = null;
+    this.reportButton.disabled = true;
+  }
+
+  /** The lab report of the finished run, downloaded as report.html. */
+  private async report(ask: ReportAsk): Promise<void> {
+    if (!this.finished) return;
+    this.reportHint.textContent = "Writing the report…";
+    try {
+      const html = await reportHtml(this.finished, ask);
+      download(URL.createObjectURL(new Blob([html], { type: "text/html" })), "report.html");
+      this.reportHint.textContent =
+        "report.html is downloaded: open it, and print it to PDF from the browser to hand it in.";
+    } catch (error) {
+      this.reportHint.textContent = error instanceof Error ? error.message : String(error);
+    }
   }
 
   /** Offers the run's files; a file the run did not keep stays disabled. */
   async enableFiles(session: SessionHandle): Promise<void> {
+    this.finished = session;
+    this.reportButton.disabled = false;
     for (const { name, anchor } of this.links) {
       try {
         anchor.href = await fileHref(session, name);

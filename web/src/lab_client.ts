@@ -24,6 +24,7 @@ import type {
   LiveRigEvent,
   Session,
   Summary,
+  ReportAsk,
 } from "./lab_types";
 
 // The errors and stream types both clients share, offered from here as the page imports them.
@@ -228,6 +229,21 @@ export async function estimateFile(
 /** Where a finished run's file downloads from (summary.json, trajectory.csv, hall.csv, ...). */
 export async function fileHref(session: SessionHandle, name: string): Promise<string> {
   return keyedUrl(session, `/files/${encodeURIComponent(name)}`);
+}
+
+/** The finished run's lab report, a self-contained HTML page. */
+export async function reportHtml(session: SessionHandle, ask: ReportAsk): Promise<string> {
+  const response = await fetch(api(`${sessionPath(session)}/report`), {
+    method: "POST",
+    headers: { "Content-Type": "application/json", ...keyHeader(session) },
+    body: JSON.stringify(ask),
+  });
+  if (response.status === 429) throw await rateLimited(response);
+  if (!response.ok) {
+    const message = await refusalMessage(response, `the lab answered ${response.status}`);
+    throw new LabError(message, response.status);
+  }
+  return response.text();
 }
 
 export async function endSession(session: SessionHandle): Promise<void> {

@@ -25,6 +25,7 @@ import type {
   Problem,
   Session,
   Summary,
+  ReportAsk,
 } from "./lab_types";
 import type { WorkerAnswer, WorkerMessage, WorkerRequest } from "./lab_worker";
 
@@ -166,6 +167,12 @@ export async function fileHref(session: SessionHandle, name: string): Promise<st
   const body = expectOk<{ text: string }>(await ask({ op: "file", session: session.id, name }));
   const type = name.endsWith(".json") ? "application/json" : "text/csv";
   return URL.createObjectURL(new Blob([body.text], { type }));
+}
+
+/** The finished run's lab report, a self-contained HTML page, made in this browser. */
+export async function reportHtml(session: SessionHandle, wanted: ReportAsk): Promise<string> {
+  const answer = await ask({ op: "report", session: session.id, body: JSON.stringify(wanted) });
+  return expectOk<{ html: string }>(answer).html;
 }
 
 export async function endSession(session: SessionHandle): Promise<void> {

@@ -3,3 +3,16 @@
 export * from "./api_types";
 
 export type ControlAction = "play" | "pause" | "step" | "reset";
+
+/** Periods timed by hand with the page's stopwatch, for the lab report. */
+export interface StopwatchTiming {
+  periods: number;
+  wall_s: number;
+  simulated_s: number | null;
+}
+
+/** What `POST /api/sessions/ID/report` takes: who hands it in, what the stopwatch timed. */
+export interface ReportAsk {
+  student?: string;
+  stopwatch?: StopwatchTiming[];
+}

@@ -14,6 +14,7 @@ interface LabModule {
   events(id: string): string;
   control(id: string, body: string): string;
   file(id: string, name: string): string;
+  report(id: string, body: string): string;
   end(id: string): string;
   estimate(
     name: string,
@@ -49,6 +50,7 @@ export type WorkerRequest = { id: number } & (
   | { op: "create"; body: string }
   | { op: "control"; session: string; body: string }
   | { op: "file"; session: string; name: string }
+  | { op: "report"; session: string; body: string }
   | { op: "end"; session: string }
   | { op: "estimate"; name: string; bytes: ArrayBuffer; spacing: number | null }
   | { op: "stream"; session: string }
@@ -162,6 +164,8 @@ async function handle(request: WorkerRequest): Promise<WorkerAnswer> {
       return answered(lab.control(request.session, request.body));
     case "file":
       return answered(lab.file(request.session, request.name));
+    case "report":
+      return answered(lab.report(request.session, request.body));
     case "end":
       stop(request.session);
       return answered(lab.end(request.session));

@@ -50,11 +50,14 @@ const periods = new PeriodsTable(
   },
 );
 const readouts = new Readouts();
-const exportPanel = new ExportPanel(() => view.toPng());
 const pageProblem = byId("page-problem");
 const refused = byId("refused");
 const stopwatch = new Stopwatch(model);
 const studentName = new StudentName((name) => void nameStudent(name));
+const exportPanel = new ExportPanel(
+  () => view.toPng(),
+  () => ({ student: studentName.name ?? "", stopwatch: stopwatch.timings() }),
+);
 
 /** The class's table shows the name typed, on the session that runs now. */
 async function nameStudent(name: string): Promise<void> {

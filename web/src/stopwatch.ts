@@ -6,6 +6,7 @@
 import { byId, setText } from "./dom";
 import { fixed } from "./format";
 import type { LabModel } from "./lab_model";
+import type { StopwatchTiming } from "./lab_types";
 
 const PERIODS_TIMED = 10;
 
@@ -37,6 +38,8 @@ export class Stopwatch {
   private simEnd: number | null = null;
   private running = false;
   private frame = 0;
+  /** The timings made since the last Clear, for the lab report. */
+  private made: StopwatchTiming[] = [];
 
   /** It reads the model (the run's time, the estimator's period), never another view. */
   constructor(private readonly model: LabModel) {
@@ -92,10 +95,26 @@ export class Stopwatch {
     this.toggleButton.textContent = "Start";
     this.toggleButton.setAttribute("aria-pressed", "false");
     this.show(this.wallEnd, this.simEnd);
+    const wallS = (this.wallEnd - this.wallStart) / 1000;
+    const simS =
+      this.simEnd !== null && this.simStart !== null ? this.simEnd - this.simStart : null;
+    if (wallS > 0) {
+      this.made.push({
+        periods: PERIODS_TIMED,
+        wall_s: wallS,
+        simulated_s: simS !== null && simS > 0 ? simS : null,
+      });
+    }
+  }
+
+  /** Every timing made since the last Clear. */
+  timings(): StopwatchTiming[] {
+    return [...this.made];
   }
 
   clear(): void {
     if (this.running) this.stop();
+    this.made = [];
     this.wallStart = this.wallEnd = 0;
     this.simStart = this.simEnd = null;
     setText(this.wall, "—");

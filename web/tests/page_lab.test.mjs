@@ -10,7 +10,7 @@
 //                                --web build/release/src/cli/web [--shot FILE]
 // Exit status: 0 all passed, 1 a check failed, 77 no chromium (the test is skipped).
 import { execFileSync, spawn } from "node:child_process";
-import { existsSync, mkdtempSync, rmSync, writeFileSync } from "node:fs";
+import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { createInterface } from "node:readline";
@@ -23,6 +23,7 @@ const { values: options } = parseArgs({
   options: {
     exe: { type: "string" },
     web: { type: "string" },
+    report: { type: "string", default: "/tmp/report-print.png" },
     shot: { type: "string", default: "/tmp/frictionlab-page.png" },
   },
 });
@@ -162,6 +163,52 @@ await check(
     await context.close();
   },
 );
+
+await check("the lab report's numbers are summary.json's; its print preview", async () => {
+  const { page, context, complaints } = await openPage(
+    `/?scene=minimal&set=${encodeURIComponent(duration)}`,
+  );
+  await page.fill("#student-name", "Anne-Marie (2B)");
+  // A timing by hand while it runs: the report lists it.
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  await page.click("#stopwatch-toggle");
+  await page
+    .getByTestId("time")
+    .filter({ hasText: /t = [1-9]/ })
+    .waitFor({ timeout: 60000 });
+  await page.click("#stopwatch-toggle");
+  await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  const button = page.getByTestId("export-report");
+  await page.waitForFunction(
+    () => !document.querySelector('[data-testid="export-report"]').disabled,
+  );
+  const [download] = await Promise.all([page.waitForEvent("download"), button.click()]);
+  const html = readFileSync(await download.path(), "utf8");
+  const summaryHref = await page.getByTestId("file-summary").getAttribute("href");
+  const summary = await (await fetch(new URL(summaryHref, base))).json();
+  let numbers = 0;
+  for (const [, field, value] of html.matchAll(/data-field="([a-z_]+)" data-value="([^"]*)"/g)) {
+    expect(field in summary, `the report's ${field} is not summary.json's`);
+    expect(
+      JSON.stringify(JSON.parse(value)) === JSON.stringify(summary[field]),
+      `${field}: report ${value}, summary.json ${summary[field]}`,
+    );
+    numbers += 1;
+  }
+  expect(numbers >= 10, `only ${numbers} numbers marked`);
+  expect(html.includes("Anne-Marie (2B)"), "the student's name is not in the report");
+  expect(html.includes("Timed by hand"), "the stopwatch's timing is not in the report");
+  expect(html.includes("American Journal of Physics"), "the paper is not cited");
+  // Its print preview, on A4: looked at by whoever changes the report (options.report).
+  const preview = await context.newPage();
+  await preview.setContent(html);
+  await preview.emulateMedia({ media: "print" });
+  await preview.setViewportSize({ width: 794, height: 1123 });
+  await preview.screenshot({ path: options.report, fullPage: false });
+  const others = complaints.filter((c) => !c.includes("status of 400"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
+  await context.close();
+});
 
 await check("the paper's rig loads without console errors; a screenshot is written", async () => {
   const { page, context, complaints } = await openPage("/?scene=paper-rig");

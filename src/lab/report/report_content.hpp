@@ -63,8 +63,9 @@ struct ReportPart {
   ReportNumber mu_k_err_worst;  // their sum
   ReportNumber period_thin;     // theory for the set mu_k (a simulation)
   ReportNumber period_thick;
-  ReportNumber mu_k_set;  // what the simulation was given
-  std::string regime;     // what the trajectory showed (a simulation)
+  ReportNumber mu_k_set;    // what the simulation was given
+  ReportNumber mu_k_thick;  // mu_k from T through the thick formula, with the plate's h_c
+  std::string regime;       // what the trajectory showed (a simulation)
   std::optional<ReportPaperRow> paper;
 };
 

@@ -30,7 +30,7 @@ h3 { font-size: 12pt; margin: 1em 0 0.3em; }
 .byline { color: #333; margin: 0 0 1em; }
 table { border-collapse: collapse; margin: 0.4em 0; font-size: 10pt; }
 th, td { border: 1px solid #bbb; padding: 2px 6px; text-align: left; vertical-align: top; }
-td.n { text-align: right; font-variant-numeric: tabular-nums; }
+td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
 .result { font-size: 13pt; margin: 0.3em 0; }
 .why { color: #333; font-size: 10pt; margin: 0 0 0.6em; }
 figure { margin: 0.6em 0; break-inside: avoid; }
@@ -197,6 +197,12 @@ std::string comparison(const ReportContent& c) {
           part.period_thick.value ? number(part.period_thick, fixed(*part.period_thick.value, 4))
                                   : number(part.period_thick, ""),
           number(part.mu_k_set, fixed(*part.mu_k_set.value, 3)));
+    if (part.mu_k_thick.value)
+      out += fmt::format(
+          "<tr><td>{}: μ<sub>k</sub> from T through the thick formula, 2π² l / (g T² + 4π² "
+          "h<sub>c</sub>), with the plate's centre of mass h<sub>c</sub> above the "
+          "contacts</td><td class=\"n\"></td><td class=\"n\">{}</td></tr>\n",
+          html_text(part.title), number(part.mu_k_thick, fixed(*part.mu_k_thick.value, 3)));
   }
   bool any_paper = false;
   for (const ReportPart& part : c.parts) {

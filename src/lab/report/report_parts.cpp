@@ -112,8 +112,8 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
   const std::optional<std::string> text = files("summary.json");
   if (!text)
     throw std::invalid_argument(fmt::format(
-        "{}: expected a run's summary.json, found none: give a folder `run --out` wrote, or a "
-        "measurement's file",
+        "{}: expected a run's summary.json, found none: give the folder a run wrote its files "
+        "into, or a measurement's file",
         source));
   const json summary = json::parse(*text, nullptr, false);
   if (!summary.is_object() || !summary.contains("period_s") || !summary.contains("spacing_m"))
@@ -135,6 +135,7 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
   part.period_thin = field(summary, "period_thin_s");
   part.period_thick = field(summary, "period_thick_s");
   part.mu_k_set = field(summary, "mu_k_set");
+  part.mu_k_thick = field(summary, "mu_k_recovered_thick");
   if (summary.contains("regime") && summary["regime"].is_string())
     part.regime = summary["regime"].get<std::string>();
   part.paper = paper_row(summary, table);
@@ -209,6 +210,8 @@ ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
   part.period_thin.field = "period_thin_s";
   part.period_thick.field = "period_thick_s";
   part.mu_k_set.field = "mu_k_set";
+  part.mu_k_thick =
+      value(mu_k_thick(estimate).has_value(), mu_k_thick(estimate).value_or(0.0), "mu_k_thick");
   part.set_up.emplace_back("instrument", instrument_words(log.instrument) +
                                              (log.channel.empty() ? "" : ", " + log.channel));
   part.set_up.emplace_back("file", log.path);

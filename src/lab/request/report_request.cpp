@@ -40,9 +40,10 @@ bool is_run_folder(const std::string& input) {
 
 void check_request(const ReportRequest& r, FieldChecks& checks, bool inputs_needed) {
   if (inputs_needed && r.inputs.empty())
-    checks.problem("inputs",
-                   "expected at least one run's folder (run --out) or measurement file, found "
-                   "none");
+    checks.problem(
+        "inputs",
+        "expected at least one folder a run wrote its files into, or a measurement file, found "
+        "none");
   for (std::size_t i = 0; i < r.stopwatch.size(); ++i) {
     const StopwatchTiming& s = r.stopwatch[i];
     if (!(s.periods >= 1 && s.periods <= 1000) || !(s.wall_s > 0.0) || !std::isfinite(s.wall_s) ||

@@ -84,9 +84,9 @@ TEST_F(ReportTest, ItsNumbersAreTheRunsSummaryExactly) {
     ++numbers;
     fields.insert(field);
   }
-  for (const char* needed :
-       {"period_s", "period_std_error_s", "period_std_s", "periods_used", "mu_k_estimator",
-        "mu_k_err_quadrature", "mu_k_err_worst", "period_thin_s", "period_thick_s", "mu_k_set"})
+  for (const char* needed : {"period_s", "period_std_error_s", "period_std_s", "periods_used",
+                             "mu_k_estimator", "mu_k_err_quadrature", "mu_k_err_worst",
+                             "period_thin_s", "period_thick_s", "mu_k_set", "mu_k_recovered_thick"})
     EXPECT_TRUE(fields.count(needed)) << needed << " is not in the report";
   EXPECT_GE(numbers, 10);
   // The paper's Table I row for LEGO blocks at 300 K: 0.79 +- 0.03 s, mu_k 0.29 +- 0.03.

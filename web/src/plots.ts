@@ -1,16 +1,16 @@
 // Live plots (uPlot) over a sliding window: the plate's x(t) with the thick-plate theory the
 // lab sends beside it (x_theory: about a tilted rig's centre, from where the run started), and
-// the Hall sensor's ADC counts with the estimator's pulse times marked.
+// the Hall sensor's ADC counts with the estimator's pulse times marked (dashed lines). Colours:
+// palette.ts.
 import uPlot from "uplot";
 import type { LabState, Rig } from "./lab_types";
+import { PLOT_COLORS as COLORS } from "./palette";
 import { SlidingWindow } from "./sliding_window";
 
 const WINDOW_S = 5;
 /** The plots redraw at most this often (software rendering draws the 3D view too). */
 const REDRAW_MS = 100;
 const LEGEND_PX = 28;
-
-const COLORS = { x: "#1565c0", theory: "#9e9e9e", hall: "#6a1b9a", pulse: "#d32f2f" };
 
 function chartSize(box: HTMLElement): { width: number; height: number } {
   return {

@@ -34,6 +34,7 @@ const model = new LabModel();
 const view = new RigView(byId("view"));
 const nearSide = byId<HTMLInputElement>("near-side");
 nearSide.addEventListener("change", () => view.showNearSide(nearSide.checked));
+byId("reset-view").addEventListener("click", () => view.resetView());
 const positionPlot = new PositionPlot(byId("plot-x"));
 const hallPlot = new HallPlot(byId("plot-hall"));
 const hallNote = byId("hall-note");

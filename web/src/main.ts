@@ -19,6 +19,7 @@ import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
 import { HallPlot, PositionPlot } from "./plots";
 import { Readouts } from "./readouts";
+import { RigDescription } from "./rig_description";
 import { RigPanel } from "./live_rig_panel";
 import { SessionKeeper, Superseded } from "./session";
 import { Stopwatch } from "./stopwatch";
@@ -37,6 +38,7 @@ nearSide.addEventListener("change", () => view.showNearSide(nearSide.checked));
 byId("reset-view").addEventListener("click", () => view.resetView());
 const positionPlot = new PositionPlot(byId("plot-x"));
 const hallPlot = new HallPlot(byId("plot-hall"));
+new RigDescription(model, () => lab);
 const hallNote = byId("hall-note");
 const periods = new PeriodsTable(
   byId<HTMLTableSectionElement>("periods-body"),

@@ -38,8 +38,8 @@ export class RigView {
     const canvas = this.renderer.domElement;
     canvas.setAttribute("role", "img");
     canvas.setAttribute("aria-label", "The rig in 3D: the plate on its two rollers");
-    // index.html's words: the view's keys.
-    canvas.setAttribute("aria-describedby", "view-keys");
+    // index.html's words: the set-up in a sentence (rig_description.ts) and the view's keys.
+    canvas.setAttribute("aria-describedby", "rig-setup view-keys");
     canvas.tabIndex = 0;
     container.append(canvas);
 

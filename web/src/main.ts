@@ -17,6 +17,7 @@ import { MeasurementPanel } from "./measurement_panel";
 import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
+import { followWithTables } from "./plot_table";
 import { HallPlot, PositionPlot } from "./plots";
 import { Readouts } from "./readouts";
 import { RigDescription } from "./rig_description";
@@ -38,6 +39,7 @@ nearSide.addEventListener("change", () => view.showNearSide(nearSide.checked));
 byId("reset-view").addEventListener("click", () => view.resetView());
 const positionPlot = new PositionPlot(byId("plot-x"));
 const hallPlot = new HallPlot(byId("plot-hall"));
+followWithTables(model, positionPlot, hallPlot);
 new RigDescription(model, () => lab);
 const hallNote = byId("hall-note");
 const periods = new PeriodsTable(

@@ -115,6 +115,12 @@ export class PositionPlot {
     this.live.scheduleRedraw();
   }
 
+  /** The samples plotted: times [s] and x [mm]. */
+  samples(): [number[], number[]] {
+    const [t = [], x = []] = this.data.view();
+    return [t, x];
+  }
+
   push(state: LabState): void {
     const last = this.data.lastTime;
     if (last !== null && state.t < last) this.data.clear();
@@ -153,6 +159,12 @@ export class HallPlot {
     this.data.clear();
     this.pulses = [];
     this.live.scheduleRedraw();
+  }
+
+  /** The samples plotted: times [s] and ADC counts. */
+  samples(): [number[], number[]] {
+    const [t = [], adc = []] = this.data.view();
+    return [t, adc];
   }
 
   push(state: LabState): void {

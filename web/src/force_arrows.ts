@@ -2,13 +2,12 @@
 // drawn to one scale, the weight m g about 3 cm long.
 import * as THREE from "three";
 import type { LabState, Rig } from "./lab_types";
+import { FORCE_COLORS } from "./palette";
 
 const G = 9.81; // m/s^2
 const WEIGHT_LENGTH = 0.03; // m drawn for m g
 
-export const ARROW_COLORS = { normal: 0x1565c0, friction: 0xe65100, weight: 0x2e7d32 };
-
-function arrow(color: number): THREE.ArrowHelper {
+function arrow(color: string): THREE.ArrowHelper {
   const helper = new THREE.ArrowHelper(
     new THREE.Vector3(0, 0, 1),
     new THREE.Vector3(),
@@ -44,9 +43,9 @@ function setArrow(
 
 export class ForceArrows {
   readonly group = new THREE.Group();
-  private readonly normals = [arrow(ARROW_COLORS.normal), arrow(ARROW_COLORS.normal)];
-  private readonly frictions = [arrow(ARROW_COLORS.friction), arrow(ARROW_COLORS.friction)];
-  private readonly weight = arrow(ARROW_COLORS.weight);
+  private readonly normals = [arrow(FORCE_COLORS.normal), arrow(FORCE_COLORS.normal)];
+  private readonly frictions = [arrow(FORCE_COLORS.friction), arrow(FORCE_COLORS.friction)];
+  private readonly weight = arrow(FORCE_COLORS.weight);
   private readonly metresPerNewton: number;
   private readonly contactX: [number, number];
   private readonly frontY: number;

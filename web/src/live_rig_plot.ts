@@ -1,13 +1,13 @@
 // The live rig's Hall signal (uPlot): its ADC counts over the last 10 s, with the end of each
-// period the rig's estimator judged drawn as a line: green where it accepted it, grey dashed
-// where it rejected it.
+// period the rig's estimator judged drawn as a line: orange-red where it accepted it, grey dashed
+// where it rejected it (palette.ts).
 import uPlot from "uplot";
 import type { PeriodRow } from "./lab_types";
+import { PLOT_COLORS as COLORS } from "./palette";
 import { axis, LiveChart } from "./plots";
 import { SlidingWindow } from "./sliding_window";
 
 const WINDOW_S = 10;
-const COLORS = { hall: "#6a1b9a", accepted: "#2e7d32", rejected: "#9aa3ad" };
 
 interface PeriodEnd {
   t: number;

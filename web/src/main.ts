@@ -17,8 +17,10 @@ import { MeasurementPanel } from "./measurement_panel";
 import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
+import { followWithTables } from "./plot_table";
 import { HallPlot, PositionPlot } from "./plots";
 import { Readouts } from "./readouts";
+import { RigDescription } from "./rig_description";
 import { RigPanel } from "./live_rig_panel";
 import { SessionKeeper, Superseded } from "./session";
 import { Stopwatch } from "./stopwatch";
@@ -34,8 +36,11 @@ const model = new LabModel();
 const view = new RigView(byId("view"));
 const nearSide = byId<HTMLInputElement>("near-side");
 nearSide.addEventListener("change", () => view.showNearSide(nearSide.checked));
+byId("reset-view").addEventListener("click", () => view.resetView());
 const positionPlot = new PositionPlot(byId("plot-x"));
 const hallPlot = new HallPlot(byId("plot-hall"));
+followWithTables(model, positionPlot, hallPlot);
+new RigDescription(model, () => lab);
 const hallNote = byId("hall-note");
 const periods = new PeriodsTable(
   byId<HTMLTableSectionElement>("periods-body"),

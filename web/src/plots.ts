@@ -1,16 +1,16 @@
 // Live plots (uPlot) over a sliding window: the plate's x(t) with the thick-plate theory the
 // lab sends beside it (x_theory: about a tilted rig's centre, from where the run started), and
-// the Hall sensor's ADC counts with the estimator's pulse times marked.
+// the Hall sensor's ADC counts with the estimator's pulse times marked (dashed lines). Colours:
+// palette.ts.
 import uPlot from "uplot";
 import type { LabState, Rig } from "./lab_types";
+import { PLOT_COLORS as COLORS } from "./palette";
 import { SlidingWindow } from "./sliding_window";
 
 const WINDOW_S = 5;
 /** The plots redraw at most this often (software rendering draws the 3D view too). */
 const REDRAW_MS = 100;
 const LEGEND_PX = 28;
-
-const COLORS = { x: "#1565c0", theory: "#9e9e9e", hall: "#6a1b9a", pulse: "#d32f2f" };
 
 function chartSize(box: HTMLElement): { width: number; height: number } {
   return {
@@ -115,6 +115,12 @@ export class PositionPlot {
     this.live.scheduleRedraw();
   }
 
+  /** The samples plotted: times [s] and x [mm]. */
+  samples(): [number[], number[]] {
+    const [t = [], x = []] = this.data.view();
+    return [t, x];
+  }
+
   push(state: LabState): void {
     const last = this.data.lastTime;
     if (last !== null && state.t < last) this.data.clear();
@@ -153,6 +159,12 @@ export class HallPlot {
     this.data.clear();
     this.pulses = [];
     this.live.scheduleRedraw();
+  }
+
+  /** The samples plotted: times [s] and ADC counts. */
+  samples(): [number[], number[]] {
+    const [t = [], adc = []] = this.data.view();
+    return [t, adc];
   }
 
   push(state: LabState): void {

@@ -1,6 +1,7 @@
 // The readouts: simulated time, run status, the estimator's period and mu_k, the regime and the
-// rig's set-up. The estimate's block is an aria-live region written only when the estimate
-// changes (once per accepted period), never at the stream's 30 Hz.
+// rig's set-up. The estimate's block is written only when the estimate changes (once per accepted
+// period), never at the stream's 30 Hz; a screen reader hears it through the rig's description
+// (rig_description.ts), at most every few seconds, not at each period.
 import { byTestId, setText } from "./dom";
 import { fixed, trimmed, withError } from "./format";
 import type { Lab, LabState, Rig } from "./lab_types";

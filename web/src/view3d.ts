@@ -1,6 +1,9 @@
-// The rig in 3D: world z up, x along the plate's motion; orbit and zoom with the mouse or keys.
+// The rig in 3D: world z up, x along the plate's motion; orbit and zoom with the mouse, a finger
+// or the keys (camera_keys.ts). It draws a frame only when something changed: a new pose of the
+// plate, a camera move, a resize; a paused run's repeated states draw nothing.
 import * as THREE from "three";
 import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
+import { cameraMoveOf, moveCamera } from "./camera_keys";
 import type { LabState, Rig } from "./lab_types";
 import { ForceArrows } from "./force_arrows";
 import { chooseRenderQuality, type RenderQuality } from "./render_quality";
@@ -14,8 +17,12 @@ export class RigView {
   private readonly sun = new THREE.DirectionalLight(0xffffff, 2.2);
   private model: RigModel | null = null;
   private arrows: ForceArrows | null = null;
-  private needsRender = true;
   private frame = 0;
+  private frames = 0;
+  /** What the last state posed: the plate, the rollers and the forces drawn. */
+  private pose: number[] = [];
+  /** Where setRig put the camera, for "Reset view" and Home. */
+  private readonly home = { position: new THREE.Vector3(), target: new THREE.Vector3() };
   private nearSideShown = false;
   private readonly resize: ResizeObserver;
   private readonly quality: RenderQuality = chooseRenderQuality();
@@ -30,10 +37,9 @@ export class RigView {
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     const canvas = this.renderer.domElement;
     canvas.setAttribute("role", "img");
-    canvas.setAttribute(
-      "aria-label",
-      "The rig in 3D: the plate on its two rollers. Drag to orbit, scroll to zoom; arrow keys pan.",
-    );
+    canvas.setAttribute("aria-label", "The rig in 3D: the plate on its two rollers");
+    // index.html's words: the set-up in a sentence (rig_description.ts) and the view's keys.
+    canvas.setAttribute("aria-describedby", "rig-setup view-keys");
     canvas.tabIndex = 0;
     container.append(canvas);
 
@@ -48,17 +54,23 @@ export class RigView {
     this.scene.add(this.sun, this.sun.target);
 
     this.controls = new OrbitControls(this.camera, canvas);
-    this.controls.listenToKeyEvents(canvas);
+    // No gliding after a drag (its frames would draw on after the hand stopped): the camera
+    // moves only while the hand or a key moves it, as prefers-reduced-motion asks.
+    this.controls.enableDamping = false;
     this.controls.addEventListener("change", () => this.invalidate());
+    canvas.addEventListener("keydown", (event) => this.onKey(event));
 
     this.resize = new ResizeObserver(() => this.fit());
     this.resize.observe(container);
     this.fit();
-    const loop = () => {
-      this.frame = requestAnimationFrame(loop);
-      if (this.needsRender) this.render();
-    };
-    this.frame = requestAnimationFrame(loop);
+  }
+
+  /** The camera back where it started for this rig. */
+  resetView(): void {
+    this.camera.position.copy(this.home.position);
+    this.controls.target.copy(this.home.target);
+    this.controls.update();
+    this.invalidate();
   }
 
   /** Shows or cuts away the frame's near side (the wall between the camera and the rollers). */
@@ -95,6 +107,9 @@ export class RigView {
     this.controls.minDistance = size * 0.2;
     this.controls.maxDistance = size * 10;
     this.controls.update();
+    this.home.position.copy(this.camera.position);
+    this.home.target.copy(target);
+    this.pose = [];
 
     const reach = Math.max(size, 0.1);
     this.sun.position.set(0.3 * reach, -0.5 * reach, 1.5 * reach);
@@ -111,6 +126,15 @@ export class RigView {
   /** Poses the plate, turns the rollers and redraws the forces. */
   setState(state: LabState): void {
     if (!this.model || !this.arrows) return;
+    const pose = [
+      state.x,
+      state.z,
+      state.pitch,
+      ...state.roller_angles,
+      ...state.contacts.flatMap((c) => [c.normal, c.friction]),
+    ];
+    if (pose.length === this.pose.length && pose.every((v, i) => v === this.pose[i])) return;
+    this.pose = pose;
     this.model.plate.position.set(state.x, 0, state.z);
     this.model.plate.rotation.set(0, state.pitch, 0);
     this.model.rollers[0].rotation.y = state.roller_angles[0];
@@ -126,8 +150,9 @@ export class RigView {
     return this.renderer.domElement.toDataURL("image/png");
   }
 
+  /** Draws once, at the next frame, however often it is asked before then. */
   invalidate(): void {
-    this.needsRender = true;
+    if (!this.frame) this.frame = requestAnimationFrame(() => this.render());
   }
 
   dispose(): void {
@@ -148,8 +173,31 @@ export class RigView {
     this.render();
   }
 
+  private onKey(event: KeyboardEvent): void {
+    const move = cameraMoveOf(event);
+    if (!move) return;
+    event.preventDefault(); // the page does not scroll under the view's keys
+    if (move.kind === "home") {
+      this.resetView();
+      return;
+    }
+    const reach = { min: this.controls.minDistance, max: this.controls.maxDistance };
+    moveCamera(this.camera, this.controls.target, move, reach);
+    this.controls.update();
+    this.invalidate();
+  }
+
   private render(): void {
-    this.needsRender = false;
+    cancelAnimationFrame(this.frame);
+    this.frame = 0;
     this.renderer.render(this.scene, this.camera);
+    // For the page's tests: the frames drawn, and where the camera is from what it looks at.
+    const canvas = this.renderer.domElement;
+    canvas.dataset["frames"] = String(++this.frames);
+    const offset = this.camera.position.clone().sub(this.controls.target);
+    canvas.dataset["cameraDistanceMm"] = (offset.length() * 1000).toFixed(1);
+    canvas.dataset["cameraAroundDeg"] = THREE.MathUtils.radToDeg(
+      Math.atan2(offset.y, offset.x),
+    ).toFixed(1);
   }
 }

@@ -22,11 +22,12 @@ export function whereThePlateIs(x: number): string {
   return `${mm} mm ${x < 0 ? "left" : "right"} of centre`;
 }
 
-/** The rollers' normal forces [N], left then right: the lab's contacts where it sent both,
- * else a thin plate's under its own weight, N_left = m g (l/2 - x)/l, N_right = m g (l/2 + x)/l. */
+/** The rollers' normal forces [N], left then right: the lab's contacts where it sent both and
+ * has stepped (at t = 0, before the first step, they are not computed yet), else a thin plate's
+ * under its own weight, N_left = m g (l/2 - x)/l, N_right = m g (l/2 + x)/l. */
 export function normalForces(state: LabState, rig: Rig): [number, number] {
   const [left, right] = state.contacts;
-  if (left && right) return [left.normal, right.normal];
+  if (left && right && left.normal + right.normal > 0) return [left.normal, right.normal];
   const weight = rig.plate.mass * rig.gravity;
   const l = rig.spacing;
   return [(weight * (l / 2 - state.x)) / l, (weight * (l / 2 + state.x)) / l];

@@ -272,9 +272,12 @@ std::vector<ClassRow> LabServer::Impl::class_rows() const {
   std::sort(open.begin(), open.end(),
             [](const auto& a, const auto& b) { return a.second->created() < b.second->created(); });
   std::vector<ClassRow> rows;
+  const Clock::time_point now = Clock::now();
+  const auto listed = std::chrono::duration<double>(options.listed_seconds);
   for (const auto& [id, session] : open)
-    rows.push_back(
-        {id, session->name(), session->scene(), session->rig_shared(), session->standing()});
+    if (now - session->last_seen() <= listed)
+      rows.push_back(
+          {id, session->name(), session->scene(), session->rig_shared(), session->standing()});
   return rows;
 }
 

@@ -25,6 +25,10 @@ struct ServeOptions {
   // A session nobody streams from or controls for this long [s] ends (looked at with each API
   // request).
   double idle_seconds = 600.0;
+  // The class's table lists a session while its page is seen (streaming, or a request within
+  // this long [s]): a closed tab's session leaves the table then, though it stays open for
+  // idle_seconds in case the page comes back.
+  double listed_seconds = 20.0;
   // Sessions open at once; a page beyond them is refused, saying so (503). Each session costs
   // about 1 % of a core at real time (bench_serve): 30 leave the 2-core machine room.
   int max_sessions = 30;

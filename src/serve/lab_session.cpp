@@ -110,6 +110,11 @@ nlohmann::json LabSession::set_name(std::string name) {
 }
 
 nlohmann::json LabSession::control(const ControlCommand& command, Clock::time_point now) {
+  {
+    // A control is its page seen, as a stream's tick is.
+    const std::lock_guard lock(mutex_);
+    last_seen_ = now;
+  }
   switch (command.action) {
     case ControlCommand::Action::kPlay:
       return play(now);

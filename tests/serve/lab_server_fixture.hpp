@@ -91,6 +91,7 @@ class LabServerTest : public test::TempFolderTest {
     options.token = token_;
     options.requests_per_second = requests_per_second_;
     options.idle_seconds = idle_seconds_;
+    options.listed_seconds = listed_seconds_;
     server_ = std::make_unique<LabServer>(options);
     port_ = server_->bind();
     thread_ = std::thread([this] { server_->listen(); });
@@ -198,6 +199,7 @@ class LabServerTest : public test::TempFolderTest {
   std::string token_;
   double requests_per_second_ = 1000.0;
   double idle_seconds_ = 600.0;
+  double listed_seconds_ = 20.0;
   std::unique_ptr<LabServer> server_;
   std::thread thread_;
   int port_ = 0;

@@ -491,5 +491,37 @@ TEST_F(ForgetfulServerTest, ASessionNobodyWatchesEndsAndOneWatchedStays) {
   viewer.join();
 }
 
+// A closed tab's session leaves the class's table after half a second here (20 s by default),
+// while a watched one stays; the closed one stays open in case its page comes back.
+class ShortListServerTest : public LabServerTest {
+ protected:
+  ShortListServerTest() { listed_seconds_ = 0.5; }
+};
+
+TEST_F(ShortListServerTest, AClosedTabsSessionLeavesTheClassTable) {
+  const std::string gone = start({{"scene", "minimal"}, {"name", "Gone"}});
+  const std::string watched = start({{"scene", "minimal"}, {"name", "Here"}});
+  const auto names = [&] {
+    std::vector<std::string> out;
+    const json table = json::parse(client_->Get("/api/class")->body);
+    for (const json& row : table["sessions"]) out.push_back(row["name"].get<std::string>());
+    return out;
+  };
+  EXPECT_EQ(names(), (std::vector<std::string>{"Gone", "Here"}));
+  std::atomic<bool> leave{false};
+  std::thread viewer([&] {
+    httplib::Client c("127.0.0.1", port_);
+    c.Get(session(watched, "/stream").c_str(), [&](const char*, std::size_t) { return !leave; });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(1200));
+  EXPECT_EQ(names(), (std::vector<std::string>{"Here"}));
+  EXPECT_EQ(server_->sessions(), 2);
+  // Its page comes back: a control, and it is listed again.
+  EXPECT_EQ(command(gone, {{"action", "pause"}})->status, 200);
+  EXPECT_EQ(names(), (std::vector<std::string>{"Gone", "Here"}));
+  leave = true;
+  viewer.join();
+}
+
 }  // namespace
 }  // namespace fl::serve

@@ -620,6 +620,7 @@ def report(
     material: Optional[str] = None,
     temperature: Optional[Quantity] = None,
     assets: Optional[PathLike] = None,
+    language: str = "en",
 ) -> dict[str, Any]: ...
 def table(
     *,

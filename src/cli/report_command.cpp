@@ -16,6 +16,7 @@ struct ReportOptions {
   std::vector<std::string> inputs;
   std::string out = "report.html";
   std::string student;
+  std::string language = "en";
   std::string spacing = quantity_input_text(EstimateRequest{}.spacing);
   std::string spacing_err = quantity_input_text(EstimateRequest{}.spacing_err);
   std::string material;
@@ -30,6 +31,7 @@ int run_report(const ReportOptions& o, const GlobalOptions& global) {
   request.inputs = o.inputs;
   request.out = o.out;
   request.student = o.student;
+  request.language = o.language;
   request.lab_version = "frictionlab " FRICTIONLAB_VERSION;
   EstimateRequest& m = request.measurement;
   m.spacing = o.spacing;
@@ -66,6 +68,9 @@ Command add_report_command(CLI::App& app, const GlobalOptions& global) {
       ->required();
   sub->add_option("--out", options->out, "The report's file")->capture_default_str();
   sub->add_option("--student", options->student, "Who hands it in");
+  sub->add_option("--lang", options->language,
+                  "The report's language: a catalogue of the lab's data (en, fr)")
+      ->capture_default_str();
   sub->add_option("--spacing", options->spacing, "A measurement's roller spacing l")
       ->capture_default_str();
   sub->add_option("--spacing-err", options->spacing_err, "Uncertainty dl of the spacing")

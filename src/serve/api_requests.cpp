@@ -1,5 +1,6 @@
 #include "serve/api_requests.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <optional>
@@ -136,8 +137,21 @@ std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
   const json& body = std::get<json>(parsed);
   ReportBody report;
   for (const auto& [key, value] : body.items())
-    if (key != "student" && key != "stopwatch")
-      return BodyRefusal{"expected the keys \"student\" and \"stopwatch\", found \"" + key + "\""};
+    if (key != "student" && key != "stopwatch" && key != "language")
+      return BodyRefusal{"expected the keys \"student\", \"stopwatch\" and \"language\", found \"" +
+                         key + "\""};
+  if (const auto language = body.find("language"); language != body.end()) {
+    const bool word =
+        language->is_string() && !language->get<std::string>().empty() &&
+        language->get<std::string>().size() <= 16 &&
+        std::all_of(language->get<std::string>().begin(), language->get<std::string>().end(),
+                    [](char c) { return (c >= 'a' && c <= 'z') || c == '-'; });
+    if (!word)
+      return BodyRefusal{
+          "expected \"language\" as a language's code (\"en\", \"fr\"), found " + quoted(*language),
+          "language"};
+    report.language = language->get<std::string>();
+  }
   if (const auto student = body.find("student"); student != body.end()) {
     const bool empty = student->is_string() && student->get<std::string>().empty();
     if (!student->is_string() || (!empty && !is_student_name(student->get<std::string>())))

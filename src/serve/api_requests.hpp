@@ -77,9 +77,11 @@ std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view body);
 inline constexpr std::size_t kMostStopwatchTimings = 100;
 
 // POST /api/sessions/ID/report: {"student": WHO, "stopwatch": [{"periods": N, "wall_s": S,
-// "simulated_s": S or null}, ...]}, both optional (the session's name; no timing).
+// "simulated_s": S or null}, ...], "language": "fr"}, each optional (the session's name; no
+// timing; English).
 struct ReportBody {
   std::optional<std::string> student;
+  std::string language = "en";  // checked against the lab's catalogues by the report's request
   std::vector<StopwatchTiming> stopwatch;
 };
 std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view body);

@@ -22,10 +22,13 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   request.assets = asset_dir;
   request.student = asked.student.value_or(session.name());
   request.stopwatch = asked.stopwatch;
+  request.language = asked.language;
   request.lab_version = version;
   const RunFiles files = [&session](const std::string& name) { return session.file(name); };
   try {
     return {200, report_of_runs({{session.scene(), files}}, request).html, nullptr};
+  } catch (const RequestError& e) {
+    return {400, "", problems_json(e)};
   } catch (const std::invalid_argument& e) {
     return {400, "", error_json(e.what())};
   }

@@ -1,4 +1,5 @@
-// Text made safe to place in HTML (an element's content or a quoted attribute's value).
+// Text made safe to place in HTML: an element's content, or an attribute's value in double quotes
+// (the only quotes the lab writes attributes in).
 #pragma once
 
 #include <string>
@@ -6,7 +7,7 @@
 
 namespace fl {
 
-// `&`, `<`, `>`, `"` and `'` as character references; everything else as it is.
+// `&`, `<`, `>` and `"` as character references; everything else as it is.
 std::string html_text(std::string_view text);
 
 }  // namespace fl

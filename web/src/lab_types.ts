@@ -11,8 +11,11 @@ export interface StopwatchTiming {
   simulated_s: number | null;
 }
 
-/** What `POST /api/sessions/ID/report` takes: who hands it in, what the stopwatch timed. */
+/** What `POST /api/sessions/ID/report` takes: who hands it in, what the stopwatch timed, in
+ * which language. */
 export interface ReportAsk {
   student?: string;
   stopwatch?: StopwatchTiming[];
+  /** The report's language: the page's ("en", "fr"). */
+  language?: string;
 }

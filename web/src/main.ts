@@ -61,7 +61,11 @@ const stopwatch = new Stopwatch(model);
 const studentName = new StudentName((name) => void nameStudent(name));
 const exportPanel = new ExportPanel(
   () => view.toPng(),
-  () => ({ student: studentName.name ?? "", stopwatch: stopwatch.timings() }),
+  () => ({
+    student: studentName.name ?? "",
+    stopwatch: stopwatch.timings(),
+    language: document.documentElement.lang || "en",
+  }),
 );
 
 /** The class's table shows the name typed, on the session that runs now. */

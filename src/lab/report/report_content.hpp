@@ -42,12 +42,19 @@ struct ReportNumber {
   std::string field;  // "period_s"
 };
 
+// A row of a part's set-up: what (the report's catalogue's message `report-setup-ID`) and its
+// value with its unit, its numbers with a decimal point (shown in the report's language).
+struct SetUpRow {
+  std::string id;  // "spacing"
+  std::string value;
+  bool numeric = true;  // false: a name or a file, shown as it is
+};
+
 struct ReportPart {
-  std::string title;  // "Simulation: paper-rig", "Measurement: rig.csv"
+  std::string title;  // the scene's name, or the measurement's file as given
   bool simulated = false;
   std::string source;  // the folder or file it was read from, as given
-  // The set-up, as rows of a table: what, and its value with its unit.
-  std::vector<std::pair<std::string, std::string>> set_up;
+  std::vector<SetUpRow> set_up;
   double spacing_m = 0.089;
   double spacing_err_m = 0.002;  // dl, in mu_k's uncertainty
   double gravity_m_s2 = 9.81;
@@ -77,9 +84,10 @@ struct StopwatchTiming {
 };
 
 struct ReportContent {
-  std::string student;      // "" : not given
-  std::string lab_version;  // "frictionlab 1.2.0"
-  std::string date;         // "2026-11-29"
+  std::string language = "en";  // the catalogue's (assets/locales/LANG.ftl)
+  std::string student;          // "" : not given
+  std::string lab_version;      // "frictionlab 1.2.0"
+  std::string date;             // "2026-11-29"
   std::vector<ReportPart> parts;
   std::vector<StopwatchTiming> stopwatch;
 };

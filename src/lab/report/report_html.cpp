@@ -1,5 +1,6 @@
 #include "lab/report/report_html.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -10,12 +11,26 @@
 #include "text/html_text.hpp"
 
 namespace fl {
+
+std::string ReportTexts::operator()(const std::string& id,
+                                    const std::map<std::string, std::string>& args) const {
+  if (std::optional<std::string> text = language.format(id, args)) return *text;
+  if (std::optional<std::string> text = english.format(id, args)) return *text;
+  return id;
+}
+
+std::string ReportTexts::decimal_sign() const {
+  const std::string sign = (*this)("report-decimal-sign");
+  return sign == "," ? "," : ".";
+}
+
 namespace {
 
+// The paper, as its journal prints it (a citation is not translated).
 constexpr const char* kCitation =
     "R. Henaff, G. Le Doudic, B. Pilette, C. Even, J.-M. Fischbach, F. Bouquet, J. Bobroff, "
-    "M. Monteverde and C. A. Marrache-Kikuchi, &ldquo;A study of kinetic friction: The Timoshenko "
-    "oscillator&rdquo;, <i>American Journal of Physics</i> <b>86</b>, 174 (2018)";
+    "M. Monteverde and C. A. Marrache-Kikuchi, “A study of kinetic friction: The Timoshenko "
+    "oscillator”, American Journal of Physics 86, 174 (2018)";
 
 // Colours told apart with any colour vision (Okabe and Ito).
 constexpr const char* kBlue = "#0072B2";
@@ -36,7 +51,6 @@ td.n { text-align: right; font-variant-numeric: tabular-nums; white-space: nowra
 figure { margin: 0.6em 0; break-inside: avoid; }
 figure svg { width: 100%; height: auto; }
 figcaption { font-size: 10pt; color: #333; }
-.periods { columns: 2; column-gap: 1.5em; }
 .rejected { color: #8a1c00; }
 footer { margin-top: 2em; font-size: 9pt; color: #444; }
 @page { margin: 15mm; }
@@ -45,9 +59,32 @@ footer { margin-top: 2em; font-size: 9pt; color: #444; }
   h2 { break-after: avoid; }
   table, figure, .result { break-inside: avoid; }
   thead { display: table-header-group; }
-  a { color: inherit; text-decoration: none; }
 }
 )";
+
+// What the report's pieces share: its texts, and numbers in its language.
+class Writer {
+ public:
+  explicit Writer(const ReportTexts& texts) : t(texts), sign_(texts.decimal_sign()) {}
+
+  const ReportTexts& t;
+
+  // A number's text in the report's language (its decimal sign).
+  std::string shown(std::string text) const {
+    if (sign_ != ".") std::replace(text.begin(), text.end(), '.', sign_[0]);
+    return text;
+  }
+  std::string fixed(double v, int decimals) const {
+    return shown(fmt::format("{:.{}f}", v, decimals));
+  }
+  std::string both(double value, double error, int decimals) const {
+    return shown(plus_minus(value, error, decimals, "±"));
+  }
+  std::string sign() const { return sign_; }
+
+ private:
+  std::string sign_;
+};
 
 // The exact value as the summary's JSON writes it (shortest round trip).
 std::string exact(double v) {
@@ -61,220 +98,218 @@ std::string number(const ReportNumber& n, const std::string& text) {
                      exact(*n.value), text);
 }
 
-std::string fixed(double v, int decimals) {
-  return fmt::format("{:.{}f}", v, decimals);
-}
-
-std::string value_with_error(const ReportNumber& value, const ReportNumber& error, int decimals,
-                             const std::string& unit) {
+std::string value_with_error(const Writer& w, const ReportNumber& value, const ReportNumber& error,
+                             int decimals, const std::string& unit) {
   if (!value.value) return number(value, "");
   if (!error.value)
-    return number(value, fixed(*value.value, decimals)) + " ± " + number(error, "") + unit +
-           " (no spread: one period)";
-  const std::string both = plus_minus(*value.value, *error.value, decimals, "±");
-  const std::size_t sign = both.find(" ± ");
-  return number(value, both.substr(0, sign)) + " ± " + number(error, both.substr(sign + 3)) + unit;
+    return number(value, w.fixed(*value.value, decimals)) + " ± " + number(error, "") + unit +
+           " (" + html_text(w.t("report-no-spread")) + ")";
+  const std::string text = w.both(*value.value, *error.value, decimals);
+  const std::size_t at = text.find(" ± ");
+  return number(value, text.substr(0, at)) + " ± " + number(error, text.substr(at + 4)) + unit;
 }
 
-std::string set_up_table(const ReportPart& part) {
+std::string title_of(const Writer& w, const ReportPart& part) {
+  return w.t(part.simulated ? "report-simulation-title" : "report-measurement-title",
+             {{"name", part.title}});
+}
+
+std::string set_up_table(const Writer& w, const ReportPart& part) {
   std::string out = "<table class=\"set-up\"><tbody>\n";
-  for (const auto& [what, value] : part.set_up)
-    out += fmt::format("<tr><th scope=\"row\">{}</th><td>{}</td></tr>\n", html_text(what),
-                       html_text(value));
+  for (const SetUpRow& row : part.set_up)
+    out += fmt::format("<tr><th scope=\"row\">{}</th><td>{}</td></tr>\n",
+                       html_text(w.t("report-setup-" + row.id)),
+                       html_text(row.numeric ? w.shown(row.value) : row.value));
   return out + "</tbody></table>\n";
 }
 
-std::string figures(const ReportPart& part) {
+std::string figure(const Writer& w, SvgPlot plot, const std::string& caption) {
+  plot.decimal_sign = w.sign();
+  return "<figure>\n" + svg_line_plot(plot) +
+         fmt::format("<figcaption>{}</figcaption></figure>\n", html_text(caption));
+}
+
+std::string figures(const Writer& w, const ReportPart& part) {
   std::string out;
-  const auto figure = [&out](const ReportCurve& curve, const std::string& title,
-                             const std::string& caption) {
-    SvgPlot plot;
-    plot.title = title;
-    plot.x_label = "t (s)";
-    plot.y_label = curve.label;
-    plot.series.push_back({curve.t_s, curve.value, "", kBlue, false});
-    out += "<figure>\n" + svg_line_plot(plot) +
-           fmt::format("<figcaption>{}</figcaption></figure>\n", caption);
-  };
-  if (part.position)
-    figure(*part.position, "The plate's position x(t)",
-           "The plate's position x(t), the whole run (the simulation's trajectory).");
-  if (part.signal)
-    figure(*part.signal, part.signal->label,
-           part.simulated ? "The Hall sensor's signal, as the rig's Arduino reads it: a pulse "
-                            "each time a magnet passes over the sensor."
-                          : "The measurement, as read: the channel the estimator timed.");
+  const std::string time = w.t("report-axis-time");
+  if (part.position) {
+    const std::string label = w.t("report-axis-position");
+    out += figure(w, {label, time, label, {{part.position->t_s, part.position->value, "", kBlue}}},
+                  w.t("report-position-caption"));
+  }
+  if (part.signal) {
+    const std::string label =
+        part.simulated ? w.t("report-axis-hall") : part.signal->label;  // the instrument's words
+    out += figure(w, {label, time, label, {{part.signal->t_s, part.signal->value, "", kBlue}}},
+                  w.t(part.simulated ? "report-hall-caption" : "report-measurement-caption"));
+  }
   if (!part.periods.empty()) {
-    SvgPlot plot;
-    plot.title = "Each period against its start";
-    plot.x_label = "start of the period (s)";
-    plot.y_label = "T (s)";
-    SvgSeries accepted{{}, {}, "accepted", kBlue, false, true};
-    SvgSeries rejected{{}, {}, "discarded", kOrange, false, true};
+    SvgSeries accepted{{}, {}, w.t("report-accepted"), kBlue, false, true};
+    SvgSeries rejected{{}, {}, w.t("report-discarded"), kOrange, false, true};
     for (const ReportPeriod& p : part.periods) {
       SvgSeries& into = p.accepted ? accepted : rejected;
       into.x.push_back(p.start_s);
       into.y.push_back(p.period_s);
     }
-    plot.series.push_back(accepted);
+    SvgPlot plot{w.t("report-periods-plot"),
+                 w.t("report-axis-start"),
+                 w.t("report-axis-period"),
+                 {accepted}};
     if (!rejected.x.empty()) plot.series.push_back(rejected);
-    out += "<figure>\n" + svg_line_plot(plot) +
-           "<figcaption>Each period at its start: the scatter of the accepted ones is the "
-           "periods' standard deviation.</figcaption></figure>\n";
+    out += figure(w, plot, w.t("report-periods-caption"));
   }
   return out;
 }
 
-std::string periods_table(const ReportPart& part) {
-  if (part.periods.empty()) return "<p>The estimator found no period.</p>\n";
-  std::string out =
-      "<table class=\"periods-table\"><thead><tr><th>#</th><th>start (s)</th><th>end "
-      "(s)</th><th>T (s)</th><th>accepted</th></tr></thead><tbody>\n";
+std::string periods_table(const Writer& w, const ReportPart& part) {
+  if (part.periods.empty()) return "<p>" + html_text(w.t("report-no-period")) + "</p>\n";
+  std::string out = fmt::format(
+      "<table class=\"periods-table\"><thead><tr><th>#</th><th>{}</th><th>{}</th><th>{}</th>"
+      "<th>{}</th></tr></thead><tbody>\n",
+      html_text(w.t("report-column-start")), html_text(w.t("report-column-end")),
+      html_text(w.t("report-axis-period")), html_text(w.t("report-column-accepted")));
   int i = 0;
   for (const ReportPeriod& p : part.periods)
     out += fmt::format(
         "<tr{}><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td "
         "class=\"n\" data-value=\"{}\">{}</td><td>{}</td></tr>\n",
-        p.accepted ? "" : " class=\"rejected\"", ++i, fixed(p.start_s, 4), fixed(p.end_s, 4),
-        exact(p.period_s), fixed(p.period_s, 4),
-        p.accepted ? "yes" : "no: beyond 20 % of the running median");
+        p.accepted ? "" : " class=\"rejected\"", ++i, w.fixed(p.start_s, 4), w.fixed(p.end_s, 4),
+        exact(p.period_s), w.fixed(p.period_s, 4),
+        html_text(w.t(p.accepted ? "report-yes" : "report-no-beyond-median")));
   return out + "</tbody></table>\n";
 }
 
-std::string results(const ReportPart& part) {
+std::string results(const Writer& w, const ReportPart& part) {
   std::string out;
-  out += "<p class=\"result\">T = " + value_with_error(part.period, part.period_se, 4, " s") +
+  out += "<p class=\"result\">T = " + value_with_error(w, part.period, part.period_se, 4, " s") +
          "</p>\n";
-  out += fmt::format(
-      "<p class=\"why\">T is the mean of the {} accepted periods; dT is their standard error "
-      "(standard deviation {} s over the square root of their number).</p>\n",
+  // The messages' own text is escaped; the numbers' marks are added after.
+  const std::string count = "\x01", sd = "\x02";
+  std::string why = html_text(w.t("report-period-why", {{"count", count}, {"sd", sd}}));
+  const auto put = [&why](const std::string& mark, const std::string& html) {
+    if (const std::size_t at = why.find(mark); at != std::string::npos) why.replace(at, 1, html);
+  };
+  put(count,
       number(part.periods_used,
-             part.periods_used.value ? fmt::format("{:.0f}", *part.periods_used.value) : ""),
-      number(part.period_sd, part.period_sd.value ? fixed(*part.period_sd.value, 5) : ""));
-  out +=
-      "<p class=\"result\">μ<sub>k</sub> = " + value_with_error(part.mu_k, part.mu_k_err, 3, "") +
-      "</p>\n";
-  out += fmt::format(
-      "<p class=\"why\">μ<sub>k</sub> = 2π² l / (g T²), with l = {} mm and g = {} m/s². Its "
-      "uncertainty combines in quadrature the spacing's, dl / l with dl = {} mm, and the "
-      "period's, 2 σ<sub>T</sub> / T with σ<sub>T</sub> the periods' standard deviation, as the "
-      "rig's Arduino computes it; added instead of combined, they give ± {}.</p>\n",
-      fixed(part.spacing_m * 1e3, 1), fixed(part.gravity_m_s2, 2),
-      fixed(part.spacing_err_m * 1e3, 1),
-      number(part.mu_k_err_worst,
-             part.mu_k_err_worst.value ? fixed(*part.mu_k_err_worst.value, 4) : ""));
+             part.periods_used.value ? fmt::format("{:.0f}", *part.periods_used.value) : ""));
+  put(sd, number(part.period_sd, part.period_sd.value ? w.fixed(*part.period_sd.value, 5) : ""));
+  out += "<p class=\"why\">" + why + "</p>\n";
+  out += "<p class=\"result\">μ<sub>k</sub> = " +
+         value_with_error(w, part.mu_k, part.mu_k_err, 3, "") + "</p>\n";
+  const std::string worst = "\x03";
+  std::string mu_why =
+      html_text(w.t("report-mu-k-why", {{"spacing", w.fixed(part.spacing_m * 1e3, 1)},
+                                        {"gravity", w.fixed(part.gravity_m_s2, 2)},
+                                        {"dl", w.fixed(part.spacing_err_m * 1e3, 1)},
+                                        {"worst", worst}}));
+  if (const std::size_t at = mu_why.find(worst); at != std::string::npos)
+    mu_why.replace(at, 1,
+                   number(part.mu_k_err_worst,
+                          part.mu_k_err_worst.value ? w.fixed(*part.mu_k_err_worst.value, 4) : ""));
+  out += "<p class=\"why\">" + mu_why + "</p>\n";
   return out;
 }
 
-std::string part_section(const ReportPart& part, int index) {
+std::string part_section(const Writer& w, const ReportPart& part, int index) {
   std::string out = fmt::format("<section class=\"part\" id=\"part-{}\"><h2>{}</h2>\n", index,
-                                html_text(part.title));
-  out += "<h3>Set-up</h3>\n" + set_up_table(part);
-  out += "<h3>Data</h3>\n" + figures(part);
-  out += "<h3>Result</h3>\n" + results(part);
-  if (!part.regime.empty())
-    out += fmt::format("<p>Regime: <span data-field=\"regime\">{}</span>.</p>\n",
-                       html_text(part.regime));
-  out += "<h3>The periods</h3>\n<div class=\"periods\">" + periods_table(part) + "</div>\n";
+                                html_text(title_of(w, part)));
+  out += "<h3>" + html_text(w.t("report-set-up")) + "</h3>\n" + set_up_table(w, part);
+  out += "<h3>" + html_text(w.t("report-data")) + "</h3>\n" + figures(w, part);
+  out += "<h3>" + html_text(w.t("report-result")) + "</h3>\n" + results(w, part);
+  if (!part.regime.empty()) {
+    std::string id =
+        "report-regime-" + part.regime;  // "no restoring force": ...-no-restoring-force
+    std::replace(id.begin(), id.end(), ' ', '-');
+    const std::string regime = w.t(id);
+    out += "<p>" +
+           html_text(w.t("report-regime", {{"regime", regime == id ? part.regime : regime}})) +
+           "</p>\n";
+  }
+  out += "<h3>" + html_text(w.t("report-periods")) + "</h3>\n" + periods_table(w, part);
   return out + "</section>\n";
 }
 
-std::string comparison(const ReportContent& c) {
-  std::string out =
-      "<section id=\"comparison\"><h2>Comparison</h2>\n<table><thead><tr><th>source</th><th>T "
-      "(s)</th><th>μ<sub>k</sub></th></tr></thead><tbody>\n";
-  for (const ReportPart& part : c.parts) {
+std::string comparison(const Writer& w, const ReportContent& c) {
+  std::string out = fmt::format(
+      "<section id=\"comparison\"><h2>{}</h2>\n<table><thead><tr><th>{}</th><th>T "
+      "(s)</th><th>μ<sub>k</sub></th></tr></thead><tbody>\n",
+      html_text(w.t("report-comparison")), html_text(w.t("report-source")));
+  const auto row = [&out](const std::string& what, const std::string& period,
+                          const std::string& mu) {
     out += fmt::format("<tr><td>{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td></tr>\n",
-                       html_text(part.title), value_with_error(part.period, part.period_se, 4, ""),
-                       value_with_error(part.mu_k, part.mu_k_err, 3, ""));
-    if (part.period_thin.value && part.mu_k_set.value)
-      out += fmt::format(
-          "<tr><td>Theory for μ<sub>k</sub> = {} set: thin plate, π √(2 l / (μ<sub>k</sub> "
-          "g)); with the plate's thickness</td><td class=\"n\">{}; {}</td><td "
-          "class=\"n\">{}</td></tr>\n",
-          fixed(*part.mu_k_set.value, 3),
-          number(part.period_thin, fixed(*part.period_thin.value, 4)),
-          part.period_thick.value ? number(part.period_thick, fixed(*part.period_thick.value, 4))
-                                  : number(part.period_thick, ""),
-          number(part.mu_k_set, fixed(*part.mu_k_set.value, 3)));
-    if (part.mu_k_thick.value)
-      out += fmt::format(
-          "<tr><td>{}: μ<sub>k</sub> from T through the thick formula, 2π² l / (g T² + 4π² "
-          "h<sub>c</sub>), with the plate's centre of mass h<sub>c</sub> above the "
-          "contacts</td><td class=\"n\"></td><td class=\"n\">{}</td></tr>\n",
-          html_text(part.title), number(part.mu_k_thick, fixed(*part.mu_k_thick.value, 3)));
-  }
-  bool any_paper = false;
+                       html_text(what), period, mu);
+  };
   for (const ReportPart& part : c.parts) {
-    if (!part.paper) continue;
-    const ReportPaperRow& p = *part.paper;
-    any_paper = true;
-    out += fmt::format(
-        "<tr><td>The paper's Table I: {}, {:.0f} K</td><td class=\"n\">{}</td><td "
-        "class=\"n\">{}</td></tr>\n",
-        html_text(p.material), p.temperature_k, plus_minus(p.period_s, p.period_err_s, 2, "±"),
-        plus_minus(p.mu_k, p.mu_k_err, 2, "±"));
-    break;
+    row(title_of(w, part), value_with_error(w, part.period, part.period_se, 4, ""),
+        value_with_error(w, part.mu_k, part.mu_k_err, 3, ""));
+    if (part.period_thin.value && part.mu_k_set.value)
+      row(w.t("report-theory-row", {{"mu", w.fixed(*part.mu_k_set.value, 3)}}),
+          number(part.period_thin, w.fixed(*part.period_thin.value, 4)) + "; " +
+              (part.period_thick.value
+                   ? number(part.period_thick, w.fixed(*part.period_thick.value, 4))
+                   : number(part.period_thick, "")),
+          number(part.mu_k_set, w.fixed(*part.mu_k_set.value, 3)));
+    if (part.mu_k_thick.value)
+      row(w.t("report-thick-row", {{"name", title_of(w, part)}}), "",
+          number(part.mu_k_thick, w.fixed(*part.mu_k_thick.value, 3)));
+  }
+  const auto paper = std::find_if(c.parts.begin(), c.parts.end(),
+                                  [](const ReportPart& p) { return p.paper.has_value(); });
+  if (paper != c.parts.end()) {
+    const ReportPaperRow& p = *paper->paper;
+    row(w.t("report-paper-row",
+            {{"material", p.material}, {"kelvin", fmt::format("{:.0f}", p.temperature_k)}}),
+        w.both(p.period_s, p.period_err_s, 2), w.both(p.mu_k, p.mu_k_err, 2));
   }
   out += "</tbody></table>\n";
-  if (!any_paper)
-    out += "<p>The paper's Table I has no row for this material at this temperature.</p>\n";
+  if (paper == c.parts.end()) out += "<p>" + html_text(w.t("report-no-paper-row")) + "</p>\n";
   return out + "</section>\n";
 }
 
-std::string stopwatch(const ReportContent& c) {
+std::string stopwatch(const Writer& w, const ReportContent& c) {
   if (c.stopwatch.empty()) return "";
-  std::string out =
-      "<section id=\"stopwatch\"><h2>Timed by hand</h2>\n<table><thead><tr><th>periods</th><th>"
-      "wall clock (s)</th><th>simulated (s)</th><th>T by hand (s)</th></tr></thead><tbody>\n";
+  std::string out = fmt::format(
+      "<section id=\"stopwatch\"><h2>{}</h2>\n<table><thead><tr><th>{}</th><th>{}</th><th>{}"
+      "</th><th>{}</th></tr></thead><tbody>\n",
+      html_text(w.t("report-stopwatch")), html_text(w.t("report-column-periods")),
+      html_text(w.t("report-column-wall")), html_text(w.t("report-column-simulated")),
+      html_text(w.t("report-column-by-hand")));
   for (const StopwatchTiming& s : c.stopwatch) {
     const double timed = s.simulated_s.value_or(s.wall_s);
     out += fmt::format(
         "<tr><td class=\"n\">{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td "
         "class=\"n\">{}</td></tr>\n",
-        s.periods, fixed(s.wall_s, 2), s.simulated_s ? fixed(*s.simulated_s, 3) : "—",
-        fixed(timed / s.periods, 3));
+        s.periods, w.fixed(s.wall_s, 2), s.simulated_s ? w.fixed(*s.simulated_s, 3) : "—",
+        w.fixed(timed / s.periods, 3));
   }
-  out +=
-      "</tbody></table>\n<p class=\"why\">A press of the stopwatch is late or early by a "
-      "reaction time, about 0.2 s: over ten periods that is 0.02 s in T.</p></section>\n";
-  return out;
-}
-
-std::string method() {
-  return fmt::format(
-      "<section id=\"method\"><h2>Method</h2>\n<p>A plate lies on two rollers a distance l "
-      "apart that turn in opposite senses, their tops toward each other. Kinetic friction at "
-      "each contact is μ<sub>k</sub> times the roller's share of the plate's weight, and the "
-      "nearer roller carries more: the difference pulls the plate back toward the middle with a "
-      "force proportional to its offset. The plate oscillates with period T = π √(2 l / "
-      "(μ<sub>k</sub> g)), so a measured period gives μ<sub>k</sub> = 2π² l / (g T²) ({}). A "
-      "Hall sensor senses the magnets on the plate's ends; the rig's estimator times its "
-      "pulses, keeps each period within 20 % of the running median, and averages "
-      "them.</p></section>\n",
-      kCitation);
+  return out + "</tbody></table>\n<p class=\"why\">" + html_text(w.t("report-stopwatch-why")) +
+         "</p></section>\n";
 }
 
 }  // namespace
 
-std::string report_html(const ReportContent& c) {
+std::string report_html(const ReportContent& c, const ReportTexts& texts) {
+  const Writer w(texts);
+  const std::string title = w.t("report-title");
   std::string out = fmt::format(
-      "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<meta "
-      "name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>Lab report: "
-      "the friction oscillator{}</title>\n<style>{}</style></head>\n<body>\n<header><h1>Lab "
-      "report: the friction oscillator</h1>\n<p class=\"byline\">{}{}</p></header>\n",
-      c.student.empty() ? "" : " — " + html_text(c.student), kStyle,
+      "<!doctype html>\n<html lang=\"{}\"><head><meta charset=\"utf-8\">\n<meta "
+      "name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>{}{}</title>\n"
+      "<style>{}</style></head>\n<body>\n<header><h1>{}</h1>\n<p class=\"byline\">{}{}</p>"
+      "</header>\n",
+      html_text(c.language), html_text(title),
+      c.student.empty() ? "" : " — " + html_text(c.student), kStyle, html_text(title),
       c.student.empty() ? "" : "<span data-field=\"student\">" + html_text(c.student) + "</span>, ",
       html_text(c.date));
-  out += method();
+  out += fmt::format("<section id=\"method\"><h2>{}</h2>\n<p>{}</p></section>\n",
+                     html_text(w.t("report-method")),
+                     html_text(w.t("report-method-text", {{"citation", kCitation}})));
   int index = 0;
-  for (const ReportPart& part : c.parts) out += part_section(part, ++index);
-  out += comparison(c);
-  out += stopwatch(c);
+  for (const ReportPart& part : c.parts) out += part_section(w, part, ++index);
+  out += comparison(w, c);
+  out += stopwatch(w, c);
   out += fmt::format(
-      "<footer>Made with {}: the simulation and the estimator of the rig's "
-      "Arduino code; the method of {}.</footer>\n</body></html>\n",
-      html_text(c.lab_version), kCitation);
+      "<footer>{}</footer>\n</body></html>\n",
+      html_text(w.t("report-footer", {{"version", c.lab_version}, {"citation", kCitation}})));
   return out;
 }
 

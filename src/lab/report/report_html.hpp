@@ -6,12 +6,27 @@
 // source field and exact value (data-field, data-value); one it did not is shown as "—".
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "lab/report/report_content.hpp"
+#include "text/message_catalogue.hpp"
 
 namespace fl {
 
-std::string report_html(const ReportContent& content);
+// The report's words in its language: the language's catalogue, English's where it lacks one
+// (assets/locales/LANG.ftl, its `report-*` messages).
+struct ReportTexts {
+  MessageCatalogue language;
+  MessageCatalogue english;
+
+  // The message, filled; English's where the language lacks it; the id itself where both do.
+  std::string operator()(const std::string& id,
+                         const std::map<std::string, std::string>& args = {}) const;
+  // "." or "," (the message report-decimal-sign).
+  std::string decimal_sign() const;
+};
+
+std::string report_html(const ReportContent& content, const ReportTexts& texts);
 
 }  // namespace fl

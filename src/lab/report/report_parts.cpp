@@ -123,7 +123,7 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
   part.simulated = true;
   part.source = source;
   const std::string scene = summary.value("scene", "");
-  part.title = "Simulation: " + (scene.empty() ? source : scene);
+  part.title = scene.empty() ? source : scene;
   part.spacing_m = summary.at("spacing_m").get<double>();
   part.period = field(summary, "period_s");
   part.period_sd = field(summary, "period_std_s");
@@ -140,24 +140,23 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
     part.regime = summary["regime"].get<std::string>();
   part.paper = paper_row(summary, table);
 
-  part.set_up.emplace_back("scene", scene);
-  part.set_up.emplace_back("roller spacing l", mm(part.spacing_m));
+  part.set_up.push_back({"scene", scene, false});
+  part.set_up.push_back({"spacing", mm(part.spacing_m)});
   if (const ReportNumber w = field(summary, "roller_speed_rad_s"); w.value)
-    part.set_up.emplace_back("rollers' speed",
-                             fmt::format("{:.0f} rpm", *w.value * 30.0 / std::numbers::pi));
-  if (part.paper) part.set_up.emplace_back("plate", part.paper->material);
+    part.set_up.push_back({"speed", fmt::format("{:.0f} rpm", *w.value * 30.0 / std::numbers::pi)});
+  if (part.paper) part.set_up.push_back({"plate", part.paper->material, false});
   if (part.mu_k_set.value)
-    part.set_up.emplace_back("μk set in the simulation", fmt::format("{:g}", *part.mu_k_set.value));
+    part.set_up.push_back({"mu-k-set", fmt::format("{:g}", *part.mu_k_set.value)});
   if (const ReportNumber h = field(summary, "h_c_m"); h.value)
-    part.set_up.emplace_back("plate's centre of mass above the contacts h_c", mm(*h.value));
+    part.set_up.push_back({"h-c", mm(*h.value)});
   if (const ReportNumber m = field(summary, "plate_mass_kg"); m.value)
-    part.set_up.emplace_back("plate's mass", fmt::format("{:.1f} g", *m.value * 1e3));
+    part.set_up.push_back({"mass", fmt::format("{:.1f} g", *m.value * 1e3)});
   if (const ReportNumber d = field(summary, "duration_s"); d.value)
-    part.set_up.emplace_back("run", fmt::format("{:g} s of simulated time", *d.value));
+    part.set_up.push_back({"duration", fmt::format("{:g} s", *d.value)});
   if (const ReportNumber dt = field(summary, "time_step_s"); dt.value)
-    part.set_up.emplace_back("time step", fmt::format("{:g} ms", *dt.value * 1e3));
+    part.set_up.push_back({"time-step", fmt::format("{:g} ms", *dt.value * 1e3)});
   if (const ReportNumber seed = field(summary, "seed"); seed.value)
-    part.set_up.emplace_back("seed (the sensor's noise)", fmt::format("{:.0f}", *seed.value));
+    part.set_up.push_back({"seed", fmt::format("{:.0f}", *seed.value)});
 
   if (const auto trajectory = files("trajectory.csv")) {
     const CsvColumns csv = read_csv(*trajectory);
@@ -189,7 +188,7 @@ ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
                             const std::optional<PaperComparison>& paper) {
   ReportPart part;
   part.source = log.path;
-  part.title = "Measurement: " + log.path;
+  part.title = log.path;
   const LogSetUp& s = estimate.set_up;
   part.spacing_m = s.spacing;
   part.spacing_err_m = s.spacing_err;
@@ -212,16 +211,17 @@ ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
   part.mu_k_set.field = "mu_k_set";
   part.mu_k_thick =
       value(mu_k_thick(estimate).has_value(), mu_k_thick(estimate).value_or(0.0), "mu_k_thick");
-  part.set_up.emplace_back("instrument", instrument_words(log.instrument) +
-                                             (log.channel.empty() ? "" : ", " + log.channel));
-  part.set_up.emplace_back("file", log.path);
-  part.set_up.emplace_back("roller spacing l",
-                           fmt::format("{:g} ± {:g} mm", s.spacing * 1e3, s.spacing_err * 1e3));
-  part.set_up.emplace_back("g", fmt::format("{:g} m/s²", s.gravity));
-  part.set_up.emplace_back("samples", fmt::format("{} over {:.2f} s ({:.0f} Hz)", log.t_s.size(),
-                                                  estimate.duration, estimate.sample_rate));
+  part.set_up.push_back(
+      {"instrument",
+       instrument_words(log.instrument) + (log.channel.empty() ? "" : ", " + log.channel), false});
+  part.set_up.push_back({"file", log.path, false});
+  part.set_up.push_back(
+      {"spacing", fmt::format("{:g} ± {:g} mm", s.spacing * 1e3, s.spacing_err * 1e3)});
+  part.set_up.push_back({"gravity", fmt::format("{:g} m/s²", s.gravity)});
+  part.set_up.push_back({"samples", fmt::format("{}, {:.2f} s, {:.0f} Hz", log.t_s.size(),
+                                                estimate.duration, estimate.sample_rate)});
   if (paper) {
-    part.set_up.emplace_back("plate", paper->name);
+    part.set_up.push_back({"plate", paper->name, false});
     part.paper = ReportPaperRow{paper->name,         paper->temperature,
                                 paper->period.value, paper->period.uncertainty,
                                 paper->mu_k.value,   paper->mu_k.uncertainty};

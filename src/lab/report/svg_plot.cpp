@@ -58,10 +58,12 @@ std::vector<std::pair<double, double>> column_extremes(const SvgSeries& s, doubl
   return out;
 }
 
-std::string tick_text(double v, double step) {
+std::string tick_text(double v, double step, const std::string& sign) {
   const int decimals = std::max(0, static_cast<int>(std::ceil(-std::log10(step) - 1e-9)));
   const double shown = std::fabs(v) < 0.5 * step ? 0.0 : v;
-  return fmt::format("{:.{}f}", shown, decimals);
+  std::string text = fmt::format("{:.{}f}", shown, decimals);
+  if (sign != ".") std::replace(text.begin(), text.end(), '.', sign.empty() ? '.' : sign[0]);
+  return text;
 }
 
 }  // namespace
@@ -118,13 +120,13 @@ std::string svg_line_plot(const SvgPlot& plot) {
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{0:.1f}\" y2=\"{2:.1f}\" stroke=\"#ccc\" "
         "stroke-width=\"0.5\"/><text x=\"{0:.1f}\" y=\"{3:.1f}\" text-anchor=\"middle\" "
         "font-size=\"11\">{4}</text>\n",
-        px(v), top, top + h, top + h + 14, tick_text(v, x_step));
+        px(v), top, top + h, top + h + 14, tick_text(v, x_step, plot.decimal_sign));
   for (double v : yt)
     out += fmt::format(
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#ccc\" "
         "stroke-width=\"0.5\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\" text-anchor=\"end\" "
         "font-size=\"11\">{5}</text>\n",
-        left, py(v), left + w, left - 4, py(v) + 4, tick_text(v, y_step));
+        left, py(v), left + w, left - 4, py(v) + 4, tick_text(v, y_step, plot.decimal_sign));
   out += fmt::format(
       "<text x=\"{:.1f}\" y=\"{:.1f}\" text-anchor=\"middle\" font-size=\"12\">{}</text>\n",
       left + w / 2, plot.height - 6.0, html_text(plot.x_label));

@@ -24,6 +24,7 @@ struct SvgPlot {
   std::vector<SvgSeries> series;
   int width = 680;  // the viewBox, in CSS px
   int height = 240;
+  std::string decimal_sign = ".";  // the ticks' ("," in French)
 };
 
 // The plot as an <svg> element (role="img", titled); a plot with no finite point says so.

@@ -1,16 +1,19 @@
 #include "lab/request/report_request.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "lab/report/report_html.hpp"
 #include "lab/request/lab_data.hpp"
+#include "text/message_catalogue.hpp"
 
 namespace fl {
 namespace {
@@ -33,12 +36,25 @@ RunFiles folder_files(const std::string& folder) {
   };
 }
 
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 bool is_run_folder(const std::string& input) {
   std::error_code error;
   return std::filesystem::is_regular_file(std::filesystem::path(input) / "summary.json", error);
 }
 
 void check_request(const ReportRequest& r, FieldChecks& checks, bool inputs_needed) {
+  const std::vector<std::string> languages = report_languages(asset_dir(r.assets));
+  if (std::find(languages.begin(), languages.end(), r.language) == languages.end())
+    checks.problem("language", r.language,
+                   fmt::format("expected one of the languages the lab's data has ({}), found "
+                               "\"{}\"",
+                               fmt::join(languages, ", "), r.language));
   if (inputs_needed && r.inputs.empty())
     checks.problem(
         "inputs",
@@ -59,7 +75,7 @@ void check_request(const ReportRequest& r, FieldChecks& checks, bool inputs_need
 
 ReportResult finish(ReportContent content, const ReportRequest& r) {
   ReportResult result;
-  result.html = report_html(content);
+  result.html = report_html(content, report_texts(r.assets, r.language));
   result.content = std::move(content);
   if (!r.out.empty()) {
     write_file_atomic(r.out, result.html);
@@ -70,6 +86,7 @@ ReportResult finish(ReportContent content, const ReportRequest& r) {
 
 ReportContent content_of(const ReportRequest& r) {
   ReportContent c;
+  c.language = r.language;
   c.student = r.student;
   c.lab_version = r.lab_version.empty() ? "frictionlab" : r.lab_version;
   c.date = r.date.empty() ? today_utc() : r.date;
@@ -78,6 +95,22 @@ ReportContent content_of(const ReportRequest& r) {
 }
 
 }  // namespace
+
+ReportTexts report_texts(const std::string& assets, const std::string& language) {
+  const std::filesystem::path locales = std::filesystem::path(asset_dir(assets)) / "locales";
+  return {MessageCatalogue::parse(read_file(locales / (language + ".ftl"))),
+          MessageCatalogue::parse(read_file(locales / "en.ftl"))};
+}
+
+std::vector<std::string> report_languages(const std::string& assets) {
+  std::vector<std::string> out;
+  std::error_code error;
+  const std::filesystem::path locales = std::filesystem::path(asset_dir(assets)) / "locales";
+  for (const auto& entry : std::filesystem::directory_iterator(locales, error))
+    if (entry.path().extension() == ".ftl") out.push_back(entry.path().stem().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
 
 nlohmann::json ReportResult::json() const {
   nlohmann::json parts = nlohmann::json::array();

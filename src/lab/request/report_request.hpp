@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lab/report/report_content.hpp"
+#include "lab/report/report_html.hpp"
 #include "lab/report/report_parts.hpp"
 #include "lab/request/estimate_request.hpp"
 
@@ -24,6 +25,7 @@ struct ReportRequest {
   EstimateRequest measurement;  // the measurements' rig and reading (spacing, material, ...)
   std::string lab_version;      // the front end's version, in the report's footer
   std::string date;             // "YYYY-MM-DD" ("" : today, UTC)
+  std::string language = "en";  // "language": a catalogue of assets/locales (en, fr, ...)
 };
 
 struct ReportResult {
@@ -34,6 +36,12 @@ struct ReportResult {
   // {"written", "parts": [{"title", "period_s", "mu_k", ...}]}: what the report says, in numbers.
   nlohmann::json json() const;
 };
+
+// The languages the lab's data offers a report in: each assets/locales/LANG.ftl, by name.
+std::vector<std::string> report_languages(const std::string& asset_dir);
+
+// The report's words in `language`, English's beside them (assets/locales/LANG.ftl).
+ReportTexts report_texts(const std::string& assets, const std::string& language);
 
 // Throws RequestError (every problem by field) or InputError located in the file at fault.
 ReportResult make_report(const ReportRequest& request);

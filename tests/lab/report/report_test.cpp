@@ -4,6 +4,7 @@
 // with a null value; what it cannot report is refused, naming the input.
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -17,6 +18,7 @@
 #include "lab/request/report_request.hpp"
 #include "lab/request/run_request.hpp"
 #include "support/temp_folder.hpp"
+#include "text/message_catalogue.hpp"
 
 namespace fl {
 namespace {
@@ -89,10 +91,74 @@ TEST_F(ReportTest, ItsNumbersAreTheRunsSummaryExactly) {
                              "period_thin_s", "period_thick_s", "mu_k_set", "mu_k_recovered_thick"})
     EXPECT_TRUE(fields.count(needed)) << needed << " is not in the report";
   EXPECT_GE(numbers, 10);
+  // Every word is a message of the catalogue: none is missing (a missing one shows its id).
+  EXPECT_EQ(html.find("report-"), std::string::npos) << html.substr(html.find("report-"), 60);
+  EXPECT_NE(html.find("<html lang=\"en\">"), std::string::npos);
   // The paper's Table I row for LEGO blocks at 300 K: 0.79 +- 0.03 s, mu_k 0.29 +- 0.03.
   EXPECT_NE(html.find("The paper's Table I: LEGO blocks, 300 K"), std::string::npos);
   EXPECT_NE(html.find("0.79 ± 0.03"), std::string::npos);
   EXPECT_NE(html.find("American Journal of Physics"), std::string::npos);
+}
+
+TEST_F(ReportTest, InFrenchItsWordsAndDecimalCommaAreFrenchAndItsNumbersTheSame) {
+  const std::string run = run_minimal("6 s");
+  ReportRequest r = request({run});
+  r.language = "fr";
+  r.stopwatch = {{10, 7.9, 7.765}};
+  const std::string html = make_report(r).html;
+  EXPECT_EQ(html.find("report-"), std::string::npos) << html.substr(html.find("report-"), 60);
+  EXPECT_NE(html.find("<html lang=\"fr\">"), std::string::npos);
+  EXPECT_NE(html.find("Compte rendu : l'oscillateur à frottement"), std::string::npos);
+  EXPECT_NE(html.find("Tableau I de l'article : LEGO blocks, 300 K"), std::string::npos);
+  EXPECT_NE(html.find("0,79 ± 0,03"), std::string::npos);  // the paper's T, with a comma
+  EXPECT_NE(html.find("<td class=\"n\">7,765</td>"), std::string::npos);  // the stopwatch's
+  // The marked numbers are the summary's exactly, whatever the language shows.
+  const json summary = json::parse(read(std::filesystem::path(run) / "summary.json"));
+  for (const auto& [field, value] : marked(html))
+    if (value != "null") {
+      EXPECT_EQ(json::parse(value), summary[field]) << field;
+    }
+  // A language the lab's data has no catalogue for is refused, saying which it has.
+  r.language = "xx";
+  try {
+    make_report(r);
+    FAIL() << "a report in xx was written";
+  } catch (const RequestError& e) {
+    EXPECT_NE(std::string(e.what()).find("en, fr"), std::string::npos) << e.what();
+  }
+}
+
+// The catalogues offer the same report messages with the same variables: a translator's file
+// lacks none and invents none.
+TEST(ReportCatalogues, EveryLanguageHasEveryReportMessageWithItsVariables) {
+  const auto read_catalogue = [](const std::string& language) {
+    return read(std::filesystem::path(FRICTIONLAB_TEST_ASSET_DIR) / "locales" /
+                (language + ".ftl"));
+  };
+  const std::string english = read_catalogue("en");
+  const auto ids_and_variables = [](const std::string& ftl) {
+    std::map<std::string, std::set<std::string>> out;
+    const std::regex message("^(report-[a-z0-9-]+) = (.*)$", std::regex::multiline);
+    const std::regex variable("\\{ *\\$([a-z_]+) *\\}");
+    for (auto it = std::sregex_iterator(ftl.begin(), ftl.end(), message);
+         it != std::sregex_iterator(); ++it) {
+      const std::string text = (*it)[2];
+      std::set<std::string>& vars = out[(*it)[1]];
+      for (auto v = std::sregex_iterator(text.begin(), text.end(), variable);
+           v != std::sregex_iterator(); ++v)
+        vars.insert((*v)[1]);
+    }
+    return out;
+  };
+  const auto wanted = ids_and_variables(english);
+  EXPECT_GE(wanted.size(), 50u);
+  for (const std::string& language : report_languages(FRICTIONLAB_TEST_ASSET_DIR)) {
+    const auto found = ids_and_variables(read_catalogue(language));
+    EXPECT_EQ(found, wanted) << language << ".ftl";
+    // And the lab reads each of them (plain text and { $variable } only).
+    const MessageCatalogue c = MessageCatalogue::parse(read_catalogue(language));
+    for (const auto& [id, vars] : wanted) EXPECT_TRUE(c.has(id)) << language << ": " << id;
+  }
 }
 
 TEST_F(ReportTest, EveryPeriodOfTheRunIsInItsTable) {
@@ -145,7 +211,7 @@ TEST_F(ReportTest, ANumberNotMeasuredIsADashWithANullValue) {
   part.mu_k = {0.29, "mu_k"};
   part.mu_k_err = {std::nullopt, "mu_k_err_quadrature"};
   c.parts.push_back(part);
-  const std::string html = report_html(c);
+  const std::string html = report_html(c, report_texts(FRICTIONLAB_TEST_ASSET_DIR, "en"));
   EXPECT_NE(html.find("data-field=\"period_std_error_s\" data-value=\"null\">—"),
             std::string::npos);
   EXPECT_NE(html.find("no spread: one period"), std::string::npos);

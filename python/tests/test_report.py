@@ -45,3 +45,12 @@ def test_bad_input_is_refused(tmp_path):
     with pytest.raises(frictionlab.InputError):
         frictionlab.report([], out=tmp_path / "report.html")
     assert not (tmp_path / "report.html").exists()
+
+
+def test_a_report_in_french(tmp_path):
+    phone = EXAMPLES / "phone-magnetometer.csv"
+    frictionlab.report([phone], out=tmp_path / "rapport.html", material="lego", language="fr")
+    html = (tmp_path / "rapport.html").read_text()
+    assert '<html lang="fr">' in html and "Compte rendu" in html
+    with pytest.raises(frictionlab.InputError):
+        frictionlab.report([phone], out=tmp_path / "x.html", language="xx")

@@ -141,16 +141,15 @@ std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
       return BodyRefusal{"expected the keys \"student\", \"stopwatch\" and \"language\", found \"" +
                          key + "\""};
   if (const auto language = body.find("language"); language != body.end()) {
-    const bool word =
-        language->is_string() && !language->get<std::string>().empty() &&
-        language->get<std::string>().size() <= 16 &&
-        std::all_of(language->get<std::string>().begin(), language->get<std::string>().end(),
-                    [](char c) { return (c >= 'a' && c <= 'z') || c == '-'; });
+    const std::string code = language->is_string() ? language->get<std::string>() : "";
+    const bool word = !code.empty() && code.size() <= 16 &&
+                      std::all_of(code.begin(), code.end(),
+                                  [](char c) { return (c >= 'a' && c <= 'z') || c == '-'; });
     if (!word)
       return BodyRefusal{
           "expected \"language\" as a language's code (\"en\", \"fr\"), found " + quoted(*language),
           "language"};
-    report.language = language->get<std::string>();
+    report.language = code;
   }
   if (const auto student = body.find("student"); student != body.end()) {
     const bool empty = student->is_string() && student->get<std::string>().empty();

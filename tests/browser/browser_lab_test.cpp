@@ -86,6 +86,46 @@ TEST(BrowserLab, ASessionSteppedToItsEndIsRunsRunByteForByte) {
   }
 }
 
+// The session's lab report: refused before the run ends, then the run's summary in it, the
+// student and the stopwatch from the body, in the language asked; a body it cannot take refused
+// at its field.
+TEST(BrowserLab, ASessionsReportHoldsItsSummaryInTheLanguageAsked) {
+  BrowserLab lab = test_lab();
+  const std::string id =
+      lab.create_session(R"({"scene": "minimal", "set": ["world.duration=2s"], "name": "Ada"})")
+          .body["id"];
+  EXPECT_EQ(lab.report(id, "").status, 409);
+  const auto events = step_to_done(lab, id);
+  const json& summary = events.back().second;
+  const Answer english = lab.report(id, "");
+  ASSERT_EQ(english.status, 200) << english.body.dump();
+  const std::string html = english.body["html"];
+  EXPECT_NE(html.find("<html lang=\"en\">"), std::string::npos);
+  EXPECT_NE(html.find("data-field=\"student\">Ada<"), std::string::npos);  // the session's name
+  EXPECT_NE(html.find("data-value=\"" + summary["period_s"].dump() + "\""), std::string::npos);
+  const Answer french = lab.report(id, R"({"student": "Curie, M.", "language": "fr",
+              "stopwatch": [{"periods": 10, "wall_s": 7.9, "simulated_s": null}]})");
+  ASSERT_EQ(french.status, 200) << french.body.dump();
+  const std::string fr = french.body["html"];
+  EXPECT_NE(fr.find("<html lang=\"fr\">"), std::string::npos);
+  EXPECT_NE(fr.find("Curie, M."), std::string::npos);
+  EXPECT_NE(fr.find("Chronométré à la main"), std::string::npos);
+  EXPECT_NE(fr.find("<td class=\"n\">7,90</td>"), std::string::npos);
+  for (const char* body : {R"({"language": "EN"})", R"({"language": 3})", R"({"colour": "red"})",
+                           R"({"stopwatch": [{"periods": 0, "wall_s": 1, "simulated_s": null}]})",
+                           R"({"stopwatch": [{"periods": 10, "wall_s": -1, "simulated_s": null}]})",
+                           R"({"student": "=1+1"})", "[1, 2]", "{"}) {
+    const Answer refused = lab.report(id, body);
+    EXPECT_EQ(refused.status, 400) << body;
+    EXPECT_FALSE(refused.body["error"].get<std::string>().empty()) << body;
+  }
+  // A language the lab's data has no catalogue for: refused by the report's request, by field.
+  const Answer klingon = lab.report(id, R"({"language": "tlh"})");
+  EXPECT_EQ(klingon.status, 400);
+  EXPECT_EQ(klingon.body["problems"][0]["field"], "language") << klingon.body.dump();
+  EXPECT_EQ(lab.report("nope", "").status, 404);
+}
+
 TEST(BrowserLab, AnUnchangedStateIsNotSentAgain) {
   BrowserLab lab = test_lab();
   const std::string id = lab.create_session(R"({"scene": "minimal"})").body["id"];

@@ -87,6 +87,42 @@ await check("a link's set-up runs in the page and its period is run's", async ()
   await context.close();
 });
 
+await check("the lab report, made in this browser: its numbers are summary.json's", async () => {
+  const { page, context, complaints, asked } = await openPage(
+    `/?scene=minimal&set=${encodeURIComponent("world.duration=6s")}`,
+  );
+  await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  await page.waitForFunction(
+    () => !document.querySelector('[data-testid="export-report"]').disabled,
+  );
+  const [download] = await Promise.all([
+    page.waitForEvent("download"),
+    page.getByTestId("export-report").click(),
+  ]);
+  const html = readFileSync(await download.path(), "utf8");
+  // summary.json as the page offers it (a Blob's address), read in the page.
+  const summary = JSON.parse(
+    await page.evaluate(async () => {
+      const href = document.querySelector('[data-testid="file-summary"]').href;
+      return (await fetch(href)).text();
+    }),
+  );
+  let numbers = 0;
+  for (const [, field, value] of html.matchAll(/data-field="([a-z_]+)" data-value="([^"]*)"/g)) {
+    expect(
+      JSON.stringify(JSON.parse(value)) === JSON.stringify(summary[field]),
+      `${field}: report ${value}, summary.json ${summary[field]}`,
+    );
+    numbers += 1;
+  }
+  expect(numbers >= 10, `only ${numbers} numbers marked`);
+  expect(html.includes("American Journal of Physics"), "the paper is not cited");
+  const api = asked.filter((url) => new URL(url).pathname.includes("/api/"));
+  expect(api.length === 0, `requests for an API: ${api.join(", ")}`);
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
 await check("the site works from a folder of a web space, its links too", async () => {
   // The static server's folder is the site's parent: the lab is at /NAME/.
   const folder = resolve(options.site);

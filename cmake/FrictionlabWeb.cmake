@@ -25,9 +25,11 @@ if(FRICTIONLAB_WITH_WEB)
     WORKING_DIRECTORY ${web_source}
     COMMENT "web: npm ci (the packages package-lock.json pins)"
     VERBATIM)
-  file(GLOB_RECURSE web_inputs CONFIGURE_DEPENDS ${web_source}/src/*.ts)
+  # The page's catalogues are bundled in: a new assets/locales/TAG.ftl is a new language.
+  file(GLOB_RECURSE web_inputs CONFIGURE_DEPENDS ${web_source}/src/*.ts
+       ${PROJECT_SOURCE_DIR}/assets/locales/*.ftl)
   list(APPEND web_inputs ${web_source}/index.html ${web_source}/class.html ${web_source}/app.css
-       ${web_source}/build.mjs)
+       ${web_source}/build.mjs ${web_source}/catalogues.mjs)
   # The lab's page (index.html, app.js) and the teacher's class table (class.html, class.js).
   add_custom_command(
     OUTPUT ${FRICTIONLAB_WEB_DIR}/app.js ${FRICTIONLAB_WEB_DIR}/index.html

@@ -1,12 +1,14 @@
 // Builds the pages into a folder: app.js (src/main.ts, the lab) and class.js (src/class_page.ts,
-// the teacher's class table), each bundled and minified; app.css (uPlot's stylesheet, then the
-// pages'); index.html and class.html. The folder: `node build.mjs OUTDIR`, else
-// $FRICTIONLAB_WEB_OUT, else dist/ beside this file.
+// the teacher's class table), each bundled and minified with every catalogue of ../assets/locales
+// (catalogues.mjs: a new .ftl file there is a new language of the page); app.css (uPlot's
+// stylesheet, then the pages'); index.html and class.html. The folder: `node build.mjs OUTDIR`,
+// else $FRICTIONLAB_WEB_OUT, else dist/ beside this file.
 //   node build.mjs OUTDIR --lab browser   the page of the static site (tools/site): the lab in
 //                                         the page's own Web Worker (src/lab_client_worker.ts in
 //                                         place of src/lab_client.ts, and lab_worker.js), no
 //                                         class table
 import { build } from "esbuild";
+import { cataloguesPlugin } from "./catalogues.mjs";
 import { copyFile, mkdir, readFile, writeFile } from "node:fs/promises";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
@@ -49,7 +51,7 @@ await build({
       ? { app: join(here, "src/main.ts") }
       : { app: join(here, "src/main.ts"), class: join(here, "src/class_page.ts") },
   format: "esm",
-  plugins: lab === "browser" ? [workerClient] : [],
+  plugins: lab === "browser" ? [workerClient, cataloguesPlugin] : [cataloguesPlugin],
 });
 if (lab === "browser") {
   // A classic worker: it loads the core's script (frictionlab-lab.js) with importScripts.

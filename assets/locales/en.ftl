@@ -1,7 +1,409 @@
-# frictionlab's messages in English: the page's and the lab report's (web/README.md says how to
-# add a language).
+# frictionlab's words in English: the browser page's (web/) and the lab report's (the report-*
+# messages, which the lab itself reads), one message an id, in Mozilla's
+# Fluent (https://projectfluent.org/fluent/guide/). A language is one such file, TAG.ftl beside
+# this one (fr.ftl: French), with every message of this one; the page offers each file it finds
+# here. English is every message's fallback. A number in { $name } comes written already, in the
+# page's language; one a message chooses by ({ $periods -> [one] ... *[other] ... }) is a count.
 
 language-name = English
+
+## The page's frame
+
+page-title = frictionlab — the friction oscillator in your browser
+page-subtitle = the friction oscillator in your browser
+class-page-title = frictionlab — the class's table
+class-page-subtitle = the class's table
+language-label = Language
+skip-to-controls = Skip to the controls
+lab-place-browser = The lab runs in this browser: nothing is sent anywhere.
+lab-place-server = The lab runs on the server at { $host }.
+page-problem-unexpected = The lab did not answer as expected: { $message }
+# Between the parts of a list on one line: "thin plate T = 0.634 s; μₖ = 0.29".
+parts-separator = {"; "}
+# A value in seconds, as the readouts write it.
+seconds = { $seconds } s
+
+## The rig in 3D
+
+view-title = The rig in 3D
+view-canvas-label = The rig in 3D: the plate on its two rollers
+view-reset = Reset view
+force-normal = normal force
+force-friction = friction
+force-weight = weight m g (3 cm)
+view-hint-mouse = Drag to orbit · scroll to zoom.
+view-hint-touch = Drag to orbit · pinch to zoom.
+view-keys = Keys on the view: arrows orbit, Shift + arrows pan, + and − zoom, Home resets.
+view-near-side = show the near wall
+
+## The run
+
+run-title = Run
+run-play = Play
+run-pause = Pause
+run-play-again = Play again
+run-step = Step
+    .title = One frame: 1/30 s of simulated time
+run-reset = Reset
+run-slow-motion = Slow motion
+run-status-connecting = connecting
+run-status-paused = paused
+run-status-playing = playing
+run-status-done = done
+run-status-no-session = no session
+run-time = t = { $t } s
+run-failure = The run stopped: { $message }
+period = T = { $period } s
+period-none = T = — s
+period-waiting = T = … s
+mu-k = μₖ = { $muK }
+mu-k-none = μₖ = —
+period-detail-none = no period accepted yet
+period-detail-no-spread =
+    from { $periods ->
+        [one] { $periods } period
+       *[other] { $periods } periods
+    }: no spread yet
+period-detail-spread =
+    ± is the standard deviation of { $periods ->
+        [one] { $periods } period
+       *[other] { $periods } periods
+    }; standard error { $se } s
+period-detail-done = the run's result: ± is the standard deviation; standard error { $se } s
+regime-label = Regime:
+
+## The regimes the lab names (its summary's `regime`); a regime this file lacks shows as the lab
+## wrote it.
+
+regime-oscillates = oscillates
+regime-clipped = clipped
+regime-stick-slip = stick-slip
+regime-grows = grows
+regime-decays = decays
+regime-sticks = sticks
+regime-tips = tips
+regime-no-restoring-force = no restoring force
+regime-lost = lost
+regime-numerically-failed = numerically failed
+
+## The plots and the periods
+
+plots-title = Plots
+plot-position-caption = Plate position x(t), theory dashed (last 5 s)
+plot-position-box =
+    .aria-label = Plot of the plate's position x against the time t, the last 5 s; its data are in the table below
+plot-hall-caption = Hall sensor, its pulses dashed (last 5 s)
+plot-hall-box =
+    .aria-label = Plot of the Hall sensor's ADC counts against the time t, the last 5 s, the pulses the estimator found marked; its data are in the table below
+plot-hall-none = This rig has no Hall sensor.
+plot-table-summary = Data as a table
+plot-table-position-hidden = : the plate's position
+plot-table-hall-hidden = : the Hall sensor's ADC counts
+plot-hall-column = Hall (ADC counts)
+plot-adc-axis = ADC counts
+plot-position-series = x (mm)
+plot-theory-series = theory x_th (mm)
+plot-rig-hall-series = rig's Hall (ADC)
+# What a plot's table holds, for its caption ("No samples of ... yet.").
+plot-table-position-what = the plate's position x (mm)
+plot-table-hall-what = the Hall sensor's ADC counts
+plot-table-empty = No samples of { $what } yet.
+# $what: plot-table-position-what or plot-table-hall-what, its first letter made a capital.
+plot-table-every = { $what }, t from { $from } to { $to } s: every sample plotted ({ $rows }).
+plot-table-some = { $what }, t from { $from } to { $to } s: { $rows } of the { $samples } samples plotted, evenly in time.
+periods-caption = Periods as the estimator judges them:
+periods-region =
+    .aria-label = Periods table
+periods-from = from (s)
+periods-accepted-column = accepted
+periods-status-column = status
+periods-yes = ✓ yes
+periods-no = ✗ no
+periods-accepted = accepted
+periods-rejected = rejected
+periods-none = none yet
+periods-tally = { $accepted } of { $count } accepted
+
+## The side panel: the rig and its theory
+
+panel =
+    .aria-label = Set-up and tools
+rig-values-title = Rig and theory
+rig-values-spacing = Spacing l
+rig-values-rollers = Rollers
+rig-values-plate = Plate
+rig-values-theory = Theory
+spacing-value = { $spacing } mm
+rollers-value = { $rpm } rpm
+rollers-value-driven = { $rpm } rpm (motor drive)
+theory-thin = thin plate T = { $period } s
+theory-thick = thick plate { $period } s
+theory-mu-k = μₖ = { $muK }
+theory-paper = paper: T = { $period } s, μₖ = { $muK }
+
+## The stopwatch
+
+stopwatch-title = Stopwatch: time ten periods
+stopwatch-start = Start
+stopwatch-stop = Stop
+stopwatch-clear = Clear
+stopwatch-space = or press Space
+stopwatch-wall = Wall clock
+stopwatch-simulated = Simulated
+stopwatch-estimator = Estimator
+# $total: the time between the presses; $periods: the periods timed; $period: one of them.
+stopwatch-timed = { $total } s, ÷ { $periods } = { $period } s
+
+## The set-up
+
+setup-title = Set-up
+setup-scene = Scene
+setup-material = Plate material (Table I)
+setup-spacing = Roller spacing l
+setup-spacing-slider =
+    .aria-label = Roller spacing l, slider (mm)
+setup-speed = Roller speed
+setup-speed-slider =
+    .aria-label = Roller speed, slider (rpm)
+unit-rpm = rpm
+setup-duty = Motor duty (PWM)
+setup-duty-slider =
+    .aria-label = Motor duty, slider (%)
+setup-law = Friction law
+setup-law-scene = as the scene
+setup-mu-s = μs (static)
+setup-from-scene =
+    .placeholder = scene
+setup-runout = Roller run-out
+setup-offset = Starting offset
+setup-offset-slider =
+    .aria-label = Starting offset, slider (mm)
+setup-duration = Run for
+setup-duration-hint = Long enough to time ten periods by hand (about 8 s on the paper's rig) and more.
+setup-accepts = This set-up accepts { $least } to { $most } { $unit }.
+number-nothing = expected a number, found nothing
+number-decimal-point = expected a number with a decimal point, such as 89.5, found "{ $text }"
+number-expected = expected a number, such as { $example }, found "{ $text }"
+
+## The class
+
+class-title = The class
+student-name-label = Your name (for the class table)
+student-name-hint = Shown in the class's table as you type, and sent with every session you start; letters, digits, spaces and . - _ ' , ( ).
+student-name-not-sent = Not sent: { $problem }.
+student-name-too-long = at most { $most } characters
+student-name-characters = only letters, digits, spaces and . - _ ' , ( ), beginning with a letter or digit
+class-link = The class's table
+
+## Your measurement
+
+measurement-title = Your measurement
+measurement-file = A file you measured
+measurement-note = Your rig's Hall log, a phone's phyphox export (CSV or zip), Tracker's data, a position-time table or a short phone video, chosen here or dropped on this panel: the lab reads its period, and μₖ with this set-up's spacing.
+measurement-reading = reading { $file }
+measurement-busy = the lab is reading other files; { $file } again in a moment
+# $instrument: the lab's name of what made the file (and its channel).
+measurement-result =
+    { $file }: { $instrument }, N = { $periods } { $periods ->
+        [one] period
+       *[other] periods
+    }; μₖ = { $muK } with l = { $spacing } mm
+measurement-phone-note = A phone on the plate raises its centre of mass: this μₖ, by the paper's formula, is high by the fraction 4π²h_c/(gT²) (frictionlab estimate --h-c gives the thick formula's)
+
+## The live rig
+
+rig-title = The live rig
+rig-summary-looking = looking for the rig's Arduino
+rig-summary-connect = connect the rig's Arduino
+rig-summary-no-web-serial = Web Serial missing: choose its log file
+rig-summary-ports =
+    { $ports ->
+        [one] { $ports } serial port found
+       *[other] { $ports } serial ports found
+    }
+rig-port-label = Serial port of the rig's Arduino
+rig-no-port-found = no serial port found
+rig-connect = Connect
+rig-close = Close
+rig-choose-note = A shared lab: only the lab's own computer chooses the port.
+rig-connect-note = Connecting plays this set-up's simulation from t = 0 beside it.
+rig-plot-caption = The rig's Hall sensor (last 10 s): periods end at the orange-red lines (grey dashed: rejected)
+rig-periods-caption = The rig's periods, newest first:
+rig-periods-region =
+    .aria-label = The rig's periods
+rig-log = The rig's raw log
+rig-log-named = The rig's raw log ({ $name })
+rig-problem = The rig: { $message }
+rig-lines =
+    { $lines ->
+        [one] { $lines } line
+       *[other] { $lines } lines
+    }
+# The port's state, as the lab names it (closed, waiting, receiving, unplugged, failed, full).
+rig-port-state =
+    { $state ->
+        [closed] closed
+        [waiting] waiting
+        [receiving] receiving
+        [unplugged] unplugged
+        [failed] failed
+        [full] full
+       *[other] { $state }
+    }
+rig-state-none = no port open
+# $lines: rig-lines, written.
+rig-state-closed = closed ({ $port } was open, { $lines } received)
+rig-state-waiting = waiting for { $port }: nothing received yet
+rig-state-receiving = receiving from { $port }, { $lines }
+rig-state-unplugged = unplugged: { $port } went away after { $lines }
+rig-state-failed = failed: { $port }
+rig-state-other = { $state }: { $port }
+rig-the-port = the port
+rig-geometry-one-pulse = one pulse per period
+rig-geometry-pair = a pair of pulses per period
+rig-geometry-unknown = pulses not yet recognised
+rig-estimate-periods =
+    N = { $periods } { $periods ->
+        [one] period
+       *[other] periods
+    }
+rig-estimate-se = standard error { $se } s
+rig-estimate-spacing = l = { $spacing } mm (this set-up's spacing)
+rig-estimate-note = ± is the periods' standard deviation, dμₖ in quadrature
+
+## Export
+
+export-title = Export
+export-files = The run's files (after it is done):
+export-report = Lab report
+export-report-hint = After the run: the set-up, the data, T and μk with their uncertainties, against the paper, as a page to hand in or print to PDF.
+export-report-writing = Writing the report…
+export-report-done = report.html is downloaded: open it, and print it to PDF from the browser to hand it in.
+export-png = PNG of the view
+export-link = Link to this set-up
+export-copy = Copy
+export-copy-by-hand = Select the link and copy it by hand.
+export-copied = Copied.
+
+## The rig in words, for a screen reader
+
+# Where the plate is: $side is left, right or centre; $mm its distance from the centre.
+plate-where =
+    { $side ->
+        [left] { $mm } mm left of centre
+        [right] { $mm } mm right of centre
+       *[centre] at the centre
+    }
+# $where: plate-where, written; $motion: left, right or rest.
+plate-now =
+    The plate is { $where }, { $motion ->
+        [left] moving left
+        [right] moving right
+       *[rest] at rest
+    }.
+rollers-one = The plate rests on the { $side ->
+        [left] left
+       *[right] right
+    } roller alone ({ $newtons } N).
+rollers-same = Both rollers carry the same weight ({ $newtons } N each).
+rollers-more =
+    The { $more ->
+        [left] left
+       *[right] right
+    } roller carries more of its weight: { $most } N against { $least } N on the { $more ->
+        [left] right
+       *[right] left
+    }.
+period-said-done = The run's period: T = { $period } s.
+period-said-none = No period measured yet.
+period-said-so-far =
+    The period so far: T = { $period } s, from { $periods ->
+        [one] { $periods } period
+       *[other] { $periods } periods
+    }.
+# $sense: inward or outward; $material: the lab's name of the plate's material; $start: plate-where.
+set-up-said =
+    Two rollers { $spacing } mm apart (the spacing l), their tops turning { $sense ->
+        [inward] toward each other
+       *[outward] away from each other
+    } at { $rpm } rpm, under a plate of { $material }, { $length } mm long and { $mass } g; the plate starts { $start }. The thin-plate theory's period: { $period } s.
+# $moment: playing, paused or over; $motion: plate-now and what follows it, written.
+moment-said =
+    { $moment ->
+        [paused] Paused at
+        [over] The run is over at
+       *[playing] Playing, at
+    } t = { $t } s. { $motion }
+
+## The class's table (class.html)
+
+class-back = Back to the lab
+class-caption = Every open session's set-up and result, like the paper's Table I filled by the class:
+class-asking = asking the lab
+class-column-name = name
+class-column-scene = scene
+class-column-material = material
+class-column-temperature = temperature (K)
+class-column-spacing = spacing l (mm)
+class-column-state = state
+class-column-period = period T ± dT (s)
+class-column-paper = paper's μₖ
+class-column-hide = hide the row
+class-show-hidden = Show the hidden rows
+class-show-hidden-count =
+    Show the { $hidden } hidden { $hidden ->
+        [one] row
+       *[other] rows
+    }
+class-hint = T ± dT: the mean of the accepted periods ± its standard error, rounded to it ("motion fit": a rig without a Hall sensor, its period fitted to the plate's motion); μₖ ± dμₖ in quadrature with the spacing's dl; the paper's μₖ from its Table I; — where there is none yet. Refreshed every 2 s. A column's heading sorts the rows by it (again: the other way). "Hide" takes a row off this page only (a student who left, a run you have noted), kept so in this browser; class.csv holds every open session.
+class-motion-fit = { $period } (motion fit)
+class-hide = Hide
+class-hide-named = Hide the row of { $name }
+class-hide-unnamed = Hide the unnamed session's row
+class-no-session = No session is open.
+class-all-hidden = Every row is hidden.
+class-count =
+    { $sessions ->
+        [one] { $sessions } session
+       *[other] { $sessions } sessions
+    }
+class-count-hidden =
+    { $sessions ->
+        [one] { $sessions } session
+       *[other] { $sessions } sessions
+    }, { $hidden } hidden here
+# $state: rig-port-state, written; $lines: rig-lines, written.
+class-rig = The live rig: { $port }, { $state }, { $lines } received
+class-rig-no-port = no port
+class-updated = updated { $time }
+# A session's state, as the lab names it (paused, playing, done).
+session-state =
+    { $state ->
+        [paused] paused
+        [playing] playing
+        [done] done
+       *[other] { $state }
+    }
+
+## The page's own words about the lab (where the lab's answer says nothing)
+
+lab-no-json = the lab answered { $status } with no JSON
+lab-answered = the lab answered { $status }
+lab-busy = the lab is busy: too many requests from this computer; try again in a few s
+lab-busy-seconds = the lab is busy: too many requests from this computer; try again in { $seconds } s
+lab-setup-problems = the set-up has problems
+lab-full = the lab is full: try again when a session ends
+lab-stopped = the lab stopped
+lab-superseded = a newer set-up took this one's place
+browser-lab-stopped = the lab in this browser stopped: { $why }
+browser-lab-worker-failed = its worker failed
+browser-lab-no-class = the class's table is a classroom server's (frictionlab serve): this lab runs in one browser
+serial-choose = the browser asks which
+serial-missing = This browser cannot open the rig's serial port (Web Serial is in Chrome, Edge and Opera on a computer): save the rig's log (the Arduino's serial monitor, or frictionlab log) and choose the file under “Your measurement”
+serial-no-baud = the lab gave no baud rate for the rig's port
+serial-none-chosen = no port chosen: press Connect again and choose the rig's Arduino
+serial-not-opened = the port could not be opened ({ $why }): close the Arduino IDE's serial monitor or any other page using it, and connect again
+serial-chosen-port = the chosen serial port
 
 ## The lab report (frictionlab report, the page's "Lab report"): read by the lab itself, so each
 ## message here is plain text with { $variable } placeables only.

@@ -1,6 +1,400 @@
-# Les messages de frictionlab en français : ceux de la page et du compte rendu.
+# Les mots de frictionlab en français : ceux de la page du navigateur (web/), un message par
+# identifiant, au format Fluent de Mozilla (https://projectfluent.org/fluent/guide/). Chaque
+# message de en.ftl y est, avec les mêmes variables. Les espaces avant « : », « ; », entre un
+# nombre et son unité et dans les guillemets sont insécables (U+00A0), écrites telles quelles.
 
 language-name = Français
+
+## Le cadre de la page
+
+page-title = frictionlab — l’oscillateur à frottement dans votre navigateur
+page-subtitle = l’oscillateur à frottement dans votre navigateur
+class-page-title = frictionlab — le tableau de la classe
+class-page-subtitle = le tableau de la classe
+language-label = Langue
+skip-to-controls = Aller aux commandes
+lab-place-browser = Le labo tourne dans ce navigateur : rien n’est envoyé ailleurs.
+lab-place-server = Le labo tourne sur le serveur { $host }.
+page-problem-unexpected = Le labo n’a pas répondu comme prévu : { $message }
+parts-separator = {" ; "}
+seconds = { $seconds } s
+
+## Le dispositif en 3D
+
+view-title = Le dispositif en 3D
+view-canvas-label = Le dispositif en 3D : la plaque sur ses deux rouleaux
+view-reset = Vue initiale
+force-normal = réaction normale
+force-friction = frottement
+force-weight = poids m g (3 cm)
+view-hint-mouse = Glisser pour tourner · molette pour zoomer.
+view-hint-touch = Glisser pour tourner · pincer pour zoomer.
+view-keys = Touches sur la vue : flèches pour tourner, Maj + flèches pour décaler, + et − pour zoomer, Début pour recentrer.
+view-near-side = montrer la paroi avant
+
+## La simulation
+
+run-title = Simulation
+run-play = Lecture
+run-pause = Pause
+run-play-again = Rejouer
+run-step = Pas à pas
+    .title = Une image : 1/30 s de temps simulé
+run-reset = Remise à zéro
+run-slow-motion = Ralenti
+run-status-connecting = connexion…
+run-status-paused = en pause
+run-status-playing = en cours
+run-status-done = terminée
+run-status-no-session = aucune session
+run-time = t = { $t } s
+run-failure = La simulation s’est arrêtée : { $message }
+period = T = { $period } s
+period-none = T = — s
+period-waiting = T = … s
+mu-k = μₖ = { $muK }
+mu-k-none = μₖ = —
+period-detail-none = aucune période retenue pour l’instant
+period-detail-no-spread =
+    sur { $periods ->
+        [one] { $periods } période
+       *[other] { $periods } périodes
+    } : pas encore d’écart-type
+period-detail-spread =
+    ± est l’écart-type de { $periods ->
+        [one] { $periods } période
+       *[other] { $periods } périodes
+    } ; erreur-type { $se } s
+period-detail-done = résultat de la simulation : ± est l’écart-type ; erreur-type { $se } s
+regime-label = Régime :
+
+## Les régimes que nomme le labo (le `regime` de son résumé)
+
+regime-oscillates = oscille
+regime-clipped = écrêté
+regime-stick-slip = adhérence-glissement
+regime-grows = croît
+regime-decays = décroît
+regime-sticks = adhère
+regime-tips = bascule
+regime-no-restoring-force = sans force de rappel
+regime-lost = plaque perdue
+regime-numerically-failed = échec numérique
+
+## Les graphiques et les périodes
+
+plots-title = Graphiques
+plot-position-caption = Position x(t) de la plaque, théorie en tirets (sur 5 s)
+plot-position-box =
+    .aria-label = Graphique de la position x de la plaque en fonction du temps t, sur les 5 dernières secondes ; ses données sont dans le tableau ci-dessous
+plot-hall-caption = Capteur à effet Hall, ses impulsions en tirets (sur 5 s)
+plot-hall-box =
+    .aria-label = Graphique de la valeur du CAN du capteur à effet Hall en fonction du temps t, sur les 5 dernières secondes, avec les impulsions trouvées par l’estimateur ; ses données sont dans le tableau ci-dessous
+plot-hall-none = Ce dispositif n’a pas de capteur à effet Hall.
+plot-table-summary = Données en tableau
+plot-table-position-hidden =  : la position de la plaque
+plot-table-hall-hidden =  : la valeur du CAN du capteur à effet Hall
+plot-hall-column = Hall (valeur du CAN)
+plot-adc-axis = valeur CAN
+plot-position-series = x (mm)
+plot-theory-series = théorie x_th (mm)
+plot-rig-hall-series = Hall du dispositif (CAN)
+plot-table-position-what = la position x de la plaque (mm)
+plot-table-hall-what = la valeur du CAN du capteur à effet Hall
+plot-table-empty = Pas encore d’échantillon pour { $what }.
+plot-table-every = { $what }, t de { $from } à { $to } s : tous les échantillons tracés ({ $rows }).
+plot-table-some = { $what }, t de { $from } à { $to } s : { $rows } des { $samples } échantillons tracés, répartis régulièrement dans le temps.
+periods-caption = Périodes jugées par l’estimateur :
+periods-region =
+    .aria-label = Tableau des périodes
+periods-from = début (s)
+periods-accepted-column = retenue
+periods-status-column = statut
+periods-yes = ✓ oui
+periods-no = ✗ non
+periods-accepted = retenue
+periods-rejected = rejetée
+periods-none = aucune pour l’instant
+periods-tally =
+    { $accepted ->
+        [one] { $accepted } retenue
+       *[other] { $accepted } retenues
+    } sur { $count }
+
+## Le panneau latéral : le dispositif et sa théorie
+
+panel =
+    .aria-label = Réglages et outils
+rig-values-title = Dispositif et théorie
+rig-values-spacing = Entraxe l
+rig-values-rollers = Rouleaux
+rig-values-plate = Plaque
+rig-values-theory = Théorie
+spacing-value = { $spacing } mm
+rollers-value = { $rpm } tr/min
+rollers-value-driven = { $rpm } tr/min (entraînés par le moteur)
+theory-thin = plaque mince T = { $period } s
+theory-thick = plaque épaisse { $period } s
+theory-mu-k = μₖ = { $muK }
+theory-paper = article : T = { $period } s, μₖ = { $muK }
+
+## Le chronomètre
+
+stopwatch-title = Chronomètre : mesurer dix périodes
+stopwatch-start = Démarrer
+stopwatch-stop = Arrêter
+stopwatch-clear = Effacer
+stopwatch-space = ou la touche Espace
+stopwatch-wall = Temps réel
+stopwatch-simulated = Temps simulé
+stopwatch-estimator = Estimateur
+stopwatch-timed = { $total } s, ÷ { $periods } = { $period } s
+
+## Le réglage
+
+setup-title = Réglage
+setup-scene = Scène
+setup-material = Matériau de la plaque (tableau I)
+setup-spacing = Entraxe des rouleaux l
+setup-spacing-slider =
+    .aria-label = Entraxe des rouleaux l, curseur (mm)
+setup-speed = Vitesse des rouleaux
+setup-speed-slider =
+    .aria-label = Vitesse des rouleaux, curseur (tr/min)
+unit-rpm = tr/min
+setup-duty = Rapport cyclique du moteur (MLI)
+setup-duty-slider =
+    .aria-label = Rapport cyclique du moteur, curseur (%)
+setup-law = Loi de frottement
+setup-law-scene = celle de la scène
+setup-mu-s = μs (statique)
+setup-from-scene =
+    .placeholder = scène
+setup-runout = Faux-rond des rouleaux
+setup-offset = Décalage initial
+setup-offset-slider =
+    .aria-label = Décalage initial, curseur (mm)
+setup-duration = Durée
+setup-duration-hint = Assez longue pour chronométrer dix périodes à la main (environ 8 s sur le dispositif de l’article), et plus.
+setup-accepts = Ce réglage accepte de { $least } à { $most } { $unit }.
+number-nothing = un nombre est attendu, rien n’a été saisi
+number-decimal-point = un nombre avec un point décimal est attendu, par exemple 89.5, et non « { $text } »
+number-expected = un nombre est attendu, par exemple { $example }, et non « { $text } »
+
+## La classe
+
+class-title = La classe
+student-name-label = Votre nom (pour le tableau de la classe)
+student-name-hint = Affiché dans le tableau de la classe pendant la saisie, et envoyé avec chaque session que vous lancez ; lettres, chiffres, espaces et . - _ ' , ( ).
+student-name-not-sent = Non envoyé : { $problem }.
+student-name-too-long = { $most } caractères au plus
+student-name-characters = uniquement des lettres, des chiffres, des espaces et . - _ ' , ( ), en commençant par une lettre ou un chiffre
+class-link = Le tableau de la classe
+
+## Votre mesure
+
+measurement-title = Votre mesure
+measurement-file = Un fichier de vos mesures
+measurement-note = Le journal du capteur à effet Hall de votre dispositif, un export phyphox d’un téléphone (CSV ou zip), des données de Tracker, un tableau position-temps ou une courte vidéo prise au téléphone, choisi ici ou déposé sur ce panneau : le labo en lit la période, et μₖ avec l’entraxe de ce réglage.
+measurement-reading = lecture de { $file }
+measurement-busy = le labo lit d’autres fichiers ; { $file } dans un instant
+measurement-result =
+    { $file } : { $instrument }, N = { $periods } { $periods ->
+        [one] période
+       *[other] périodes
+    } ; μₖ = { $muK } avec l = { $spacing } mm
+measurement-phone-note = Un téléphone posé sur la plaque élève son centre de masse : ce μₖ, calculé par la formule de l’article, est trop grand de la fraction 4π²h_c/(gT²) (frictionlab estimate --h-c donne celui de la formule de la plaque épaisse)
+
+## Le dispositif réel
+
+rig-title = Le dispositif réel
+rig-summary-looking = recherche de l’Arduino du dispositif
+rig-summary-connect = connectez l’Arduino du dispositif
+rig-summary-no-web-serial = pas de Web Serial : choisissez son fichier journal
+rig-summary-ports =
+    { $ports ->
+        [one] { $ports } port série trouvé
+       *[other] { $ports } ports série trouvés
+    }
+rig-port-label = Port série de l’Arduino du dispositif
+rig-no-port-found = aucun port série trouvé
+rig-connect = Connecter
+rig-close = Fermer
+rig-choose-note = Labo partagé : seul l’ordinateur du labo choisit le port.
+rig-connect-note = La connexion lance à côté la simulation de ce réglage depuis t = 0.
+rig-plot-caption = Le capteur à effet Hall du dispositif (sur 10 s) : les périodes finissent aux traits rouge orangé (tirets gris : rejetées)
+rig-periods-caption = Les périodes du dispositif, la plus récente en premier :
+rig-periods-region =
+    .aria-label = Les périodes du dispositif
+rig-log = Le journal brut du dispositif
+rig-log-named = Le journal brut du dispositif ({ $name })
+rig-problem = Le dispositif : { $message }
+rig-lines =
+    { $lines ->
+        [one] { $lines } ligne
+       *[other] { $lines } lignes
+    }
+rig-port-state =
+    { $state ->
+        [closed] fermé
+        [waiting] en attente
+        [receiving] réception
+        [unplugged] débranché
+        [failed] en échec
+        [full] complet
+       *[other] { $state }
+    }
+rig-state-none = aucun port ouvert
+rig-state-closed = fermé ({ $port } était ouvert ; reçu : { $lines })
+rig-state-waiting = en attente de { $port } : rien reçu pour l’instant
+rig-state-receiving = réception depuis { $port }, { $lines }
+rig-state-unplugged = débranché : { $port } a disparu après { $lines }
+rig-state-failed = échec : { $port }
+rig-state-other = { $state } : { $port }
+rig-the-port = le port
+rig-geometry-one-pulse = une impulsion par période
+rig-geometry-pair = une paire d’impulsions par période
+rig-geometry-unknown = impulsions pas encore reconnues
+rig-estimate-periods =
+    N = { $periods } { $periods ->
+        [one] période
+       *[other] périodes
+    }
+rig-estimate-se = erreur-type { $se } s
+rig-estimate-spacing = l = { $spacing } mm (l’entraxe de ce réglage)
+rig-estimate-note = ± est l’écart-type des périodes, dμₖ en quadrature
+
+## Exporter
+
+export-title = Exporter
+export-files = Les fichiers de la simulation (une fois terminée) :
+export-report = Compte rendu de TP
+export-report-hint = Après la simulation : le réglage, les données, T et μk avec leurs incertitudes, comparés à l’article, en une page à rendre ou à imprimer en PDF.
+export-report-writing = Rédaction du compte rendu…
+export-report-done = report.html est téléchargé : ouvrez-le, et imprimez-le en PDF depuis le navigateur pour le rendre.
+export-png = PNG de la vue
+export-link = Lien vers ce réglage
+export-copy = Copier
+export-copy-by-hand = Sélectionnez le lien et copiez-le à la main.
+export-copied = Copié.
+
+## Le dispositif en mots, pour un lecteur d’écran
+
+plate-where =
+    { $side ->
+        [left] à { $mm } mm à gauche du centre
+        [right] à { $mm } mm à droite du centre
+       *[centre] au centre
+    }
+plate-now =
+    La plaque est { $where }, { $motion ->
+        [left] elle se déplace vers la gauche
+        [right] elle se déplace vers la droite
+       *[rest] immobile
+    }.
+rollers-one =
+    La plaque repose sur le seul rouleau de { $side ->
+        [left] gauche
+       *[right] droite
+    } ({ $newtons } N).
+rollers-same = Les deux rouleaux portent le même poids ({ $newtons } N chacun).
+rollers-more =
+    Le rouleau de { $more ->
+        [left] gauche
+       *[right] droite
+    } porte la plus grande part de son poids : { $most } N contre { $least } N sur celui de { $more ->
+        [left] droite
+       *[right] gauche
+    }.
+period-said-done = La période de la simulation : T = { $period } s.
+period-said-none = Aucune période mesurée pour l’instant.
+period-said-so-far =
+    La période jusqu’ici : T = { $period } s, sur { $periods ->
+        [one] { $periods } période
+       *[other] { $periods } périodes
+    }.
+set-up-said =
+    Deux rouleaux à { $spacing } mm l’un de l’autre (l’entraxe l), leurs sommets tournant { $sense ->
+        [inward] l’un vers l’autre
+       *[outward] en s’éloignant l’un de l’autre
+    } à { $rpm } tr/min, sous une plaque en { $material } longue de { $length } mm et de { $mass } g ; la plaque démarre { $start }. La période selon la théorie de la plaque mince : { $period } s.
+moment-said =
+    { $moment ->
+        [paused] En pause à
+        [over] La simulation est terminée à
+       *[playing] En cours, à
+    } t = { $t } s. { $motion }
+
+## Le tableau de la classe (class.html)
+
+class-back = Retour au labo
+class-caption = Le réglage et le résultat de chaque session ouverte, comme le tableau I de l’article rempli par la classe :
+class-asking = interrogation du labo
+class-column-name = nom
+class-column-scene = scène
+class-column-material = matériau
+class-column-temperature = température (K)
+class-column-spacing = entraxe l (mm)
+class-column-state = état
+class-column-period = période T ± dT (s)
+class-column-paper = μₖ de l’article
+class-column-hide = masquer la ligne
+class-show-hidden = Afficher les lignes masquées
+class-show-hidden-count =
+    { $hidden ->
+        [one] Afficher la ligne masquée
+       *[other] Afficher les { $hidden } lignes masquées
+    }
+class-hint = T ± dT : la moyenne des périodes retenues ± son erreur-type, arrondie à celle-ci (« ajustement du mouvement » : un dispositif sans capteur à effet Hall, dont la période est ajustée au mouvement de la plaque) ; μₖ ± dμₖ en quadrature avec le dl de l’entraxe ; le μₖ de l’article d’après son tableau I ; — là où il n’y en a pas encore. Actualisé toutes les 2 s. L’en-tête d’une colonne trie les lignes selon celle-ci (une seconde fois : dans l’autre sens). « Masquer » retire une ligne de cette page seulement (un élève parti, une simulation déjà notée), et elle le reste dans ce navigateur ; class.csv contient toutes les sessions ouvertes.
+class-motion-fit = { $period } (ajustement du mouvement)
+class-hide = Masquer
+class-hide-named = Masquer la ligne de { $name }
+class-hide-unnamed = Masquer la ligne de la session sans nom
+class-no-session = Aucune session n’est ouverte.
+class-all-hidden = Toutes les lignes sont masquées.
+class-count =
+    { $sessions ->
+        [one] { $sessions } session
+       *[other] { $sessions } sessions
+    }
+class-count-hidden =
+    { $sessions ->
+        [one] { $sessions } session
+       *[other] { $sessions } sessions
+    }, dont { $hidden ->
+        [one] { $hidden } masquée
+       *[other] { $hidden } masquées
+    } ici
+class-rig = Le dispositif réel : { $port }, { $state }, reçu : { $lines }
+class-rig-no-port = aucun port
+class-updated = mis à jour à { $time }
+session-state =
+    { $state ->
+        [paused] en pause
+        [playing] en cours
+        [done] terminée
+       *[other] { $state }
+    }
+
+## Les mots de la page sur le labo (là où la réponse du labo ne dit rien)
+
+lab-no-json = le labo a répondu { $status } sans JSON
+lab-answered = le labo a répondu { $status }
+lab-busy = le labo est occupé : trop de requêtes depuis cet ordinateur ; réessayez dans quelques secondes
+lab-busy-seconds = le labo est occupé : trop de requêtes depuis cet ordinateur ; réessayez dans { $seconds } s
+lab-setup-problems = le réglage pose des problèmes
+lab-full = le labo est complet : réessayez quand une session se terminera
+lab-stopped = le labo s’est arrêté
+lab-superseded = un réglage plus récent a pris la place de celui-ci
+browser-lab-stopped = le labo de ce navigateur s’est arrêté : { $why }
+browser-lab-worker-failed = son processus (worker) a échoué
+browser-lab-no-class = le tableau de la classe est celui d’un serveur de classe (frictionlab serve) : ce labo tourne dans un seul navigateur
+serial-choose = le navigateur demandera lequel
+serial-missing = Ce navigateur ne peut pas ouvrir le port série du dispositif (Web Serial existe dans Chrome, Edge et Opera sur ordinateur) : enregistrez le journal du dispositif (le moniteur série de l’Arduino, ou frictionlab log) et choisissez le fichier sous « Votre mesure »
+serial-no-baud = le labo n’a donné aucun débit (bauds) pour le port du dispositif
+serial-none-chosen = aucun port choisi : appuyez de nouveau sur Connecter et choisissez l’Arduino du dispositif
+serial-not-opened = le port n’a pas pu être ouvert ({ $why }) : fermez le moniteur série de l’IDE Arduino ou toute autre page qui l’utilise, puis connectez-vous de nouveau
+serial-chosen-port = le port série choisi
 
 ## Le compte rendu (frictionlab report, « Compte rendu » de la page) : lu par le laboratoire
 ## lui-même, chaque message ici est du texte simple, avec seulement des { $variable }.
@@ -42,7 +436,7 @@ report-measurement-caption = La mesure, telle que lue : la voie que l'estimateur
 report-periods-plot = Chaque période selon son début
 report-periods-caption = Chaque période à son début : la dispersion des périodes retenues est leur écart-type.
 report-accepted = retenue
-report-discarded = écartée
+report-discarded = rejetée
 report-no-period = L'estimateur n'a trouvé aucune période.
 report-column-start = début (s)
 report-column-end = fin (s)

@@ -3,9 +3,13 @@
 // class.csv; asked again every 2 s. The teacher sorts the rows by a column's heading and hides
 // rows from this page (kept in this browser); the sessions themselves are the students'.
 import { byId, byTestId, setText } from "./dom";
-import { fixed, trimmed, withError } from "./format";
+import { pageLanguage, t } from "./i18n";
 import { classCsvUrl, getClass, pageUrl, RateLimitedError } from "./lab_client";
 import type { ClassRow, ClassTable } from "./lab_types";
+import { showPageLanguage, withPageLanguage } from "./page_language";
+import { fixed, trimmed, withError } from "./page_numbers";
+
+showPageLanguage();
 
 const REFRESH_MS = 2000;
 const NONE = "—";
@@ -17,7 +21,7 @@ const rigLine = byTestId("class-rig");
 const updated = byId("class-updated");
 const problem = byId("page-problem");
 byTestId<HTMLAnchorElement>("class-csv").href = classCsvUrl();
-byTestId<HTMLAnchorElement>("lab-link").href = pageUrl("/");
+byTestId<HTMLAnchorElement>("lab-link").href = withPageLanguage(pageUrl("/"));
 
 /** A value ± its uncertainty, rounded to it; the value alone where there is none. */
 function measured(value: number | null, error: number | null, minDecimals: number): string {
@@ -32,10 +36,11 @@ function cellsOf(row: ClassRow): string[] {
     row.material ?? NONE,
     row.temperature_k === null ? NONE : trimmed(row.temperature_k, 1),
     trimmed(row.spacing * 1000, 1),
-    row.state,
+    t("session-state", { state: row.state }),
     fixed(row.t, 2),
-    measured(row.period, row.period_err, 3) +
-      (row.period_from === "trajectory" ? " (motion fit)" : ""),
+    row.period_from === "trajectory"
+      ? t("class-motion-fit", { period: measured(row.period, row.period_err, 3) })
+      : measured(row.period, row.period_err, 3),
     measured(row.mu_k, row.mu_k_err, 2),
     row.paper_mu_k === null ? NONE : trimmed(row.paper_mu_k, 3),
   ];
@@ -66,7 +71,7 @@ function sorted(sessions: ClassRow[]): ClassRow[] {
     const y = key(b);
     if (x === null || y === null) return x === y ? 0 : x === null ? 1 : -1;
     if (typeof x === "number" && typeof y === "number") return sign * (x - y);
-    return sign * String(x).localeCompare(String(y), undefined, { numeric: true });
+    return sign * String(x).localeCompare(String(y), pageLanguage(), { numeric: true });
   });
 }
 
@@ -106,8 +111,13 @@ function showTable(table: ClassTable): void {
     }
     const hide = document.createElement("button");
     hide.type = "button";
-    hide.textContent = "Hide";
-    hide.setAttribute("aria-label", `Hide ${session.name ?? "the unnamed"} session's row`);
+    hide.textContent = t("class-hide");
+    hide.setAttribute(
+      "aria-label",
+      session.name === null
+        ? t("class-hide-unnamed")
+        : t("class-hide-named", { name: session.name }),
+    );
     hide.addEventListener("click", () => {
       hidden.add(session.session);
       keepHidden(hidden);
@@ -123,22 +133,31 @@ function showTable(table: ClassTable): void {
     const td = document.createElement("td");
     td.colSpan = 11;
     td.className = "empty";
-    td.textContent = table.sessions.length === 0 ? "No session is open." : "Every row is hidden.";
+    td.textContent = t(table.sessions.length === 0 ? "class-no-session" : "class-all-hidden");
     tr.append(td);
     made.push(tr);
   }
   rows.replaceChildren(...made);
   const n = table.sessions.length;
   const off = table.sessions.length - shown.length;
-  setText(count, `${n} session${n === 1 ? "" : "s"}${off > 0 ? `, ${off} hidden here` : ""}`);
+  setText(
+    count,
+    off > 0
+      ? t("class-count-hidden", { sessions: n, hidden: off })
+      : t("class-count", { sessions: n }),
+  );
   showHidden.hidden = off === 0;
-  setText(showHidden, `Show the ${off} hidden row${off === 1 ? "" : "s"}`);
+  setText(showHidden, t("class-show-hidden-count", { hidden: off }));
   const rig = table.rig;
   rigLine.hidden = rig === null;
   if (rig !== null) {
     setText(
       rigLine,
-      `The live rig: ${rig.port ?? "no port"}, ${rig.state}, ${rig.lines} line${rig.lines === 1 ? "" : "s"} received`,
+      t("class-rig", {
+        port: rig.port ?? t("class-rig-no-port"),
+        state: t("rig-port-state", { state: rig.state }),
+        lines: t("rig-lines", { lines: rig.lines }),
+      }),
     );
   }
 }
@@ -147,14 +166,14 @@ async function refresh(): Promise<number> {
   try {
     showTable(await getClass());
     setText(problem, "");
-    setText(updated, `updated ${new Date().toLocaleTimeString()}`);
+    setText(updated, t("class-updated", { time: new Date().toLocaleTimeString(pageLanguage()) }));
   } catch (error) {
     if (error instanceof RateLimitedError) {
       setText(problem, error.message);
       return Math.max(REFRESH_MS, (error.retryAfterS ?? 0) * 1000);
     }
     const message = error instanceof Error ? error.message : String(error);
-    setText(problem, `The lab did not answer as expected: ${message}`);
+    setText(problem, t("page-problem-unexpected", { message }));
   }
   return REFRESH_MS;
 }

@@ -1,5 +1,6 @@
 // Export: the finished run's files, a PNG of the 3D view, and a link to this set-up.
 import { byId, byTestId } from "./dom";
+import { pageChoice, t } from "./i18n";
 import { fileHref, reportHtml, type SessionHandle } from "./lab_client";
 import type { ReportAsk } from "./lab_types";
 
@@ -11,6 +12,9 @@ export function setupLink(scene: string, entries: string[]): string {
   // A shared server's token goes with the link, so that it opens for whoever is sent it.
   const token = new URLSearchParams(location.search).get("token");
   if (token !== null) params.append("token", token);
+  // A language the page was asked for goes too: a teacher's French link opens in French.
+  const { byAddress, language } = pageChoice();
+  if (byAddress) params.append("lang", language);
   // The page's own address: the static site may be served from any folder of a web space.
   return `${location.origin}${location.pathname}?${params.toString()}`;
 }
@@ -55,12 +59,11 @@ export class ExportPanel {
   /** The lab report of the finished run, downloaded as report.html. */
   private async report(ask: ReportAsk): Promise<void> {
     if (!this.finished) return;
-    this.reportHint.textContent = "Writing the report…";
+    this.reportHint.textContent = t("export-report-writing");
     try {
       const html = await reportHtml(this.finished, ask);
       download(URL.createObjectURL(new Blob([html], { type: "text/html" })), "report.html");
-      this.reportHint.textContent =
-        "report.html is downloaded: open it, and print it to PDF from the browser to hand it in.";
+      this.reportHint.textContent = t("export-report-done");
     } catch (error) {
       this.reportHint.textContent = error instanceof Error ? error.message : String(error);
     }
@@ -93,10 +96,10 @@ export class ExportPanel {
     } catch {
       this.linkField.select();
       if (!document.execCommand("copy")) {
-        this.copyStatus.textContent = "Select the link and copy it by hand.";
+        this.copyStatus.textContent = t("export-copy-by-hand");
         return;
       }
     }
-    this.copyStatus.textContent = "Copied.";
+    this.copyStatus.textContent = t("export-copied");
   }
 }

@@ -1,5 +1,7 @@
 // The one module that speaks to the lab (docs/web-api.md): nothing else in the page calls fetch
-// or EventSource, so a build of the core for the browser can take the server's place here.
+// or EventSource, so a build of the core for the browser can take the server's place here. The
+// lab's own messages go on as it wrote them; the page's words where it wrote none.
+import { t } from "./i18n";
 import {
   LabError,
   LabFullError,
@@ -67,7 +69,7 @@ async function readJson<T>(response: Response): Promise<T> {
   try {
     return JSON.parse(text) as T;
   } catch {
-    throw new LabError(`the lab answered ${response.status} with no JSON`, response.status);
+    throw new LabError(t("lab-no-json", { status: response.status }), response.status);
   }
 }
 
@@ -85,14 +87,15 @@ async function refusalMessage(response: Response, fallback: string): Promise<str
 async function rateLimited(response: Response): Promise<RateLimitedError> {
   const retry = Number(response.headers.get("Retry-After"));
   const retryAfterS = Number.isFinite(retry) && retry > 0 ? retry : null;
-  const fallback = `the lab is busy: too many requests from this computer; try again in ${retryAfterS ?? "a few"} s`;
+  const fallback =
+    retryAfterS === null ? t("lab-busy") : t("lab-busy-seconds", { seconds: retryAfterS });
   return new RateLimitedError(await refusalMessage(response, fallback), retryAfterS);
 }
 
 async function expectOk<T>(response: Response): Promise<T> {
   if (response.status === 429) throw await rateLimited(response);
   if (!response.ok) {
-    const message = await refusalMessage(response, `the lab answered ${response.status}`);
+    const message = await refusalMessage(response, t("lab-answered", { status: response.status }));
     throw new LabError(message, response.status);
   }
   return readJson<T>(response);
@@ -112,11 +115,11 @@ export async function createSession(scene: string, set: string[], name?: string)
   });
   if (response.status === 400) {
     const body = await readJson<{ error?: string; problems?: Problem[] }>(response);
-    throw new SetupError(body.error ?? "the set-up has problems", body.problems ?? []);
+    throw new SetupError(body.error ?? t("lab-setup-problems"), body.problems ?? []);
   }
   if (response.status === 503) {
     const body = await readJson<{ error?: string }>(response);
-    throw new LabFullError(body.error ?? "the lab is full: try again when a session ends");
+    throw new LabFullError(body.error ?? t("lab-full"));
   }
   return expectOk<Session>(response);
 }
@@ -171,7 +174,7 @@ export function stream(session: SessionHandle, handlers: StreamHandlers): Stream
       // The server is going away: EventSource would otherwise try it again and again.
       end();
       const closed = parseEvent<Closed>(event);
-      handlers.closed?.(closed?.message || "the lab stopped");
+      handlers.closed?.(closed?.message || t("lab-stopped"));
     });
     source.addEventListener("error", () => {
       handlers.error?.();
@@ -219,7 +222,7 @@ export async function estimateFile(
     const first = body?.problems?.[0]?.message;
     const message = typeof body?.error === "string" ? body.error : "";
     throw new LabError(
-      first ?? (message || `the lab answered ${response.status}`),
+      first ?? (message || t("lab-answered", { status: response.status })),
       response.status,
     );
   }
@@ -240,7 +243,7 @@ export async function reportHtml(session: SessionHandle, ask: ReportAsk): Promis
   });
   if (response.status === 429) throw await rateLimited(response);
   if (!response.ok) {
-    const message = await refusalMessage(response, `the lab answered ${response.status}`);
+    const message = await refusalMessage(response, t("lab-answered", { status: response.status }));
     throw new LabError(message, response.status);
   }
   return response.text();

@@ -1,7 +1,9 @@
 // The second lab client: the lab in this page's own Web Worker (lab_worker.ts, the core compiled
 // to WebAssembly), for the static site tools/site builds. It offers what lab_client.ts offers, by
 // the same names and types (lab_client_check.ts holds the two to it), answering as the server
-// does: the same bodies, refusals and stream events, with no request leaving the browser.
+// does: the same bodies, refusals and stream events, with no request leaving the browser. The
+// lab's own messages go on as it wrote them; the page's words where it wrote none.
+import { t } from "./i18n";
 import {
   LabError,
   LabFullError,
@@ -65,7 +67,9 @@ function labWorker(): Worker {
   made.addEventListener("error", (event) => {
     const answer = {
       status: 500,
-      body: { error: `the lab in this browser stopped: ${event.message || "its worker failed"}` },
+      body: {
+        error: t("browser-lab-stopped", { why: event.message || t("browser-lab-worker-failed") }),
+      },
     };
     for (const resolve of pending.values()) resolve(answer);
     pending.clear();
@@ -86,7 +90,7 @@ function errorOf(answer: WorkerAnswer): string {
   const body = answer.body as { error?: unknown } | null;
   return typeof body?.error === "string" && body.error
     ? body.error
-    : `the lab answered ${answer.status}`;
+    : t("lab-answered", { status: answer.status });
 }
 
 function expectOk<T>(answer: WorkerAnswer): T {
@@ -117,7 +121,7 @@ export async function createSession(scene: string, set: string[], name?: string)
   });
   if (answer.status === 400) {
     const body = answer.body as { error?: string; problems?: Problem[] };
-    throw new SetupError(body.error ?? "the set-up has problems", body.problems ?? []);
+    throw new SetupError(body.error ?? t("lab-setup-problems"), body.problems ?? []);
   }
   if (answer.status === 503) throw new LabFullError(errorOf(answer));
   return expectOk<Session>(answer);
@@ -189,13 +193,6 @@ export function partUrl(name: string): string {
 // chooser), reads it, and gives the bytes to the lab in the worker, which keeps the log and runs
 // the rig's estimator for each session's stream, as the server does with a port of its own.
 
-/** What the port list shows: the browser asks which port when Connect is pressed. */
-const CHOOSE_PORT = "the browser asks which";
-const NO_WEB_SERIAL =
-  "This browser cannot open the rig's serial port (Web Serial is in Chrome, Edge and Opera on a " +
-  "computer): save the rig's log (the Arduino's serial monitor, or frictionlab log) and choose " +
-  "the file under “Your measurement”";
-
 /** Web Serial's part the page uses (the DOM library's types do not have it yet). */
 interface WebSerialPort {
   open(options: { baudRate: number }): Promise<void>;
@@ -218,16 +215,22 @@ let closing = false;
 
 /** The worker's status of the port, with what this browser offers to open. */
 function offered(rig: LiveRig): LiveRig {
-  if (webSerial()) return { ...rig, ports: [CHOOSE_PORT], may_choose: true };
+  // What the port list shows: the browser asks which port when Connect is pressed.
+  if (webSerial()) return { ...rig, ports: [t("serial-choose")], may_choose: true };
   const never = rig.port === null && rig.state === "closed";
-  return { ...rig, ports: [], may_choose: true, message: never ? NO_WEB_SERIAL : rig.message };
+  return {
+    ...rig,
+    ports: [],
+    may_choose: true,
+    message: never ? t("serial-missing") : rig.message,
+  };
 }
 
 function portName(port: WebSerialPort): string {
   const { usbVendorId, usbProductId } = port.getInfo();
   const hex = (n: number) => n.toString(16).padStart(4, "0");
   return usbVendorId === undefined || usbProductId === undefined
-    ? "the chosen serial port"
+    ? t("serial-chosen-port")
     : `USB ${hex(usbVendorId)}:${hex(usbProductId)}`;
 }
 
@@ -282,25 +285,21 @@ export async function getRig(): Promise<LiveRig> {
  * starts a new log; the one open before is closed. */
 export async function openRig(_port: string): Promise<LiveRig> {
   const serial = webSerial();
-  if (!serial) throw new LabError(NO_WEB_SERIAL, 400);
+  if (!serial) throw new LabError(t("serial-missing"), 400);
   const { baud } = expectOk<LiveRig>(await ask({ op: "rig" }));
-  if (baud === null) throw new LabError("the lab gave no baud rate for the rig's port", 500);
+  if (baud === null) throw new LabError(t("serial-no-baud"), 500);
   let port: WebSerialPort;
   try {
     port = await serial.requestPort();
   } catch {
-    throw new LabError("no port chosen: press Connect again and choose the rig's Arduino", 400);
+    throw new LabError(t("serial-none-chosen"), 400);
   }
   await closePort();
   try {
     await port.open({ baudRate: baud });
   } catch (error) {
     const why = error instanceof Error ? error.message : String(error);
-    throw new LabError(
-      `the port could not be opened (${why}): close the Arduino IDE's serial monitor or any ` +
-        "other page using it, and connect again",
-      400,
-    );
+    throw new LabError(t("serial-not-opened", { why }), 400);
   }
   const rig = expectOk<LiveRig>(await ask({ op: "rig_open", port: portName(port), baud }));
   open = { port, reader: null };
@@ -323,11 +322,8 @@ export async function rigLogHref(): Promise<string> {
   return rigLog;
 }
 
-const NO_CLASS =
-  "the class's table is a classroom server's (frictionlab serve): this lab runs in one browser";
-
 export async function getClass(): Promise<ClassTable> {
-  throw new LabError(NO_CLASS, 404);
+  throw new LabError(t("browser-lab-no-class"), 404);
 }
 
 export function classCsvUrl(): string {

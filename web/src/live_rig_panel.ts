@@ -5,7 +5,8 @@
 // session's stream bring the samples, the periods and the estimate. A lab without the live rig
 // (404) hides the panel.
 import { byId, byTestId, setText } from "./dom";
-import { fixed, trimmed, withError } from "./format";
+import { t } from "./i18n";
+import { fixed, trimmed, withError } from "./page_numbers";
 import { closeRig, getRig, LabError, openRig, RIG_PORTS_LISTED, rigLogHref } from "./lab_client";
 import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
@@ -27,38 +28,39 @@ interface PortStatus {
 }
 
 function linesOf(count: number): string {
-  return `${count} line${count === 1 ? "" : "s"}`;
+  return t("rig-lines", { lines: count });
 }
 
 /** The state in plain words, e.g. "receiving from /dev/ttyACM0, 5123 lines". */
 function stateWords(status: PortStatus): string {
-  const port = status.port ?? "the port";
+  const port = status.port ?? t("rig-the-port");
+  const lines = linesOf(status.lines);
   switch (status.state) {
     case "closed":
       return status.port === null
-        ? "no port open"
-        : `closed (${status.port} was open, ${linesOf(status.lines)} received)`;
+        ? t("rig-state-none")
+        : t("rig-state-closed", { port: status.port, lines });
     case "waiting":
-      return `waiting for ${port}: nothing received yet`;
+      return t("rig-state-waiting", { port });
     case "receiving":
-      return `receiving from ${port}, ${linesOf(status.lines)}`;
+      return t("rig-state-receiving", { port, lines });
     case "unplugged":
-      return `unplugged: ${port} went away after ${linesOf(status.lines)}`;
+      return t("rig-state-unplugged", { port, lines });
     case "failed":
-      return `failed: ${port}`;
+      return t("rig-state-failed", { port });
     default:
-      return `${String(status.state)}: ${port}`;
+      return t("rig-state-other", { state: t("rig-port-state", { state: status.state }), port });
   }
 }
 
 function geometryWords(geometry: PulseGeometry): string {
   switch (geometry) {
     case "one-pulse":
-      return "one pulse per period";
+      return t("rig-geometry-one-pulse");
     case "pair":
-      return "a pair of pulses per period";
+      return t("rig-geometry-pair");
     default:
-      return "pulses not yet recognised";
+      return t("rig-geometry-unknown");
   }
 }
 
@@ -90,8 +92,8 @@ export class RigPanel {
       decimals: 6, // to the microsecond, as `frictionlab estimate` prints it
       maxRows: 300,
       periodTestId: "rig-period",
-      accepted: "accepted",
-      rejected: "rejected",
+      accepted: t("periods-accepted"),
+      rejected: t("periods-rejected"),
     },
   );
   private rig: LiveRig | null = null;
@@ -214,7 +216,7 @@ export class RigPanel {
 
   private showProblem(error: unknown): void {
     const message = error instanceof Error ? error.message : String(error);
-    setText(this.problem, `The rig: ${message}`);
+    setText(this.problem, t("rig-problem", { message }));
   }
 
   private showRig(rig: LiveRig): void {
@@ -223,7 +225,7 @@ export class RigPanel {
     this.status = { port: rig.port, state: rig.state, message: rig.message, lines: rig.lines };
     const name = rig.log_name ?? "rig.log";
     this.logLink.download = name;
-    setText(this.logLink, `The rig's raw log (${name})`);
+    setText(this.logLink, t("rig-log-named", { name }));
     this.chooseNote.hidden = rig.may_choose;
     this.showStatus();
   }
@@ -237,7 +239,7 @@ export class RigPanel {
     if (listed.join("\n") !== (ports.length > 0 ? ports : [""]).join("\n")) {
       this.portSelect.replaceChildren();
       for (const port of ports) this.portSelect.append(new Option(port, port));
-      if (ports.length === 0) this.portSelect.append(new Option("no serial port found", ""));
+      if (ports.length === 0) this.portSelect.append(new Option(t("rig-no-port-found"), ""));
     }
     const keep = ports.includes(chosen) ? chosen : null;
     const open = rig.port !== null && ports.includes(rig.port) ? rig.port : null;
@@ -252,17 +254,20 @@ export class RigPanel {
     this.offerLog(status);
     const ports = this.rig?.ports.length ?? 0;
     const rigShown = status.state !== "closed" || status.lines > 0;
+    const state = t("rig-port-state", { state: status.state });
     setText(
       this.summary,
       rigShown
-        ? `${status.state}${status.lines > 0 ? `, ${linesOf(status.lines)}` : ""}`
+        ? status.lines > 0
+          ? `${state}, ${linesOf(status.lines)}`
+          : state
         : !RIG_PORTS_LISTED
           ? ports > 0
-            ? "connect the rig's Arduino"
-            : "Web Serial missing: choose its log file"
+            ? t("rig-summary-connect")
+            : t("rig-summary-no-web-serial")
           : ports > 0
-            ? `${ports} serial port${ports === 1 ? "" : "s"} found`
-            : "no serial port found",
+            ? t("rig-summary-ports", { ports })
+            : t("rig-no-port-found"),
     );
     this.section.classList.toggle("quiet", !rigShown && ports === 0);
     if (!this.openedItself && (rigShown || ports > 0)) {
@@ -313,24 +318,23 @@ export class RigPanel {
     }
     const n = estimate.periods_used;
     const detail = [
-      `N = ${n} period${n === 1 ? "" : "s"}`,
-      estimate.period_se === null ? null : `standard error ${fixed(estimate.period_se, 6)} s`,
-      `l = ${trimmed(spacing * 1000, 1)} mm (this set-up's spacing)`,
+      t("rig-estimate-periods", { periods: n }),
+      estimate.period_se === null
+        ? null
+        : t("rig-estimate-se", { se: fixed(estimate.period_se, 6) }),
+      t("rig-estimate-spacing", { spacing: trimmed(spacing * 1000, 1) }),
       geometryWords(geometry),
+      t("rig-estimate-note"),
     ];
     this.estimate.replaceChildren(
-      paragraph(`T = ${withError(estimate.period, estimate.period_sd, 4)} s`, "big"),
+      paragraph(t("period", { period: withError(estimate.period, estimate.period_sd, 4) }), "big"),
       paragraph(
         estimate.mu_k === null
-          ? "μₖ = —"
-          : `μₖ = ${withError(estimate.mu_k, estimate.mu_k_err, 3)}`,
+          ? t("mu-k-none")
+          : t("mu-k", { muK: withError(estimate.mu_k, estimate.mu_k_err, 3) }),
         "big",
       ),
-      paragraph(
-        `${detail.filter((d) => d !== null).join("; ")}; ± is the periods' standard deviation, ` +
-          "dμₖ in quadrature",
-        "detail",
-      ),
+      paragraph(detail.filter((d) => d !== null).join(t("parts-separator")), "detail"),
     );
   }
 }

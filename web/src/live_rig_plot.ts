@@ -2,6 +2,7 @@
 // period the rig's estimator judged drawn as a line: orange-red where it accepted it, grey dashed
 // where it rejected it (palette.ts).
 import uPlot from "uplot";
+import { t } from "./i18n";
 import type { PeriodRow } from "./lab_types";
 import { PLOT_COLORS as COLORS } from "./palette";
 import { axis, LiveChart } from "./plots";
@@ -26,9 +27,14 @@ export class RigPlot {
         scales: { x: { time: false, range: () => this.range() } },
         series: [
           { label: "t (s)" },
-          { label: "rig's Hall (ADC)", stroke: COLORS.hall, width: 1, points: { show: false } },
+          {
+            label: t("plot-rig-hall-series"),
+            stroke: COLORS.hall,
+            width: 1,
+            points: { show: false },
+          },
         ],
-        axes: [axis("t (s)"), axis("ADC counts")],
+        axes: [axis("t (s)"), axis(t("plot-adc-axis"))],
         legend: { live: false },
         cursor: { drag: { x: false, y: false } },
         hooks: { draw: [(u) => this.drawEnds(u)] },

@@ -1,6 +1,13 @@
 // Numbers typed and shown in the page's language: in French "89,5" is 89.5 mm, and the page shows
 // 89,5 back. A number is read whole or refused, saying what was expected: never a number the user
 // did not mean (a browser's number field reads "89,5" as 895 in some languages).
+import { t } from "./i18n";
+
+/** The page's language, which numbers are read and shown in ("89,5" in French): <html lang>,
+ * which page_language.ts sets before any control is made. */
+export function pageLocale(): string {
+  return document.documentElement.lang || "en";
+}
 
 /** The decimal sign of `locale`: "," in French and German, "." in English. */
 export function decimalSign(locale: string): string {
@@ -20,16 +27,14 @@ const NUMBER = /^[-+]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?$/;
 export function readNumber(text: string, locale: string): NumberReading {
   const trimmed = text.trim().replace(/^−/, "-");
   const sign = decimalSign(locale);
-  if (trimmed === "") return { problem: "expected a number, found nothing" };
+  if (trimmed === "") return { problem: t("number-nothing") };
   if (sign === "." && trimmed.includes(",")) {
-    return {
-      problem: `expected a number with a decimal point, such as 89.5, found "${trimmed}"`,
-    };
+    return { problem: t("number-decimal-point", { text: trimmed }) };
   }
   const plain = sign === "," ? trimmed.replace(",", ".") : trimmed;
   if (!NUMBER.test(plain)) {
     return {
-      problem: `expected a number, such as ${showNumber(89.5, 1, locale)}, found "${trimmed}"`,
+      problem: t("number-expected", { example: showNumber(89.5, 1, locale), text: trimmed }),
     };
   }
   return { value: Number(plain) };

@@ -3,6 +3,7 @@
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
+import { t } from "./i18n";
 import {
   getLab,
   LAB_PLACE,
@@ -15,6 +16,7 @@ import {
 import { LabModel } from "./lab_model";
 import { MeasurementPanel } from "./measurement_panel";
 import type { Lab, PlaybackSpeed, Rig, Summary } from "./lab_types";
+import { showPageLanguage, withPageLanguage } from "./page_language";
 import { PeriodsTable } from "./periods_table";
 import { Playback } from "./playback";
 import { followWithTables } from "./plot_table";
@@ -29,6 +31,9 @@ import { headlineOf } from "./summary";
 import { RigView } from "./view3d";
 
 const DEFAULT_SCENE = "paper-rig";
+
+// The page's language first: the controls read and show numbers in it.
+showPageLanguage();
 
 let lab: Lab | null = null;
 const model = new LabModel();
@@ -50,8 +55,8 @@ const periods = new PeriodsTable(
     decimals: 4,
     maxRows: 400,
     scroller: byId("periods-scroll"),
-    accepted: "✓ yes",
-    rejected: "✗ no",
+    accepted: t("periods-yes"),
+    rejected: t("periods-no"),
   },
 );
 const readouts = new Readouts();
@@ -77,13 +82,11 @@ async function nameStudent(name: string): Promise<void> {
     else showPageProblem(error);
   }
 }
-byId<HTMLAnchorElement>("class-link").href = pageUrl("/class.html");
+byId<HTMLAnchorElement>("class-link").href = withPageLanguage(pageUrl("/class.html"));
 // Which lab the page talks to: its own in this browser (the static site), or a server's.
 setText(
   byId("lab-place"),
-  LAB_PLACE === "browser"
-    ? "The lab runs in this browser: nothing is sent anywhere."
-    : `The lab runs on the server at ${location.host}.`,
+  LAB_PLACE === "browser" ? t("lab-place-browser") : t("lab-place-server", { host: location.host }),
 );
 // The class (a student's name, the class's table) is a classroom server's.
 byId("class-section").hidden = LAB_PLACE === "browser";
@@ -102,7 +105,7 @@ function showPageProblem(error: unknown): void {
     return;
   }
   const message = error instanceof Error ? error.message : String(error);
-  setText(pageProblem, message ? `The lab did not answer as expected: ${message}` : "");
+  setText(pageProblem, message ? t("page-problem-unexpected", { message }) : "");
 }
 
 function showRun(): void {

@@ -2,9 +2,10 @@
 // recognised from its content, as `frictionlab estimate` does), its T +- dT and mu_k with this
 // set-up's spacing, shown beside the simulation's.
 import { byTestId, setText } from "./dom";
+import { t } from "./i18n";
 import { estimateFile, LabError } from "./lab_client";
 import type { MeasurementEstimate } from "./lab_types";
-import { trimmed, withError } from "./format";
+import { trimmed, withError } from "./page_numbers";
 
 const BUSY_TRIES = 10;
 const BUSY_WAIT_MS = 2000;
@@ -54,8 +55,8 @@ export class MeasurementPanel {
     if (!file || this.spacing === null) return;
     const asked = ++this.asked;
     setText(this.problem, "");
-    setText(this.period, "T = … s");
-    setText(this.detail, `reading ${file.name}`);
+    setText(this.period, t("period-waiting"));
+    setText(this.detail, t("measurement-reading", { file: file.name }));
     this.period.removeAttribute("data-value");
     try {
       // The server reads two files at once for the whole class: busy (503), it is asked again.
@@ -68,14 +69,14 @@ export class MeasurementPanel {
           if (!(error instanceof LabError && error.status === 503) || attempt === BUSY_TRIES)
             throw error;
           if (asked !== this.asked) return;
-          setText(this.detail, `the lab is reading other files; ${file.name} again in a moment`);
+          setText(this.detail, t("measurement-busy", { file: file.name }));
           await new Promise((resume) => setTimeout(resume, BUSY_WAIT_MS));
           if (asked !== this.asked) return;
         }
       }
     } catch (error) {
       if (asked !== this.asked) return;
-      setText(this.period, "T = — s");
+      setText(this.period, t("period-none"));
       setText(this.detail, "");
       setText(this.problem, error instanceof Error ? error.message : String(error));
     }
@@ -83,18 +84,18 @@ export class MeasurementPanel {
 
   private show(e: MeasurementEstimate): void {
     this.period.dataset.value = String(e.period_s);
-    setText(this.period, `T = ${withError(e.period_s, e.period_std_s, 4)} s`);
-    const channel = e.channel === null ? "" : ` (${e.channel})`;
-    setText(
-      this.detail,
-      `${e.file}: ${e.instrument}${channel}, N = ${e.periods_used} periods; ` +
-        `μₖ = ${withError(e.mu_k, e.mu_k_err_quadrature, 3)} with l = ` +
-        `${trimmed(e.spacing_m * 1e3, 1)} mm` +
-        // A phone lying on the plate raises its centre of mass: the thin formula reads mu_k high.
-        (e.instrument.startsWith("phyphox accelerometer")
-          ? ". A phone on the plate raises its centre of mass: this μₖ, by the paper's formula, " +
-            "is high by the fraction 4π²h_c/(gT²) (frictionlab estimate --h-c gives the thick formula's)"
-          : ""),
-    );
+    setText(this.period, t("period", { period: withError(e.period_s, e.period_std_s, 4) }));
+    // The instrument and its channel are the lab's words.
+    const instrument = e.channel === null ? e.instrument : `${e.instrument} (${e.channel})`;
+    const result = t("measurement-result", {
+      file: e.file,
+      instrument,
+      periods: e.periods_used,
+      muK: withError(e.mu_k, e.mu_k_err_quadrature, 3),
+      spacing: trimmed(e.spacing_m * 1e3, 1),
+    });
+    // A phone lying on the plate raises its centre of mass: the thin formula reads mu_k high.
+    const phone = e.instrument.startsWith("phyphox accelerometer");
+    setText(this.detail, phone ? `${result}. ${t("measurement-phone-note")}` : result);
   }
 }

@@ -2,7 +2,8 @@
 // scrolling table that follows the newest while it is in view; the live rig's, newest first (its
 // panel is short: the latest stays in sight without scrolling), the period to the microsecond as
 // `frictionlab estimate` prints it.
-import { fixed } from "./format";
+import { t } from "./i18n";
+import { fixed } from "./page_numbers";
 import type { PeriodRow } from "./lab_types";
 
 export interface PeriodsLayout {
@@ -34,7 +35,7 @@ export class PeriodsTable {
     this.body.replaceChildren();
     this.count = 0;
     this.accepted = 0;
-    this.tally.textContent = "none yet";
+    this.tally.textContent = t("periods-none");
   }
 
   add(rows: PeriodRow[]): void {
@@ -64,7 +65,7 @@ export class PeriodsTable {
       else this.body.append(row);
     }
     while (this.body.rows.length > maxRows) this.body.deleteRow(newestFirst ? -1 : 0);
-    this.tally.textContent = `${this.accepted} of ${this.count} accepted`;
+    this.tally.textContent = t("periods-tally", { accepted: this.accepted, count: this.count });
     if (stick) scroller.scrollTop = scroller.scrollHeight;
   }
 }

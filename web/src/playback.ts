@@ -1,5 +1,6 @@
 // Playback: play/pause (one button), a single step, slow motion and reset.
 import { byId, setText } from "./dom";
+import { t } from "./i18n";
 import type { PlaybackSpeed } from "./lab_types";
 
 export interface PlaybackActions {
@@ -36,7 +37,7 @@ export class Playback {
   }
 
   show(run: { playing: boolean; done: boolean; ready: boolean }): void {
-    setText(this.play, run.playing ? "Pause" : run.done ? "Play again" : "Play");
+    setText(this.play, t(run.playing ? "run-pause" : run.done ? "run-play-again" : "run-play"));
     this.play.setAttribute("aria-pressed", String(run.playing));
     this.play.disabled = !run.ready;
     this.step.disabled = !run.ready || run.playing || run.done;

@@ -5,6 +5,8 @@
 // opened, never at the stream's pace; a run back at t = 0 empties it.
 import { decimate, type Pick } from "./decimate";
 import { byId, setText } from "./dom";
+import { t } from "./i18n";
+import { fixed } from "./page_numbers";
 import type { LabModel } from "./lab_model";
 import type { HallPlot, PositionPlot } from "./plots";
 
@@ -42,9 +44,9 @@ export class PlotTable {
     const rows = decimate(times, values, MAX_ROWS, this.columns.pick);
     const { what, decimals } = this.columns;
     this.body.replaceChildren(
-      ...rows.map(([t, v]) => {
+      ...rows.map(([time, v]) => {
         const row = document.createElement("tr");
-        for (const text of [t.toFixed(3), v.toFixed(decimals)]) {
+        for (const text of [fixed(time, 3), fixed(v, decimals)]) {
           const cell = document.createElement("td");
           cell.textContent = text;
           row.append(cell);
@@ -53,21 +55,26 @@ export class PlotTable {
       }),
     );
     if (rows.length === 0) {
-      setText(this.caption, `No samples of ${what} yet.`);
+      setText(this.caption, t("plot-table-empty", { what }));
       return;
     }
-    const span = `${what.charAt(0).toUpperCase()}${what.slice(1)}, t from ${times[0]!.toFixed(3)} to ${times.at(-1)!.toFixed(3)} s`;
+    const span = {
+      what: `${what.charAt(0).toUpperCase()}${what.slice(1)}`,
+      from: fixed(times[0], 3),
+      to: fixed(times.at(-1), 3),
+      rows: rows.length,
+    };
     setText(
       this.caption,
       rows.length === times.length
-        ? `${span}: every sample plotted (${rows.length}).`
-        : `${span}: ${rows.length} of the ${times.length} samples plotted, evenly in time.`,
+        ? t("plot-table-every", span)
+        : t("plot-table-some", { ...span, samples: times.length }),
     );
   }
 
   clear(): void {
     this.body.replaceChildren();
-    setText(this.caption, `No samples of ${this.columns.what} yet.`);
+    setText(this.caption, t("plot-table-empty", { what: this.columns.what }));
   }
 }
 
@@ -79,13 +86,13 @@ export function followWithTables(
 ): PlotTable[] {
   const tables = [
     new PlotTable(byId<HTMLDetailsElement>("table-x"), {
-      what: "the plate's position x (mm)",
+      what: t("plot-table-position-what"),
       decimals: 2,
       pick: "first",
       read: () => position.samples(),
     }),
     new PlotTable(byId<HTMLDetailsElement>("table-hall"), {
-      what: "the Hall sensor's ADC counts",
+      what: t("plot-table-hall-what"),
       decimals: 0,
       pick: "farthest",
       read: () => hall.samples(),

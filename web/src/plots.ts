@@ -3,7 +3,9 @@
 // the Hall sensor's ADC counts with the estimator's pulse times marked (dashed lines). Colours:
 // palette.ts.
 import uPlot from "uplot";
+import { t } from "./i18n";
 import type { LabState, Rig } from "./lab_types";
+import { tickLabels } from "./page_numbers";
 import { PLOT_COLORS as COLORS } from "./palette";
 import { SlidingWindow } from "./sliding_window";
 
@@ -24,8 +26,16 @@ function windowRange(last: number | null): [number, number] {
   return [end - WINDOW_S, end];
 }
 
+/** An axis: its label, its ticks written in the page's language. */
 export function axis(label: string): uPlot.Axis {
-  return { label, labelSize: 18, size: 44, stroke: "#333", grid: { stroke: "#e3e3e3", width: 1 } };
+  return {
+    label,
+    labelSize: 18,
+    size: 44,
+    stroke: "#333",
+    grid: { stroke: "#e3e3e3", width: 1 },
+    values: tickLabels(),
+  };
 }
 
 /** A chart that follows its box's size and redraws at most every REDRAW_MS. */
@@ -88,16 +98,16 @@ export class PositionPlot {
         },
         series: [
           { label: "t (s)" },
-          { label: "x (mm)", stroke: COLORS.x, width: 2, points: { show: false } },
+          { label: t("plot-position-series"), stroke: COLORS.x, width: 2, points: { show: false } },
           {
-            label: "theory x_th (mm)",
+            label: t("plot-theory-series"),
             stroke: COLORS.theory,
             width: 1.5,
             dash: [6, 4],
             points: { show: false },
           },
         ],
-        axes: [axis("t (s)"), axis("x (mm)")],
+        axes: [axis("t (s)"), axis(t("plot-position-series"))],
         legend: { live: false },
         cursor: { drag: { x: false, y: false } },
       },
@@ -144,9 +154,14 @@ export class HallPlot {
         scales: { x: { time: false, range: () => windowRange(this.data.lastTime) } },
         series: [
           { label: "t (s)" },
-          { label: "Hall (ADC counts)", stroke: COLORS.hall, width: 1, points: { show: false } },
+          {
+            label: t("plot-hall-column"),
+            stroke: COLORS.hall,
+            width: 1,
+            points: { show: false },
+          },
         ],
-        axes: [axis("t (s)"), axis("ADC counts")],
+        axes: [axis("t (s)"), axis(t("plot-adc-axis"))],
         legend: { live: false },
         cursor: { drag: { x: false, y: false } },
         hooks: { draw: [(u) => this.drawPulses(u)] },

@@ -4,7 +4,8 @@
 // so far. While the run plays it speaks at most every ANNOUNCE_EVERY_MS, and only when the words
 // changed; paused, it speaks once, on the pause; the run's end is said at once.
 import { byId, setText } from "./dom";
-import { trimmed, withError } from "./format";
+import { t } from "./i18n";
+import { fixed, trimmed, withError } from "./page_numbers";
 import type { Lab, LabState, Rig } from "./lab_types";
 import type { LabModel } from "./lab_model";
 import type { Headline } from "./summary";
@@ -18,8 +19,8 @@ const SAME_SHARE = 0.01;
 /** "12 mm left of centre": x [m] from the rollers' midpoint, positive to the right. */
 export function whereThePlateIs(x: number): string {
   const mm = Math.round(Math.abs(x) * 1000);
-  if (mm === 0) return "at the centre";
-  return `${mm} mm ${x < 0 ? "left" : "right"} of centre`;
+  const side = mm === 0 ? "centre" : x < 0 ? "left" : "right";
+  return t("plate-where", { side, mm });
 }
 
 /** The rollers' normal forces [N], left then right: the lab's contacts where it sent both and
@@ -35,36 +36,37 @@ export function normalForces(state: LabState, rig: Rig): [number, number] {
 
 /** Which roller carries more of the plate's weight, in words. */
 export function heavierRoller([left, right]: [number, number]): string {
-  const newtons = (n: number) => `${trimmed(Math.max(0, n), 2)} N`;
-  if (left <= 0 && right > 0)
-    return `The plate rests on the right roller alone (${newtons(right)}).`;
-  if (right <= 0 && left > 0) return `The plate rests on the left roller alone (${newtons(left)}).`;
+  const newtons = (n: number) => trimmed(Math.max(0, n), 2);
+  if (left <= 0 && right > 0) return t("rollers-one", { side: "right", newtons: newtons(right) });
+  if (right <= 0 && left > 0) return t("rollers-one", { side: "left", newtons: newtons(left) });
   if (Math.abs(left - right) <= SAME_SHARE * (left + right)) {
-    return `Both rollers carry the same weight (${newtons(left)} each).`;
+    return t("rollers-same", { newtons: newtons(left) });
   }
-  const [more, less] = left > right ? ["left", "right"] : ["right", "left"];
-  return (
-    `The ${more} roller carries more of its weight: ` +
-    `${newtons(Math.max(left, right))} against ${newtons(Math.min(left, right))} on the ${less}.`
-  );
+  return t("rollers-more", {
+    more: left > right ? "left" : "right",
+    most: newtons(Math.max(left, right)),
+    least: newtons(Math.min(left, right)),
+  });
 }
 
 /** The period so far: the estimator's running estimate, or the finished run's result. */
 export function periodSoFar(state: LabState, headline: Headline | null): string {
-  if (headline)
-    return `The run's period: T = ${withError(headline.period, headline.periodSd, 4)} s.`;
+  if (headline) {
+    return t("period-said-done", { period: withError(headline.period, headline.periodSd, 4) });
+  }
   const e = state.estimate;
-  if (!e) return "No period measured yet.";
-  const periods = `${e.periods_used} period${e.periods_used === 1 ? "" : "s"}`;
-  return `The period so far: T = ${withError(e.period, e.period_sd, 4)} s, from ${periods}.`;
+  if (!e) return t("period-said-none");
+  return t("period-said-so-far", {
+    period: withError(e.period, e.period_sd, 4),
+    periods: e.periods_used,
+  });
 }
 
 /** The plate's motion and forces and the period, without the time (what "changed" compares). */
 function describeMotion(state: LabState, rig: Rig, headline: Headline | null): string {
-  const moving =
-    Math.abs(state.vx) < AT_REST ? "at rest" : `moving ${state.vx < 0 ? "left" : "right"}`;
+  const motion = Math.abs(state.vx) < AT_REST ? "rest" : state.vx < 0 ? "left" : "right";
   return [
-    `The plate is ${whereThePlateIs(state.x)}, ${moving}.`,
+    t("plate-now", { where: whereThePlateIs(state.x), motion }),
     heavierRoller(normalForces(state, rig)),
     periodSoFar(state, headline),
   ].join(" ");
@@ -72,14 +74,16 @@ function describeMotion(state: LabState, rig: Rig, headline: Headline | null): s
 
 /** The set-up in a sentence: the rollers, the plate, where it starts, the theory's period. */
 export function describeSetUp(rig: Rig, material: string): string {
-  const sense = rig.roller_sense === "inward" ? "toward each other" : "away from each other";
-  const start = rig.offset === 0 ? "at the centre" : whereThePlateIs(rig.offset);
-  return (
-    `Two rollers ${trimmed(rig.spacing * 1000, 1)} mm apart (the spacing l), their tops turning ` +
-    `${sense} at ${trimmed(rig.roller_speed_rpm, 0)} rpm, under a plate of ${material}, ` +
-    `${trimmed(rig.plate.length * 1000, 0)} mm long and ${trimmed(rig.plate.mass * 1000, 0)} g; ` +
-    `the plate starts ${start}. The thin-plate theory's period: ${trimmed(rig.period_thin, 3)} s.`
-  );
+  return t("set-up-said", {
+    spacing: trimmed(rig.spacing * 1000, 1),
+    sense: rig.roller_sense === "inward" ? "inward" : "outward",
+    rpm: trimmed(rig.roller_speed_rpm, 0),
+    material,
+    length: trimmed(rig.plate.length * 1000, 0),
+    mass: trimmed(rig.plate.mass * 1000, 0),
+    start: whereThePlateIs(rig.offset),
+    period: trimmed(rig.period_thin, 3),
+  });
 }
 
 export class RigDescription {
@@ -104,13 +108,13 @@ export class RigDescription {
     });
     model.done.lazyLink((done) => {
       const state = model.state.value;
-      if (done && state) this.say("The run is over at", state);
+      if (done && state) this.say("over", state);
     });
   }
 
   private sayPause(): void {
     const { state, playing, done } = this.model;
-    if (state.value && !playing.value && !done.value) this.say("Paused at", state.value);
+    if (state.value && !playing.value && !done.value) this.say("paused", state.value);
   }
 
   private showSetUp(rig: Rig | null): void {
@@ -127,15 +131,15 @@ export class RigDescription {
     if (performance.now() - this.lastSaid < ANNOUNCE_EVERY_MS) return;
     const rig = this.model.rig.value;
     if (!rig || describeMotion(state, rig, null) === this.lastMotion) return;
-    this.say("Playing, at", state);
+    this.say("playing", state);
   }
 
-  private say(when: string, state: LabState): void {
+  private say(moment: "playing" | "paused" | "over", state: LabState): void {
     const rig = this.model.rig.value;
     if (!rig) return;
     this.lastMotion = describeMotion(state, rig, this.model.headline.value);
     this.lastSaid = performance.now();
-    setText(this.now, `${when} t = ${state.t.toFixed(1)} s. ${this.lastMotion}`);
+    setText(this.now, t("moment-said", { moment, t: fixed(state.t, 1), motion: this.lastMotion }));
   }
 
   /** Back to t = 0: nothing to say until the run plays. */

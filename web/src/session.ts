@@ -9,12 +9,13 @@ import {
   type StreamHandle,
   type StreamHandlers,
 } from "./lab_client";
+import { t } from "./i18n";
 import type { ControlAction, ControlReply, PlaybackSpeed, Session } from "./lab_types";
 
 /** A newer set-up was asked for while this one was being made. */
 export class Superseded extends Error {
   constructor() {
-    super("a newer set-up took this one's place");
+    super(t("lab-superseded"));
     this.name = "Superseded";
   }
 }

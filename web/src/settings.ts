@@ -1,7 +1,8 @@
 // One set-up control each: what it shows, the scene's own value, and the `--set` entries it
 // makes, only where the user changed it from the scene's value.
 import { byId } from "./dom";
-import { readNumber, showNumber } from "./locale_number";
+import { t } from "./i18n";
+import { pageLocale, readNumber, showNumber } from "./locale_number";
 import type { Lab, Rig } from "./lab_types";
 
 export interface Setting {
@@ -31,11 +32,6 @@ function fieldParts(id: string): { field: HTMLElement; problem: HTMLElement } {
 
 function escapeRegExp(text: string): string {
   return text.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
-}
-
-/** The page's language, which numbers are read and shown in ("89,5" in French). */
-export function pageLocale(): string {
-  return document.documentElement.lang || "en";
 }
 
 export interface NumberOptions {
@@ -185,7 +181,11 @@ export class NumberSetting implements Setting {
       const scale = 10 ** decimals;
       return (up ? Math.ceil(value * scale - 1e-9) : Math.floor(value * scale + 1e-9)) / scale;
     };
-    this.acceptsHint.textContent = `This set-up accepts ${showNumber(inward(least, true), decimals, locale)} to ${showNumber(inward(most, false), decimals, locale)} ${this.options.unit}.`;
+    this.acceptsHint.textContent = t("setup-accepts", {
+      least: showNumber(inward(least, true), decimals, locale),
+      most: showNumber(inward(most, false), decimals, locale),
+      unit: this.options.unit === "rpm" ? t("unit-rpm") : this.options.unit,
+    });
     if (!this.range) return;
     const step = Number(this.range.step) || 1;
     const [spanLeast, spanMost] = this.options.sliderSpan ?? [least, most];

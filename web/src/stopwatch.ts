@@ -4,7 +4,8 @@
 // simulated time between the presses, so it measures the plate's period in slow motion too, and
 // it stops when the run ends.
 import { byId, setText } from "./dom";
-import { fixed } from "./format";
+import { t } from "./i18n";
+import { fixed } from "./page_numbers";
 import type { LabModel } from "./lab_model";
 import type { StopwatchTiming } from "./lab_types";
 
@@ -78,7 +79,7 @@ export class Stopwatch {
     this.running = true;
     this.wallStart = performance.now();
     this.simStart = this.simTime();
-    this.toggleButton.textContent = "Stop";
+    this.toggleButton.textContent = t("stopwatch-stop");
     this.toggleButton.setAttribute("aria-pressed", "true");
     const tick = () => {
       this.show(performance.now(), this.simTime());
@@ -92,7 +93,7 @@ export class Stopwatch {
     this.running = false;
     this.wallEnd = performance.now();
     this.simEnd = this.simTime();
-    this.toggleButton.textContent = "Start";
+    this.toggleButton.textContent = t("stopwatch-start");
     this.toggleButton.setAttribute("aria-pressed", "false");
     this.show(this.wallEnd, this.simEnd);
     const wallS = (this.wallEnd - this.wallStart) / 1000;
@@ -126,14 +127,22 @@ export class Stopwatch {
     const wallS = (wallNow - this.wallStart) / 1000;
     setText(
       this.wall,
-      `${wallS.toFixed(2)} s, ÷ ${PERIODS_TIMED} = ${(wallS / PERIODS_TIMED).toFixed(3)} s`,
+      t("stopwatch-timed", {
+        total: fixed(wallS, 2),
+        periods: PERIODS_TIMED,
+        period: fixed(wallS / PERIODS_TIMED, 3),
+      }),
     );
     const simS = simNow !== null && this.simStart !== null ? simNow - this.simStart : null;
     setText(
       this.simulated,
       simS === null || simS < 0
         ? "—"
-        : `${simS.toFixed(3)} s, ÷ ${PERIODS_TIMED} = ${(simS / PERIODS_TIMED).toFixed(4)} s`,
+        : t("stopwatch-timed", {
+            total: fixed(simS, 3),
+            periods: PERIODS_TIMED,
+            period: fixed(simS / PERIODS_TIMED, 4),
+          }),
     );
     this.showEstimator();
   }
@@ -145,6 +154,6 @@ export class Stopwatch {
   /** Shows the estimator's period beside the hand-timed one. */
   private showEstimator(): void {
     const period = this.model.period.value;
-    setText(this.estimator, period === null ? "—" : `${fixed(period, 4)} s`);
+    setText(this.estimator, period === null ? "—" : t("seconds", { seconds: fixed(period, 4) }));
   }
 }

@@ -3,6 +3,7 @@
 // letters, digits, spaces and . - _ ' , ( ), by the server's rule). A name the page or the lab refuses
 // is shown beside the field and left out: the lab runs without it.
 import { byId, byTestId, setText } from "./dom";
+import { t } from "./i18n";
 
 const STORED = "frictionlab.student-name";
 const MOST_CHARACTERS = 40;
@@ -42,14 +43,14 @@ function store(name: string): void {
 export function problemOf(name: string): string | null {
   if (name === "") return null;
   const characters = [...name];
-  if (characters.length > MOST_CHARACTERS) return `at most ${MOST_CHARACTERS} characters`;
+  if (characters.length > MOST_CHARACTERS) {
+    return t("student-name-too-long", { most: MOST_CHARACTERS });
+  }
   const allowed = characters.every((character, i) => {
     const codePoint = character.codePointAt(0) ?? 0;
     return letterOrDigit(codePoint) || (i > 0 && " .-_',()".includes(character));
   });
-  return allowed
-    ? null
-    : "only letters, digits, spaces and . - _ ' , ( ), beginning with a letter or digit";
+  return allowed ? null : t("student-name-characters");
 }
 
 export class StudentName {
@@ -97,7 +98,7 @@ export class StudentName {
 
   private check(): void {
     const problem = problemOf(this.value);
-    this.show(problem === null ? "" : `Not sent: ${problem}.`);
+    this.show(problem === null ? "" : t("student-name-not-sent", { problem }));
   }
 
   private show(message: string): void {

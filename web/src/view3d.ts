@@ -6,6 +6,7 @@ import { OrbitControls } from "three/examples/jsm/controls/OrbitControls.js";
 import { cameraMoveOf, moveCamera } from "./camera_keys";
 import type { LabState, Rig } from "./lab_types";
 import { ForceArrows } from "./force_arrows";
+import { t } from "./i18n";
 import { chooseRenderQuality, type RenderQuality } from "./render_quality";
 import { buildRig, type RigModel } from "./rig_model";
 
@@ -37,7 +38,7 @@ export class RigView {
     this.renderer.shadowMap.type = THREE.PCFShadowMap;
     const canvas = this.renderer.domElement;
     canvas.setAttribute("role", "img");
-    canvas.setAttribute("aria-label", "The rig in 3D: the plate on its two rollers");
+    canvas.setAttribute("aria-label", t("view-canvas-label"));
     // index.html's words: the set-up in a sentence (rig_description.ts) and the view's keys.
     canvas.setAttribute("aria-describedby", "rig-setup view-keys");
     canvas.tabIndex = 0;

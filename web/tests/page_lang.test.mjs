@@ -1,0 +1,300 @@
+// The page in the reader's language, against tests/mock_server.mjs in headless Chromium: a French
+// browser gets the page in French (<html lang="fr">, its buttons, labels and readouts), `?lang=en`
+// gets English there, and the switcher opens the same address in the language chosen; a number is
+// typed with a decimal comma in French and sent to the lab as a number, and the readouts, the
+// regime and a plot's table show French numbers and words; axe-core finds no WCAG 2.1 A or AA
+// violation on the French lab's page and class's table, and a phone shows the 3D view, T, μk and
+// the position plot in its first screen in French too; a link to a set-up, and to the other page,
+// carries `lang=` where the page's own address asked for its language. No console complaint (a
+// message missing from every catalogue is one).
+//
+// Nothing here depends on the machine's pace: every wait is for a condition, with a generous
+// deadline (WAIT_MS), never a sleep.
+//
+//   FRICTIONLAB_MOCK_RECORDING=FILE node tests/page_lang.test.mjs
+import { execFileSync } from "node:child_process";
+import { mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { startMockServer } from "./mock_server.mjs";
+import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
+
+const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
+const axeScript = join(web, "node_modules/axe-core/axe.min.js");
+skipWithoutChromium();
+
+const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
+execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
+const server = await startMockServer({ dist });
+const base = `http://127.0.0.1:${server.port}`;
+const browser = await launchChromium();
+
+/** A deadline for a wait that fails only when something is wrong, not when the machine is busy. */
+const WAIT_MS = 60000;
+/** The space French writes between a number and its unit, before a colon, in « »: unbreakable. */
+const NBSP = "\u00a0";
+
+/** A page in a browser of the language `locale`, recording console errors and warnings. */
+async function openPage(path, locale = "fr-FR") {
+  const context = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale });
+  context.setDefaultTimeout(WAIT_MS);
+  const page = await context.newPage();
+  const complaints = [];
+  page.on("console", (message) => {
+    if (message.type() === "error" || message.type() === "warning") {
+      complaints.push(`${message.type()}: ${message.text()}`);
+    }
+  });
+  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  await page.goto(`${base}${path}`);
+  return { page, context, complaints };
+}
+
+const text = async (locator) => (await locator.textContent()).trim();
+const language = (page) => page.evaluate(() => document.documentElement.lang);
+const spacingLabel = (page) => text(page.locator('label[for="spacing-mm"]'));
+
+async function creates() {
+  const log = await (await fetch(`${base}/__mock/log`)).json();
+  return log.filter((entry) => entry.create).map((entry) => entry.create);
+}
+
+async function expectNoViolations(page, when) {
+  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: axeScript });
+  const violations = await page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"] },
+    });
+    return result.violations.flatMap((v) =>
+      v.nodes.map((n) => `${v.id} at ${n.target.join(" ")}: ${n.failureSummary}`),
+    );
+  });
+  expect(violations.length === 0, `axe ${when}:\n  ${violations.join("\n  ")}`);
+}
+
+await check("a French browser gets the page in French", async () => {
+  const { page, context, complaints } = await openPage("/");
+  await page
+    .getByTestId("spacing")
+    .filter({ hasText: `89${NBSP}mm` })
+    .waitFor();
+  expect((await language(page)) === "fr", `<html lang="${await language(page)}">`);
+  expect((await text(page.getByTestId("play"))) === "Lecture", "the Play button");
+  expect((await spacingLabel(page)) === "Entraxe des rouleaux l", "the spacing's label");
+  expect((await text(page.getByTestId("status"))) === "en pause", "the run's status");
+  expect((await page.title()).includes("oscillateur à frottement"), await page.title());
+  const slider = await page.locator("#spacing-mm-range").getAttribute("aria-label");
+  expect(slider === "Entraxe des rouleaux l, curseur (mm)", `the slider's name: ${slider}`);
+  const rpm = await text(page.locator('[data-testid="speed"]'));
+  expect(rpm.endsWith(`${NBSP}tr/min (entraînés par le moteur)`), `the rollers' speed: ${rpm}`);
+  const accepts = await text(page.getByTestId("accepts-spacing-mm"));
+  expect(accepts === `Ce réglage accepte de 40 à 104${NBSP}mm.`, `the accepted range: ${accepts}`);
+  // The switcher offers each language by its own name, this one chosen.
+  const offered = await page
+    .getByTestId("language")
+    .evaluate((select) => Array.from(select.options, (o) => `${o.value}:${o.textContent}`));
+  expect(offered.join(" ") === "en:English fr:Français", `the switcher offers ${offered}`);
+  expect((await page.getByTestId("language").inputValue()) === "fr", "French is not chosen");
+  // A language chosen by the browser stays the browser's: the set-up's link does not carry it.
+  const link = await page.getByTestId("setup-link").inputValue();
+  expect(!new URL(link).searchParams.has("lang"), `the set-up's link: ${link}`);
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("?lang=en gives English in a French browser; fr-CA gets French", async () => {
+  const { page, context, complaints } = await openPage("/?lang=en");
+  await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
+  expect((await language(page)) === "en", `<html lang="${await language(page)}">`);
+  expect((await text(page.getByTestId("play"))) === "Play", "the Play button");
+  expect((await spacingLabel(page)) === "Roller spacing l", "the spacing's label");
+  expect((await page.getByTestId("language").inputValue()) === "en", "English is not chosen");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+  const canadian = await openPage("/", "fr-CA");
+  await canadian.page
+    .getByTestId("spacing")
+    .filter({ hasText: `89${NBSP}mm` })
+    .waitFor();
+  expect((await language(canadian.page)) === "fr", "fr-CA is not French");
+  await canadian.context.close();
+});
+
+await check("the switcher opens the same address in French", async () => {
+  const { page, context, complaints } = await openPage(
+    "/?scene=minimal&set=world.duration%3D60s",
+    "en-US",
+  );
+  await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();
+  expect((await spacingLabel(page)) === "Roller spacing l", "not English at first");
+  await Promise.all([
+    page.waitForURL((url) => url.searchParams.get("lang") === "fr"),
+    page.getByTestId("language").selectOption("fr"),
+  ]);
+  const address = new URL(page.url());
+  expect(address.searchParams.get("scene") === "minimal", `the address: ${address}`);
+  expect(address.searchParams.get("set") === "world.duration=60s", `the address: ${address}`);
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  expect((await language(page)) === "fr", `<html lang="${await language(page)}">`);
+  expect((await spacingLabel(page)) === "Entraxe des rouleaux l", "the spacing's label");
+  expect((await text(page.getByTestId("play"))) === "Pause", "the Pause button");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("French numbers: a decimal comma typed, read and shown", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  // A number the page cannot read: refused beside the control in the page's words, never sent.
+  const before = (await creates()).length;
+  await page.fill("#spacing-mm", "70,5 mm");
+  await page.press("#spacing-mm", "Enter");
+  const problem = page.getByTestId("problem-spacing");
+  await problem.filter({ hasText: "un nombre est attendu" }).waitFor();
+  const refused = await text(problem);
+  expect(refused.includes("par exemple 89,5"), `the problem: ${refused}`);
+  expect((await creates()).length === before, "a number the page cannot read was sent");
+  // 70,5 is 70.5 mm: the lab is sent the number, and the readout shows it back in French.
+  await page.fill("#spacing-mm", "70,5");
+  await page.press("#spacing-mm", "Enter");
+  await page.getByTestId("spacing").filter({ hasText: "70,5" }).waitFor();
+  expect((await text(page.getByTestId("spacing"))) === `70,5${NBSP}mm`, "the spacing's readout");
+  const made = (await creates()).at(-1);
+  expect(
+    made.scene === "minimal" && JSON.stringify(made.set) === '["rollers.spacing=70.5mm"]',
+    `created ${JSON.stringify(made)}`,
+  );
+  expect((await page.locator("#spacing-mm").inputValue()) === "70,5", "the control");
+  expect((await text(problem)) === "", "the problem stays after a good value");
+  // The run goes on with the new spacing: its period, μk, time and regime in French.
+  const periodText = new RegExp(`^T = \\d+,(\\d+) ± \\d+,(\\d+)${NBSP}s$`);
+  await page.waitForFunction(
+    (pattern) =>
+      new RegExp(pattern).test(document.querySelector('[data-testid="period"]').textContent),
+    periodText.source,
+  );
+  // Read together: the next estimate changes both.
+  const [period, value] = await page
+    .getByTestId("period")
+    .evaluate((element) => [element.textContent.trim(), Number(element.dataset.value)]);
+  const [, valueDigits, errorDigits] = periodText.exec(period);
+  expect(valueDigits.length === errorDigits.length, `the period: ${period}`);
+  // The period shown is the estimator's (data-value, in seconds), to its last digit.
+  const shown = Number(/^T = (\d+,\d+)/.exec(period)[1].replace(",", "."));
+  expect(
+    Math.abs(shown - value) <= 0.5 * 10 ** -valueDigits.length + 1e-12,
+    `the period ${period}, the estimator's ${value} s`,
+  );
+  const muK = await text(page.getByTestId("mu-k"));
+  expect(/^μₖ = 0,\d+ ± 0,\d+$/.test(muK), `μk: ${muK}`);
+  const time = await text(page.getByTestId("time"));
+  expect(new RegExp(`^t = \\d+,\\d{3}${NBSP}s$`).test(time), `the time: ${time}`);
+  await page.getByTestId("regime").filter({ hasText: "oscille" }).waitFor();
+  const detail = await text(page.getByTestId("period-detail"));
+  expect(detail.startsWith("± est l’écart-type de "), `the period's detail: ${detail}`);
+  // Paused, the position plot's table holds French numbers.
+  await page.getByTestId("play").click();
+  await page.getByTestId("status").filter({ hasText: "en pause" }).waitFor();
+  await page.locator("#table-x > summary").click();
+  await page.locator('[data-testid="table-x"] tr').first().waitFor();
+  const row = await page
+    .locator('[data-testid="table-x"] tr')
+    .first()
+    .evaluate((tr) => Array.from(tr.cells, (td) => td.textContent));
+  expect(/^\d+,\d{3}$/.test(row[0]) && /^-?\d+,\d{2}$/.test(row[1]), `a row: ${row}`);
+  const caption = await text(page.locator("#table-x caption"));
+  expect(caption.startsWith("La position x de la plaque (mm), t de "), `caption: ${caption}`);
+  const others = complaints.filter((c) => !c.includes("400 (Bad Request)"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
+  await context.close();
+});
+
+await check("axe: the French lab's page and class's table", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal&set=world.duration%3D60s");
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  await page.waitForFunction(() =>
+    /T = \d/.test(document.querySelector('[data-testid="period"]').textContent),
+  );
+  await expectNoViolations(page, "on the French lab's page, during a run");
+  const teacher = await context.newPage();
+  await teacher.goto(`${base}/class.html`);
+  await teacher.getByTestId("class-table").locator("tbody tr").first().waitFor();
+  await teacher.locator("#class-count").filter({ hasText: "session" }).waitFor();
+  expect((await language(teacher)) === "fr", "the class's table is not in French");
+  expect((await text(teacher.getByTestId("lab-link"))) === "Retour au labo", "the lab's link");
+  await expectNoViolations(teacher, "on the French class's table");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await check("a French phone: the view, T, μk and the plot in the first screen", async () => {
+  const context = await browser.newContext({
+    viewport: { width: 390, height: 844 },
+    isMobile: true,
+    hasTouch: true,
+    deviceScaleFactor: 2,
+    locale: "fr-FR",
+  });
+  context.setDefaultTimeout(WAIT_MS);
+  const page = await context.newPage();
+  await page.goto(`${base}/?scene=minimal&set=world.duration%3D60s`);
+  await page.waitForFunction(() =>
+    /T = \d/.test(document.querySelector('[data-testid="period"]').textContent),
+  );
+  await page.evaluate(() => window.scrollTo(0, 0));
+  const screen = await page.evaluate(() => {
+    const box = (selector) => {
+      const r = document.querySelector(selector).getBoundingClientRect();
+      return { top: r.top, bottom: r.bottom, left: r.left, right: r.right };
+    };
+    return {
+      scrollWidth: document.documentElement.scrollWidth,
+      width: innerWidth,
+      height: innerHeight,
+      canvas: box("#view canvas"),
+      period: box('[data-testid="period"]'),
+      muK: box('[data-testid="mu-k"]'),
+      plot: box("#plot-x"),
+      language: box('[data-testid="language"]'),
+    };
+  });
+  const { width, height, canvas, period, muK, plot, language } = screen;
+  const boxes = JSON.stringify(screen);
+  expect(screen.scrollWidth <= width, `it scrolls sideways: ${boxes}`);
+  const seen = (box) => Math.min(box.bottom, height) - Math.max(box.top, 0);
+  const whole = (box) =>
+    box.top >= 0 && box.bottom <= height && box.left >= 0 && box.right <= width;
+  expect(seen(canvas) >= 100, `the 3D view is not in sight: ${boxes}`);
+  expect(whole(period) && whole(muK), `T or μk is not wholly in the first screen: ${boxes}`);
+  expect(whole(language), `the switcher is not wholly in the first screen: ${boxes}`);
+  expect(seen(plot) >= 120, `less than 120 px of the position plot in sight: ${boxes}`);
+  await context.close();
+});
+
+await check("?lang=fr goes with the set-up's link and the links between the pages", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal&lang=fr", "en-US");
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  expect((await language(page)) === "fr", `<html lang="${await language(page)}">`);
+  const link = new URL(await page.getByTestId("setup-link").inputValue());
+  expect(link.searchParams.get("lang") === "fr", `the set-up's link: ${link}`);
+  expect(link.searchParams.get("scene") === "minimal", `the set-up's link: ${link}`);
+  const classLink = await page.getByTestId("class-link").getAttribute("href");
+  expect(classLink === "/class.html?lang=fr", `the class's table's link: ${classLink}`);
+  // The link opens the set-up in French in an English browser.
+  const other = await context.newPage();
+  await other.goto(link.toString());
+  await other.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  expect((await language(other)) === "fr", "the link's page is not in French");
+  await other.goto(`${base}${classLink}`);
+  await other.locator("#class-count").filter({ hasText: "session" }).waitFor();
+  const back = await other.getByTestId("lab-link").getAttribute("href");
+  expect(back === "/?lang=fr", `the lab's link: ${back}`);
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
+await browser.close();
+await server.close();
+rmSync(dist, { recursive: true, force: true });
+finish();

@@ -210,6 +210,33 @@ await check("the lab report's numbers are summary.json's; its print preview", as
   await context.close();
 });
 
+await check("on a French page the lab report is in French, its numbers the same", async () => {
+  const { page, context, complaints } = await openPage(
+    `/?lang=fr&scene=minimal&set=${encodeURIComponent(duration)}`,
+  );
+  await page
+    .getByTestId("status")
+    .filter({ hasText: /termin/ })
+    .waitFor({ timeout: 60000 });
+  await page.waitForFunction(
+    () => !document.querySelector('[data-testid="export-report"]').disabled,
+  );
+  const [download] = await Promise.all([
+    page.waitForEvent("download"),
+    page.getByTestId("export-report").click(),
+  ]);
+  const html = readFileSync(await download.path(), "utf8");
+  expect(html.includes('<html lang="fr">'), "the report is not in French");
+  expect(html.includes("Compte rendu"), "the report's title is not French");
+  const summaryHref = await page.getByTestId("file-summary").getAttribute("href");
+  const summary = await (await fetch(new URL(summaryHref, base))).json();
+  const period = /data-field="period_s" data-value="([^"]*)">([^<]*)</.exec(html);
+  expect(period && JSON.parse(period[1]) === summary.period_s, `T: ${period?.[1]}`);
+  expect(period[2].includes(","), `T shown as ${period[2]}, not with a decimal comma`);
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
+
 await check("the paper's rig loads without console errors; a screenshot is written", async () => {
   const { page, context, complaints } = await openPage("/?scene=paper-rig");
   await page.getByTestId("status").filter({ hasText: "playing" }).waitFor();

@@ -68,8 +68,8 @@ period-detail-spread =
     ± is the standard deviation of { $periods ->
         [one] { $periods } period
        *[other] { $periods } periods
-    }; standard error { $se } s
-period-detail-done = the run's result: ± is the standard deviation; standard error { $se } s
+    }; the mean's standard error, σ/√N, { $se } s, is how well T is known
+period-detail-done = the run's result: ± is the periods' standard deviation; the mean's standard error, σ/√N, { $se } s, is how well T is known
 regime-label = Regime:
 
 ## The regimes the lab names (its summary's `regime`); a regime this file lacks shows as the lab
@@ -85,6 +85,21 @@ regime-tips = tips
 regime-no-restoring-force = no restoring force
 regime-lost = lost
 regime-numerically-failed = numerically failed
+regime-since = { " " }since t = { $t } s
+regime-jumps = ; { $jumps ->
+        [one] { $jumps } jump
+       *[other] { $jumps } jumps
+    } off a roller, up to { $height } mm
+regime-help-oscillates = Both rollers slip under the plate throughout: the harmonic oscillation whose period gives μk.
+regime-help-clipped = Once, the plate moved as fast as a roller's surface and stuck to it: that clipped the amplitude to the rollers' surface speed over ω. The period is unchanged.
+regime-help-stick-slip = The plate sticks to a roller for part of each cycle, then slips: its period is no longer the formula's.
+regime-help-grows = Friction falls with the slip speed here: the amplitude grows from cycle to cycle.
+regime-help-decays = Friction rises with the slip speed here: the amplitude decays from cycle to cycle.
+regime-help-sticks = The plate stays stuck to a roller (or the rollers stand still): there is no oscillation to time.
+regime-help-tips = A roller's normal force reached zero: the plate tipped or lifted off it.
+regime-help-no-restoring-force = Friction pushes the plate away from the middle (l ≤ 2 μk h_c, or rollers turning outward): it drifts off.
+regime-help-lost = The plate fell off the rollers or left the rig.
+regime-help-numerically-failed = The simulation broke down (a number became infinite, or the energy grew without bound).
 
 ## The plots and the periods
 
@@ -181,6 +196,7 @@ setup-offset-slider =
 setup-duration = Run for
 setup-duration-hint = Long enough to time ten periods by hand (about 8 s on the paper's rig) and more.
 setup-accepts = This set-up accepts { $least } to { $most } { $unit }.
+setup-beyond = { $found } { $unit } is beyond what this set-up accepts, { $least } to { $most } { $unit }: the lab runs on as it was.
 number-nothing = expected a number, found nothing
 number-decimal-point = expected a number with a decimal point, such as 89.5, found "{ $text }"
 number-expected = expected a number, such as { $example }, found "{ $text }"
@@ -267,7 +283,7 @@ rig-estimate-periods =
         [one] period
        *[other] periods
     }
-rig-estimate-se = standard error { $se } s
+rig-estimate-se = the mean's standard error, σ/√N, { $se } s
 rig-estimate-spacing = l = { $spacing } mm (this set-up's spacing)
 rig-estimate-note = ± is the periods' standard deviation, dμₖ in quadrature
 

@@ -64,8 +64,8 @@ period-detail-spread =
     ± est l’écart-type de { $periods ->
         [one] { $periods } période
        *[other] { $periods } périodes
-    } ; erreur-type { $se } s
-period-detail-done = résultat de la simulation : ± est l’écart-type ; erreur-type { $se } s
+    } ; l’erreur-type de la moyenne, σ/√N, { $se } s, dit à quel point T est connue
+period-detail-done = résultat de la simulation : ± est l’écart-type des périodes ; l’erreur-type de la moyenne, σ/√N, { $se } s, dit à quel point T est connue
 regime-label = Régime :
 
 ## Les régimes que nomme le labo (le `regime` de son résumé)
@@ -80,6 +80,21 @@ regime-tips = bascule
 regime-no-restoring-force = sans force de rappel
 regime-lost = plaque perdue
 regime-numerically-failed = échec numérique
+regime-since = { " " }depuis t = { $t } s
+regime-jumps =  ; { $jumps ->
+        [one] { $jumps } saut
+       *[other] { $jumps } sauts
+    } au-dessus d’un rouleau, jusqu’à { $height } mm
+regime-help-oscillates = Les deux rouleaux glissent sous la plaque tout du long : l’oscillation harmonique dont la période donne μk.
+regime-help-clipped = Une fois, la plaque est allée aussi vite que la surface d’un rouleau et s’y est collée : l’amplitude est écrêtée à la vitesse de surface des rouleaux divisée par ω. La période ne change pas.
+regime-help-stick-slip = La plaque adhère à un rouleau pendant une partie de chaque cycle, puis glisse : sa période n’est plus celle de la formule.
+regime-help-grows = Ici le frottement diminue avec la vitesse de glissement : l’amplitude croît d’un cycle à l’autre.
+regime-help-decays = Ici le frottement augmente avec la vitesse de glissement : l’amplitude décroît d’un cycle à l’autre.
+regime-help-sticks = La plaque reste collée à un rouleau (ou les rouleaux sont à l’arrêt) : il n’y a pas d’oscillation à chronométrer.
+regime-help-tips = La réaction normale d’un rouleau est tombée à zéro : la plaque a basculé ou décollé.
+regime-help-no-restoring-force = Le frottement éloigne la plaque du milieu (l ≤ 2 μk h_c, ou rouleaux tournant vers l’extérieur) : elle dérive.
+regime-help-lost = La plaque est tombée des rouleaux ou a quitté le montage.
+regime-help-numerically-failed = La simulation a échoué (un nombre est devenu infini, ou l’énergie a crû sans limite).
 
 ## Les graphiques et les périodes
 
@@ -177,6 +192,7 @@ setup-offset-slider =
 setup-duration = Durée
 setup-duration-hint = Assez longue pour chronométrer dix périodes à la main (environ 8 s sur le dispositif de l’article), et plus.
 setup-accepts = Ce réglage accepte de { $least } à { $most } { $unit }.
+setup-beyond = { $found } { $unit } est en dehors de ce que ce réglage accepte, de { $least } à { $most } { $unit } : le laboratoire continue comme avant.
 number-nothing = un nombre est attendu, rien n’a été saisi
 number-decimal-point = un nombre avec un point décimal est attendu, par exemple 89.5, et non « { $text } »
 number-expected = un nombre est attendu, par exemple { $example }, et non « { $text } »
@@ -260,7 +276,7 @@ rig-estimate-periods =
         [one] période
        *[other] périodes
     }
-rig-estimate-se = erreur-type { $se } s
+rig-estimate-se = l’erreur-type de la moyenne, σ/√N, { $se } s
 rig-estimate-spacing = l = { $spacing } mm (l’entraxe de ce réglage)
 rig-estimate-note = ± est l’écart-type des périodes, dμₖ en quadrature
 
@@ -396,15 +412,15 @@ serial-none-chosen = aucun port choisi : appuyez de nouveau sur Connecter et ch
 serial-not-opened = le port n’a pas pu être ouvert ({ $why }) : fermez le moniteur série de l’IDE Arduino ou toute autre page qui l’utilise, puis connectez-vous de nouveau
 serial-chosen-port = le port série choisi
 
-## Le compte rendu (frictionlab report, « Compte rendu » de la page) : lu par le laboratoire
+## Le compte rendu (frictionlab report, « Compte rendu » de la page) : lu par le laboratoire
 ## lui-même, chaque message ici est du texte simple, avec seulement des { $variable }.
 
-report-title = Compte rendu : l'oscillateur à frottement
+report-title = Compte rendu : l’oscillateur à frottement
 report-decimal-sign = ,
 report-method = Méthode
-report-method-text = Une plaque repose sur deux rouleaux distants de l, qui tournent en sens opposés, le haut de chacun vers l'autre. Le frottement cinétique à chaque contact vaut μk fois la part du poids de la plaque que porte le rouleau, et le rouleau le plus proche en porte davantage : la différence ramène la plaque vers le milieu avec une force proportionnelle à son décalage. La plaque oscille avec la période T = π √(2 l / (μk g)) ; une période mesurée donne donc μk = 2π² l / (g T²) ({ $citation }). Un capteur à effet Hall détecte les aimants aux extrémités de la plaque ; l'estimateur du montage chronomètre ses impulsions, garde chaque période à moins de 20 % de la médiane glissante, et en fait la moyenne.
-report-simulation-title = Simulation : { $name }
-report-measurement-title = Mesure : { $name }
+report-method-text = Une plaque repose sur deux rouleaux distants de l, qui tournent en sens opposés, le haut de chacun vers l’autre. Le frottement cinétique à chaque contact vaut μk fois la part du poids de la plaque que porte le rouleau, et le rouleau le plus proche en porte davantage : la différence ramène la plaque vers le milieu avec une force proportionnelle à son décalage. La plaque oscille avec la période T = π √(2 l / (μk g)) ; une période mesurée donne donc μk = 2π² l / (g T²) ({ $citation }). Un capteur à effet Hall détecte les aimants aux extrémités de la plaque ; l’estimateur du montage chronomètre ses impulsions, garde chaque période à moins de 20 % de la médiane glissante, et en fait la moyenne.
+report-simulation-title = Simulation : { $name }
+report-measurement-title = Mesure : { $name }
 report-set-up = Montage
 report-data = Données
 report-result = Résultat
@@ -431,40 +447,40 @@ report-axis-hall = capteur à effet Hall (points du CAN)
 report-axis-start = début de la période (s)
 report-axis-period = T (s)
 report-position-caption = La position de la plaque x(t), sur toute la simulation (sa trajectoire).
-report-hall-caption = Le signal du capteur à effet Hall, tel que l'Arduino du montage le lit : une impulsion à chaque passage d'un aimant au-dessus du capteur.
-report-measurement-caption = La mesure, telle que lue : la voie que l'estimateur a chronométrée.
+report-hall-caption = Le signal du capteur à effet Hall, tel que l’Arduino du montage le lit : une impulsion à chaque passage d’un aimant au-dessus du capteur.
+report-measurement-caption = La mesure, telle que lue : la voie que l’estimateur a chronométrée.
 report-periods-plot = Chaque période selon son début
-report-periods-caption = Chaque période à son début : la dispersion des périodes retenues est leur écart-type.
+report-periods-caption = Chaque période à son début : la dispersion des périodes retenues est leur écart-type.
 report-accepted = retenue
 report-discarded = rejetée
-report-no-period = L'estimateur n'a trouvé aucune période.
+report-no-period = L’estimateur n’a trouvé aucune période.
 report-column-start = début (s)
 report-column-end = fin (s)
 report-column-accepted = retenue
 report-yes = oui
-report-no-beyond-median = non : à plus de 20 % de la médiane glissante
-report-no-spread = pas de dispersion : une seule période
-report-period-why = T est la moyenne des { $count } périodes retenues ; dT est leur erreur-type (leur écart-type, { $sd } s, divisé par la racine carrée de leur nombre).
-report-mu-k-why = μk = 2π² l / (g T²), avec l = { $spacing } mm et g = { $gravity } m/s². Son incertitude combine en quadrature celle de l'entraxe, dl / l avec dl = { $dl } mm, et celle de la période, 2 σT / T où σT est l'écart-type des périodes, comme le calcule l'Arduino du montage ; additionnées au lieu d'être combinées, elles donnent ± { $worst }.
-report-regime = Régime : { $regime }.
+report-no-beyond-median = non : à plus de 20 % de la médiane glissante
+report-no-spread = pas de dispersion : une seule période
+report-period-why = T est la moyenne des { $count } périodes retenues ; dT est leur erreur-type (leur écart-type, { $sd } s, divisé par la racine carrée de leur nombre).
+report-mu-k-why = μk = 2π² l / (g T²), avec l = { $spacing } mm et g = { $gravity } m/s². Son incertitude combine en quadrature celle de l’entraxe, dl / l avec dl = { $dl } mm, et celle de la période, 2 σT / T où σT est l’écart-type des périodes, comme le calcule l’Arduino du montage ; additionnées au lieu d’être combinées, elles donnent ± { $worst }.
+report-regime = Régime : { $regime }.
 report-regime-oscillates = oscille
 report-regime-clipped = écrêté
 report-regime-stick-slip = adhérence-glissement
 report-regime-grows = croît
 report-regime-decays = décroît
 report-regime-sticks = reste collée
-report-regime-tips = bascule ou décolle d'un rouleau
+report-regime-tips = bascule ou décolle d’un rouleau
 report-regime-no-restoring-force = pas de force de rappel
 report-regime-lost = perdue (hors du montage)
 report-regime-numerically-failed = échec numérique
 report-source = source
-report-theory-row = Théorie pour le μk fixé, { $mu } : plaque mince, π √(2 l / (μk g)) ; avec l'épaisseur de la plaque
-report-thick-row = { $name } : μk tiré de T par la formule de la plaque épaisse, 2π² l / (g T² + 4π² h_c), avec h_c la hauteur du centre de masse de la plaque au-dessus des contacts
-report-paper-row = Tableau I de l'article : { $material }, { $kelvin } K
-report-no-paper-row = Le tableau I de l'article n'a pas de ligne pour ce matériau à cette température.
+report-theory-row = Théorie pour le μk fixé, { $mu } : plaque mince, π √(2 l / (μk g)) ; avec l’épaisseur de la plaque
+report-thick-row = { $name } : μk tiré de T par la formule de la plaque épaisse, 2π² l / (g T² + 4π² h_c), avec h_c la hauteur du centre de masse de la plaque au-dessus des contacts
+report-paper-row = Tableau I de l’article : { $material }, { $kelvin } K
+report-no-paper-row = Le tableau I de l’article n’a pas de ligne pour ce matériau à cette température.
 report-column-periods = périodes
 report-column-wall = temps réel (s)
 report-column-simulated = temps simulé (s)
 report-column-by-hand = T à la main (s)
-report-stopwatch-why = Un appui sur le chronomètre est en avance ou en retard d'un temps de réaction, environ 0,2 s : sur dix périodes, cela fait 0,02 s sur T.
-report-footer = Réalisé avec { $version } : la simulation et l'estimateur du code Arduino du montage ; la méthode de { $citation }.
+report-stopwatch-why = Un appui sur le chronomètre est en avance ou en retard d’un temps de réaction, environ 0,2 s : sur dix périodes, cela fait 0,02 s sur T.
+report-footer = Réalisé avec { $version } : la simulation et l’estimateur du code Arduino du montage ; la méthode de { $citation }.

@@ -1,5 +1,6 @@
 #include "scene/accepted_ranges.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -27,15 +28,30 @@ bool accepts(const Scene& scene, const TurnedKey& turned, double v) {
   return check_scene(trial).empty();
 }
 
-// From `accepted` toward `far`, the last value accepted: `far` itself when it is accepted.
+// `v` to 9 significant digits.
+double nine_digits(double v) {
+  if (v == 0.0) return 0.0;
+  const double scale = std::pow(10.0, 8 - std::floor(std::log10(std::fabs(v))));
+  return std::round(v * scale) / scale;
+}
+
+// From `accepted` toward `far`, the last value accepted, as a number of 9 significant digits: the
+// rule's own bound where it takes it (40 mm, two idlers meeting), else one part in 1e8 inside a
+// bound it does not (20.0000002 mm, the rollers just clear of each other). A front end rounding
+// the range inward to its control's step then never offers a refused value.
 double edge(const Scene& scene, const TurnedKey& turned, double accepted, double far) {
   if (accepts(scene, turned, far)) return far;
+  const double start = accepted;
   double refused = far;
   for (int i = 0; i < kHalvings; ++i) {
     const double mid = 0.5 * (accepted + refused);
     (accepts(scene, turned, mid) ? accepted : refused) = mid;
   }
-  return accepted;
+  const double bound = nine_digits(accepted);
+  if (accepts(scene, turned, bound)) return bound;
+  const double inside = nine_digits(bound + (start - bound) * 1e-8 / std::fabs(start - bound) *
+                                                std::max(std::fabs(bound), 1e-300));
+  return accepts(scene, turned, inside) ? inside : accepted;
 }
 
 std::vector<TurnedKey> turned_keys(const Scene& scene) {

@@ -69,7 +69,8 @@ std::string refused_entry(const std::function<Scene()>& load) {
   return "";
 }
 
-constexpr double kClose = 1e-9;  // m: the bisection's edges, far finer than any slider's step
+constexpr double kClose =
+    1e-8;  // m: an edge not taken is given 1e-8 inside it, far finer than any step
 
 TEST(AcceptedRanges, TheBareRigsSpacingRunsFromTheRollersTouchingToThePlatesLength) {
   const std::vector<AcceptedRange> ranges = accepted_ranges(bare());
@@ -78,7 +79,7 @@ TEST(AcceptedRanges, TheBareRigsSpacingRunsFromTheRollersTouchingToThePlatesLeng
   // The rollers overlap at l = 2 a = 20 mm; the plate (200 mm) leaves a roller at l + 2 A = L,
   // A = 20 mm released at rest.
   EXPECT_NEAR(spacing.least, 0.020, kClose);
-  EXPECT_GT(spacing.least, 0.020);
+  EXPECT_GT(spacing.least, 0.020);  // 20 mm itself is refused: the range starts just inside
   EXPECT_NEAR(spacing.most, 0.200 - 2 * 0.020, kClose);
   EXPECT_LT(spacing.most, 0.160);
   // The plate stays on both rollers while |offset| < (L - l) / 2.
@@ -100,8 +101,9 @@ TEST(AcceptedRanges, ThePaperRigsSpacingIsWhatItsLegoGearsSpan) {
   // LEGO spur gears have a 1 mm module: a pitch radius of half the tooth count in mm. The idlers
   // (40 teeth, 20 mm) meet between the rollers at l = 40 mm; the chain of 24-40-40-24 stretched
   // straight spans 12 + 40 + 40 + 12 = 104 mm.
-  EXPECT_NEAR(spacing.least, 0.040, kClose);
-  EXPECT_NEAR(spacing.most, 0.104, kClose);
+  // Both bounds are the rules' own and taken: they are given as they are.
+  EXPECT_EQ(spacing.least, 0.040);
+  EXPECT_EQ(spacing.most, 0.104);
   const AcceptedRange& duty = range_of(ranges, "drive.motor.duty");
   EXPECT_EQ(duty.unit, "");
   EXPECT_LE(duty.most, 1.0);

@@ -41,3 +41,11 @@ export function fixed(value: number | null | undefined, decimals: number): strin
 export function trimmed(value: number, decimals = 3): string {
   return String(Number(value.toFixed(decimals)));
 }
+
+/** Two significant digits however small: a standard error of 4.1e-5 s is 0.000041, never 0.0000. */
+export function significant(value: number | null | undefined, digits = 2): string {
+  if (value === null || value === undefined || !Number.isFinite(value)) return "—";
+  if (value === 0) return "0";
+  const decimals = Math.max(0, digits - 1 - Math.floor(Math.log10(Math.abs(value))));
+  return value.toFixed(Math.min(decimals, 15));
+}

@@ -6,7 +6,7 @@
 // (404) hides the panel.
 import { byId, byTestId, setText } from "./dom";
 import { t } from "./i18n";
-import { fixed, trimmed, withError } from "./page_numbers";
+import { fixed, significant, trimmed, withError } from "./page_numbers";
 import { closeRig, getRig, LabError, openRig, RIG_PORTS_LISTED, rigLogHref } from "./lab_client";
 import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
@@ -321,7 +321,7 @@ export class RigPanel {
       t("rig-estimate-periods", { periods: n }),
       estimate.period_se === null
         ? null
-        : t("rig-estimate-se", { se: fixed(estimate.period_se, 6) }),
+        : t("rig-estimate-se", { se: significant(estimate.period_se) }),
       t("rig-estimate-spacing", { spacing: trimmed(spacing * 1000, 1) }),
       geometryWords(geometry),
       t("rig-estimate-note"),

@@ -6,6 +6,8 @@ import { t } from "./i18n";
 /** The page's language, which numbers are read and shown in ("89,5" in French): <html lang>,
  * which page_language.ts sets before any control is made. */
 export function pageLocale(): string {
+  // Outside a page (a test under node) there is no document: English.
+  if (typeof document === "undefined") return "en";
   return document.documentElement.lang || "en";
 }
 

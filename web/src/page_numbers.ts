@@ -27,6 +27,11 @@ export function fixed(value: number | null | undefined, decimals: number): strin
   return inPageLanguage(lab.fixed(value, decimals));
 }
 
+/** format.ts's significant, in the page's language: 0,000041. */
+export function significant(value: number | null | undefined, digits = 2): string {
+  return inPageLanguage(lab.significant(value, digits));
+}
+
 /** format.ts's trimmed, in the page's language: 89, 89,5, 1600. */
 export function trimmed(value: number, decimals = 3): string {
   return inPageLanguage(lab.trimmed(value, decimals));

@@ -5,8 +5,8 @@
 import { byTestId, setText } from "./dom";
 import { t } from "./i18n";
 import type { Lab, LabState, Rig } from "./lab_types";
-import { fixed, trimmed, withError } from "./page_numbers";
-import { regimeWords } from "./regime_words";
+import { fixed, significant, trimmed, withError } from "./page_numbers";
+import { regimeHelp, regimeWords } from "./regime_words";
 import type { Headline } from "./summary";
 
 export type RunStatus = "connecting" | "paused" | "playing" | "done" | "no session";
@@ -35,6 +35,7 @@ export class Readouts {
   private readonly periodDetail = byTestId("period-detail");
   private readonly muK = byTestId("mu-k");
   private readonly regime = byTestId("regime");
+  private readonly regimeHelp = byTestId("regime-help");
   private readonly spacing = byTestId("spacing");
   private readonly speed = byTestId("speed");
   private readonly material = byTestId("material");
@@ -67,6 +68,12 @@ export class Readouts {
     setText(this.theory, parts.filter((p) => p !== null).join(t("parts-separator")));
   }
 
+  /** The lab's regime line in the page's words, and what the regime means. */
+  private showRegime(line: string): void {
+    setText(this.regime, regimeWords(line));
+    setText(this.regimeHelp, regimeHelp(line));
+  }
+
   /** Back to t = 0: no estimate, no regime yet. */
   reset(): void {
     this.finished = false;
@@ -76,6 +83,7 @@ export class Readouts {
     setText(this.periodDetail, t("period-detail-none"));
     setText(this.muK, t("mu-k-none"));
     setText(this.regime, "—");
+    setText(this.regimeHelp, "");
     setText(this.failure, "");
   }
 
@@ -93,7 +101,7 @@ export class Readouts {
     setText(this.time, t("run-time", { t: fixed(state.t, 3) }));
     if (this.finished) return;
     this.setStatus(state.playing ? "playing" : "paused");
-    if (state.regime) setText(this.regime, regimeWords(state.regime));
+    if (state.regime) this.showRegime(state.regime);
     const e = state.estimate;
     const key = e ? `${e.periods_used}:${e.period}:${e.period_sd}` : "";
     if (!e || key === this.lastEstimateKey) return;
@@ -105,7 +113,7 @@ export class Readouts {
       this.periodDetail,
       e.period_sd === null
         ? t("period-detail-no-spread", { periods })
-        : t("period-detail-spread", { periods, se: fixed(e.period_se, 4) }),
+        : t("period-detail-spread", { periods, se: significant(e.period_se) }),
     );
     if (e.mu_k !== null) setText(this.muK, t("mu-k", { muK: withError(e.mu_k, e.mu_k_err, 3) }));
   }
@@ -122,11 +130,11 @@ export class Readouts {
       // T in seconds at full precision (data-value), for a test to hold against `frictionlab
       // run`'s period_s.
       this.period.dataset["value"] = String(headline.period);
-      setText(this.periodDetail, t("period-detail-done", { se: fixed(headline.periodSe, 4) }));
+      setText(this.periodDetail, t("period-detail-done", { se: significant(headline.periodSe) }));
       if (headline.muK !== null) {
         setText(this.muK, t("mu-k", { muK: withError(headline.muK, headline.muKErr, 3) }));
       }
-      if (headline.regime) setText(this.regime, regimeWords(headline.regime));
+      if (headline.regime) this.showRegime(headline.regime);
     }
   }
 }

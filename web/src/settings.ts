@@ -72,6 +72,10 @@ export class NumberSetting implements Setting {
   private readonly number: HTMLInputElement;
   private readonly range: HTMLInputElement | null;
   private readonly acceptsHint: HTMLElement;
+  /** What the set-up accepts, in the control's unit (the rig's `accepts`); null: not said. */
+  private accepted: [number, number] | null = null;
+  /** Its ends and unit as the page shows them. */
+  private acceptedWords = { least: "", most: "", unit: "" };
   private sceneValue: number | null = null;
   private touched = false;
   private fromLink = false;
@@ -111,6 +115,14 @@ export class NumberSetting implements Setting {
         this.revert();
         return;
       }
+      const beyond = "value" in read ? this.beyondAccepted(read.value) : null;
+      if (beyond) {
+        // The lab would refuse it (the range is its own checks'): said here, in the page's
+        // language, and never sent.
+        this.problem.textContent = beyond;
+        this.revert();
+        return;
+      }
       onCommit();
     });
     this.range?.addEventListener("input", () => {
@@ -122,6 +134,18 @@ export class NumberSetting implements Setting {
       );
     });
     this.range?.addEventListener("change", () => onCommit());
+  }
+
+  /** What is wrong with `value` for the set-up's accepted range, or null where it lies in it. */
+  private beyondAccepted(value: number): string | null {
+    if (!this.accepted) return null;
+    const [least, most] = this.accepted;
+    const slack = 1e-9 * Math.max(1, Math.abs(least), Math.abs(most));
+    if (value >= least - slack && value <= most + slack) return null;
+    return t("setup-beyond", {
+      ...this.acceptedWords,
+      found: showNumber(value, this.options.decimals + 3, pageLocale()),
+    });
   }
 
   /** The number the control shows, or null where it shows none (or none it can read). */
@@ -171,9 +195,11 @@ export class NumberSetting implements Setting {
     const perSi = this.options.perSi;
     const accepted = perSi ? rig.accepts.find((r) => r.key === this.options.key) : undefined;
     this.acceptsHint.hidden = !accepted;
+    this.accepted = null;
     if (!accepted || !perSi) return;
     const least = accepted.least * perSi;
     const most = accepted.most * perSi;
+    this.accepted = [least, most];
     const locale = pageLocale();
     const decimals = this.options.decimals;
     // Rounded inward: the hint's ends are accepted values too.
@@ -181,11 +207,12 @@ export class NumberSetting implements Setting {
       const scale = 10 ** decimals;
       return (up ? Math.ceil(value * scale - 1e-9) : Math.floor(value * scale + 1e-9)) / scale;
     };
-    this.acceptsHint.textContent = t("setup-accepts", {
+    this.acceptedWords = {
       least: showNumber(inward(least, true), decimals, locale),
       most: showNumber(inward(most, false), decimals, locale),
       unit: this.options.unit === "rpm" ? t("unit-rpm") : this.options.unit,
-    });
+    };
+    this.acceptsHint.textContent = t("setup-accepts", this.acceptedWords);
     if (!this.range) return;
     const step = Number(this.range.step) || 1;
     const [spanLeast, spanMost] = this.options.sliderSpan ?? [least, most];

@@ -208,18 +208,31 @@ const namer = /regime_name\(Regime regime\) \{([\s\S]*?)\n\}/.exec(regimeSource)
 const regimes = [...namer.matchAll(/return "([^"]+)";/g)]
   .map((m) => m[1])
   .filter((r) => r !== "unknown");
-const { REGIME_MESSAGES, regimeWords } = await importTs(join(web, "src/regime_words.ts"));
+const { REGIME_MESSAGES, REGIME_HELP, regimeWords } = await importTs(
+  join(web, "src/regime_words.ts"),
+);
 if (regimes.length < 10) fail(`only ${regimes.length} regimes read from src/core/regime.cpp`);
 for (const regime of regimes) {
   const id = REGIME_MESSAGES[regime];
   if (id === undefined) fail(`the page has no message for the regime "${regime}"`);
   else need(id, "src/regime_words.ts");
+  const help = REGIME_HELP[regime];
+  if (help === undefined) fail(`the page does not say what the regime "${regime}" means`);
+  else need(help, "src/regime_words.ts");
 }
 // English's words for a regime are the lab's; a regime no catalogue has shows as the lab wrote it.
 for (const regime of regimes) {
   if (regimeWords(regime) !== regime) fail(`"${regime}" in English: "${regimeWords(regime)}"`);
 }
 if (regimeWords("wobbles") !== "wobbles") fail(`an unknown regime: "${regimeWords("wobbles")}"`);
+// A live line (src/lab/run/regime_monitor.cpp's regime_so_far) reads in English as the lab wrote it.
+for (const line of [
+  "clipped since t = 0.016 s",
+  "oscillates; 1 jump off a roller, up to 0.3 mm",
+  "stick-slip since t = 1.250 s; 12 jumps off a roller, up to 1.5 mm",
+]) {
+  if (regimeWords(line) !== line) fail(`"${line}" in English: "${regimeWords(line)}"`);
+}
 
 // Every message is asked for by the page, or is the C++ lab's (its report's).
 for (const id of english.keys()) {

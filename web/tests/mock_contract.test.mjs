@@ -124,7 +124,7 @@ try {
   hold(created.body, "Session", "POST /api/sessions");
   const { id, key } = created.body;
   for (const [body, what] of [
-    [{ scene: "minimal", set: ["rollers.spacing=-5mm"] }, "a refused set-up"],
+    [{ scene: "minimal", set: ["rollers.runout=-1mm"] }, "a refused set-up"],
     [{ scene: "minimal", set: ["rollers.spacing=1mm"] }, "a set-up not recorded"],
     [{ scene: "minimal", set: [], name: "=1+1" }, "a name that is not one"],
   ]) {

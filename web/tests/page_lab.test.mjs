@@ -129,13 +129,13 @@ await check("the spacing and the material change the period as theory says", asy
   );
 });
 
-await check("an invalid spacing shows the lab's message beside the spacing control", async () => {
+await check("an invalid run-out shows the lab's message beside its control", async () => {
   const { page, context, complaints } = await openPage("/?scene=minimal");
   await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
-  await page.fill("#spacing-mm", "-5");
-  await page.press("#spacing-mm", "Enter");
-  const field = page.locator(".field", { has: page.locator("#spacing-mm") });
-  await field.getByTestId("problem-spacing").filter({ hasText: "positive" }).waitFor();
+  await page.fill("#runout-mm", "-1");
+  await page.press("#runout-mm", "Enter");
+  const field = page.locator(".field", { has: page.locator("#runout-mm") });
+  await field.getByTestId("problem-runout").filter({ hasText: "must be >= 0" }).waitFor();
   // The browser logs the refusal's 400 itself; nothing else may complain.
   const others = complaints.filter((c) => !c.includes("status of 400"));
   expect(others.length === 0, `console: ${others.join("\n")}`);
@@ -143,14 +143,26 @@ await check("an invalid spacing shows the lab's message beside the spacing contr
 });
 
 await check(
-  "a spacing the drive's gears cannot span is refused at the spacing control",
+  "a spacing beyond the drive's gears is refused at its control, never sent",
   async () => {
     const { page, context, complaints } = await openPage("/?scene=paper-rig");
     await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor();
     await page.fill("#spacing-mm", "120");
     await page.press("#spacing-mm", "Enter");
     const problem = page.getByTestId("problem-spacing");
-    await problem.filter({ hasText: "spans roller spacings from 40 to 104 mm" }).waitFor();
+    // The range is the lab's own (its checks, bisected): the page says it without asking.
+    await problem.filter({ hasText: "beyond what this set-up accepts, 40 to 104 mm" }).waitFor();
+    // And the lab refuses that value itself, at the spacing, saying why (its gears).
+    const refused = await fetch(`${base}/api/sessions`, {
+      method: "POST",
+      body: JSON.stringify({ scene: "paper-rig", set: ["rollers.spacing=120mm"] }),
+    });
+    const why = await refused.json();
+    expect(
+      refused.status === 400 && why.problems[0].value === "rollers.spacing=120mm",
+      `the lab: ${JSON.stringify(why)}`,
+    );
+    expect(/spans roller spacings from 40 to 104 mm/.test(why.problems[0].message), "no reason");
     const text = await problem.textContent();
     expect(!text.includes("/") && !text.includes(".yaml"), `a path in the message: ${text}`);
     expect((await page.getByTestId("problem-scene").textContent()) === "", "a problem at Scene");

@@ -113,6 +113,12 @@ await check("the default scene loads paused, plays, fills the period and ends do
   );
   const running = await page.getByTestId("period").textContent();
   expect(isPeriodText(running), `period readout reads "${running}"`);
+  // The standard error in two significant digits (the paper's rig: a few 1e-5 s), never 0.0000,
+  // and what it is; the regime, and what it means.
+  const detail = await page.getByTestId("period-detail").textContent();
+  const se = /σ\/√N, ([\d.]+) s/.exec(detail);
+  expect(se && Number(se[1]) > 0 && /[1-9]\d?$/.test(se[1]), `the standard error: "${detail}"`);
+  await page.getByTestId("regime-help").filter({ hasText: "Both rollers slip" }).waitFor();
   await page
     .getByTestId("status")
     .filter({ hasText: /^done$/ })
@@ -162,16 +168,24 @@ await check("a refused spacing shows its message beside the spacing control", as
   await problem.filter({ hasText: "decimal point" }).waitFor();
   expect((await page.locator("#spacing-mm").inputValue()) === "89", "the comma's value stays");
   expect((await creates()) === before, "a value the page cannot read was sent");
+  // Beyond what the set-up accepts (the rig's `accepts`, the lab's own checks): said here, in
+  // the page's words, never sent.
   await page.fill("#spacing-mm", "-5");
   await page.press("#spacing-mm", "Enter");
-  await problem.filter({ hasText: "must be positive, found -0.005 m (-5 mm)" }).waitFor();
+  await problem.filter({ hasText: "-5 mm is beyond what this set-up accepts, 20.1 to" }).waitFor();
+  expect((await creates()) === before, "a value beyond the accepted range was sent");
   expect((await problem.getAttribute("role")) === "alert", "problem is not an alert");
   const field = page.locator(".field", { has: page.locator("#spacing-mm") });
   expect((await field.getByTestId("problem-spacing").count()) === 1, "problem not beside spacing");
-  // The control shows what the lab runs: the refused value goes, its message stays.
+  expect((await page.locator("#spacing-mm").inputValue()) === "89", "the control left at -5");
+  // What the lab refuses, beside its control: the control shows what the lab runs again.
+  await page.fill("#runout-mm", "-1");
+  await page.press("#runout-mm", "Enter");
+  const runout = page.getByTestId("problem-runout");
+  await runout.filter({ hasText: "must be >= 0" }).waitFor();
   expect(
-    (await page.locator("#spacing-mm").inputValue()) === "89",
-    `the control shows ${await page.locator("#spacing-mm").inputValue()}, the lab runs 89 mm`,
+    (await page.locator("#runout-mm").inputValue()) === "",
+    `the run-out control shows ${await page.locator("#runout-mm").inputValue()}, the lab runs the scene's`,
   );
   expect((await page.getByTestId("spacing").textContent()).includes("89 mm"), "rig changed");
   // the page stays usable: the running session goes on, another control starts a new one, and a
@@ -187,6 +201,7 @@ await check("a refused spacing shows its message beside the spacing control", as
   await page.press("#spacing-mm", "Enter");
   await page.getByTestId("spacing").filter({ hasText: "70 mm" }).waitFor();
   expect((await problem.textContent()) === "", "problem stays after a good value");
+  expect((await runout.textContent()) === "", "the run-out's problem stays after a good set-up");
   const link = await page.getByTestId("setup-link").inputValue();
   expect(
     link.endsWith("/?scene=minimal&set=rollers.spacing%3D70mm&set=world.duration%3D5s"),

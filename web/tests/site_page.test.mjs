@@ -151,14 +151,14 @@ await check("the site works from a folder of a web space, its links too", async 
 await check("a refused set-up shows the request layer's message at its control", async () => {
   const { page, context } = await openPage("/?scene=minimal");
   await page.getByTestId("spacing").filter({ hasText: "89 mm" }).waitFor({ timeout: 30000 });
-  await page.fill("#spacing-mm", "-5");
-  await page.press("#spacing-mm", "Enter");
-  const field = page.locator(".field", { has: page.locator("#spacing-mm") });
-  const problem = field.getByTestId("problem-spacing");
-  await problem.filter({ hasText: "positive" }).waitFor();
+  await page.fill("#runout-mm", "-1");
+  await page.press("#runout-mm", "Enter");
+  const field = page.locator(".field", { has: page.locator("#runout-mm") });
+  const problem = field.getByTestId("problem-runout");
+  await problem.filter({ hasText: "must be >= 0" }).waitFor();
   // The words the request layer writes (BrowserLab answers with them as the server does).
   const text = await problem.textContent();
-  expect(text.includes("must be positive, found -0.005 m"), `the message: ${text}`);
+  expect(text.includes("found -1 mm"), `the message: ${text}`);
   await context.close();
 });
 

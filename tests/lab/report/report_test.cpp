@@ -108,8 +108,8 @@ TEST_F(ReportTest, InFrenchItsWordsAndDecimalCommaAreFrenchAndItsNumbersTheSame)
   const std::string html = make_report(r).html;
   EXPECT_EQ(html.find("report-"), std::string::npos) << html.substr(html.find("report-"), 60);
   EXPECT_NE(html.find("<html lang=\"fr\">"), std::string::npos);
-  EXPECT_NE(html.find("Compte rendu : l'oscillateur à frottement"), std::string::npos);
-  EXPECT_NE(html.find("Tableau I de l'article : LEGO blocks, 300 K"), std::string::npos);
+  EXPECT_NE(html.find("Compte rendu\u00a0: l’oscillateur à frottement"), std::string::npos);
+  EXPECT_NE(html.find("Tableau I de l’article\u00a0: LEGO blocks, 300 K"), std::string::npos);
   EXPECT_NE(html.find("0,79 ± 0,03"), std::string::npos);  // the paper's T, with a comma
   EXPECT_NE(html.find("<td class=\"n\">7,765</td>"), std::string::npos);  // the stopwatch's
   // The marked numbers are the summary's exactly, whatever the language shows.

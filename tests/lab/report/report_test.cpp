@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -35,10 +34,29 @@ std::string read(const std::filesystem::path& file) {
 // Each (data-field, data-value) the report marks.
 std::vector<std::pair<std::string, std::string>> marked(const std::string& html) {
   std::vector<std::pair<std::string, std::string>> out;
-  const std::regex mark("data-field=\"([a-z_]+)\" data-value=\"([^\"]*)\"");
-  for (auto it = std::sregex_iterator(html.begin(), html.end(), mark); it != std::sregex_iterator();
-       ++it)
-    out.emplace_back((*it)[1], (*it)[2]);
+  const std::string field = "data-field=\"", value = "\" data-value=\"";
+  for (std::size_t at = html.find(field); at != std::string::npos; at = html.find(field, at + 1)) {
+    const std::size_t name = at + field.size();
+    const std::size_t end = html.find(value, name);
+    if (end == std::string::npos) break;
+    const std::size_t close = html.find('"', end + value.size());
+    out.emplace_back(html.substr(name, end - name),
+                     html.substr(end + value.size(), close - end - value.size()));
+  }
+  return out;
+}
+
+// Each `report-*` message of a catalogue, and the variables it uses ({ $name }).
+std::map<std::string, std::set<std::string>> report_messages(const std::string& ftl) {
+  std::map<std::string, std::set<std::string>> out;
+  std::istringstream lines(ftl);
+  for (std::string line; std::getline(lines, line);) {
+    const std::size_t equals = line.find(" = ");
+    if (!line.starts_with("report-") || equals == std::string::npos) continue;
+    std::set<std::string>& vars = out[line.substr(0, equals)];
+    for (std::size_t at = line.find("{ $"); at != std::string::npos; at = line.find("{ $", at + 1))
+      vars.insert(line.substr(at + 3, line.find(' ', at + 3) - at - 3));
+  }
   return out;
 }
 
@@ -136,24 +154,10 @@ TEST(ReportCatalogues, EveryLanguageHasEveryReportMessageWithItsVariables) {
                 (language + ".ftl"));
   };
   const std::string english = read_catalogue("en");
-  const auto ids_and_variables = [](const std::string& ftl) {
-    std::map<std::string, std::set<std::string>> out;
-    const std::regex message("^(report-[a-z0-9-]+) = (.*)$", std::regex::multiline);
-    const std::regex variable("\\{ *\\$([a-z_]+) *\\}");
-    for (auto it = std::sregex_iterator(ftl.begin(), ftl.end(), message);
-         it != std::sregex_iterator(); ++it) {
-      const std::string text = (*it)[2];
-      std::set<std::string>& vars = out[(*it)[1]];
-      for (auto v = std::sregex_iterator(text.begin(), text.end(), variable);
-           v != std::sregex_iterator(); ++v)
-        vars.insert((*v)[1]);
-    }
-    return out;
-  };
-  const auto wanted = ids_and_variables(english);
+  const auto wanted = report_messages(english);
   EXPECT_GE(wanted.size(), 50u);
   for (const std::string& language : report_languages(FRICTIONLAB_TEST_ASSET_DIR)) {
-    const auto found = ids_and_variables(read_catalogue(language));
+    const auto found = report_messages(read_catalogue(language));
     EXPECT_EQ(found, wanted) << language << ".ftl";
     // And the lab reads each of them (plain text and { $variable } only).
     const MessageCatalogue c = MessageCatalogue::parse(read_catalogue(language));

@@ -4,7 +4,7 @@
 
 #include <cmath>
 #include <numbers>
-#include <regex>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -23,19 +23,13 @@ TEST(SvgPlot, TicksAreOneTwoOrFiveTimesAPowerOfTen) {
   EXPECT_NEAR(small.back(), 0.02, 1e-15);
 }
 
-// The y pixel of each point of the polyline.
+// The y pixel of each point of the polyline ("x,y x,y ...").
 std::vector<double> ys_of(const std::string& svg) {
-  const std::smatch points = [&svg] {
-    std::smatch m;
-    std::regex_search(svg, m, std::regex("points=\"([^\"]*)\""));
-    return m;
-  }();
+  const std::string key = "points=\"";
+  const std::size_t start = svg.find(key) + key.size();
+  std::istringstream points(svg.substr(start, svg.find('"', start) - start));
   std::vector<double> ys;
-  const std::string text = points[1];
-  const std::regex pair("([0-9.]+),([0-9.]+)");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), pair); it != std::sregex_iterator();
-       ++it)
-    ys.push_back(std::stod((*it)[2]));
+  for (std::string pair; points >> pair;) ys.push_back(std::stod(pair.substr(pair.find(',') + 1)));
   return ys;
 }
 

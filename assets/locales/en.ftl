@@ -70,6 +70,11 @@ period-detail-spread =
        *[other] { $periods } periods
     }; the mean's standard error, σ/√N, { $se } s, is how well T is known
 period-detail-done = the run's result: ± is the periods' standard deviation; the mean's standard error, σ/√N, { $se } s, is how well T is known
+scene-paper-rig = The paper's rig
+scene-paper-rig-77K = The paper's rig at 77 K
+scene-paper-rig-77K-warming = The paper's rig at 77 K, warming up
+scene-minimal = The minimal rig
+scene-roller-ramp = The minimal rig, its rollers slowed and sped up
 regime-label = Regime:
 
 ## The regimes the lab names (its summary's `regime`); a regime this file lacks shows as the lab

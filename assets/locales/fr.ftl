@@ -66,6 +66,11 @@ period-detail-spread =
        *[other] { $periods } périodes
     } ; l’erreur-type de la moyenne, σ/√N, { $se } s, dit à quel point T est connue
 period-detail-done = résultat de la simulation : ± est l’écart-type des périodes ; l’erreur-type de la moyenne, σ/√N, { $se } s, dit à quel point T est connue
+scene-paper-rig = Le montage de l’article
+scene-paper-rig-77K = Le montage de l’article à 77 K
+scene-paper-rig-77K-warming = Le montage de l’article à 77 K, qui se réchauffe
+scene-minimal = Le montage minimal
+scene-roller-ramp = Le montage minimal, ses rouleaux ralentis puis accélérés
 regime-label = Régime :
 
 ## Les régimes que nomme le labo (le `regime` de son résumé)

@@ -2,6 +2,7 @@
 // plate's start. A change starts a new session with the `--set` entries of what the user changed;
 // a refused set-up shows each problem beside the control that made it.
 import { byId } from "./dom";
+import { sceneWords } from "./scene_words";
 import type { Lab, Problem, Rig } from "./lab_types";
 import { LawSetting, MaterialSetting, NumberSetting, type Setting } from "./settings";
 
@@ -146,7 +147,7 @@ export class SetupControls {
     for (const scene of lab.scenes) {
       const option = document.createElement("option");
       option.value = scene.name;
-      option.textContent = scene.name;
+      option.textContent = sceneWords(scene.name, scene.title);
       option.title = scene.title;
       this.sceneSelect.append(option);
     }

@@ -234,6 +234,17 @@ for (const line of [
   if (regimeWords(line) !== line) fail(`"${line}" in English: "${regimeWords(line)}"`);
 }
 
+// A message for each scene the lab ships (scenes/*.yaml).
+const { SCENE_MESSAGES } = await importTs(join(web, "src/scene_words.ts"));
+const shipped = (await readdir(join(repository, "scenes")))
+  .filter((name) => name.endsWith(".yaml"))
+  .map((name) => name.slice(0, -".yaml".length));
+for (const scene of shipped) {
+  const id = SCENE_MESSAGES[scene];
+  if (id === undefined) fail(`the page has no words for the shipped scene "${scene}"`);
+  else need(id, "src/scene_words.ts");
+}
+
 // Every message is asked for by the page, or is the C++ lab's (its report's).
 for (const id of english.keys()) {
   if (!asked.has(id) && !id.startsWith("report-"))

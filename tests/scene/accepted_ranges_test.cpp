@@ -4,28 +4,17 @@
 // loader, located at the `set` entry that made it.
 #include "scene/accepted_ranges.hpp"
 
-#include <filesystem>
+#include <functional>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "io/input_error.hpp"
-#include "io/paper_table_yaml.hpp"
 #include "scene/scene_yaml.hpp"
+#include "support/scene_fixture.hpp"
 
 namespace fl {
 namespace {
-
-const PaperTable& paper_table() {
-  static const PaperTable table = load_paper_table(paper_table_path(FRICTIONLAB_TEST_ASSET_DIR));
-  return table;
-}
-const PaperTableSource kPaper = []() -> const PaperTable& { return paper_table(); };
-const PartCatalogSource kParts = []() -> const assets::PartCatalog& {
-  static const assets::PartCatalog catalog =
-      assets::load_part_catalog(assets::part_catalog_path(FRICTIONLAB_TEST_ASSET_DIR));
-  return catalog;
-};
 
 // A bare rig: no drive, no sensor, the plate released at rest 20 mm off centre.
 const std::string kBare = R"(format: 1
@@ -50,13 +39,12 @@ const AcceptedRange& range_of(const std::vector<AcceptedRange>& ranges, const st
 }
 
 Scene bare(std::vector<SceneOverride> overrides = {}) {
-  return load_scene_text(kBare, "bare.yaml", overrides, kPaper);
+  return load_scene_text(kBare, "bare.yaml", overrides,
+                         []() -> const PaperTable& { return test::paper_table(); });
 }
 
 Scene paper_rig(std::vector<SceneOverride> overrides = {}) {
-  const std::string file =
-      (std::filesystem::path(FRICTIONLAB_TEST_SOURCE_DIR) / "scenes" / "paper-rig.yaml").string();
-  return load_scene_file(file, overrides, kPaper, kParts);
+  return test::scene_file("paper-rig.yaml", overrides);
 }
 
 // The key of the problem the loader locates at a `set` entry, or "" when it loads.

@@ -43,6 +43,42 @@ export async function serveFolder(folder) {
   return { base, stop: () => server.kill() };
 }
 
+/** A deadline for a wait that fails only when something is wrong, not when the machine is busy
+ * (two cores shared with a build, a CPU hog beside the test). */
+export const WAIT_MS = 60000;
+
+/** `url` in a browser context of its own (`contextOptions`: viewport, locale, ...; `initScript`
+ * runs in each page before its own script), recording the console's errors and warnings. */
+export async function openWatchedPage(browser, url, contextOptions, initScript = null) {
+  const context = await browser.newContext(contextOptions);
+  context.setDefaultTimeout(WAIT_MS);
+  if (initScript) await context.addInitScript(initScript);
+  const page = await context.newPage();
+  const complaints = [];
+  page.on("console", (message) => {
+    if (message.type() === "error" || message.type() === "warning") {
+      complaints.push(`${message.type()}: ${message.text()}`);
+    }
+  });
+  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
+  await page.goto(url);
+  return { page, context, complaints };
+}
+
+/** What differs between the numbers a lab report marks (data-field, data-value) and the run's
+ * summary.json: { count, problems }. */
+export function reportAgainstSummary(html, summary) {
+  const problems = [];
+  let count = 0;
+  for (const [, field, value] of html.matchAll(/data-field="([a-z_]+)" data-value="([^"]*)"/g)) {
+    if (!(field in summary)) problems.push(`the report's ${field} is not summary.json's`);
+    else if (JSON.stringify(JSON.parse(value)) !== JSON.stringify(summary[field]))
+      problems.push(`${field}: report ${value}, summary.json ${summary[field]}`);
+    count += 1;
+  }
+  return { count, problems };
+}
+
 const tally = { passed: 0, failed: 0 };
 
 /** Runs one check: "ok NAME (ms)" or "FAIL NAME: why", the test going on either way. */

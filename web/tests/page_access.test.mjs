@@ -22,7 +22,15 @@ import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { startMockServer } from "./mock_server.mjs";
-import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
+import {
+  check,
+  expect,
+  finish,
+  launchChromium,
+  openWatchedPage,
+  skipWithoutChromium,
+  WAIT_MS,
+} from "./browser_checks.mjs";
 import { importTs } from "./import_ts.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
@@ -36,9 +44,6 @@ execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit
 const server = await startMockServer({ dist });
 const base = `http://127.0.0.1:${server.port}`;
 const browser = await launchChromium();
-
-/** A deadline for a wait that fails only when something is wrong, not when the machine is busy. */
-const WAIT_MS = 60000;
 
 const PHONE = {
   viewport: { width: 390, height: 844 },
@@ -85,21 +90,9 @@ function recordPage() {
   });
 }
 
-/** A page in a context of its own, recording console errors and failed requests. */
-async function openPage(path, options = LAPTOP) {
-  const context = await browser.newContext(options);
-  context.setDefaultTimeout(WAIT_MS);
-  await context.addInitScript(recordPage);
-  const page = await context.newPage();
-  const complaints = [];
-  page.on("console", (message) => {
-    if (message.type() === "error" || message.type() === "warning") {
-      complaints.push(`${message.type()}: ${message.text()}`);
-    }
-  });
-  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
-  await page.goto(`${base}${path}`);
-  return { page, context, complaints };
+/** A page in a context of its own, recording console errors and what it announced. */
+function openPage(path, options = LAPTOP) {
+  return openWatchedPage(browser, `${base}${path}`, options, recordPage);
 }
 
 /** The lab's page with its set-up shown and (`parts`) its LEGO parts loaded. */

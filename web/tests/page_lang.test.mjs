@@ -18,7 +18,15 @@ import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { startMockServer } from "./mock_server.mjs";
-import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
+import {
+  check,
+  expect,
+  finish,
+  launchChromium,
+  openWatchedPage,
+  skipWithoutChromium,
+  WAIT_MS,
+} from "./browser_checks.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const axeScript = join(web, "node_modules/axe-core/axe.min.js");
@@ -30,25 +38,15 @@ const server = await startMockServer({ dist });
 const base = `http://127.0.0.1:${server.port}`;
 const browser = await launchChromium();
 
-/** A deadline for a wait that fails only when something is wrong, not when the machine is busy. */
-const WAIT_MS = 60000;
 /** The space French writes between a number and its unit, before a colon, in « »: unbreakable. */
 const NBSP = "\u00a0";
 
 /** A page in a browser of the language `locale`, recording console errors and warnings. */
-async function openPage(path, locale = "fr-FR") {
-  const context = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale });
-  context.setDefaultTimeout(WAIT_MS);
-  const page = await context.newPage();
-  const complaints = [];
-  page.on("console", (message) => {
-    if (message.type() === "error" || message.type() === "warning") {
-      complaints.push(`${message.type()}: ${message.text()}`);
-    }
+function openPage(path, locale = "fr-FR") {
+  return openWatchedPage(browser, `${base}${path}`, {
+    viewport: { width: 1366, height: 768 },
+    locale,
   });
-  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
-  await page.goto(`${base}${path}`);
-  return { page, context, complaints };
 }
 
 const text = async (locator) => (await locator.textContent()).trim();

@@ -17,7 +17,15 @@ import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { FAKE_RIG_PORT, startMockServer } from "./mock_server.mjs";
-import { check, expect, finish, launchChromium, skipWithoutChromium } from "./browser_checks.mjs";
+import {
+  check,
+  expect,
+  finish,
+  launchChromium,
+  openWatchedPage,
+  skipWithoutChromium,
+  WAIT_MS,
+} from "./browser_checks.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const shot = process.env.SHOT ?? "/tmp/web-shot.png";
@@ -28,10 +36,6 @@ execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit
 const server = await startMockServer({ dist });
 const base = `http://127.0.0.1:${server.port}`;
 const browser = await launchChromium();
-
-/** A deadline for a wait that fails only when something is wrong, not when the machine is busy
- * (two cores shared with a build, a CPU hog beside the test). */
-const WAIT_MS = 60000;
 
 /** Waits for `condition` (async) to hold, looking every 50 ms; fails after `deadlineMs`. */
 async function waitUntil(condition, what, deadlineMs = WAIT_MS) {
@@ -70,21 +74,14 @@ function recordStreams() {
   );
 }
 
-/** A page that records console errors and warnings, and failed requests. */
-async function openPage(path, viewport = { width: 1366, height: 768 }) {
-  const context = await browser.newContext({ viewport, acceptDownloads: true });
-  context.setDefaultTimeout(WAIT_MS);
-  await context.addInitScript(recordStreams);
-  const page = await context.newPage();
-  const complaints = [];
-  page.on("console", (message) => {
-    if (message.type() === "error" || message.type() === "warning") {
-      complaints.push(`${message.type()}: ${message.text()}`);
-    }
-  });
-  page.on("pageerror", (error) => complaints.push(`pageerror: ${error.message}`));
-  await page.goto(`${base}${path}`);
-  return { page, context, complaints };
+/** A page that records console errors and warnings, and its streams. */
+function openPage(path, viewport = { width: 1366, height: 768 }) {
+  return openWatchedPage(
+    browser,
+    `${base}${path}`,
+    { viewport, acceptDownloads: true },
+    recordStreams,
+  );
 }
 
 /** A period as the lab's ± rule writes it: the value to the uncertainty's last digit. */

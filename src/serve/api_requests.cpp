@@ -130,6 +130,46 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
   return command;
 }
 
+namespace {
+
+// A MeasurementEstimate as POST /api/estimate answered it: its numbers finite, its counts whole.
+std::variant<MeasuredSummary, BodyRefusal> read_measured(const json& m) {
+  const BodyRefusal refused{
+      "expected \"measurement\" as POST /api/estimate answered it (file, instrument, "
+      "periods_used, period_s, mu_k, ...), found " +
+          quoted(m),
+      "measurement"};
+  if (!m.is_object()) return refused;
+  MeasuredSummary out;
+  const auto text = [&m](const char* key, std::string& into, bool may_be_null) {
+    const auto it = m.find(key);
+    if (it == m.end()) return false;
+    if (it->is_null()) return may_be_null;
+    if (!it->is_string() || it->get<std::string>().size() > 256) return false;
+    into = it->get<std::string>();
+    return true;
+  };
+  const auto number = [&m](const char* key, double& into, double least) {
+    const auto it = m.find(key);
+    if (it == m.end() || !it->is_number()) return false;
+    into = it->get<double>();
+    return std::isfinite(into) && into >= least && into < 1e12;
+  };
+  const bool ok =
+      text("file", out.file, false) && text("instrument", out.instrument, false) &&
+      text("channel", out.channel, true) && number("samples", out.samples, 1) &&
+      number("sample_rate_hz", out.sample_rate_hz, 0) && number("duration_s", out.duration_s, 0) &&
+      number("periods_used", out.periods_used, 1) && number("period_s", out.period_s, 1e-9) &&
+      number("period_std_s", out.period_std_s, 0) && number("period_sem_s", out.period_sem_s, 0) &&
+      number("mu_k", out.mu_k, 0) && number("mu_k_err_quadrature", out.mu_k_err_quadrature, 0) &&
+      number("mu_k_err_worst", out.mu_k_err_worst, 0) && number("spacing_m", out.spacing_m, 1e-9) &&
+      out.periods_used == std::floor(out.periods_used) && out.samples == std::floor(out.samples);
+  if (!ok) return refused;
+  return out;
+}
+
+}  // namespace
+
 std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
   if (text.empty()) return ReportBody{};
   auto parsed = object_of(text);
@@ -137,9 +177,16 @@ std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
   const json& body = std::get<json>(parsed);
   ReportBody report;
   for (const auto& [key, value] : body.items())
-    if (key != "student" && key != "stopwatch" && key != "language")
-      return BodyRefusal{"expected the keys \"student\", \"stopwatch\" and \"language\", found \"" +
-                         key + "\""};
+    if (key != "student" && key != "stopwatch" && key != "language" && key != "measurement")
+      return BodyRefusal{
+          "expected the keys \"student\", \"stopwatch\", \"language\" and "
+          "\"measurement\", found \"" +
+          key + "\""};
+  if (const auto measured = body.find("measurement"); measured != body.end()) {
+    auto read = read_measured(*measured);
+    if (auto* refusal = std::get_if<BodyRefusal>(&read)) return *refusal;
+    report.measured = std::get<MeasuredSummary>(read);
+  }
   if (const auto language = body.find("language"); language != body.end()) {
     const std::string code = language->is_string() ? language->get<std::string>() : "";
     const bool word = !code.empty() && code.size() <= 16 &&

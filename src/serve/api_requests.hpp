@@ -77,10 +77,12 @@ std::variant<RigCommand, BodyRefusal> read_rig_body(std::string_view body);
 inline constexpr std::size_t kMostStopwatchTimings = 100;
 
 // POST /api/sessions/ID/report: {"student": WHO, "stopwatch": [{"periods": N, "wall_s": S,
-// "simulated_s": S or null}, ...], "language": "fr"}, each optional (the session's name; no
-// timing; English).
+// "simulated_s": S or null}, ...], "language": "fr", "measurement": {MeasurementEstimate}}, each
+// optional (the session's name; no timing; English; no measurement).
 struct ReportBody {
   std::optional<std::string> student;
+  // "measurement": the page's "Your measurement", as POST /api/estimate answered it.
+  std::optional<MeasuredSummary> measured;
   std::string language = "en";  // checked against the lab's catalogues by the report's request
   std::vector<StopwatchTiming> stopwatch;
 };

@@ -23,6 +23,7 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   request.student = asked.student.value_or(session.name());
   request.stopwatch = asked.stopwatch;
   request.language = asked.language;
+  if (asked.measured) request.measured.push_back(*asked.measured);
   request.lab_version = version;
   const RunFiles files = [&session](const std::string& name) { return session.file(name); };
   try {

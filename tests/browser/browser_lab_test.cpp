@@ -119,6 +119,27 @@ TEST(BrowserLab, ASessionsReportHoldsItsSummaryInTheLanguageAsked) {
     EXPECT_EQ(refused.status, 400) << body;
     EXPECT_FALSE(refused.body["error"].get<std::string>().empty()) << body;
   }
+  // The page's "Your measurement", as the lab's estimate answered it: a part of its own, its
+  // numbers the estimate's, beside the simulation's.
+  const std::string phone = std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                            "/assets/examples/instruments/phone-magnetometer.csv";
+  const Answer measured =
+      lab.estimate("phone-magnetometer.csv", test::read_text(phone), "0.089", std::nullopt);
+  ASSERT_EQ(measured.status, 200) << measured.body.dump();
+  const Answer both = lab.report(id, json{{"measurement", measured.body}}.dump());
+  ASSERT_EQ(both.status, 200) << both.body.dump();
+  const std::string with = both.body["html"];
+  EXPECT_NE(with.find("Measurement: phone-magnetometer.csv"), std::string::npos);
+  EXPECT_NE(
+      with.find("data-field=\"period_s\" data-value=\"" + measured.body["period_s"].dump() + "\""),
+      std::string::npos);
+  EXPECT_NE(with.find("data-field=\"mu_k\" data-value=\"" + measured.body["mu_k"].dump() + "\""),
+            std::string::npos);
+  json broken = measured.body;
+  broken["period_s"] = -1;
+  EXPECT_EQ(lab.report(id, json{{"measurement", broken}}.dump()).status, 400);
+  broken.erase("period_s");
+  EXPECT_EQ(lab.report(id, json{{"measurement", broken}}.dump()).status, 400);
   // A language the lab's data has no catalogue for: refused by the report's request, by field.
   const Answer klingon = lab.report(id, R"({"language": "tlh"})");
   EXPECT_EQ(klingon.status, 400);

@@ -1,6 +1,7 @@
 // The shapes of the lab's web API (docs/web-api.md): what the server sends is web/src/api_types.ts,
 // written from the lab's declaration; here only what the page sends.
 export * from "./api_types";
+import type { MeasurementEstimate } from "./api_types";
 
 export type ControlAction = "play" | "pause" | "step" | "reset";
 
@@ -18,4 +19,6 @@ export interface ReportAsk {
   stopwatch?: StopwatchTiming[];
   /** The report's language: the page's ("en", "fr"). */
   language?: string;
+  /** The student's measurement, as `POST /api/estimate` answered it: a part of the report. */
+  measurement?: MeasurementEstimate;
 }

@@ -70,6 +70,7 @@ const exportPanel = new ExportPanel(
     student: studentName.name ?? "",
     stopwatch: stopwatch.timings(),
     language: document.documentElement.lang || "en",
+    ...(measurement.measured ? { measurement: measurement.measured } : {}),
   }),
 );
 

@@ -19,6 +19,7 @@ export class MeasurementPanel {
   private file: File | null = null;
   private spacing: number | null = null; // m, the set-up's l the shown mu_k was computed with
   private asked = 0; // the latest estimate asked for: an older answer is not shown
+  private shown: MeasurementEstimate | null = null; // the estimate on screen, for the report
 
   constructor() {
     this.input.addEventListener("change", () => {
@@ -55,6 +56,7 @@ export class MeasurementPanel {
     if (!file || this.spacing === null) return;
     const asked = ++this.asked;
     setText(this.problem, "");
+    this.shown = null;
     setText(this.period, t("period-waiting"));
     setText(this.detail, t("measurement-reading", { file: file.name }));
     this.period.removeAttribute("data-value");
@@ -82,7 +84,13 @@ export class MeasurementPanel {
     }
   }
 
+  /** The measurement on screen, as the lab's estimate answered it; null while there is none. */
+  get measured(): MeasurementEstimate | null {
+    return this.shown;
+  }
+
   private show(e: MeasurementEstimate): void {
+    this.shown = e;
     this.period.dataset.value = String(e.period_s);
     setText(this.period, t("period", { period: withError(e.period_s, e.period_std_s, 4) }));
     // The instrument and its channel are the lab's words.

@@ -197,6 +197,15 @@ await check("the lab report's numbers are summary.json's; its print preview", as
     .waitFor({ timeout: 60000 });
   await page.click("#stopwatch-toggle");
   await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  // The student's own measurement, read in "Your measurement": a part of the report too.
+  await page
+    .getByTestId("measurement-file")
+    .setInputFiles(`${repository}/assets/examples/instruments/phone-magnetometer.csv`);
+  const measured = page.getByTestId("measured-period");
+  await page.waitForFunction(() =>
+    document.querySelector('[data-testid="measured-period"]').getAttribute("data-value"),
+  );
+  const measuredPeriod = await measured.getAttribute("data-value");
   const button = page.getByTestId("export-report");
   await page.waitForFunction(
     () => !document.querySelector('[data-testid="export-report"]').disabled,
@@ -205,12 +214,22 @@ await check("the lab report's numbers are summary.json's; its print preview", as
   const html = readFileSync(await download.path(), "utf8");
   const summaryHref = await page.getByTestId("file-summary").getAttribute("href");
   const summary = await (await fetch(new URL(summaryHref, base))).json();
-  const marked = reportAgainstSummary(html, summary);
+  // The simulation's part (the measurement's numbers are its estimate's, checked below).
+  const marked = reportAgainstSummary(html.split("<h2>Measurement:")[0], summary);
   expect(marked.problems.length === 0, marked.problems.join("; "));
-  expect(marked.count >= 10, `only ${marked.count} numbers marked`);
+  expect(marked.count >= 7, `only ${marked.count} numbers marked (T, dT, N, σ, μk, dμk, worst)`);
   expect(html.includes("Anne-Marie (2B)"), "the student's name is not in the report");
   expect(html.includes("Timed by hand"), "the stopwatch's timing is not in the report");
   expect(html.includes("American Journal of Physics"), "the paper is not cited");
+  expect(html.includes("Measurement: phone-magnetometer.csv"), "the measurement is not in it");
+  const reported =
+    /<h2>Measurement: phone-magnetometer.csv<\/h2>[\s\S]*?data-field="period_s" data-value="([^"]*)"/.exec(
+      html,
+    );
+  expect(
+    reported && Number(reported[1]) === Number(measuredPeriod),
+    `the measurement's T: report ${reported?.[1]}, page ${measuredPeriod}`,
+  );
   // Its print preview, on A4: looked at by whoever changes the report (options.report).
   const preview = await context.newPage();
   await preview.setContent(html);

@@ -76,6 +76,25 @@ struct ReportPart {
   std::optional<ReportPaperRow> paper;
 };
 
+// A measurement as the lab's estimate of it reported it (`estimate --json`'s numbers, the page's
+// "Your measurement"): its part of a report, without its samples.
+struct MeasuredSummary {
+  std::string file;
+  std::string instrument;
+  std::string channel;  // "" : one
+  double samples = 0;
+  double sample_rate_hz = 0;
+  double duration_s = 0;
+  double periods_used = 0;
+  double period_s = 0;
+  double period_std_s = 0;
+  double period_sem_s = 0;
+  double mu_k = 0;
+  double mu_k_err_quadrature = 0;
+  double mu_k_err_worst = 0;
+  double spacing_m = 0;
+};
+
 // The student's stopwatch: periods timed by hand between two presses.
 struct StopwatchTiming {
   int periods = 10;

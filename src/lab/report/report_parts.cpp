@@ -234,4 +234,33 @@ ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
   return part;
 }
 
+ReportPart measurement_part(const MeasuredSummary& m) {
+  ReportPart part;
+  part.source = m.file;
+  part.title = m.file;
+  part.spacing_m = m.spacing_m;
+  const bool spread = m.periods_used >= 2;
+  const auto known = [](bool yes, double v, const char* name) {
+    return ReportNumber{yes ? std::optional<double>(v) : std::nullopt, name};
+  };
+  part.period = {m.period_s, "period_s"};
+  part.period_sd = known(spread, m.period_std_s, "period_std_s");
+  part.period_se = known(spread, m.period_sem_s, "period_sem_s");
+  part.periods_used = {m.periods_used, "periods_used"};
+  part.mu_k = {m.mu_k, "mu_k"};
+  part.mu_k_err = known(spread, m.mu_k_err_quadrature, "mu_k_err_quadrature");
+  part.mu_k_err_worst = known(spread, m.mu_k_err_worst, "mu_k_err_worst");
+  part.period_thin.field = "period_thin_s";
+  part.period_thick.field = "period_thick_s";
+  part.mu_k_set.field = "mu_k_set";
+  part.mu_k_thick.field = "mu_k_thick";
+  part.set_up.push_back(
+      {"instrument", m.instrument + (m.channel.empty() ? "" : ", " + m.channel), false});
+  part.set_up.push_back({"file", m.file, false});
+  part.set_up.push_back({"spacing", mm(m.spacing_m)});
+  part.set_up.push_back({"samples", fmt::format("{:.0f}, {:.2f} s, {:.0f} Hz", m.samples,
+                                                m.duration_s, m.sample_rate_hz)});
+  return part;
+}
+
 }  // namespace fl

@@ -27,4 +27,8 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
 ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
                             const std::optional<PaperComparison>& paper);
 
+// A measurement's part from its estimate's numbers alone (no samples, no periods' table), marked
+// with the estimate's own field names.
+ReportPart measurement_part(const MeasuredSummary& measured);
+
 }  // namespace fl

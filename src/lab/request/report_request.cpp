@@ -164,6 +164,7 @@ ReportResult report_of_runs(const std::vector<std::pair<std::string, RunFiles>>&
   ReportContent content = content_of(r);
   for (const auto& [source, files] : runs)
     content.parts.push_back(simulation_part(files, source, table));
+  for (const MeasuredSummary& m : r.measured) content.parts.push_back(measurement_part(m));
   return finish(std::move(content), r);
 }
 

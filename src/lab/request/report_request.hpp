@@ -22,6 +22,7 @@ struct ReportRequest {
   std::string out;                         // "out": the HTML file ("" : not written)
   std::string student;                     // "student": who hands it in
   std::vector<StopwatchTiming> stopwatch;  // "stopwatch": periods timed by hand
+  std::vector<MeasuredSummary> measured;   // measurements, as their estimates reported them
   EstimateRequest measurement;  // the measurements' rig and reading (spacing, material, ...)
   std::string lab_version;      // the front end's version, in the report's footer
   std::string date;             // "YYYY-MM-DD" ("" : today, UTC)

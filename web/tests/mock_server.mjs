@@ -19,7 +19,10 @@
 // /__mock/rig-shared?off), /__mock/refuse?path=P&count=N (the next N requests to a path ending in
 // P answer 429), /__mock/close-streams (every stream gets `event: closed`, as when the server
 // stops) and /__mock/streams?session=ID (how many streams of that session are open).
+import { execFileSync } from "node:child_process";
 import { randomBytes } from "node:crypto";
+import { mkdtempSync, rmSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { createServer } from "node:http";
 import { readFile } from "node:fs/promises";
 import { dirname, extname, join, normalize, resolve } from "node:path";
@@ -297,6 +300,22 @@ class Playback {
   summary() {
     return this.setup.summary;
   }
+}
+
+/** The page built (web/build.mjs) into a temporary folder and served by the mock: its address,
+ * the server, and how to stop both (the folder removed). */
+export async function startBuiltPage() {
+  const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
+  execFileSync(process.execPath, [resolve(here, "../build.mjs"), dist], { stdio: "inherit" });
+  const server = await startMockServer({ dist });
+  return {
+    base: `http://127.0.0.1:${server.port}`,
+    server,
+    stop: async () => {
+      await server.close();
+      rmSync(dist, { recursive: true, force: true });
+    },
+  };
 }
 
 export async function startMockServer({

@@ -16,12 +16,10 @@
 // pass by watching less, never fail it.
 //
 //   FRICTIONLAB_MOCK_RECORDING=FILE node tests/page_access.test.mjs
-import { execFileSync } from "node:child_process";
-import { mkdirSync, mkdtempSync, readFileSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { mkdirSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { startMockServer } from "./mock_server.mjs";
+import { startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
@@ -39,10 +37,7 @@ const axeScript = join(web, "node_modules/axe-core/axe.min.js");
 skipWithoutChromium();
 mkdirSync(shots, { recursive: true });
 
-const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
-execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
-const server = await startMockServer({ dist });
-const base = `http://127.0.0.1:${server.port}`;
+const { base, stop } = await startBuiltPage();
 const browser = await launchChromium();
 
 const PHONE = {
@@ -751,6 +746,5 @@ await check("a plot's rows: evenly in time, a pulse kept", async () => {
 });
 
 await browser.close();
-await server.close();
-rmSync(dist, { recursive: true, force: true });
+await stop();
 finish();

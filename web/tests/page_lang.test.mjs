@@ -12,12 +12,9 @@
 // deadline (WAIT_MS), never a sleep.
 //
 //   FRICTIONLAB_MOCK_RECORDING=FILE node tests/page_lang.test.mjs
-import { execFileSync } from "node:child_process";
-import { mkdtempSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { startMockServer } from "./mock_server.mjs";
+import { startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
@@ -32,10 +29,7 @@ const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const axeScript = join(web, "node_modules/axe-core/axe.min.js");
 skipWithoutChromium();
 
-const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
-execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
-const server = await startMockServer({ dist });
-const base = `http://127.0.0.1:${server.port}`;
+const { base, stop } = await startBuiltPage();
 const browser = await launchChromium();
 
 /** The space French writes between a number and its unit, before a colon, in « »: unbreakable. */
@@ -293,6 +287,5 @@ await check("?lang=fr goes with the set-up's link and the links between the page
 });
 
 await browser.close();
-await server.close();
-rmSync(dist, { recursive: true, force: true });
+await stop();
 finish();

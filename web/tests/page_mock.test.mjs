@@ -11,12 +11,10 @@
 // condition, with a generous deadline (WAIT_MS), never a sleep that hopes it is long enough.
 //
 //   node tests/page_mock.test.mjs        (builds the page into a temporary folder first)
-import { execFileSync } from "node:child_process";
-import { mkdtempSync, readFileSync, rmSync } from "node:fs";
-import { tmpdir } from "node:os";
+import { readFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { FAKE_RIG_PORT, startMockServer } from "./mock_server.mjs";
+import { FAKE_RIG_PORT, startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
@@ -31,10 +29,7 @@ const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const shot = process.env.SHOT ?? "/tmp/web-shot.png";
 skipWithoutChromium();
 
-const dist = mkdtempSync(join(tmpdir(), "frictionlab-web-"));
-execFileSync(process.execPath, [join(web, "build.mjs"), dist], { stdio: "inherit" });
-const server = await startMockServer({ dist });
-const base = `http://127.0.0.1:${server.port}`;
+const { base, stop } = await startBuiltPage();
 const browser = await launchChromium();
 
 /** Waits for `condition` (async) to hold, looking every 50 ms; fails after `deadlineMs`. */
@@ -756,6 +751,5 @@ await check("the server's `closed` is shown and the page stops streaming", async
 });
 
 await browser.close();
-await server.close();
-rmSync(dist, { recursive: true, force: true });
+await stop();
 finish();

@@ -147,6 +147,12 @@ async function firstScreen(page) {
     return {
       scrollY: window.scrollY,
       scrollWidth: document.documentElement.scrollWidth,
+      // The side panel scrolls down only: a control wider than it (a long scene's name, a unit
+      // pushed out) is cut off there, not scrolled to.
+      panelSideways: (() => {
+        const panel = document.querySelector("#panel");
+        return panel.scrollWidth - panel.clientWidth;
+      })(),
       width: innerWidth,
       height: innerHeight,
       canvas: box("#view canvas"),
@@ -163,6 +169,7 @@ function expectFirstScreen(screen, name) {
   const boxes = JSON.stringify(screen);
   expect(screen.scrollY === 0, `${name}: not at the top`);
   expect(screen.scrollWidth <= width, `${name}: scrolls sideways: ${boxes}`);
+  expect(screen.panelSideways <= 0, `${name}: the panel is ${screen.panelSideways} px too wide`);
   const seen = (box) => Math.min(box.bottom, height) - Math.max(box.top, 0);
   expect(canvas.top >= 0 && seen(canvas) >= 100, `${name}: the 3D view is not in sight: ${boxes}`);
   for (const [what, box] of [

@@ -69,7 +69,7 @@ Command add_report_command(CLI::App& app, const GlobalOptions& global) {
   sub->add_option("--out", options->out, "The report's file")->capture_default_str();
   sub->add_option("--student", options->student, "Who hands it in");
   sub->add_option("--lang", options->language,
-                  "The report's language: a catalogue of the lab's data (en, fr)")
+                  "The report's language: a catalogue of the lab's data (en, fr, es, de)")
       ->capture_default_str();
   sub->add_option("--spacing", options->spacing, "A measurement's roller spacing l")
       ->capture_default_str();

@@ -1,0 +1,501 @@
+# Die Wörter von frictionlab auf Deutsch: die der Browserseite (web/) und die des Versuchsprotokolls
+# (die report-*-Nachrichten, die das Labor selbst liest), eine Nachricht je Kennung, im
+# Fluent-Format von Mozilla (https://projectfluent.org/fluent/guide/). Jede Nachricht aus en.ftl
+# steht hier, mit denselben Variablen. Eine Zahl in { $name } kommt schon in der Sprache der Seite
+# geschrieben; eine, nach der eine Nachricht auswählt ({ $periods -> [one] ... *[other] ... }), ist
+# eine Anzahl. Begriffe: Periodendauer T, Gleitreibungszahl μk, Achsabstand der Rollen l,
+# Standardabweichung, Standardfehler.
+
+language-name = Deutsch
+
+## Der Rahmen der Seite
+
+page-title = frictionlab — der Reibungsoszillator in Ihrem Browser
+page-subtitle = der Reibungsoszillator in Ihrem Browser
+class-page-title = frictionlab — die Klassentabelle
+class-page-subtitle = die Klassentabelle
+language-label = Sprache
+skip-to-controls = Zu den Bedienelementen springen
+lab-place-browser = Das Labor läuft in diesem Browser: Es wird nichts irgendwohin gesendet.
+lab-place-server = Das Labor läuft auf dem Server { $host }.
+page-problem-unexpected = Das Labor hat nicht wie erwartet geantwortet: { $message }
+# Zwischen den Teilen einer Liste in einer Zeile: „dünne Platte T = 0,634 s; μₖ = 0,29“.
+parts-separator = {"; "}
+# Ein Wert in Sekunden, wie ihn die Anzeigen schreiben.
+seconds = { $seconds } s
+
+## Der Aufbau in 3D
+
+view-title = Der Aufbau in 3D
+view-canvas-label = Der Aufbau in 3D: die Platte auf ihren zwei Rollen
+view-reset = Ansicht zurücksetzen
+force-normal = Normalkraft
+force-friction = Reibung
+force-weight = Gewichtskraft m g (3 cm)
+view-hint-mouse = Ziehen zum Drehen · Mausrad zum Zoomen.
+view-hint-touch = Ziehen zum Drehen · zwei Finger zum Zoomen.
+view-keys = Tasten in der Ansicht: Pfeile drehen, Umschalt + Pfeile verschieben, + und − zoomen, Pos1 setzt zurück.
+view-near-side = vordere Wand zeigen
+
+## Die Simulation
+
+run-title = Simulation
+run-play = Abspielen
+run-pause = Pause
+run-play-again = Erneut abspielen
+run-step = Schritt
+    .title = Ein Bild: 1/30 s simulierte Zeit
+run-reset = Zurücksetzen
+run-slow-motion = Zeitlupe
+run-status-connecting = verbindet
+run-status-paused = pausiert
+run-status-playing = läuft
+run-status-done = fertig
+run-status-no-session = keine Sitzung
+run-time = t = { $t } s
+run-failure = Die Simulation brach ab: { $message }
+period = T = { $period } s
+period-none = T = — s
+period-waiting = T = … s
+mu-k = μₖ = { $muK }
+mu-k-none = μₖ = —
+period-detail-none = noch keine Periode akzeptiert
+period-detail-no-spread =
+    aus { $periods ->
+        [one] { $periods } Periode
+       *[other] { $periods } Perioden
+    }: noch keine Streuung
+period-detail-spread =
+    ± ist die Standardabweichung von { $periods ->
+        [one] { $periods } Periode
+       *[other] { $periods } Perioden
+    }; der Standardfehler des Mittelwerts, σ/√N, { $se } s, gibt an, wie genau T bekannt ist
+period-detail-done = Ergebnis der Simulation: ± ist die Standardabweichung der Perioden; der Standardfehler des Mittelwerts, σ/√N, { $se } s, gibt an, wie genau T bekannt ist
+scene-paper-rig = Der Aufbau aus dem Artikel
+scene-paper-rig-77K = Der Aufbau aus dem Artikel bei 77 K
+scene-paper-rig-77K-warming = Der Aufbau aus dem Artikel bei 77 K, beim Aufwärmen
+scene-minimal = Der minimale Aufbau
+scene-roller-ramp = Der minimale Aufbau, seine Rollen gebremst und beschleunigt
+regime-label = Bewegungsform:
+
+## Die Bewegungsformen, die das Labor nennt (das `regime` seiner Zusammenfassung); eine, die in
+## dieser Datei fehlt, erscheint so, wie das Labor sie schrieb.
+
+regime-oscillates = schwingt
+regime-clipped = begrenzt
+regime-stick-slip = Haftgleiten
+regime-grows = wächst
+regime-decays = klingt ab
+regime-sticks = haftet
+regime-tips = kippt
+regime-no-restoring-force = keine Rückstellkraft
+regime-lost = Platte verloren
+regime-numerically-failed = numerisch gescheitert
+regime-since = { " " }seit t = { $t } s
+regime-jumps = ; { $jumps ->
+        [one] { $jumps } Sprung
+       *[other] { $jumps } Sprünge
+    } von einer Rolle, bis zu { $height } mm
+regime-help-oscillates = Beide Rollen gleiten ständig unter der Platte: die harmonische Schwingung, deren Periodendauer μk liefert.
+regime-help-clipped = Einmal war die Platte so schnell wie die Oberfläche einer Rolle und haftete an ihr: Das begrenzte die Amplitude auf die Umfangsgeschwindigkeit der Rollen geteilt durch ω. Die Periodendauer bleibt gleich.
+regime-help-stick-slip = Die Platte haftet in jedem Zyklus eine Zeit lang an einer Rolle und gleitet dann: Ihre Periodendauer ist nicht mehr die der Formel.
+regime-help-grows = Hier nimmt die Reibung mit der Gleitgeschwindigkeit ab: Die Amplitude wächst von Zyklus zu Zyklus.
+regime-help-decays = Hier nimmt die Reibung mit der Gleitgeschwindigkeit zu: Die Amplitude klingt von Zyklus zu Zyklus ab.
+regime-help-sticks = Die Platte haftet an einer Rolle (oder die Rollen stehen still): Es gibt keine Schwingung zu stoppen.
+regime-help-tips = Die Normalkraft einer Rolle ist auf null gefallen: Die Platte ist gekippt oder hat von ihr abgehoben.
+regime-help-no-restoring-force = Die Reibung treibt die Platte von der Mitte weg (l ≤ 2 μk h_c, oder nach außen drehende Rollen): Sie driftet ab.
+regime-help-lost = Die Platte ist von den Rollen gefallen oder hat den Aufbau verlassen.
+regime-help-numerically-failed = Die Simulation ist zusammengebrochen (eine Zahl wurde unendlich, oder die Energie wuchs unbegrenzt).
+
+## Die Diagramme und die Perioden
+
+plots-title = Diagramme
+plot-position-caption = Position x(t) der Platte, Theorie gestrichelt (letzte 5 s)
+plot-position-box =
+    .aria-label = Diagramm der Position x der Platte über der Zeit t, die letzten 5 s; die Daten stehen in der Tabelle darunter
+plot-hall-caption = Hall-Sensor, seine Impulse gestrichelt (letzte 5 s)
+plot-hall-box =
+    .aria-label = Diagramm der ADC-Werte des Hall-Sensors über der Zeit t, die letzten 5 s, mit den vom Schätzer gefundenen Impulsen markiert; die Daten stehen in der Tabelle darunter
+plot-hall-none = Dieser Aufbau hat keinen Hall-Sensor.
+plot-table-summary = Daten als Tabelle
+plot-table-position-hidden = : die Position der Platte
+plot-table-hall-hidden = : die ADC-Werte des Hall-Sensors
+plot-hall-column = Hall (ADC-Werte)
+plot-adc-axis = ADC-Werte
+plot-position-series = x (mm)
+plot-theory-series = Theorie x_th (mm)
+plot-rig-hall-series = Hall des Aufbaus (ADC)
+# Was die Tabelle eines Diagramms enthält, für ihre Beschriftung („Noch keine Messwerte für ...“).
+plot-table-position-what = die Position x der Platte (mm)
+plot-table-hall-what = die ADC-Werte des Hall-Sensors
+plot-table-empty = Noch keine Messwerte für { $what }.
+# $what: plot-table-position-what oder plot-table-hall-what, der erste Buchstabe großgeschrieben.
+plot-table-every = { $what }, t von { $from } bis { $to } s: alle Messwerte dargestellt ({ $rows }).
+plot-table-some = { $what }, t von { $from } bis { $to } s: { $rows } der { $samples } Messwerte dargestellt, zeitlich gleichmäßig verteilt.
+periods-caption = Perioden, wie der Schätzer sie bewertet:
+periods-region =
+    .aria-label = Tabelle der Perioden
+periods-from = Beginn (s)
+periods-accepted-column = akzeptiert
+periods-status-column = Status
+periods-yes = ✓ ja
+periods-no = ✗ nein
+periods-accepted = akzeptiert
+periods-rejected = verworfen
+periods-none = noch keine
+periods-tally = { $accepted } von { $count } akzeptiert
+
+## Die Seitenleiste: der Aufbau und seine Theorie
+
+panel =
+    .aria-label = Einstellungen und Werkzeuge
+rig-values-title = Aufbau und Theorie
+rig-values-spacing = Achsabstand l
+rig-values-rollers = Rollen
+rig-values-plate = Platte
+rig-values-theory = Theorie
+spacing-value = { $spacing } mm
+rollers-value = { $rpm } U/min
+rollers-value-driven = { $rpm } U/min (Motorantrieb)
+theory-thin = dünne Platte T = { $period } s
+theory-thick = dicke Platte { $period } s
+theory-mu-k = μₖ = { $muK }
+theory-paper = Artikel: T = { $period } s, μₖ = { $muK }
+
+## Die Stoppuhr
+
+stopwatch-title = Stoppuhr: zehn Perioden stoppen
+stopwatch-start = Start
+stopwatch-stop = Stopp
+stopwatch-clear = Löschen
+stopwatch-space = oder Leertaste drücken
+stopwatch-wall = Echtzeit
+stopwatch-simulated = Simuliert
+stopwatch-estimator = Schätzer
+# $total: die Zeit zwischen den Tastendrücken; $periods: die gestoppten Perioden; $period: eine davon.
+stopwatch-timed = { $total } s, ÷ { $periods } = { $period } s
+
+## Die Einstellungen
+
+setup-title = Einstellungen
+setup-scene = Szene
+setup-material = Material der Platte (Tabelle I)
+setup-spacing = Achsabstand der Rollen l
+setup-spacing-slider =
+    .aria-label = Achsabstand der Rollen l, Schieberegler (mm)
+setup-speed = Drehzahl der Rollen
+setup-speed-slider =
+    .aria-label = Drehzahl der Rollen, Schieberegler (U/min)
+unit-rpm = U/min
+setup-duty = Tastverhältnis des Motors (PWM)
+setup-duty-slider =
+    .aria-label = Tastverhältnis des Motors, Schieberegler (%)
+setup-law = Reibungsgesetz
+setup-law-scene = wie in der Szene
+setup-mu-s = μs (Haftreibung)
+setup-from-scene =
+    .placeholder = Szene
+setup-runout = Rundlauffehler der Rollen
+setup-offset = Anfangsauslenkung
+setup-offset-slider =
+    .aria-label = Anfangsauslenkung, Schieberegler (mm)
+setup-duration = Laufzeit
+setup-duration-hint = Lang genug, um zehn Perioden von Hand zu stoppen (etwa 8 s beim Aufbau aus dem Artikel), und mehr.
+setup-accepts = Diese Einstellung erlaubt { $least } bis { $most } { $unit }.
+setup-beyond = { $found } { $unit } liegt außerhalb dessen, was diese Einstellung erlaubt, { $least } bis { $most } { $unit }: Das Labor läuft unverändert weiter.
+number-nothing = eine Zahl erwartet, nichts gefunden
+number-decimal-point = eine Zahl mit Dezimalpunkt erwartet, etwa 89.5, gefunden: „{ $text }“
+number-expected = eine Zahl erwartet, etwa { $example }, gefunden: „{ $text }“
+
+## Die Klasse
+
+class-title = Die Klasse
+student-name-label = Ihr Name (für die Klassentabelle)
+student-name-hint = Erscheint schon beim Tippen in der Klassentabelle und wird mit jeder Sitzung gesendet, die Sie starten; Buchstaben, Ziffern, Leerzeichen und . - _ ' , ( ).
+student-name-not-sent = Nicht gesendet: { $problem }.
+student-name-too-long = höchstens { $most } Zeichen
+student-name-characters = nur Buchstaben, Ziffern, Leerzeichen und . - _ ' , ( ), am Anfang ein Buchstabe oder eine Ziffer
+class-link = Die Klassentabelle
+
+## Ihre Messung
+
+measurement-title = Ihre Messung
+measurement-file = Eine eigene Messdatei
+measurement-note = Das Hall-Sensor-Log Ihres Aufbaus, ein phyphox-Export vom Handy (CSV oder zip), Tracker-Daten, eine Weg-Zeit-Tabelle oder ein kurzes Handyvideo, hier gewählt oder auf dieses Feld gezogen: Das Labor liest daraus die Periodendauer und μₖ mit dem Achsabstand dieser Einstellung.
+measurement-reading = { $file } wird gelesen
+measurement-busy = das Labor liest andere Dateien; { $file } gleich danach
+# $instrument: der Name, den das Labor dem gibt, was die Datei erzeugt hat (und sein Kanal).
+measurement-result =
+    { $file }: { $instrument }, N = { $periods } { $periods ->
+        [one] Periode
+       *[other] Perioden
+    }; μₖ = { $muK } mit l = { $spacing } mm
+measurement-phone-note = Ein Handy auf der Platte hebt ihren Schwerpunkt an: Dieses μₖ nach der Formel des Artikels ist um den Anteil 4π²h_c/(gT²) zu groß (frictionlab estimate --h-c liefert den Wert der Formel für dicke Platten)
+
+## Der reale Aufbau
+
+rig-title = Der reale Aufbau
+rig-summary-looking = Arduino des Aufbaus wird gesucht
+rig-summary-connect = Arduino des Aufbaus verbinden
+rig-summary-no-web-serial = kein Web Serial: Log-Datei wählen
+rig-summary-ports =
+    { $ports ->
+        [one] { $ports } serieller Port gefunden
+       *[other] { $ports } serielle Ports gefunden
+    }
+rig-port-label = Serieller Port des Arduino am Aufbau
+rig-no-port-found = kein serieller Port gefunden
+rig-connect = Verbinden
+rig-close = Schließen
+rig-choose-note = Gemeinsames Labor: Nur der Laborrechner wählt den Port.
+rig-connect-note = Beim Verbinden läuft daneben die Simulation dieser Einstellung ab t = 0.
+rig-plot-caption = Der Hall-Sensor des Aufbaus (letzte 10 s): Perioden enden an den orangeroten Linien (grau gestrichelt: verworfen)
+rig-periods-caption = Die Perioden des Aufbaus, neueste zuerst:
+rig-periods-region =
+    .aria-label = Die Perioden des Aufbaus
+rig-log = Das Rohlog des Aufbaus
+rig-log-named = Das Rohlog des Aufbaus ({ $name })
+rig-problem = Der Aufbau: { $message }
+rig-lines =
+    { $lines ->
+        [one] { $lines } Zeile
+       *[other] { $lines } Zeilen
+    }
+# Der Zustand des Ports, wie das Labor ihn nennt (closed, waiting, receiving, unplugged, failed, full).
+rig-port-state =
+    { $state ->
+        [closed] geschlossen
+        [waiting] wartet
+        [receiving] empfängt
+        [unplugged] getrennt
+        [failed] fehlgeschlagen
+        [full] voll
+       *[other] { $state }
+    }
+rig-state-none = kein Port geöffnet
+# $lines: rig-lines, ausgeschrieben.
+rig-state-closed = geschlossen ({ $port } war offen, { $lines } empfangen)
+rig-state-waiting = wartet auf { $port }: noch nichts empfangen
+rig-state-receiving = Empfang von { $port }, { $lines }
+rig-state-unplugged = getrennt: { $port } verschwand nach { $lines }
+rig-state-failed = fehlgeschlagen: { $port }
+rig-state-other = { $state }: { $port }
+rig-the-port = der Port
+rig-geometry-one-pulse = ein Impuls pro Periode
+rig-geometry-pair = ein Impulspaar pro Periode
+rig-geometry-unknown = Impulse noch nicht erkannt
+rig-estimate-periods =
+    N = { $periods } { $periods ->
+        [one] Periode
+       *[other] Perioden
+    }
+rig-estimate-se = der Standardfehler des Mittelwerts, σ/√N, { $se } s
+rig-estimate-spacing = l = { $spacing } mm (Achsabstand dieser Einstellung)
+rig-estimate-note = ± ist die Standardabweichung der Perioden, dμₖ quadratisch addiert
+
+## Export
+
+export-title = Export
+export-files = Die Dateien der Simulation (nach ihrem Ende):
+export-report = Versuchsprotokoll
+export-report-hint = Nach der Simulation: Einstellungen, Daten, T und μk mit ihren Unsicherheiten, verglichen mit dem Artikel, als Seite zum Abgeben oder zum Drucken als PDF.
+export-report-writing = Protokoll wird erstellt…
+export-report-done = report.html ist heruntergeladen: Öffnen Sie es und drucken Sie es im Browser als PDF, um es abzugeben.
+export-png = PNG der Ansicht
+export-link = Link zu dieser Einstellung
+export-copy = Kopieren
+export-copy-by-hand = Link markieren und von Hand kopieren.
+export-copied = Kopiert.
+
+## Der Aufbau in Worten, für einen Screenreader
+
+# Wo die Platte ist: $side ist left, right oder centre; $mm ihr Abstand von der Mitte.
+plate-where =
+    { $side ->
+        [left] { $mm } mm links der Mitte
+        [right] { $mm } mm rechts der Mitte
+       *[centre] in der Mitte
+    }
+# $where: plate-where, ausgeschrieben; $motion: left, right oder rest.
+plate-now =
+    Die Platte ist { $where } und { $motion ->
+        [left] bewegt sich nach links
+        [right] bewegt sich nach rechts
+       *[rest] ruht
+    }.
+rollers-one = Die Platte liegt nur auf der { $side ->
+        [left] linken
+       *[right] rechten
+    } Rolle ({ $newtons } N).
+rollers-same = Beide Rollen tragen gleich viel (je { $newtons } N).
+rollers-more =
+    Die { $more ->
+        [left] linke
+       *[right] rechte
+    } Rolle trägt mehr von der Gewichtskraft der Platte: { $most } N gegenüber { $least } N auf der { $more ->
+        [left] rechten
+       *[right] linken
+    }.
+period-said-done = Die Periodendauer der Simulation: T = { $period } s.
+period-said-none = Noch keine Periode gemessen.
+period-said-so-far =
+    Die Periodendauer bisher: T = { $period } s, aus { $periods ->
+        [one] { $periods } Periode
+       *[other] { $periods } Perioden
+    }.
+# $sense: inward oder outward; $material: der Name, den das Labor dem Material der Platte gibt; $start: plate-where.
+set-up-said =
+    Zwei Rollen im Abstand von { $spacing } mm (Achsabstand l), ihre Oberseiten drehen sich mit { $rpm } U/min { $sense ->
+        [inward] aufeinander zu
+       *[outward] voneinander weg
+    }, darauf eine Platte aus { $material }, { $length } mm lang und { $mass } g schwer; die Platte startet { $start }. Die Periodendauer nach der Theorie der dünnen Platte: { $period } s.
+# $moment: playing, paused oder over; $motion: plate-now und was darauf folgt, ausgeschrieben.
+moment-said =
+    { $moment ->
+        [paused] Pausiert bei
+        [over] Die Simulation ist zu Ende bei
+       *[playing] Läuft, bei
+    } t = { $t } s. { $motion }
+
+## Die Klassentabelle (class.html)
+
+class-back = Zurück zum Labor
+class-caption = Einstellung und Ergebnis jeder offenen Sitzung, wie Tabelle I des Artikels, von der Klasse ausgefüllt:
+class-asking = Labor wird abgefragt
+class-column-name = Name
+class-column-scene = Szene
+class-column-material = Material
+class-column-temperature = Temperatur (K)
+class-column-spacing = Achsabstand l (mm)
+class-column-state = Zustand
+class-column-period = Periodendauer T ± dT (s)
+class-column-paper = μₖ des Artikels
+class-column-hide = Zeile ausblenden
+class-show-hidden = Ausgeblendete Zeilen anzeigen
+class-show-hidden-count =
+    { $hidden ->
+        [one] Die ausgeblendete Zeile anzeigen
+       *[other] Die { $hidden } ausgeblendeten Zeilen anzeigen
+    }
+class-hint = T ± dT: der Mittelwert der akzeptierten Perioden ± sein Standardfehler, auf diesen gerundet („Bewegungsfit“: ein Aufbau ohne Hall-Sensor, dessen Periodendauer an die Bewegung der Platte angepasst ist); μₖ ± dμₖ quadratisch addiert mit dem dl des Achsabstands; μₖ des Artikels aus seiner Tabelle I; — wo es noch keinen Wert gibt. Alle 2 s aktualisiert. Eine Spaltenüberschrift sortiert die Zeilen danach (nochmals: umgekehrt). „Ausblenden“ entfernt eine Zeile nur von dieser Seite (jemand ist gegangen, ein Lauf ist schon notiert), dauerhaft in diesem Browser; class.csv enthält alle offenen Sitzungen.
+class-motion-fit = { $period } (Bewegungsfit)
+class-hide = Ausblenden
+class-hide-named = Zeile von { $name } ausblenden
+class-hide-unnamed = Zeile der unbenannten Sitzung ausblenden
+class-no-session = Es ist keine Sitzung offen.
+class-all-hidden = Alle Zeilen sind ausgeblendet.
+class-count =
+    { $sessions ->
+        [one] { $sessions } Sitzung
+       *[other] { $sessions } Sitzungen
+    }
+class-count-hidden =
+    { $sessions ->
+        [one] { $sessions } Sitzung
+       *[other] { $sessions } Sitzungen
+    }, davon { $hidden } hier ausgeblendet
+# $state: rig-port-state, ausgeschrieben; $lines: rig-lines, ausgeschrieben.
+class-rig = Der reale Aufbau: { $port }, { $state }, { $lines } empfangen
+class-rig-no-port = kein Port
+class-updated = aktualisiert um { $time }
+# Der Zustand einer Sitzung, wie das Labor ihn nennt (paused, playing, done).
+session-state =
+    { $state ->
+        [paused] pausiert
+        [playing] läuft
+        [done] fertig
+       *[other] { $state }
+    }
+
+## Die eigenen Worte der Seite über das Labor (wo die Antwort des Labors nichts sagt)
+
+lab-no-json = das Labor antwortete { $status } ohne JSON
+lab-answered = das Labor antwortete { $status }
+lab-busy = das Labor ist ausgelastet: zu viele Anfragen von diesem Computer; in ein paar Sekunden erneut versuchen
+lab-busy-seconds = das Labor ist ausgelastet: zu viele Anfragen von diesem Computer; in { $seconds } s erneut versuchen
+lab-setup-problems = die Einstellung hat Fehler
+lab-full = das Labor ist voll: erneut versuchen, wenn eine Sitzung endet
+lab-stopped = das Labor wurde beendet
+lab-superseded = eine neuere Einstellung hat diese ersetzt
+browser-lab-stopped = das Labor in diesem Browser wurde beendet: { $why }
+browser-lab-worker-failed = sein Worker ist ausgefallen
+browser-lab-no-class = die Klassentabelle gehört zu einem Klassenserver (frictionlab serve): Dieses Labor läuft in einem einzigen Browser
+serial-choose = der Browser fragt, welcher
+serial-missing = Dieser Browser kann den seriellen Port des Aufbaus nicht öffnen (Web Serial gibt es in Chrome, Edge und Opera auf dem Computer): Speichern Sie das Log des Aufbaus (über den seriellen Monitor des Arduino oder frictionlab log) und wählen Sie die Datei unter „Ihre Messung“
+serial-no-baud = das Labor hat keine Baudrate für den Port des Aufbaus angegeben
+serial-none-chosen = kein Port gewählt: Erneut auf Verbinden drücken und den Arduino des Aufbaus wählen
+serial-not-opened = der Port ließ sich nicht öffnen ({ $why }): Schließen Sie den seriellen Monitor der Arduino-IDE oder jede andere Seite, die ihn nutzt, und verbinden Sie erneut
+serial-chosen-port = der gewählte serielle Port
+
+## Das Versuchsprotokoll (frictionlab report, „Versuchsprotokoll“ auf der Seite): vom Labor selbst
+## gelesen, daher ist jede Nachricht hier einfacher Text mit nur { $variable }-Platzhaltern.
+
+report-title = Versuchsprotokoll: der Reibungsoszillator
+report-decimal-sign = ,
+report-method = Methode
+report-method-text = Eine Platte liegt auf zwei Rollen im Achsabstand l, die sich gegensinnig drehen, ihre Oberseiten aufeinander zu. Die Gleitreibung an jedem Kontakt ist das μk-Fache des Anteils der Gewichtskraft der Platte, den die jeweilige Rolle trägt, und die nähere Rolle trägt mehr: Die Differenz zieht die Platte mit einer Kraft proportional zu ihrer Auslenkung zur Mitte zurück. Die Platte schwingt mit der Periodendauer T = π √(2 l / (μk g)), eine gemessene Periodendauer liefert also μk = 2π² l / (g T²) ({ $citation }). Ein Hall-Sensor erfasst die Magnete an den Enden der Platte; der Schätzer des Aufbaus misst die Zeiten seiner Impulse, behält jede Periode, die höchstens 20 % vom gleitenden Median abweicht, und mittelt sie.
+report-simulation-title = Simulation: { $name }
+report-measurement-title = Messung: { $name }
+report-set-up = Versuchsaufbau
+report-data = Daten
+report-result = Ergebnis
+report-periods = Die Perioden
+report-comparison = Vergleich
+report-stopwatch = Von Hand gestoppt
+report-setup-scene = Szene
+report-setup-spacing = Achsabstand der Rollen l
+report-setup-speed = Drehzahl der Rollen
+report-setup-plate = Platte
+report-setup-mu-k-set = in der Simulation eingestelltes μk
+report-setup-h-c = Höhe des Plattenschwerpunkts über den Kontakten, h_c
+report-setup-mass = Masse der Platte
+report-setup-duration = simulierte Zeit
+report-setup-time-step = Zeitschritt
+report-setup-seed = Seed (Rauschen des Sensors)
+report-setup-instrument = Messgerät
+report-setup-file = Datei
+report-setup-gravity = g
+report-setup-samples = Messwerte, Zeitspanne und Abtastrate
+report-axis-time = t (s)
+report-axis-position = x (mm)
+report-axis-hall = Hall-Sensor (ADC-Werte)
+report-axis-start = Beginn der Periode (s)
+report-axis-period = T (s)
+report-position-caption = Die Position x(t) der Platte über die ganze Simulation (ihre simulierte Bahn).
+report-hall-caption = Das Signal des Hall-Sensors, wie der Arduino des Aufbaus es liest: ein Impuls bei jedem Vorbeilaufen eines Magneten über dem Sensor.
+report-measurement-caption = Die Messung, wie gelesen: der Kanal, dessen Zeiten der Schätzer gemessen hat.
+report-periods-plot = Jede Periode über ihrem Beginn
+report-periods-caption = Jede Periode an ihrem Beginn: Die Streuung der akzeptierten ist die Standardabweichung der Perioden.
+report-accepted = akzeptiert
+report-discarded = verworfen
+report-no-period = Der Schätzer hat keine Periode gefunden.
+report-column-start = Beginn (s)
+report-column-end = Ende (s)
+report-column-accepted = akzeptiert
+report-yes = ja
+report-no-beyond-median = nein: mehr als 20 % vom gleitenden Median entfernt
+report-no-spread = keine Streuung: nur eine Periode
+report-period-why = T ist der Mittelwert der { $count } akzeptierten Perioden; dT ist ihr Standardfehler (ihre Standardabweichung, { $sd } s, geteilt durch die Wurzel ihrer Anzahl).
+report-mu-k-why = μk = 2π² l / (g T²), mit l = { $spacing } mm und g = { $gravity } m/s². Seine Unsicherheit addiert quadratisch die des Achsabstands, dl / l mit dl = { $dl } mm, und die der Periodendauer, 2 σT / T, wobei σT die Standardabweichung der Perioden ist, so wie der Arduino des Aufbaus sie berechnet; linear statt quadratisch addiert ergeben sie ± { $worst }.
+report-regime = Bewegungsform: { $regime }.
+report-regime-oscillates = schwingt
+report-regime-clipped = begrenzt
+report-regime-stick-slip = Haftgleiten
+report-regime-grows = wächst
+report-regime-decays = klingt ab
+report-regime-sticks = haftet
+report-regime-tips = kippt oder hebt von einer Rolle ab
+report-regime-no-restoring-force = keine Rückstellkraft
+report-regime-lost = verloren (vom Aufbau gefallen)
+report-regime-numerically-failed = numerisch gescheitert
+report-source = Quelle
+report-theory-row = Theorie für das eingestellte μk, { $mu }: dünne Platte, π √(2 l / (μk g)); mit der Dicke der Platte
+report-thick-row = { $name }: μk aus T nach der Formel für dicke Platten, 2π² l / (g T² + 4π² h_c), wobei h_c die Höhe des Plattenschwerpunkts über den Kontakten ist
+report-paper-row = Tabelle I des Artikels: { $material }, { $kelvin } K
+report-no-paper-row = Tabelle I des Artikels hat keine Zeile für dieses Material bei dieser Temperatur.
+report-column-periods = Perioden
+report-column-wall = Echtzeit (s)
+report-column-simulated = simuliert (s)
+report-column-by-hand = T von Hand (s)
+report-stopwatch-why = Jeder Druck auf die Stoppuhr kommt um eine Reaktionszeit zu früh oder zu spät, etwa 0,2 s: Über zehn Perioden sind das 0,02 s in T.
+report-footer = Erstellt mit { $version }: die Simulation und der Schätzer aus dem Arduino-Code des Aufbaus; die Methode nach { $citation }.

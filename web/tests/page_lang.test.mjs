@@ -12,6 +12,7 @@
 // deadline (WAIT_MS), never a sleep.
 //
 //   FRICTIONLAB_MOCK_RECORDING=FILE node tests/page_lang.test.mjs
+import { readdirSync, readFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
 import { startBuiltPage } from "./mock_server.mjs";
@@ -86,7 +87,16 @@ await check("a French browser gets the page in French", async () => {
   const offered = await page
     .getByTestId("language")
     .evaluate((select) => Array.from(select.options, (o) => `${o.value}:${o.textContent}`));
-  expect(offered.join(" ") === "en:English fr:Français", `the switcher offers ${offered}`);
+  // Every catalogue of assets/locales, by the language's name in itself (its language-name).
+  const catalogues = readdirSync(join(web, "../assets/locales"))
+    .filter((name) => name.endsWith(".ftl"))
+    .sort()
+    .map((name) => {
+      const ftl = readFileSync(join(web, "../assets/locales", name), "utf8");
+      return `${name.slice(0, -4)}:${/^language-name = (.*)$/m.exec(ftl)[1]}`;
+    });
+  expect(catalogues.length >= 2, `only ${catalogues} in assets/locales`);
+  expect(offered.join(" ") === catalogues.join(" "), `the switcher offers ${offered}`);
   expect((await page.getByTestId("language").inputValue()) === "fr", "French is not chosen");
   // A language chosen by the browser stays the browser's: the set-up's link does not carry it.
   const link = await page.getByTestId("setup-link").inputValue();

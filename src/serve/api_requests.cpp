@@ -62,6 +62,18 @@ bool is_student_name(const std::string& name) {
   return characters >= 1 && characters <= kMostNameCharacters;
 }
 
+namespace {
+
+// A student's name, or "" for none: the refusal of anything else, by `field`.
+std::optional<BodyRefusal> name_or_none_refused(const json& value, const char* field) {
+  const bool empty = value.is_string() && value.get<std::string>().empty();
+  if (value.is_string() && (empty || is_student_name(value.get<std::string>())))
+    return std::nullopt;
+  return BodyRefusal{name_expected() + ", or \"\" for none, found " + quoted(value), field};
+}
+
+}  // namespace
+
 std::variant<SessionBody, BodyRefusal> read_session_body(std::string_view text) {
   auto parsed = object_of(text);
   if (auto* refusal = std::get_if<BodyRefusal>(&parsed)) return *refusal;
@@ -97,9 +109,7 @@ std::variant<ControlCommand, BodyRefusal> read_control_body(std::string_view tex
   const json& body = std::get<json>(parsed);
   ControlCommand command;
   if (const auto name = body.find("name"); name != body.end()) {
-    const bool empty = name->is_string() && name->get<std::string>().empty();
-    if (!name->is_string() || (!empty && !is_student_name(name->get<std::string>())))
-      return BodyRefusal{name_expected() + ", or \"\" for none, found " + quoted(*name), "name"};
+    if (auto refusal = name_or_none_refused(*name, "name")) return *refusal;
     command.action = ControlCommand::Action::kName;
     command.name = name->get<std::string>();
     return command;
@@ -199,10 +209,7 @@ std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
     report.language = code;
   }
   if (const auto student = body.find("student"); student != body.end()) {
-    const bool empty = student->is_string() && student->get<std::string>().empty();
-    if (!student->is_string() || (!empty && !is_student_name(student->get<std::string>())))
-      return BodyRefusal{name_expected() + ", or \"\" for none, found " + quoted(*student),
-                         "student"};
+    if (auto refusal = name_or_none_refused(*student, "student")) return *refusal;
     report.student = student->get<std::string>();
   }
   const auto stopwatch = body.find("stopwatch");

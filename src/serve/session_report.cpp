@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "io/input_error.hpp"
 #include "lab/request/report_request.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
@@ -29,6 +30,8 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   try {
     return {200, report_of_runs({{session.scene(), files}}, request).html, nullptr};
   } catch (const RequestError& e) {
+    return {400, "", problems_json(e)};
+  } catch (const InputError& e) {
     return {400, "", problems_json(e)};
   } catch (const std::invalid_argument& e) {
     return {400, "", error_json(e.what())};

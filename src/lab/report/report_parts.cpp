@@ -9,73 +9,29 @@
 #include <nlohmann/json.hpp>
 
 #include "hall_log/measurement_file.hpp"
+#include "io/csv_table.hpp"
 #include "text/decimal.hpp"
-#include "text/text.hpp"
 
 namespace fl {
 namespace {
 
 using nlohmann::json;
 
-// A CSV's columns by their header's names; cells that are no number are NaN.
-struct CsvColumns {
-  std::vector<std::string> names;
-  std::vector<std::vector<std::string>> cells;  // rows
-
-  const std::vector<std::string>* row(std::size_t i) const { return &cells[i]; }
-  int column(std::string_view name) const {
-    for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == name) return static_cast<int>(i);
-    return -1;
-  }
-  std::vector<double> numbers(std::string_view name, const std::string& file) const {
-    const int c = column(name);
-    if (c < 0)
-      throw std::invalid_argument(
-          fmt::format("{}: expected a column {}, found none: is it a run's file?", file, name));
-    std::vector<double> out;
-    out.reserve(cells.size());
-    for (const auto& r : cells) {
-      double v = std::nan("");
-      if (static_cast<std::size_t>(c) < r.size()) {
-        const std::string& cell = r[static_cast<std::size_t>(c)];
-        const auto read = read_decimal(cell.data(), cell.data() + cell.size(), v);
-        if (read.ec != std::errc() || read.ptr != cell.data() + cell.size()) v = std::nan("");
-      }
-      out.push_back(v);
-    }
-    return out;
-  }
-};
-
-std::vector<std::string> split_commas(std::string_view line) {
-  std::vector<std::string> out;
-  std::size_t start = 0;
-  while (true) {
-    const std::size_t comma = line.find(',', start);
-    out.emplace_back(trim(line.substr(start, comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
-
-CsvColumns read_csv(const std::string& text) {
-  CsvColumns out;
-  std::size_t start = 0;
-  bool header = true;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string_view line = trim(std::string_view(text).substr(start, end - start));
-    start = end + 1;
-    if (line.empty()) continue;
-    if (header) {
-      out.names = split_commas(line);
-      header = false;
-    } else {
-      out.cells.push_back(split_commas(line));
-    }
+// A column of a run's CSV by its header's name, as numbers (NaN for a cell that is none).
+std::vector<double> column(const CsvTable& table, std::string_view name, const std::string& file) {
+  std::size_t c = 0;
+  while (c < table.header.size() && table.header[c].text != name) ++c;
+  if (c == table.header.size())
+    throw std::invalid_argument(
+        fmt::format("{}: expected a column {}, found none: is it a run's file?", file, name));
+  std::vector<double> out;
+  out.reserve(table.rows.size());
+  for (const auto& row : table.rows) {
+    const std::string& cell = row[c].text;
+    double v = std::nan("");
+    const auto read = read_decimal(cell.data(), cell.data() + cell.size(), v);
+    if (read.ec != std::errc() || read.ptr != cell.data() + cell.size()) v = std::nan("");
+    out.push_back(v);
   }
   return out;
 }
@@ -158,28 +114,29 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
   if (const ReportNumber seed = field(summary, "seed"); seed.value)
     part.set_up.push_back({"seed", fmt::format("{:.0f}", *seed.value)});
 
-  if (const auto trajectory = files("trajectory.csv")) {
-    const CsvColumns csv = read_csv(*trajectory);
-    ReportCurve x{"x (mm)", csv.numbers("t_s", "trajectory.csv"), {}};
-    for (double v : csv.numbers("x_m", "trajectory.csv")) x.value.push_back(v * 1e3);
+  if (const auto csv_text = files("trajectory.csv")) {
+    const CsvTable csv = parse_csv_table(*csv_text, "trajectory.csv");
+    ReportCurve x{"x (mm)", column(csv, "t_s", "trajectory.csv"), {}};
+    for (double v : column(csv, "x_m", "trajectory.csv")) x.value.push_back(v * 1e3);
     part.position = std::move(x);
   }
-  if (const auto hall = files("hall.csv")) {
-    const CsvColumns csv = read_csv(*hall);
-    ReportCurve signal{"Hall sensor (ADC counts)", {}, csv.numbers("adc", "hall.csv")};
-    for (double us : csv.numbers("t_us", "hall.csv")) signal.t_s.push_back(us * 1e-6);
+  if (const auto csv_text = files("hall.csv")) {
+    const CsvTable csv = parse_csv_table(*csv_text, "hall.csv");
+    ReportCurve signal{"Hall sensor (ADC counts)", {}, column(csv, "adc", "hall.csv")};
+    for (double us : column(csv, "t_us", "hall.csv")) signal.t_s.push_back(us * 1e-6);
     part.signal = std::move(signal);
   }
-  if (const auto periods = files("periods.csv")) {
-    const CsvColumns csv = read_csv(*periods);
-    const std::vector<double> start = csv.numbers("start_s", "periods.csv");
-    const std::vector<double> end = csv.numbers("end_s", "periods.csv");
-    const std::vector<double> period = csv.numbers("period_s", "periods.csv");
-    const int status = csv.column("status");
+  if (const auto csv_text = files("periods.csv")) {
+    const CsvTable csv = parse_csv_table(*csv_text, "periods.csv");
+    const std::vector<double> start = column(csv, "start_s", "periods.csv");
+    const std::vector<double> end = column(csv, "end_s", "periods.csv");
+    const std::vector<double> period = column(csv, "period_s", "periods.csv");
+    std::size_t status = 0;
+    while (status < csv.header.size() && csv.header[status].text != "status") ++status;
     for (std::size_t i = 0; i < period.size(); ++i)
       part.periods.push_back(
           {start[i], end[i], period[i],
-           status >= 0 && (*csv.row(i))[static_cast<std::size_t>(status)] == "accepted"});
+           status < csv.header.size() && csv.rows[i][status].text == "accepted"});
   }
   return part;
 }

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
+#include "io/text_file.hpp"
 #include "lab/report/report_html.hpp"
 #include "lab/request/lab_data.hpp"
 #include "text/message_catalogue.hpp"
@@ -25,22 +24,14 @@ std::string today_utc() {
                      static_cast<unsigned>(ymd.month()), static_cast<unsigned>(ymd.day()));
 }
 
-// A run's folder: its files by name, read when asked.
+// A run's folder: its files by name, read when asked (nullopt for one the run did not keep).
 RunFiles folder_files(const std::string& folder) {
   return [folder](const std::string& name) -> std::optional<std::string> {
-    std::ifstream in(std::filesystem::path(folder) / name, std::ios::binary);
-    if (!in) return std::nullopt;
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    const std::filesystem::path file = std::filesystem::path(folder) / name;
+    std::error_code error;
+    if (!std::filesystem::exists(file, error)) return std::nullopt;
+    return read_text_file(file.string(), "the run's file");
   };
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 bool is_run_folder(const std::string& input) {
@@ -98,8 +89,10 @@ ReportContent content_of(const ReportRequest& r) {
 
 ReportTexts report_texts(const std::string& assets, const std::string& language) {
   const std::filesystem::path locales = std::filesystem::path(asset_dir(assets)) / "locales";
-  return {MessageCatalogue::parse(read_file(locales / (language + ".ftl"))),
-          MessageCatalogue::parse(read_file(locales / "en.ftl"))};
+  return {MessageCatalogue::parse(
+              read_text_file((locales / (language + ".ftl")).string(), "the language's messages")),
+          MessageCatalogue::parse(
+              read_text_file((locales / "en.ftl").string(), "the English messages"))};
 }
 
 std::vector<std::string> report_languages(const std::string& assets) {

@@ -24,7 +24,6 @@ class MessageCatalogue {
   std::optional<std::string> format(std::string_view id,
                                     const std::map<std::string, std::string>& args = {}) const;
   bool has(std::string_view id) const { return messages_.contains(std::string(id)); }
-  std::size_t size() const { return messages_.size(); }
 
  private:
   std::map<std::string, std::string> messages_;  // id -> pattern, as written

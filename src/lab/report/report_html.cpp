@@ -144,8 +144,8 @@ std::string figures(const Writer& w, const ReportPart& part) {
                   w.t(part.simulated ? "report-hall-caption" : "report-measurement-caption"));
   }
   if (!part.periods.empty()) {
-    SvgSeries accepted{{}, {}, w.t("report-accepted"), kBlue, false, true};
-    SvgSeries rejected{{}, {}, w.t("report-discarded"), kOrange, false, true};
+    SvgSeries accepted{{}, {}, w.t("report-accepted"), kBlue, true};
+    SvgSeries rejected{{}, {}, w.t("report-discarded"), kOrange, true};
     for (const ReportPeriod& p : part.periods) {
       SvgSeries& into = p.accepted ? accepted : rejected;
       into.x.push_back(p.start_s);

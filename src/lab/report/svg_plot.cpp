@@ -147,14 +147,13 @@ std::string svg_line_plot(const SvgPlot& plot) {
       out += fmt::format("<g fill=\"{}\">{}</g>\n", s.color, points);
     else
       out += fmt::format(
-          "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\"{} points=\"{}\"/>\n", s.color,
-          s.dashed ? " stroke-dasharray=\"5 3\"" : "", points);
+          "<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"1.2\" points=\"{}\"/>\n", s.color,
+          points);
     if (s.label.empty()) continue;
     out += fmt::format(
         "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"{3}\" "
-        "stroke-width=\"2\"{4}/><text x=\"{5:.1f}\" y=\"{6:.1f}\" font-size=\"11\">{7}</text>\n",
-        legend_x, top + 12, legend_x + 18, s.color, s.dashed ? " stroke-dasharray=\"5 3\"" : "",
-        legend_x + 22, top + 16, html_text(s.label));
+        "stroke-width=\"2\"/><text x=\"{4:.1f}\" y=\"{5:.1f}\" font-size=\"11\">{6}</text>\n",
+        legend_x, top + 12, legend_x + 18, s.color, legend_x + 22, top + 16, html_text(s.label));
     legend_x += 40 + 6.5 * static_cast<double>(s.label.size());
   }
   out += "</svg>\n";

@@ -11,9 +11,8 @@ namespace fl {
 struct SvgSeries {
   std::vector<double> x;
   std::vector<double> y;
-  std::string label;  // in the legend ("" : none)
-  std::string color;  // a CSS colour
-  bool dashed = false;
+  std::string label;    // in the legend ("" : none)
+  std::string color;    // a CSS colour
   bool points = false;  // a dot at each value, no line between them
 };
 

@@ -430,6 +430,45 @@ serial-chosen-port = der gewählte serielle Port
 ## Das Versuchsprotokoll (frictionlab report, „Versuchsprotokoll“ auf der Seite): vom Labor selbst
 ## gelesen, daher ist jede Nachricht hier einfacher Text mit nur { $variable }-Platzhaltern.
 
+## Die eigenen Meldungen des Labors: was es ablehnt und warum.
+
+check-must-be-positive = muss positiv sein, gefunden: { $value }
+check-must-be-positive-in = muss positiv sein, gefunden: { $value } { $unit }
+check-length-must-be-positive = muss positiv sein, gefunden: { $value } m ({ $value_mm } mm)
+check-must-be-finite = muss endlich sein
+check-implausible = erwartet: { $what } von { $least } bis { $most }{ $unit } (der Aufbau des Artikels: { $paper }), gefunden: { $value }{ $unit }
+check-implausible-value = { $why }; prüfe den Wert und seine Einheit (eine Zahl ohne Einheit ist in SI)
+check-tilt = muss zwischen -30 und 30 Grad liegen, gefunden: { $degrees }° (ein Winkel ohne Einheit ist im Bogenmaß)
+check-solver-iterations = muss zwischen 1 und 10000 liegen, gefunden: { $iterations }
+check-step-resolves = erwartet: ein Zeitschritt, der die Schwingung auflöst, kürzer als ein Viertel ihrer Periode ({ $quarter } s für die dünne Platte), gefunden: { $step } s; nimm einen Schritt von 1 ms
+check-duration-one-step = muss mindestens einen Schritt von world.time_step ({ $step } s) dauern, gefunden: { $duration } s: ein Lauf ohne Schritt misst nichts
+check-duration-steps = braucht { $steps } Schritte, mehr als 10⁹; nimm einen größeren world.time_step oder eine kürzere Dauer
+check-speed-not-negative = muss größer oder gleich 0 sein, gefunden: { $speed } rad/s
+check-duty = muss zwischen 0 % und 100 % liegen, gefunden: { $duty_percent } %
+check-rollers-overlap = die Rollen überlappen sich: l = { $spacing_mm } mm ist nicht größer als die Summe ihrer Radien, { $radii_mm } mm
+check-no-oscillation = es gibt keine Schwingung: l = { $spacing_mm } mm ≤ 2 μk h_c = { $limit_mm } mm (μk = { $mu_k }, h_c = { $h_c_mm } mm); stelle die Rollen weiter auseinander, senke den Schwerpunkt der Platte oder verringere μk
+check-plate-too-short = die Platte ({ $length_mm } mm) ist kürzer als l + 2 × Amplitude = { $needed_mm } mm: sie würde eine Rolle verlassen; nimm eine längere Platte oder eine kleinere Anfangsauslenkung
+check-drive-coupling = das Getriebe des Antriebs (ein Zahnrad mit { $roller_teeth } Zähnen an jeder Rolle und zwei Zwischenräder mit { $idler_teeth } Zähnen) erlaubt Achsabstände von { $least_mm } bis { $most_mm } mm, gefunden: { $spacing_mm } mm; wähle einen Abstand in diesem Bereich oder andere Zahnräder in drive.coupling
+check-sensor-in-magnet-path = der Sensor liegt in dem Volumen, das Magnet { $magnet } überstreicht, wenn sich die Platte bewegt; setze ihn über die Oberseite des Magneten, auf { $top_mm } mm
+check-magnetometer-in-plate-path = Handy { $phone }: das Magnetometer bei [{ $x_mm }, { $y_mm }, { $z_mm }] mm liegt in dem Volumen, das die Platte überstreicht; lege das Handy neben den Aufbau (|y| über { $half_width_mm } mm)
+check-magnetometer-in-magnet-path = Handy { $phone }: das Magnetometer liegt in dem Volumen, das Magnet { $magnet } überstreicht, wenn sich die Platte bewegt; lege das Handy neben den Aufbau
+quantity-spacing = den Achsabstand der Rollen l
+quantity-mu-k = μk
+quantity-h-c = die Schwerpunkthöhe h_c
+quantity-period = die Periode T
+quantity-amplitude = die Amplitude A
+quantity-gravity = die Fallbeschleunigung g
+quantity-roller-speed = die Drehzahl der Rollen
+quantity-roller-radius = den Rollenradius
+paper-spacing = 89 mm
+paper-mu-k = 0,2 bis 10
+paper-h-c = einige mm
+paper-period = 0,3 bis 1 s
+paper-amplitude = 20 mm
+paper-gravity = 9,81 m/s²
+paper-roller-speed = 1600 U/min
+paper-roller-radius = 10 mm
+
 report-title = Versuchsprotokoll: der Reibungsoszillator
 report-decimal-sign = ,
 report-method = Methode

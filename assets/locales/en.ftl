@@ -426,6 +426,52 @@ serial-none-chosen = no port chosen: press Connect again and choose the rig's Ar
 serial-not-opened = the port could not be opened ({ $why }): close the Arduino IDE's serial monitor or any other page using it, and connect again
 serial-chosen-port = the chosen serial port
 
+## The lab's own messages: what it refuses and why, said by the lab (src/scene/scene_checks.cpp,
+## src/core/plausible_range.cpp, src/scene/drive_layout.cpp) on the command line and here. The lab
+## reads this file's English itself, so each message here is plain text with { $variable }
+## placeables only; other languages may use all of Fluent. A number comes in the unit its name
+## says ($spacing_mm: millimetres), written with six significant digits at most; $unit is a
+## unit's symbol with its space before it (" mm"), or nothing.
+
+check-must-be-positive = must be positive, found { $value }
+check-must-be-positive-in = must be positive, found { $value } { $unit }
+check-length-must-be-positive = must be positive, found { $value } m ({ $value_mm } mm)
+check-must-be-finite = must be finite
+check-implausible = expected { $what } from { $least } to { $most }{ $unit } (the paper's rig: { $paper }), found { $value }{ $unit }
+check-implausible-value = { $why }; check the value and its unit (a plain number is SI)
+check-tilt = must be between -30 and 30 degrees, found { $degrees } deg (an angle without a unit is in radians)
+check-solver-iterations = must be between 1 and 10000, found { $iterations }
+check-step-resolves = expected a step that resolves the oscillation, shorter than a quarter of its period ({ $quarter } s for the thin plate), found { $step } s; use a step of 1 ms
+check-duration-one-step = must be at least one step of world.time_step ({ $step } s), found { $duration } s: a run of no step measures nothing
+check-duration-steps = needs { $steps } steps, more than 1e9; use a larger world.time_step or a shorter duration
+check-speed-not-negative = must be >= 0, found { $speed } rad/s
+check-duty = must lie between 0 % and 100 %, found { $duty_percent } %
+check-rollers-overlap = the rollers overlap: l = { $spacing_mm } mm is not more than their radii's sum { $radii_mm } mm
+check-no-oscillation = no oscillation exists: l = { $spacing_mm } mm <= 2 mu_k h_c = { $limit_mm } mm (mu_k = { $mu_k }, h_c = { $h_c_mm } mm); widen the rollers, lower the plate's centre of mass or lower mu_k
+check-plate-too-short = the plate ({ $length_mm } mm) is shorter than l + 2 x amplitude = { $needed_mm } mm: it would leave a roller; use a longer plate or a smaller offset
+check-drive-coupling = the drive's coupling (a { $roller_teeth }-tooth roller gear and two { $idler_teeth }-tooth idlers) spans roller spacings from { $least_mm } to { $most_mm } mm, found { $spacing_mm } mm; choose a spacing in that span, or other gears in drive.coupling
+check-sensor-in-magnet-path = the sensor lies inside the volume magnet { $magnet } sweeps as the plate moves; raise it above the magnet's top at { $top_mm } mm
+check-magnetometer-in-plate-path = phone { $phone }: the magnetometer at [{ $x_mm }, { $y_mm }, { $z_mm }] mm lies inside the volume the plate sweeps; lay the phone beside the rig (|y| above { $half_width_mm } mm)
+check-magnetometer-in-magnet-path = phone { $phone }: the magnetometer lies inside the volume magnet { $magnet } sweeps as the plate moves; lay the phone beside the rig
+# The quantities core/plausible_range.hpp bounds, as check-implausible's $what.
+quantity-spacing = the roller spacing l
+quantity-mu-k = mu_k
+quantity-h-c = the centre-of-mass height h_c
+quantity-period = the period T
+quantity-amplitude = the amplitude A
+quantity-gravity = gravity g
+quantity-roller-speed = the rollers' speed
+quantity-roller-radius = the roller radius
+# The paper's rig's values of those quantities, as check-implausible's $paper.
+paper-spacing = 89 mm
+paper-mu-k = 0.2 to 10
+paper-h-c = a few mm
+paper-period = 0.3 to 1 s
+paper-amplitude = 20 mm
+paper-gravity = 9.81 m/s^2
+paper-roller-speed = 1600 rpm
+paper-roller-radius = 10 mm
+
 ## The lab report (frictionlab report, the page's "Lab report"): read by the lab itself, so each
 ## message here is plain text with { $variable } placeables only.
 

@@ -433,6 +433,45 @@ serial-chosen-port = el puerto serie elegido
 ## El informe de laboratorio (frictionlab report, el «Informe de laboratorio» de la página): lo
 ## lee el propio laboratorio, así que cada mensaje aquí es texto plano con solo { $variable }.
 
+## Los mensajes del propio laboratorio: lo que rechaza y por qué.
+
+check-must-be-positive = debe ser un valor positivo, se encontró { $value }
+check-must-be-positive-in = debe ser un valor positivo, se encontró { $value } { $unit }
+check-length-must-be-positive = debe ser un valor positivo, se encontró { $value } m ({ $value_mm } mm)
+check-must-be-finite = debe ser finito
+check-implausible = se esperaba { $what } de { $least } a { $most }{ $unit } (el montaje del artículo: { $paper }), se encontró { $value }{ $unit }
+check-implausible-value = { $why }; revisa el valor y su unidad (un número sin unidad está en SI)
+check-tilt = debe estar entre -30 y 30 grados, se encontró { $degrees } ° (un ángulo sin unidad está en radianes)
+check-solver-iterations = debe estar entre 1 y 10000, se encontró { $iterations }
+check-step-resolves = se esperaba un paso que resuelva la oscilación, más corto que un cuarto de su periodo ({ $quarter } s para la placa delgada), se encontró { $step } s; usa un paso de 1 ms
+check-duration-one-step = debe durar al menos un paso de world.time_step ({ $step } s), se encontró { $duration } s: una simulación sin pasos no mide nada
+check-duration-steps = necesita { $steps } pasos, más de 10⁹; usa un world.time_step mayor o una duración más corta
+check-speed-not-negative = debe ser mayor o igual que 0, se encontró { $speed } rad/s
+check-duty = debe estar entre 0 % y 100 %, se encontró { $duty_percent } %
+check-rollers-overlap = los rodillos se solapan: l = { $spacing_mm } mm no supera la suma de sus radios, { $radii_mm } mm
+check-no-oscillation = no existe oscilación: l = { $spacing_mm } mm ≤ 2 μk h_c = { $limit_mm } mm (μk = { $mu_k }, h_c = { $h_c_mm } mm); separa más los rodillos, baja el centro de masas de la placa o reduce μk
+check-plate-too-short = la placa ({ $length_mm } mm) es más corta que l + 2 × amplitud = { $needed_mm } mm: dejaría un rodillo; usa una placa más larga o un desplazamiento inicial menor
+check-drive-coupling = el engranaje de la transmisión (una rueda de { $roller_teeth } dientes en cada rodillo y dos ruedas intermedias de { $idler_teeth } dientes) admite separaciones de { $least_mm } a { $most_mm } mm, se encontró { $spacing_mm } mm; elige una separación en ese intervalo u otras ruedas en drive.coupling
+check-sensor-in-magnet-path = el sensor está dentro del volumen que barre el imán { $magnet } al moverse la placa; súbelo por encima de la parte superior del imán, a { $top_mm } mm
+check-magnetometer-in-plate-path = móvil { $phone }: el magnetómetro en [{ $x_mm }, { $y_mm }, { $z_mm }] mm está dentro del volumen que barre la placa; pon el móvil junto al montaje (|y| mayor que { $half_width_mm } mm)
+check-magnetometer-in-magnet-path = móvil { $phone }: el magnetómetro está dentro del volumen que barre el imán { $magnet } al moverse la placa; pon el móvil junto al montaje
+quantity-spacing = la separación de los rodillos l
+quantity-mu-k = μk
+quantity-h-c = la altura del centro de masas h_c
+quantity-period = el periodo T
+quantity-amplitude = la amplitud A
+quantity-gravity = la gravedad g
+quantity-roller-speed = la velocidad de los rodillos
+quantity-roller-radius = el radio de los rodillos
+paper-spacing = 89 mm
+paper-mu-k = 0,2 a 10
+paper-h-c = unos pocos mm
+paper-period = 0,3 a 1 s
+paper-amplitude = 20 mm
+paper-gravity = 9,81 m/s²
+paper-roller-speed = 1600 rpm
+paper-roller-radius = 10 mm
+
 report-title = Informe de laboratorio: el oscilador de rozamiento
 report-decimal-sign = ,
 report-method = Método

@@ -420,6 +420,45 @@ serial-chosen-port = le port série choisi
 ## Le compte rendu (frictionlab report, « Compte rendu » de la page) : lu par le laboratoire
 ## lui-même, chaque message ici est du texte simple, avec seulement des { $variable }.
 
+## Les messages du laboratoire lui-même : ce qu’il refuse et pourquoi.
+
+check-must-be-positive = doit être une valeur positive, trouvé { $value }
+check-must-be-positive-in = doit être une valeur positive, trouvé { $value } { $unit }
+check-length-must-be-positive = doit être une valeur positive, trouvé { $value } m ({ $value_mm } mm)
+check-must-be-finite = doit être fini
+check-implausible = attendu { $what } de { $least } à { $most }{ $unit } (le montage de l’article : { $paper }), trouvé { $value }{ $unit }
+check-implausible-value = { $why } ; vérifiez la valeur et son unité (un nombre sans unité est en SI)
+check-tilt = doit être compris entre -30 et 30 degrés, trouvé { $degrees } ° (un angle sans unité est en radians)
+check-solver-iterations = doit être compris entre 1 et 10000, trouvé { $iterations }
+check-step-resolves = attendu un pas qui résout l’oscillation, plus court qu’un quart de sa période ({ $quarter } s pour la plaque mince), trouvé { $step } s ; prenez un pas de 1 ms
+check-duration-one-step = doit durer au moins un pas de world.time_step ({ $step } s), trouvé { $duration } s : une simulation sans pas ne mesure rien
+check-duration-steps = demande { $steps } pas, plus de 10⁹ ; prenez un world.time_step plus grand ou une durée plus courte
+check-speed-not-negative = doit être positive ou nulle, trouvé { $speed } rad/s
+check-duty = doit être compris entre 0 % et 100 %, trouvé { $duty_percent } %
+check-rollers-overlap = les rouleaux se chevauchent : l = { $spacing_mm } mm ne dépasse pas la somme de leurs rayons, { $radii_mm } mm
+check-no-oscillation = aucune oscillation n’existe : l = { $spacing_mm } mm ≤ 2 μk h_c = { $limit_mm } mm (μk = { $mu_k }, h_c = { $h_c_mm } mm) ; écartez les rouleaux, abaissez le centre de masse de la plaque ou diminuez μk
+check-plate-too-short = la plaque ({ $length_mm } mm) est plus courte que l + 2 × amplitude = { $needed_mm } mm : elle quitterait un rouleau ; prenez une plaque plus longue ou un décalage initial plus petit
+check-drive-coupling = l’engrenage de l’entraînement (une roue de { $roller_teeth } dents sur chaque rouleau et deux roues intermédiaires de { $idler_teeth } dents) permet un entraxe de { $least_mm } à { $most_mm } mm, trouvé { $spacing_mm } mm ; choisissez un entraxe dans cet intervalle, ou d’autres roues dans drive.coupling
+check-sensor-in-magnet-path = le capteur se trouve dans le volume que balaie l’aimant { $magnet } quand la plaque bouge ; placez-le au-dessus du haut de l’aimant, à { $top_mm } mm
+check-magnetometer-in-plate-path = téléphone { $phone } : le magnétomètre en [{ $x_mm } ; { $y_mm } ; { $z_mm }] mm se trouve dans le volume que balaie la plaque ; posez le téléphone à côté du montage (|y| au-delà de { $half_width_mm } mm)
+check-magnetometer-in-magnet-path = téléphone { $phone } : le magnétomètre se trouve dans le volume que balaie l’aimant { $magnet } quand la plaque bouge ; posez le téléphone à côté du montage
+quantity-spacing = l’entraxe des rouleaux l
+quantity-mu-k = μk
+quantity-h-c = la hauteur du centre de masse h_c
+quantity-period = la période T
+quantity-amplitude = l’amplitude A
+quantity-gravity = la pesanteur g
+quantity-roller-speed = la vitesse des rouleaux
+quantity-roller-radius = le rayon des rouleaux
+paper-spacing = 89 mm
+paper-mu-k = 0,2 à 10
+paper-h-c = quelques mm
+paper-period = 0,3 à 1 s
+paper-amplitude = 20 mm
+paper-gravity = 9,81 m/s²
+paper-roller-speed = 1600 tr/min
+paper-roller-radius = 10 mm
+
 report-title = Compte rendu : l’oscillateur à frottement
 report-decimal-sign = ,
 report-method = Méthode

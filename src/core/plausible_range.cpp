@@ -6,12 +6,19 @@
 
 namespace fl {
 
-std::optional<std::string> implausible(double value, const PlausibleRange& range) {
+std::optional<Said> implausible_said(double value, const PlausibleRange& range) {
   if (std::isfinite(value) && value >= range.least && value <= range.most) return std::nullopt;
   const std::string unit = range.unit.empty() ? "" : " " + std::string(range.unit);
-  return describe("expected ", range.what, " from ", range.least / range.per_unit, " to ",
-                  range.most / range.per_unit, unit, " (the paper's rig: ", range.paper,
-                  "), found ", value / range.per_unit, unit);
+  return said(
+      "check-implausible",
+      {arg("what", said(std::string(range.what))), arg("least", range.least / range.per_unit),
+       arg("most", range.most / range.per_unit), arg("unit", unit),
+       arg("paper", said(std::string(range.paper))), arg("value", value / range.per_unit)});
+}
+
+std::optional<std::string> implausible(double value, const PlausibleRange& range) {
+  if (const std::optional<Said> why = implausible_said(value, range)) return english(*why);
+  return std::nullopt;
 }
 
 std::string plain_number_advice(double value, std::string_view text, const PlausibleRange& range) {

@@ -10,22 +10,23 @@
 #include <string>
 #include <string_view>
 
+#include "text/said.hpp"
+
 namespace fl {
 
 struct PlausibleRange {
-  std::string_view what;   // "the roller spacing l"
+  std::string_view what;   // its message ("quantity-spacing": "quantity-spacing")
   double least;            // SI
   double most;             // SI
   std::string_view unit;   // the unit the message shows it in ("mm")
   double per_unit;         // SI per that unit (1e-3 for mm)
-  std::string_view paper;  // the paper's rig's value, for scale ("89 mm")
+  std::string_view paper;  // the message of the paper's rig's value, for scale ("paper-spacing")
 };
 
-inline constexpr PlausibleRange kSpacingRange{
-    "the roller spacing l", 1e-3, 2.0, "mm", 1e-3, "89 mm"};
-inline constexpr PlausibleRange kMuKRange{"mu_k", 1e-3, 100.0, "", 1.0, "0.2 to 10"};
-inline constexpr PlausibleRange kHcRange{
-    "the centre-of-mass height h_c", 0.0, 0.5, "mm", 1e-3, "a few mm"};
+inline constexpr PlausibleRange kSpacingRange{"quantity-spacing", 1e-3, 2.0, "mm", 1e-3,
+                                              "paper-spacing"};
+inline constexpr PlausibleRange kMuKRange{"quantity-mu-k", 1e-3, 100.0, "", 1.0, "paper-mu-k"};
+inline constexpr PlausibleRange kHcRange{"quantity-h-c", 0.0, 0.5, "mm", 1e-3, "paper-h-c"};
 
 namespace plausible_detail {
 // sqrt for the ranges below, at compile time (Newton's iteration from above).
@@ -47,28 +48,31 @@ constexpr double thin_period(double spacing, double mu_k) {
 // rig's at any spacing; a mu_k derived from a period within them is checked against kMuKRange
 // too, at the rig's own l and g.
 inline constexpr PlausibleRange kPeriodRange{
-    "the period T",
+    "quantity-period",
     plausible_detail::thin_period(kSpacingRange.least, kMuKRange.most),
     plausible_detail::thin_period(kSpacingRange.most, kMuKRange.least),
     "s",
     1.0,
-    "0.3 to 1 s"};
+    "paper-period"};
 // The plate's amplitude: beyond the longest spacing the plate has long left the rollers.
 inline constexpr PlausibleRange kAmplitudeRange{
-    "the amplitude A", 0.0, kSpacingRange.most, "mm", 1e-3, "20 mm"};
-inline constexpr PlausibleRange kGravityRange{"gravity g", 0.1, 100.0, "m/s^2", 1.0, "9.81 m/s^2"};
-inline constexpr PlausibleRange kRollerSpeedRange{"the rollers' speed",
+    "quantity-amplitude", 0.0, kSpacingRange.most, "mm", 1e-3, "paper-amplitude"};
+inline constexpr PlausibleRange kGravityRange{"quantity-gravity", 0.1, 100.0, "m/s^2", 1.0,
+                                              "paper-gravity"};
+inline constexpr PlausibleRange kRollerSpeedRange{"quantity-roller-speed",
                                                   0.0,
                                                   1e5 * 2.0 * 3.14159265358979323846 / 60.0,
                                                   "rpm",
                                                   2.0 * 3.14159265358979323846 / 60.0,
-                                                  "1600 rpm"};
-inline constexpr PlausibleRange kRollerRadiusRange{
-    "the roller radius", 1e-4, 0.5, "mm", 1e-3, "10 mm"};
+                                                  "paper-roller-speed"};
+inline constexpr PlausibleRange kRollerRadiusRange{"quantity-roller-radius", 1e-4, 0.5, "mm", 1e-3,
+                                                   "paper-roller-radius"};
 
 // Why `value` [SI] is beyond the range ("expected the roller spacing l from 1 to 2000 mm (the
 // paper's rig: 89 mm), found 89000 mm"), or nothing when it is within it. NaN is beyond it.
 std::optional<std::string> implausible(double value, const PlausibleRange& range);
+// The same, as the lab says it (check-implausible).
+std::optional<Said> implausible_said(double value, const PlausibleRange& range);
 
 // For a plain number (SI) beyond the range, as written (`text`): the advice that the unit a rig
 // measures it in would bring it within (": a plain number is SI, so 790 was read as 790 s; write

@@ -48,4 +48,14 @@ InputError::InputError(SourceLocation where, std::string_view what)
     : std::runtime_error(escape_invalid_utf8(format_diagnostic(where, what))),
       where_(std::move(where)) {}
 
+InputError::InputError(SourceLocation where, Said message)
+    : InputError(std::move(where), english(message)) {
+  said_ = std::move(message);
+}
+
+InputError::InputError(SourceLocation where, std::string_view what, std::optional<Said> message)
+    : InputError(std::move(where), what) {
+  said_ = std::move(message);
+}
+
 }  // namespace fl

@@ -10,6 +10,8 @@
 #include <string_view>
 #include <utility>
 
+#include "text/said.hpp"
+
 namespace fl {
 
 struct SourceLocation {
@@ -30,13 +32,20 @@ struct SourceLocation {
 };
 
 // what() is the located message, its bytes that are not UTF-8 (a file's name) written as \xNN.
+// An error made from a Said keeps it, so that a front end can say it in its reader's language.
 class InputError : public std::runtime_error {
  public:
   InputError(SourceLocation where, std::string_view what);
+  InputError(SourceLocation where, Said message);
+  InputError(SourceLocation where, std::string_view what, std::optional<Said> message);
   const SourceLocation& where() const { return where_; }
+  // The message without its location, as its catalogue id and values; nullopt where it was
+  // written in English only.
+  const std::optional<Said>& said() const { return said_; }
 
  private:
   SourceLocation where_;
+  std::optional<Said> said_;
 };
 
 // "file:line:column: error: what" (parts that are unknown are left out); for a field,

@@ -56,6 +56,11 @@ void YamlNode::fail(std::string_view what) const {
   throw InputError(location(), message);
 }
 
+void YamlNode::fail(const Said& what) const {
+  const std::string message = path_.empty() ? english(what) : path_ + ": " + english(what);
+  throw InputError(location(), message, what);
+}
+
 void YamlNode::expect_map() const {
   if (!node_.IsMap()) fail("expected a map of keys, found " + found_text(node_));
 }

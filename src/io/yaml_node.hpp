@@ -16,6 +16,7 @@
 
 #include "core/units.hpp"
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -34,6 +35,8 @@ class YamlNode {
   const std::string& path() const { return path_; }
   SourceLocation location() const;
   [[noreturn]] void fail(std::string_view what) const;
+  // The same, said in the catalogues (text/said.hpp).
+  [[noreturn]] void fail(const Said& what) const;
 
   bool is_map() const { return node_.IsMap(); }
   bool is_sequence() const { return node_.IsSequence(); }

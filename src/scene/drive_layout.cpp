@@ -13,6 +13,20 @@ CouplingSpan coupling_span(const DriveDesc& drive) {
   return {2.0 * ri, 2.0 * rr + 4.0 * ri};
 }
 
+std::optional<Said> drive_coupling_problem(const Scene& scene) {
+  const DriveDesc& drive = scene.drive.value();
+  const double l = scene.rollers.spacing;
+  const double rr = drive.gear(drive.roller_gear).pitch_radius;
+  const double ri = drive.gear(drive.idler_gear).pitch_radius;
+  const double half_run = 0.5 * l - ri;  // horizontal distance roller axis to idler axis
+  if (half_run >= 0.0 && rr + ri >= half_run) return std::nullopt;
+  const CouplingSpan span = coupling_span(drive);
+  return said("check-drive-coupling",
+              {arg("roller_teeth", drive.roller_gear), arg("idler_teeth", drive.idler_gear),
+               arg("least_mm", span.least * 1e3), arg("most_mm", span.most * 1e3),
+               arg("spacing_mm", l * 1e3)});
+}
+
 DriveLayout drive_layout(const Scene& scene) {
   const DriveDesc& drive = scene.drive.value();
   const double l = scene.rollers.spacing;
@@ -29,14 +43,8 @@ DriveLayout drive_layout(const Scene& scene) {
   const double ri = drive.gear(drive.idler_gear).pitch_radius;
   const double reach = rr + ri;          // roller axis to idler axis
   const double half_run = 0.5 * l - ri;  // horizontal distance roller axis to idler axis
-  if (half_run < 0.0 || reach < half_run) {
-    const CouplingSpan span = coupling_span(drive);
-    throw std::invalid_argument(
-        describe("the drive's coupling (a ", drive.roller_gear, "-tooth roller gear and two ",
-                 drive.idler_gear, "-tooth idlers) spans roller spacings from ", span.least * 1e3,
-                 " to ", span.most * 1e3, " mm, found ", l * 1e3,
-                 " mm; choose a spacing in that span, or other gears in drive.coupling"));
-  }
+  if (const std::optional<Said> why = drive_coupling_problem(scene))
+    throw std::invalid_argument(english(*why));
   const double drop = std::sqrt(reach * reach - half_run * half_run);
   layout.shafts.push_back({"idler 1", -ri, -a - drop});
   layout.shafts.push_back({"idler 2", ri, -a - drop});

@@ -6,10 +6,12 @@
 // typed in.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/scene.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -45,6 +47,10 @@ struct CouplingSpan {
   double most = 0.0;   // m
 };
 CouplingSpan coupling_span(const DriveDesc& drive);
+
+// Why the idlers cannot reach across the rollers' spacing (outside coupling_span); nullopt when
+// they can.
+std::optional<Said> drive_coupling_problem(const Scene& scene);
 
 // Throws std::invalid_argument when the idlers cannot reach across the rollers' spacing (outside
 // coupling_span).

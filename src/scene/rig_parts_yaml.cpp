@@ -126,7 +126,7 @@ DriveDesc read_drive(const YamlNode& node, const CatalogGetter& catalog) {
     if (!(d.motor.stall_torque > 0.0)) m->at("stall_torque").fail("must be positive");
     if (!(d.motor.inertia > 0.0)) m->at("inertia").fail("must be positive");
     if (d.motor.duty < 0.0 || d.motor.duty > 1.0)
-      m->at("duty").fail("must lie between 0 % and 100 %");
+      m->at("duty").fail(said("check-duty", {arg("duty_percent", 100.0 * d.motor.duty)}));
     if (m->has("duty") && m->has("duty_ramp"))
       m->at("duty_ramp")
           .fail("give duty (constant) or duty_ramp (over time), not both; remove one of the keys");

@@ -25,24 +25,34 @@ class Checks {
  public:
   explicit Checks(std::vector<SceneProblem>& problems) : problems_(problems) {}
 
+  // A problem said in English only (a front end shows it as written).
   void need(bool ok, const char* key, std::string message,
             std::vector<std::string> involves = {}) const {
-    if (!ok) problems_.push_back({key, std::move(message), std::move(involves)});
+    if (!ok) problems_.push_back({key, std::move(message), std::nullopt, std::move(involves)});
+  }
+  // A problem the catalogues say in each language (text/said.hpp).
+  void need(bool ok, const char* key, const Said& message,
+            std::vector<std::string> involves = {}) const {
+    if (!ok) problems_.push_back({key, english(message), message, std::move(involves)});
   }
   // A value that must be positive, in its SI unit; a length also in millimetres, as a student
   // gives it.
   void positive(double v, const char* key, const char* unit = "") const {
-    const std::string as_given =
-        std::string_view(unit) == "m" && std::isfinite(v) ? describe(" (", v * 1e3, " mm)") : "";
-    need(finite_positive(v), key,
-         describe("must be positive, found ", v, unit[0] != '\0' ? " " : "", unit, as_given));
+    if (finite_positive(v)) return;
+    if (std::string_view(unit) == "m" && std::isfinite(v))
+      need(false, key,
+           said("check-length-must-be-positive", {arg("value", v), arg("value_mm", v * 1e3)}));
+    else if (unit[0] != '\0')
+      need(false, key, said("check-must-be-positive-in", {arg("value", v), arg("unit", unit)}));
+    else
+      need(false, key, said("check-must-be-positive", {arg("value", v)}));
   }
   // Beyond any bench (core/plausible_range.hpp): a slip of the unit or the keyboard, refused
   // before it is computed with (a plain 89 is 89 m; 1e300 rpm).
   void plausible(double v, const PlausibleRange& range, const char* key) const {
     if (!std::isfinite(v) || v <= 0.0) return;  // the checks before and after say those
-    if (const std::optional<std::string> why = implausible(v, range))
-      need(false, key, *why + "; check the value and its unit (a plain number is SI)");
+    if (std::optional<Said> why = implausible_said(v, range))
+      need(false, key, said("check-implausible-value", {arg("why", std::move(*why))}));
   }
   // A ramp: times from 0 s, increasing; values from `least` to `most`.
   void ramp(const std::vector<RampPoint>& points, const char* key, double least, double most,
@@ -85,33 +95,28 @@ void check_world(const Scene& s, const Checks& c) {
   // A rig tilted beyond 30 degrees is no bench's slip of the level; at 90 the rollers carry
   // nothing.
   c.need(std::isfinite(s.world.tilt) && std::fabs(s.world.tilt) <= kPi / 6.0, "world.tilt",
-         describe("must be between -30 and 30 degrees, found ", s.world.tilt * 180.0 / kPi,
-                  " deg (an angle without a unit is in radians)"));
+         said("check-tilt", {arg("degrees", s.world.tilt * 180.0 / kPi)}));
   c.positive(s.world.time_step, "world.time_step", "s");
   c.positive(s.world.duration, "world.duration", "s");
   c.need(s.world.solver_iterations >= 1 && s.world.solver_iterations <= 10000,
          "world.solver_iterations",
-         describe("must be between 1 and 10000, found ", s.world.solver_iterations));
+         said("check-solver-iterations", {arg("iterations", s.world.solver_iterations)}));
   // A step of a quarter period or more cannot follow the plate (omega dt >= pi / 2): the
   // thin plate's period, which any plate with a restoring force has at least roughly.
   if (finite_positive(s.world.time_step) && finite_positive(s.rollers.spacing) &&
       finite_positive(s.friction.mu_k) && finite_positive(s.world.gravity)) {
     const double quarter = 0.25 * period_thin(s.rollers.spacing, s.friction.mu_k, s.world.gravity);
     c.need(s.world.time_step < quarter, "world.time_step",
-           describe("expected a step that resolves the oscillation, shorter than a quarter of its "
-                    "period (",
-                    quarter, " s for the thin plate), found ", s.world.time_step,
-                    " s; use a step of 1 ms"),
+           said("check-step-resolves", {arg("quarter", quarter), arg("step", s.world.time_step)}),
            {"rollers.spacing", "friction.mu_k", "world.gravity"});
   }
   if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
     c.need(s.world.duration >= s.world.time_step, "world.duration",
-           describe("must be at least one step of world.time_step (", s.world.time_step,
-                    " s), found ", s.world.duration, " s: a run of no step measures nothing"));
+           said("check-duration-one-step",
+                {arg("step", s.world.time_step), arg("duration", s.world.duration)}));
   if (finite_positive(s.world.time_step) && finite_positive(s.world.duration))
     c.need(s.world.duration / s.world.time_step <= 1e9, "world.duration",
-           describe("needs ", s.world.duration / s.world.time_step,
-                    " steps, more than 1e9; use a larger world.time_step or a shorter duration"));
+           said("check-duration-steps", {arg("steps", s.world.duration / s.world.time_step)}));
 }
 
 // The rollers' shape and mounting, and every value against the bench's ranges.
@@ -171,7 +176,7 @@ void check_warming(const Scene& s, const Checks& c) {
 // The rollers' speeds and ramps; whether the ramps hold (the largest speed is read only then).
 bool check_roller_speeds(const Scene& s, const Checks& c) {
   c.need(std::isfinite(s.rollers.speed) && s.rollers.speed >= 0.0, "rollers.speed",
-         describe("must be >= 0, found ", s.rollers.speed, " rad/s"));
+         said("check-speed-not-negative", {arg("speed", s.rollers.speed)}));
   if (const std::optional<double>& second = s.rollers.speed_roller_1) {
     c.need(std::isfinite(*second) && *second >= 0.0, "rollers.speed",
            describe("roller 1's speed must be >= 0, found ", *second, " rad/s"));
@@ -207,9 +212,8 @@ void check_plate(const Scene& s, const Checks& c) {
   if (finite_positive(s.rollers.spacing) && finite_positive(s.rollers.radius) &&
       finite_positive(radius_1))
     c.need(s.rollers.spacing > s.rollers.radius + radius_1, "rollers.spacing",
-           describe("the rollers overlap: l = ", s.rollers.spacing * 1e3,
-                    " mm is not more than their radii's sum ", 1e3 * (s.rollers.radius + radius_1),
-                    " mm"));
+           said("check-rollers-overlap", {arg("spacing_mm", s.rollers.spacing * 1e3),
+                                          arg("radii_mm", 1e3 * (s.rollers.radius + radius_1))}));
   c.positive(s.plate.length, "plate.length", "m");
   c.positive(s.plate.width, "plate.width", "m");
   c.positive(s.plate.thickness, "plate.thickness", "m");
@@ -225,7 +229,7 @@ void check_plate(const Scene& s, const Checks& c) {
          "plate.payload.x",
          describe("must lie on the plate, within half its length (", 0.5e3 * s.plate.length,
                   " mm) of its middle, found ", s.plate.payload.x * 1e3, " mm"));
-  c.need(std::isfinite(s.plate.offset), "plate.offset", "must be finite");
+  c.need(std::isfinite(s.plate.offset), "plate.offset", said("check-must-be-finite"));
   c.need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
 }
 
@@ -262,9 +266,9 @@ std::optional<double> check_motion(const Scene& s, const Checks& c) {
   const bool exploring = s.expected_regime.has_value();
   if (!has_restoring_force(l, mu, pm.h_c) && !exploring) {
     c.need(false, "rollers.spacing",
-           describe("no oscillation exists: l = ", l * 1e3, " mm <= 2 mu_k h_c = ",
-                    2e3 * mu * pm.h_c, " mm (mu_k = ", mu, ", h_c = ", pm.h_c * 1e3,
-                    " mm); widen the rollers, lower the plate's centre of mass or lower mu_k"));
+           said("check-no-oscillation",
+                {arg("spacing_mm", l * 1e3), arg("limit_mm", 2e3 * mu * pm.h_c), arg("mu_k", mu),
+                 arg("h_c_mm", pm.h_c * 1e3)}));
     return std::nullopt;
   }
   const double amplitude =
@@ -273,9 +277,8 @@ std::optional<double> check_motion(const Scene& s, const Checks& c) {
                                  angular_frequency(l, mu, pm.h_c, s.world.gravity))
           : std::fabs(s.plate.offset);
   c.need(exploring || 0.5 * s.plate.length > 0.5 * l + amplitude, "plate.length",
-         describe("the plate (", s.plate.length * 1e3,
-                  " mm) is shorter than l + 2 x amplitude = ", (l + 2.0 * amplitude) * 1e3,
-                  " mm: it would leave a roller; use a longer plate or a smaller offset"),
+         said("check-plate-too-short", {arg("length_mm", s.plate.length * 1e3),
+                                        arg("needed_mm", (l + 2.0 * amplitude) * 1e3)}),
          {"rollers.spacing", "plate.offset", "plate.velocity"});
   return amplitude;
 }
@@ -283,13 +286,9 @@ std::optional<double> check_motion(const Scene& s, const Checks& c) {
 // The drive's gear train can be laid out.
 void check_drive(const Scene& s, const Checks& c) {
   if (s.drive) {
-    try {
-      drive_layout(s);
-    } catch (const std::invalid_argument& e) {
-      // The spacing is what a student changes; the gears are the scene's: the problem is the
-      // spacing's, saying which gears bound it.
-      c.need(false, "rollers.spacing", e.what());
-    }
+    // The spacing is what a student changes; the gears are the scene's: the problem is the
+    // spacing's, saying which gears bound it.
+    if (std::optional<Said> why = drive_coupling_problem(s)) c.need(false, "rollers.spacing", *why);
   }
 }
 
@@ -321,9 +320,9 @@ void check_sensor(const Scene& s, const Checks& c, double amplitude) {
     if (const std::optional<std::size_t> i = magnet_sweeping(s, sensor.position, amplitude)) {
       const MagnetDesc& m = s.magnets[*i];
       c.need(false, "sensor.position",
-             describe("the sensor lies inside the volume magnet ", *i,
-                      " sweeps as the plate moves; raise it above the magnet's top at ",
-                      (s.plate.thickness + m.height + m.thickness) * 1e3, " mm"),
+             said("check-sensor-in-magnet-path",
+                  {arg("magnet", *i),
+                   arg("top_mm", (s.plate.thickness + m.height + m.thickness) * 1e3)}),
              {"plate.offset", "plate.velocity", "rollers.spacing"});
     }
   }
@@ -379,16 +378,13 @@ void check_magnetometer_places(const Scene& s, const Checks& c, double amplitude
                          std::fabs(at[1]) <= 0.5 * s.plate.width && at[2] >= 0.0 &&
                          at[2] <= s.plate.thickness;
     c.need(!in_slab, "phones",
-           describe("phone ", i, ": the magnetometer at [", at[0] * 1e3, ", ", at[1] * 1e3, ", ",
-                    at[2] * 1e3,
-                    "] mm lies inside the volume the plate sweeps; lay the phone beside the rig "
-                    "(|y| above ",
-                    0.5e3 * s.plate.width, " mm)"),
+           said("check-magnetometer-in-plate-path",
+                {arg("phone", i), arg("x_mm", at[0] * 1e3), arg("y_mm", at[1] * 1e3),
+                 arg("z_mm", at[2] * 1e3), arg("half_width_mm", 0.5e3 * s.plate.width)}),
            {"plate.offset", "plate.velocity"});
     if (const std::optional<std::size_t> m = magnet_sweeping(s, at, amplitude))
       c.need(false, "phones",
-             describe("phone ", i, ": the magnetometer lies inside the volume magnet ", *m,
-                      " sweeps as the plate moves; lay the phone beside the rig"),
+             said("check-magnetometer-in-magnet-path", {arg("phone", i), arg("magnet", *m)}),
              {"plate.offset", "plate.velocity"});
   }
 }

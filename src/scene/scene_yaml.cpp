@@ -341,7 +341,7 @@ Scene read_scene(YamlNode root, const std::string& name, std::span<const SceneOv
           break;
         }
     const YamlNode where = node_for(root, blamed);
-    throw InputError(where.location(), first.key + ": " + first.message);
+    throw InputError(where.location(), first.key + ": " + first.message, first.said);
   }
   return scene;
 }

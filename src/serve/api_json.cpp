@@ -163,13 +163,33 @@ json frame_json(const LiveFrame& f, bool playing, double speed) {
       {"speed", speed}};
 }
 
+json said_json(const Said& message) {
+  json args = json::array();
+  for (const SaidArg& a : message.args) {
+    json one{{"name", a.name}};
+    if (const double* number = std::get_if<double>(&a.value))
+      one["number"] = *number;
+    else if (const std::string* text = std::get_if<std::string>(&a.value))
+      one["text"] = *text;
+    else
+      one["said"] = said_json(*std::get<std::shared_ptr<const Said>>(a.value));
+    args.push_back(std::move(one));
+  }
+  return {{"id", message.id}, {"args", std::move(args)}};
+}
+
+json said_or_null(const std::optional<Said>& message) {
+  return message ? said_json(*message) : json(nullptr);
+}
+
 json problems_json(const std::exception& error) {
   json problems = json::array();
   if (const auto* request = dynamic_cast<const RequestError*>(&error)) {
     for (const FieldProblem& p : request->problems())
       problems.push_back({{"field", p.field},
                           {"value", p.value ? json(*p.value) : json(nullptr)},
-                          {"message", web_spelled(p.message)}});
+                          {"message", web_spelled(p.message)},
+                          {"said", said_or_null(p.said)}});
   } else if (const auto* input = dynamic_cast<const InputError*>(&error)) {
     const SourceLocation& where = input->where();
     // A located message from a file (the scene's) keeps its location: it is not the page's.
@@ -177,9 +197,11 @@ json problems_json(const std::exception& error) {
         where.field.empty() ? std::string(input->what()) : without_location(input->what());
     problems.push_back({{"field", where.field.empty() ? "scene" : where.field},
                         {"value", where.field_value ? json(*where.field_value) : json(nullptr)},
-                        {"message", web_spelled(message)}});
+                        {"message", web_spelled(message)},
+                        {"said", said_or_null(input->said())}});
   } else {
-    problems.push_back({{"field", nullptr}, {"value", nullptr}, {"message", error.what()}});
+    problems.push_back(
+        {{"field", nullptr}, {"value", nullptr}, {"message", error.what()}, {"said", nullptr}});
   }
   return {{"error", fmt::format("the set-up has {} problem{}", problems.size(),
                                 problems.size() == 1 ? "" : "s")},

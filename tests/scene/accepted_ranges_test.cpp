@@ -1,10 +1,15 @@
 // The ranges a scene offers its controls, against the rules' own formulas: the rollers' overlap,
 // the plate's length over the amplitude, the LEGO gears' pitch radii, the bench's step count. And
 // each edge is an edge: the value there is accepted, one a micrometre beyond is refused by the
-// loader, located at the `set` entry that made it.
+// loader, located at the `set` entry that made it, and said in the catalogues (a page's control
+// shows it in the page's language).
 #include "scene/accepted_ranges.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -116,6 +121,42 @@ TEST(AcceptedRanges, EachEdgeIsAcceptedAndJustBeyondItTheEntryIsRefused) {
         const SceneOverride out = entry(beyond);
         EXPECT_EQ(refused_entry([&] { return load({out}); }), out.path + "=" + out.value)
             << r.key << " at " << beyond << (drive ? " (drive)" : "");
+      }
+    }
+  }
+}
+
+// What a value a control offers would be refused with: the loader's Said, or nullopt.
+std::optional<Said> refusal_said(const std::function<Scene()>& load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e.said();
+  }
+  return std::nullopt;
+}
+
+// A value in the range's unit as a `set` entry writes it, with every digit a double needs.
+std::string entry_text(double si, const std::string& unit) {
+  char digits[64];
+  std::snprintf(digits, sizeof digits, "%.17g", unit == "m" ? si * 1e3 : si);
+  return std::string(digits) + (unit == "m" ? " mm" : unit.empty() ? "" : " " + unit);
+}
+
+TEST(AcceptedRanges, BeyondEachEdgeTheRefusalIsSaidInTheCatalogues) {
+  for (const bool drive : {false, true}) {
+    const auto load = [drive](std::vector<SceneOverride> o) {
+      return drive ? paper_rig(std::move(o)) : bare(std::move(o));
+    };
+    for (const AcceptedRange& r : accepted_ranges(load({}))) {
+      for (const double beyond : {r.least - 1e-6 * std::max(1.0, std::fabs(r.least)),
+                                  r.most + 1e-6 * std::max(1.0, std::fabs(r.most))}) {
+        const SceneOverride out{r.key, entry_text(beyond, r.unit)};
+        const std::optional<Said> said = refusal_said([&] { return load({out}); });
+        ASSERT_TRUE(said.has_value()) << r.key << "=" << out.value << (drive ? " (drive)" : "")
+                                      << ": refused in English only, or not refused";
+        EXPECT_EQ(english(*said).find("{$"), std::string::npos) << english(*said);
+        EXPECT_EQ(english(*said).find("lacks"), std::string::npos) << english(*said);
       }
     }
   }

@@ -228,6 +228,28 @@ export interface Problem {
   value: string | null;
   /** what was expected, what was found, what to do */
   message: string;
+  /** the message as the catalogues (assets/locales) say it, for a page to say in its reader's language; null where the lab says it in English only */
+  said: Said | null;
+}
+
+/** A message the lab says: its id in assets/locales/LANG.ftl and its values. */
+export interface Said {
+  /** the message's id (`check-rollers-overlap`) */
+  id: string;
+  /** its values, by the names its pattern uses */
+  args: SaidArg[];
+}
+
+/** One value of a message: exactly one of `number`, `text` and `said`. */
+export interface SaidArg {
+  /** the name its pattern uses (`spacing_mm`) */
+  name: string;
+  /** a number, in the unit the name says */
+  number?: number;
+  /** a text said as it is */
+  text?: string;
+  /** another message, said in the same language */
+  said?: Said;
 }
 
 /** A 4xx's body. */

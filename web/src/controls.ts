@@ -2,6 +2,7 @@
 // plate's start. A change starts a new session with the `--set` entries of what the user changed;
 // a refused set-up shows each problem beside the control that made it.
 import { byId } from "./dom";
+import { appendWords, problemWords } from "./lab_says";
 import { sceneWords } from "./scene_words";
 import type { Lab, Problem, Rig } from "./lab_types";
 import { LawSetting, MaterialSetting, NumberSetting, type Setting } from "./settings";
@@ -214,27 +215,22 @@ export class SetupControls {
    */
   showProblems(problems: Problem[], fallback: string): void {
     this.clearProblems();
-    const append = (element: HTMLElement, message: string) => {
-      element.textContent = element.textContent ? `${element.textContent} ${message}` : message;
-    };
-    if (problems.length === 0) append(this.otherProblem, fallback);
+    if (problems.length === 0) appendWords(this.otherProblem, { text: fallback, lang: null });
     const refused = new Set<Setting>();
     for (const problem of problems) {
+      const words = problemWords(problem);
       if (problem.field === "scene") {
-        append(this.sceneProblem, problem.message);
+        appendWords(this.sceneProblem, words);
         this.sceneSelect.setAttribute("aria-invalid", "true");
         continue;
       }
       const key = (problem.value ?? "").split("=")[0]!.trim();
       const setting = this.settings.find((s) => s.keys.includes(key));
       if (!setting || setting.field.hidden) {
-        append(
-          this.otherProblem,
-          problem.value ? `${problem.value}: ${problem.message}` : problem.message,
-        );
+        appendWords(this.otherProblem, words, problem.value ? `${problem.value}: ` : "");
         continue;
       }
-      append(setting.problem, problem.message);
+      appendWords(setting.problem, words);
       refused.add(setting);
     }
     for (const setting of refused) setting.revert();

@@ -308,10 +308,10 @@ async function boot(): Promise<void> {
 /** Keeps the messages beside the controls to show them again after another session opens. */
 function snapshotProblems(): () => void {
   const shown = Array.from(document.querySelectorAll<HTMLElement>(".problem")).map(
-    (element) => [element, element.textContent ?? ""] as const,
+    (element) => [element, Array.from(element.childNodes, (node) => node.cloneNode(true))] as const,
   );
   return () => {
-    for (const [element, text] of shown) if (text) element.textContent = text;
+    for (const [element, nodes] of shown) if (nodes.length > 0) element.replaceChildren(...nodes);
   };
 }
 

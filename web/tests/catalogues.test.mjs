@@ -4,8 +4,8 @@
 // the attributes and, message by message, the variables English's holds; every id the page asks
 // for (index.html's and class.html's data-l10n-id with the attributes their data-l10n-attrs
 // name, src/'s t("...") and a regime's message for each regime the lab names) is in English's;
-// and every message of English's is asked for by the page (the report-* messages are the C++
-// lab's own, for its report).
+// and every message of English's is asked for by the page or said by the C++ lab (the report-*
+// messages are the C++ lab's own, for its report).
 //
 //   node tests/catalogues.test.mjs
 import { FluentBundle, FluentResource } from "@fluent/bundle";
@@ -202,6 +202,92 @@ for (const name of sources) {
 }
 if (calls < 100) fail(`only ${calls} calls of t() found in src/`);
 
+// What the C++ lab says (said("id", {arg("name", ...), ...}) in src/, text/said.hpp): each id is
+// in English's, with the variables the call gives, and plain (text and { $name } only), as the
+// lab's own reader of en.ftl (text/message_catalogue.hpp) reads it.
+async function sourcesUnder(folder) {
+  const found = [];
+  for (const entry of await readdir(folder, { withFileTypes: true })) {
+    const path = join(folder, entry.name);
+    if (entry.isDirectory()) found.push(...(await sourcesUnder(path)));
+    else if (/\.(cpp|hpp)$/.test(entry.name)) found.push(path);
+  }
+  return found;
+}
+
+/** The end of the bracketed text that opens at `open` (its closing bracket's index). */
+function closing(source, open) {
+  let depth = 0;
+  let quote = false;
+  for (let i = open; i < source.length; i++) {
+    const c = source[i];
+    if (quote) {
+      if (c === "\\") i += 1;
+      else if (c === '"') quote = false;
+    } else if (c === '"') quote = true;
+    else if ("({[".includes(c)) depth += 1;
+    else if (")}]".includes(c) && --depth === 0) return i;
+  }
+  return source.length;
+}
+
+/** Each said("id", {...}) call's id and the names of its own args (not those of a said inside). */
+function saidCalls(source) {
+  const calls = [];
+  for (const call of source.matchAll(/\bsaid\(\s*"([a-z][a-z0-9-]*)"/g)) {
+    const names = new Set();
+    const end = closing(source, call.index + "said".length);
+    const list = source.indexOf("{", call.index);
+    if (list !== -1 && list < end) {
+      const listEnd = closing(source, list);
+      let depth = 0;
+      for (let i = list + 1; i < listEnd; i++) {
+        const c = source[i];
+        if (c === '"') i = source.indexOf('"', i + 1);
+        else if ("({[".includes(c)) depth += 1;
+        else if (")}]".includes(c)) depth -= 1;
+        else if (depth === 0 && source.startsWith('arg("', i)) {
+          names.add(source.slice(i + 5, source.indexOf('"', i + 5)));
+        }
+      }
+    }
+    calls.push({ id: call[1], names });
+  }
+  return calls;
+}
+
+const plain = (pattern) =>
+  typeof pattern === "string" ||
+  pattern.every((e) => typeof e === "string" || e.type === "var" || e.type === "str");
+const englishBundle = new FluentBundle("en", { useIsolating: false });
+englishBundle.addResource(new FluentResource(catalogues.en ?? ""));
+const labSaid = new Set();
+let saidCount = 0;
+for (const path of await sourcesUnder(join(repository, "src"))) {
+  const source = await readFile(path, "utf8");
+  const where = path.slice(repository.length + 1);
+  for (const { id, names } of saidCalls(source)) {
+    saidCount += 1;
+    labSaid.add(id);
+    need(id, where);
+    const message = english.get(id);
+    if (!message) continue;
+    if (!sameSet(message.value ?? new Set(), names)) {
+      fail(`${where}: said("${id}") gives ${listed(names)}, en.ftl's ${listed(message.value)}`);
+    }
+    const pattern = englishBundle.getMessage(id)?.value;
+    if (pattern && !plain(pattern)) fail(`en.ftl: ${id}, which the lab reads, is not plain text`);
+  }
+  // The quantities a range bounds and the paper's values, which check-implausible quotes.
+  if (where === "src/core/plausible_range.hpp") {
+    for (const m of source.matchAll(/"((?:quantity|paper)-[a-z0-9-]+)"/g)) {
+      labSaid.add(m[1]);
+      need(m[1], where);
+    }
+  }
+}
+if (saidCount < 15) fail(`only ${saidCount} calls of said() found in src/`);
+
 // A message for each regime the lab names.
 const regimeSource = await readFile(join(repository, "src/core/regime.cpp"), "utf8");
 const namer = /regime_name\(Regime regime\) \{([\s\S]*?)\n\}/.exec(regimeSource)?.[1] ?? "";
@@ -248,7 +334,7 @@ for (const scene of shipped) {
 // Every message is asked for by the page, or is the C++ lab's (its report's).
 for (const id of english.keys()) {
   if (!asked.has(id) && !id.startsWith("report-"))
-    fail(`en.ftl: ${id} is used nowhere in the page`);
+    fail(`en.ftl: ${id} is used nowhere in the page or the lab`);
 }
 
 const count = english.size;

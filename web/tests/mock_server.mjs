@@ -440,6 +440,7 @@ export async function startMockServer({
             message:
               `the mock has no recording of the set-up ${JSON.stringify(body)}: add it to ` +
               "web/tests/mock_recording.json's set-ups and build again",
+            said: null,
           };
           return json(res, 400, errorBody("the set-up has 1 problem", [problem]));
         }
@@ -453,6 +454,7 @@ export async function startMockServer({
             field: "name",
             value: String(name),
             message: "expected up to 40 letters, digits, spaces and . - _ ' , ( )",
+            said: null,
           });
         }
         if (problems.length > 0) {

@@ -147,6 +147,10 @@ void FieldChecks::problem(std::string_view field, std::string value, std::string
   problems_.push_back({std::string(field), std::move(message), std::move(value)});
 }
 
+void FieldChecks::problem(std::string_view field, const Said& message) {
+  problems_.push_back({std::string(field), english(message), std::nullopt, message});
+}
+
 bool FieldChecks::has(std::string_view field) const {
   for (const FieldProblem& p : problems_)
     if (p.field == field) return true;

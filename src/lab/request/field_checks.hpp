@@ -14,6 +14,7 @@
 #include "core/plausible_range.hpp"
 #include "core/units.hpp"
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -28,6 +29,8 @@ struct FieldProblem {
   std::string field;
   std::string message;               // what was expected, what was found, what to do
   std::optional<std::string> value;  // the value the message quotes as the field's, if any
+  // The message as the catalogues say it (text/said.hpp); nullopt for one in English only.
+  std::optional<Said> said = std::nullopt;
 };
 
 // Bad input in a request: every problem found, by field. what() is the first problem's located
@@ -66,6 +69,7 @@ class FieldChecks {
 
   void problem(std::string_view field, std::string message);
   void problem(std::string_view field, std::string value, std::string message);
+  void problem(std::string_view field, const Said& message);
   bool has(std::string_view field) const;
   bool ok() const { return problems_.empty(); }
 

@@ -452,6 +452,34 @@ check-drive-coupling = das Getriebe des Antriebs (ein Zahnrad mit { $roller_teet
 check-sensor-in-magnet-path = der Sensor liegt in dem Volumen, das Magnet { $magnet } überstreicht, wenn sich die Platte bewegt; setze ihn über die Oberseite des Magneten, auf { $top_mm } mm
 check-magnetometer-in-plate-path = Handy { $phone }: das Magnetometer bei [{ $x_mm }, { $y_mm }, { $z_mm }] mm liegt in dem Volumen, das die Platte überstreicht; lege das Handy neben den Aufbau (|y| über { $half_width_mm } mm)
 check-magnetometer-in-magnet-path = Handy { $phone }: das Magnetometer liegt in dem Volumen, das Magnet { $magnet } überstreicht, wenn sich die Platte bewegt; lege das Handy neben den Aufbau
+reading-expected = eine Kopfzeile, die die Spalten für Zeit und ADC benennt (zum Beispiel „t_us,adc“, „t_s,adc“ oder „time,value“), oder Zeilen mit Messwerten
+reading-empty = die Aufzeichnung ist leer: erwartet: { $expected }
+reading-only-comments = die Aufzeichnung enthält nur Kommentarzeilen: erwartet: { $expected }
+reading-no-sample-line = keine der { $lines } Zeilen der Aufzeichnung ist eine Kopfzeile oder ein Messwert: erwartet: { $expected }, gefunden: Zeilen wie { $example }
+reading-tried-one = { $problem }; { $tried } versucht: das ergibt keine Periode eines Aufbaus; ist es die Aufzeichnung des Hall-Sensors des Aufbaus, vollständig erfasst?
+reading-tried = { $problem }; { $tried } versucht: keines ergibt eine Periode eines Aufbaus; ist es die Aufzeichnung des Hall-Sensors des Aufbaus, vollständig erfasst?
+reading-no-samples-timed = keine Messwerte nach der Kopfzeile: erwartet: Zeilen mit Werten für { $time } und { $value }
+reading-no-samples = keine Messwerte nach der Kopfzeile: erwartet: Zeilen mit Werten für { $value }
+estimate-no-pulse = kein Puls in { $samples } Messwerten über { $duration_s } s (Zeilen { $first_line } bis { $last_line }): die ADC-Werte bleiben zwischen { $low } und { $high } Stufen; { $why }
+estimate-swing-too-small = ein Hub von { $swing } Stufen liegt unter den { $needed } Stufen, die ein Puls braucht: läuft der Magnet am Sensor vorbei?
+estimate-not-learned = das Signal schwankt um { $swing } Stufen, aber der Schätzer lernt Grundlinie und Polarität aus den ersten beiden Pulsen und hat keine zwei gesehen (zwischen den Pulsen muss das Signal mehr als die Hälfte der Zeit auf seiner Grundlinie ruhen)
+estimate-no-timing-level = das Signal schwankt um { $swing } Stufen, aber kein Puls stieg über die Zeitmessschwelle
+estimate-one-pulse = nur ein Puls in { $duration_s } s Aufzeichnung (bei t = { $at_s } s, nach den beiden, aus denen das Signal gelernt wurde): eine Periode braucht mindestens zwei
+estimate-few-pulses = nur { $pulses } Pulse (Abstände { $intervals } s): der Schätzer braucht fünf in Folge, um einen Puls pro Periode von einem Paar zu unterscheiden; zeichne mehr Perioden auf
+estimate-no-turning-points = { $pulses } Pulse, aber keine zwei Umkehrpunkte: die Abstände zwischen den Pulsen ({ $intervals } s) passen weder zu einem Puls pro Periode (gleiche Abstände) noch zu einem engen Paar pro Periode (abwechselnd kurz und lang, der kurze unter dem 0,6-Fachen des langen); { $advice }
+estimate-pulses-alternate = sie wechseln zwischen kurz und lang: zwei Pulse pro Periode (der Magnet läuft hin und zurück am Sensor vorbei, der Sensor liegt vor dem Umkehrpunkt oder nahe der Mitte des Wegs), ein zu weites Paar, um es allein zu erkennen: gib { $geometry } an
+estimate-pulses-irregular = sie sind unregelmäßig (Störpulse, die Platte springt, ein schwaches oder verrauschtes Signal): { $plot } zeigt sie
+estimate-counts-one = { $pulses } Pulse ergaben { $periods } Periode, { $accepted } angenommen und { $discarded } verworfen
+estimate-counts = { $pulses } Pulse ergaben { $periods } Perioden, { $accepted } angenommen und { $discarded } verworfen
+estimate-look = { $plot } zeigt die Pulse und warum jede Periode verworfen wurde
+estimate-more-discarded-none = { $counts }: mehr verworfen als angenommen, die Pulse halten also keine gleichmäßige Periode (der Schätzer eines Aufbaus verwirft eine Periode nur bei einem fehlenden, gestörten oder verformten Puls und nimmt eine innerhalb von { $tolerance_percent } % des gleitenden Medians an, in die ab und zu auch zufällige Abstände fallen); es wird kein T berechnet: ist es die Aufzeichnung des Hall-Sensors, von einer schwingenden Platte? Eine Platte, die öfter springt als nicht, braucht einen ruhigeren Aufbau; { $look }
+estimate-more-discarded = { $counts }: mehr verworfen als angenommen, die Pulse halten also keine gleichmäßige Periode (der Schätzer eines Aufbaus verwirft eine Periode nur bei einem fehlenden, gestörten oder verformten Puls und nimmt eine innerhalb von { $tolerance_percent } % des gleitenden Medians an, in die ab und zu auch zufällige Abstände fallen); aus den { $accepted } angenommenen wird kein T berechnet: ist es die Aufzeichnung des Hall-Sensors, von einer schwingenden Platte? Eine Platte, die öfter springt als nicht, braucht einen ruhigeren Aufbau; { $look }
+estimate-too-few-accepted = { $counts }: T ± ΔT braucht mindestens { $least } angenommene Perioden (der Artikel mittelte über 10 bis 100); zeichne länger auf
+estimate-scatter = { $counts }: die angenommenen Perioden streuen um ΔT/T = { $scatter_percent } % (ΔT = { $spread_s } s um T = { $period_s } s), mehr als die { $most_percent } % jedes Aufbaus (die Perioden des Artikels: 0,5 bis 8 %): Perioden, die über das ganze ±{ $tolerance_percent } %-Fenster des Schätzers verteilt sind, gehören zu keiner Schwingung; ist es die Aufzeichnung des Hall-Sensors? { $look }
+estimate-no-rig = T = { $period_s } s und μk = { $mu_k } gehören zu keinem Aufbau ({ $why }); daraus wird nichts berechnet
+table-too-many-fields = erwartet: höchstens { $named } Felder, wie die Kopfzeile sie benennt, gefunden: { $found }
+table-not-a-number = erwartet: eine Zahl in der Spalte „{ $column }“, gefunden: „{ $found }“
+table-no-header = erwartet: eine Kopfzeile, deren erste Spalte eine Zeit benennt („t“, „Time (s)“), keine gefunden
 quantity-spacing = den Achsabstand der Rollen l
 quantity-mu-k = μk
 quantity-h-c = die Schwerpunkthöhe h_c

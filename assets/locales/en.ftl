@@ -453,6 +453,36 @@ check-drive-coupling = the drive's coupling (a { $roller_teeth }-tooth roller ge
 check-sensor-in-magnet-path = the sensor lies inside the volume magnet { $magnet } sweeps as the plate moves; raise it above the magnet's top at { $top_mm } mm
 check-magnetometer-in-plate-path = phone { $phone }: the magnetometer at [{ $x_mm }, { $y_mm }, { $z_mm }] mm lies inside the volume the plate sweeps; lay the phone beside the rig (|y| above { $half_width_mm } mm)
 check-magnetometer-in-magnet-path = phone { $phone }: the magnetometer lies inside the volume magnet { $magnet } sweeps as the plate moves; lay the phone beside the rig
+# A measurement's file the lab cannot read (src/hall_log/, src/lab/logs/). $tried: the reading
+# options tried, as the page names them.
+reading-expected = a header naming the time and ADC columns (for example "t_us,adc", "t_s,adc" or "time,value") or lines of samples
+reading-empty = the log is empty: expected { $expected }
+reading-only-comments = the log has only comment lines: expected { $expected }
+reading-no-sample-line = none of the log's { $lines } lines is a header or a sample: expected { $expected }, found lines such as { $example }
+reading-tried-one = { $problem }; tried { $tried } on it: it gives no period of a rig; is it the rig's Hall log, captured whole?
+reading-tried = { $problem }; tried { $tried } on it: none gives a period of a rig; is it the rig's Hall log, captured whole?
+reading-no-samples-timed = no samples after the header: expected lines of { $time } and { $value } values
+reading-no-samples = no samples after the header: expected lines of { $value } values
+estimate-no-pulse = no pulse in { $samples } samples over { $duration_s } s (lines { $first_line }-{ $last_line }): the ADC values stay within { $low }..{ $high } counts; { $why }
+estimate-swing-too-small = a swing of { $swing } counts is below the { $needed } counts a pulse needs: does the magnet pass the sensor?
+estimate-not-learned = the signal swings { $swing } counts, but the estimator learns the baseline and polarity from the first two pulses and did not see two (between pulses the signal must rest at its baseline, more than half of the time)
+estimate-no-timing-level = the signal swings { $swing } counts but no pulse rose past the timing level
+estimate-one-pulse = only one pulse in { $duration_s } s of log (at t = { $at_s } s, after the two the signal was learned from): a period needs at least two
+estimate-few-pulses = only { $pulses } pulses (intervals { $intervals } s): the estimator needs five in a row to tell one pulse per period from a pair; record more periods
+estimate-no-turning-points = { $pulses } pulses, but no two turning points: the intervals between pulses ({ $intervals } s) fit neither one pulse per period (equal intervals) nor a close pair per period (alternating short and long, the short under 0.6 of the long); { $advice }
+estimate-pulses-alternate = they alternate short and long: two pulses per period (the magnet passing the sensor and back, a sensor inside the turning point or near the middle of the travel), too wide a pair to recognise on its own: give { $geometry }
+estimate-pulses-irregular = they are irregular (spurious pulses, the plate jumping, a weak or noisy signal): { $plot } shows them
+estimate-counts-one = { $pulses } pulses gave { $periods } period, { $accepted } accepted and { $discarded } discarded
+estimate-counts = { $pulses } pulses gave { $periods } periods, { $accepted } accepted and { $discarded } discarded
+estimate-look = { $plot } shows the pulses and why each period was discarded
+estimate-more-discarded-none = { $counts }: more discarded than accepted, so the pulses keep no steady period (a rig's estimator discards a period only at a missing, spurious or bent pulse, and accepts one within { $tolerance_percent } % of the running median, which intervals at random also fall within now and then); no T is computed: is the log the Hall sensor's, of a plate that oscillates? A plate that jumps more often than not needs a steadier rig; { $look }
+estimate-more-discarded = { $counts }: more discarded than accepted, so the pulses keep no steady period (a rig's estimator discards a period only at a missing, spurious or bent pulse, and accepts one within { $tolerance_percent } % of the running median, which intervals at random also fall within now and then); no T is computed from the { $accepted } accepted: is the log the Hall sensor's, of a plate that oscillates? A plate that jumps more often than not needs a steadier rig; { $look }
+estimate-too-few-accepted = { $counts }: T +- dT needs at least { $least } accepted periods (the paper averaged 10 to 100); record a longer log
+estimate-scatter = { $counts }: the accepted periods scatter by dT/T = { $scatter_percent } % (dT = { $spread_s } s about T = { $period_s } s), beyond the { $most_percent } % of any rig (the paper's periods: 0.5 to 8 %): periods spread over the whole of the estimator's +-{ $tolerance_percent } % window are no oscillation's; is the log the Hall sensor's? { $look }
+estimate-no-rig = T = { $period_s } s and mu_k = { $mu_k } are no rig's ({ $why }); nothing is computed from them
+table-too-many-fields = expected at most { $named } fields as the header names, found { $found }
+table-not-a-number = expected a number in the column "{ $column }", found "{ $found }"
+table-no-header = expected a header whose first column names a time ("t", "Time (s)"), found none
 # The quantities core/plausible_range.hpp bounds, as check-implausible's $what.
 quantity-spacing = the roller spacing l
 quantity-mu-k = mu_k

@@ -455,6 +455,41 @@ check-drive-coupling = el engranaje de la transmisión (una rueda de { $roller_t
 check-sensor-in-magnet-path = el sensor está dentro del volumen que barre el imán { $magnet } al moverse la placa; súbelo por encima de la parte superior del imán, a { $top_mm } mm
 check-magnetometer-in-plate-path = móvil { $phone }: el magnetómetro en [{ $x_mm }, { $y_mm }, { $z_mm }] mm está dentro del volumen que barre la placa; pon el móvil junto al montaje (|y| mayor que { $half_width_mm } mm)
 check-magnetometer-in-magnet-path = móvil { $phone }: el magnetómetro está dentro del volumen que barre el imán { $magnet } al moverse la placa; pon el móvil junto al montaje
+reading-expected = una cabecera que nombre las columnas del tiempo y del ADC (por ejemplo «t_us,adc», «t_s,adc» o «time,value») o líneas de muestras
+reading-empty = el registro está vacío: se esperaba { $expected }
+reading-only-comments = el registro solo tiene líneas de comentario: se esperaba { $expected }
+reading-no-sample-line = ninguna de las { $lines } líneas del registro es una cabecera o una muestra: se esperaba { $expected }, se encontraron líneas como { $example }
+reading-tried-one = { $problem }; se probó { $tried }: no da ningún periodo de un montaje; ¿es el registro del sensor Hall del montaje, capturado entero?
+reading-tried = { $problem }; se probaron { $tried }: ninguno da un periodo de un montaje; ¿es el registro del sensor Hall del montaje, capturado entero?
+reading-no-samples-timed = no hay muestras tras la cabecera: se esperaban líneas de valores de { $time } y { $value }
+reading-no-samples = no hay muestras tras la cabecera: se esperaban líneas de valores de { $value }
+estimate-no-pulse = ningún pulso en { $samples } muestras durante { $duration_s } s (líneas { $first_line } a { $last_line }): los valores del ADC se quedan entre { $low } y { $high } cuentas; { $why }
+estimate-swing-too-small = una variación de { $swing } cuentas está por debajo de las { $needed } cuentas que necesita un pulso: ¿pasa el imán por delante del sensor?
+estimate-not-learned = la señal varía { $swing } cuentas, pero el estimador aprende la línea base y la polaridad de los dos primeros pulsos y no vio dos (entre pulsos la señal debe quedarse en su línea base más de la mitad del tiempo)
+estimate-no-timing-level = la señal varía { $swing } cuentas, pero ningún pulso superó el nivel de cronometraje
+estimate-one-pulse = solo un pulso en { $duration_s } s de registro (en t = { $at_s } s, tras los dos de los que se aprendió la señal): un periodo necesita al menos dos
+estimate-few-pulses = solo { $pulses } pulsos (intervalos { $intervals } s): el estimador necesita cinco seguidos para distinguir un pulso por periodo de un par; registra más periodos
+estimate-no-turning-points = { $pulses } pulsos, pero no hay dos puntos de retorno: los intervalos entre pulsos ({ $intervals } s) no encajan ni con un pulso por periodo (intervalos iguales) ni con un par cercano por periodo (corto y largo alternados, el corto por debajo de 0,6 veces el largo); { $advice }
+estimate-pulses-alternate = alternan corto y largo: dos pulsos por periodo (el imán pasa ante el sensor a la ida y a la vuelta, con el sensor antes del punto de retorno o cerca del centro del recorrido), un par demasiado ancho para reconocerlo solo: indica { $geometry }
+estimate-pulses-irregular = son irregulares (pulsos espurios, la placa salta, una señal débil o ruidosa): { $plot } los muestra
+estimate-counts-one = { $pulses } pulsos dieron { $periods } periodo, { $accepted } aceptado y { $discarded } descartado
+estimate-counts =
+    { $pulses } pulsos dieron { $periods } periodos, { $accepted } { $accepted ->
+        [one] aceptado
+       *[other] aceptados
+    } y { $discarded } { $discarded ->
+        [one] descartado
+       *[other] descartados
+    }
+estimate-look = { $plot } muestra los pulsos y por qué se descartó cada periodo
+estimate-more-discarded-none = { $counts }: más descartados que aceptados, así que los pulsos no mantienen un periodo estable (el estimador de un montaje solo descarta un periodo ante un pulso que falta, espurio o deformado, y acepta uno dentro del { $tolerance_percent } % de la mediana móvil, donde también caen de vez en cuando intervalos al azar); no se calcula T: ¿es el registro del sensor Hall, de una placa que oscila? Una placa que salta más veces que no necesita un montaje más estable; { $look }
+estimate-more-discarded = { $counts }: más descartados que aceptados, así que los pulsos no mantienen un periodo estable (el estimador de un montaje solo descarta un periodo ante un pulso que falta, espurio o deformado, y acepta uno dentro del { $tolerance_percent } % de la mediana móvil, donde también caen de vez en cuando intervalos al azar); no se calcula T a partir de los { $accepted } aceptados: ¿es el registro del sensor Hall, de una placa que oscila? Una placa que salta más veces que no necesita un montaje más estable; { $look }
+estimate-too-few-accepted = { $counts }: T ± ΔT necesita al menos { $least } periodos aceptados (el artículo promediaba de 10 a 100); registra durante más tiempo
+estimate-scatter = { $counts }: los periodos aceptados se dispersan ΔT/T = { $scatter_percent } % (ΔT = { $spread_s } s en torno a T = { $period_s } s), más allá del { $most_percent } % de cualquier montaje (los periodos del artículo: 0,5 a 8 %): periodos repartidos por toda la ventana de ±{ $tolerance_percent } % del estimador no son de ninguna oscilación; ¿es el registro del sensor Hall? { $look }
+estimate-no-rig = T = { $period_s } s y μk = { $mu_k } no son de ningún montaje ({ $why }); no se calcula nada a partir de ellos
+table-too-many-fields = se esperaban como mucho { $named } campos, los que nombra la cabecera, se encontraron { $found }
+table-not-a-number = se esperaba un número en la columna «{ $column }», se encontró «{ $found }»
+table-no-header = se esperaba una cabecera cuya primera columna nombre un tiempo («t», «Time (s)»), no se encontró ninguna
 quantity-spacing = la separación de los rodillos l
 quantity-mu-k = μk
 quantity-h-c = la altura del centro de masas h_c

@@ -442,6 +442,41 @@ check-drive-coupling = l’engrenage de l’entraînement (une roue de { $roller
 check-sensor-in-magnet-path = le capteur se trouve dans le volume que balaie l’aimant { $magnet } quand la plaque bouge ; placez-le au-dessus du haut de l’aimant, à { $top_mm } mm
 check-magnetometer-in-plate-path = téléphone { $phone } : le magnétomètre en [{ $x_mm } ; { $y_mm } ; { $z_mm }] mm se trouve dans le volume que balaie la plaque ; posez le téléphone à côté du montage (|y| au-delà de { $half_width_mm } mm)
 check-magnetometer-in-magnet-path = téléphone { $phone } : le magnétomètre se trouve dans le volume que balaie l’aimant { $magnet } quand la plaque bouge ; posez le téléphone à côté du montage
+reading-expected = un en-tête nommant les colonnes du temps et du CAN (par exemple « t_us,adc », « t_s,adc » ou « time,value ») ou des lignes d’échantillons
+reading-empty = l’enregistrement est vide : attendu { $expected }
+reading-only-comments = l’enregistrement n’a que des lignes de commentaire : attendu { $expected }
+reading-no-sample-line = aucune des { $lines } lignes de l’enregistrement n’est un en-tête ou un échantillon : attendu { $expected }, trouvé des lignes comme { $example }
+reading-tried-one = { $problem } ; essayé { $tried } : cela ne donne aucune période d’un montage ; est-ce bien l’enregistrement du capteur à effet Hall du montage, capturé en entier ?
+reading-tried = { $problem } ; essayé { $tried } : aucun ne donne une période d’un montage ; est-ce bien l’enregistrement du capteur à effet Hall du montage, capturé en entier ?
+reading-no-samples-timed = aucun échantillon après l’en-tête : attendu des lignes de valeurs de { $time } et de { $value }
+reading-no-samples = aucun échantillon après l’en-tête : attendu des lignes de valeurs de { $value }
+estimate-no-pulse = aucune impulsion dans { $samples } échantillons sur { $duration_s } s (lignes { $first_line } à { $last_line }) : les valeurs du CAN restent entre { $low } et { $high } points ; { $why }
+estimate-swing-too-small = une variation de { $swing } points est sous les { $needed } points qu’il faut à une impulsion : l’aimant passe-t-il devant le capteur ?
+estimate-not-learned = le signal varie de { $swing } points, mais l’estimateur apprend la ligne de base et la polarité des deux premières impulsions et n’en a pas vu deux (entre les impulsions, le signal doit rester à sa ligne de base plus de la moitié du temps)
+estimate-no-timing-level = le signal varie de { $swing } points, mais aucune impulsion n’a franchi le niveau de chronométrage
+estimate-one-pulse = une seule impulsion en { $duration_s } s d’enregistrement (à t = { $at_s } s, après les deux dont le signal a été appris) : une période en demande au moins deux
+estimate-few-pulses = seulement { $pulses } impulsions (intervalles { $intervals } s) : l’estimateur en demande cinq à la suite pour distinguer une impulsion par période d’une paire ; enregistrez plus de périodes
+estimate-no-turning-points = { $pulses } impulsions, mais pas deux points de rebroussement : les intervalles entre impulsions ({ $intervals } s) ne correspondent ni à une impulsion par période (intervalles égaux) ni à une paire rapprochée par période (court et long en alternance, le court sous 0,6 fois le long) ; { $advice }
+estimate-pulses-alternate = ils alternent court et long : deux impulsions par période (l’aimant passe devant le capteur à l’aller et au retour, capteur en deçà du point de rebroussement ou près du milieu de la course), une paire trop large pour être reconnue seule : indiquez { $geometry }
+estimate-pulses-irregular = ils sont irréguliers (impulsions parasites, plaque qui saute, signal faible ou bruité) : { $plot } les montre
+estimate-counts-one = { $pulses } impulsions ont donné { $periods } période, { $accepted } acceptée et { $discarded } écartée
+estimate-counts =
+    { $pulses } impulsions ont donné { $periods } périodes, { $accepted } { $accepted ->
+        [one] acceptée
+       *[other] acceptées
+    } et { $discarded } { $discarded ->
+        [one] écartée
+       *[other] écartées
+    }
+estimate-look = { $plot } montre les impulsions et pourquoi chaque période a été écartée
+estimate-more-discarded-none = { $counts } : plus d’écartées que d’acceptées, donc les impulsions ne gardent aucune période stable (l’estimateur d’un montage n’écarte une période qu’à une impulsion manquante, parasite ou déformée, et en accepte une à { $tolerance_percent } % de la médiane glissante, où tombent aussi de temps en temps des intervalles au hasard) ; aucune T n’est calculée : est-ce l’enregistrement du capteur à effet Hall, d’une plaque qui oscille ? Une plaque qui saute plus souvent qu’à son tour demande un montage plus stable ; { $look }
+estimate-more-discarded = { $counts } : plus d’écartées que d’acceptées, donc les impulsions ne gardent aucune période stable (l’estimateur d’un montage n’écarte une période qu’à une impulsion manquante, parasite ou déformée, et en accepte une à { $tolerance_percent } % de la médiane glissante, où tombent aussi de temps en temps des intervalles au hasard) ; aucune T n’est calculée à partir des { $accepted } acceptées : est-ce l’enregistrement du capteur à effet Hall, d’une plaque qui oscille ? Une plaque qui saute plus souvent qu’à son tour demande un montage plus stable ; { $look }
+estimate-too-few-accepted = { $counts } : T ± ΔT demande au moins { $least } périodes acceptées (l’article en moyennait 10 à 100) ; enregistrez plus longtemps
+estimate-scatter = { $counts } : les périodes acceptées se dispersent de ΔT/T = { $scatter_percent } % (ΔT = { $spread_s } s autour de T = { $period_s } s), au-delà des { $most_percent } % de tout montage (les périodes de l’article : 0,5 à 8 %) : des périodes étalées sur toute la fenêtre de ±{ $tolerance_percent } % de l’estimateur ne sont celles d’aucune oscillation ; est-ce l’enregistrement du capteur à effet Hall ? { $look }
+estimate-no-rig = T = { $period_s } s et μk = { $mu_k } ne sont ceux d’aucun montage ({ $why }) ; rien n’en est calculé
+table-too-many-fields = attendu au plus { $named } champs, comme l’en-tête en nomme, trouvé { $found }
+table-not-a-number = attendu un nombre dans la colonne « { $column } », trouvé « { $found } »
+table-no-header = attendu un en-tête dont la première colonne nomme un temps (« t », « Time (s) »), trouvé aucun
 quantity-spacing = l’entraxe des rouleaux l
 quantity-mu-k = μk
 quantity-h-c = la hauteur du centre de masse h_c

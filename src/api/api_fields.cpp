@@ -161,8 +161,10 @@ std::vector<ApiObject> run_objects() {
   return {
       {"Problem",
        "One problem of a request the lab refused, by field.",
-       {maybe("field", "string", "", "the request's key (`scene`, `set`, `name`)"),
-        maybe("value", "string", "", "the entry at fault (a `set` entry)"),
+       {maybe("field", "string", "",
+              "the request's key (`scene`, `set`, `name`; `file` for a measurement's file)"),
+        maybe("value", "string", "",
+              "the entry at fault (a `set` entry; the place in the file, `log.csv:3:5`)"),
         key("message", "string", "", "what was expected, what was found, what to do"),
         maybe("said", "Said", "",
               "the message as the catalogues (assets/locales) say it, for a page to say in its "

@@ -54,10 +54,6 @@ std::string percent(int part, int whole) {
 
 constexpr std::string_view kFirmwareBanner = "# frictionlab rig firmware";
 
-const std::string kExpected =
-    "a header naming the time and ADC columns (for example \"t_us,adc\", \"t_s,adc\" or "
-    "\"time,value\") or lines of samples";
-
 // The request's options with the columns, the rate or the time's unit changed: what an error's
 // advice names, for a caller to try on the log before giving it.
 ReadingTry try_columns(HallLogOptions options, const std::string& columns) {
@@ -623,17 +619,18 @@ void HallLogReader::finish() {
   if (!started_) {
     const SourceLocation top{name_, 1, 0};
     if (reading_.lines_skipped == 0 && reading_.comment_lines == 0)
-      throw InputError(top, "the log is empty: expected " + kExpected);
+      throw InputError(top, said("reading-empty", {arg("expected", said("reading-expected"))}));
     if (reading_.lines_skipped == 0)
-      throw InputError(top, "the log has only comment lines: expected " + kExpected);
-    throw LogReadingError(top,
-                          "none of the log's " + std::to_string(reading_.lines_skipped) +
-                              " lines is a header or a sample: expected " + kExpected +
-                              ", found lines such as " + quoted_for_message(first_skipped_),
-                          "for a log without a header, name its fields in order with " +
-                              field_ref("columns") + " (for example " +
-                              field_ref("columns", "t,adc") + ")",
-                          {try_columns(options_, "t,adc")});
+      throw InputError(top,
+                       said("reading-only-comments", {arg("expected", said("reading-expected"))}));
+    throw LogReadingError(
+        top,
+        said("reading-no-sample-line",
+             {arg("lines", reading_.lines_skipped), arg("expected", said("reading-expected")),
+              arg("example", quoted_for_message(first_skipped_))}),
+        "for a log without a header, name its fields in order with " + field_ref("columns") +
+            " (for example " + field_ref("columns", "t,adc") + ")",
+        {try_columns(options_, "t,adc")});
   }
   check_shares();
 }
@@ -645,9 +642,10 @@ void HallLogReader::check_shares() const {
   const int lines = reading_.data_lines;
   if (lines == 0)
     throw InputError(SourceLocation{name_, reading_.first_line, 0},
-                     "no samples after the header: expected lines of " +
-                         (layout_.time ? layout_.time_name + " and " : std::string()) +
-                         layout_.value_name + " values");
+                     layout_.time
+                         ? said("reading-no-samples-timed",
+                                {arg("time", layout_.time_name), arg("value", layout_.value_name)})
+                         : said("reading-no-samples", {arg("value", layout_.value_name)}));
   if (bad * 10 <= lines) return;
   const std::string share =
       std::to_string(bad) + " of the " + std::to_string(lines) + " lines after the " +

@@ -4,12 +4,14 @@
 // (lab/logs/checked_reading) tries each on the log first and gives only the advice that works.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "hall_log/hall_log_reader.hpp"
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -27,8 +29,15 @@ class LogReadingError : public InputError {
         problem_(std::move(problem)),
         advice_(std::move(advice)),
         tries_(std::move(tries)) {}
+  // The same, its problem said in the catalogues (its advice, in English, is the command line's).
+  LogReadingError(SourceLocation where, const Said& problem, std::string advice,
+                  std::vector<ReadingTry> tries)
+      : LogReadingError(std::move(where), english(problem), std::move(advice), std::move(tries)) {
+    problem_said_ = problem;
+  }
 
   const std::string& problem() const { return problem_; }
+  const std::optional<Said>& problem_said() const { return problem_said_; }
   const std::string& advice() const { return advice_; }
   const std::vector<ReadingTry>& tries() const { return tries_; }
 
@@ -36,6 +45,7 @@ class LogReadingError : public InputError {
   std::string problem_;
   std::string advice_;
   std::vector<ReadingTry> tries_;
+  std::optional<Said> problem_said_;
 };
 
 }  // namespace fl

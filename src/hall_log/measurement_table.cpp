@@ -9,6 +9,7 @@
 #include "hall_log/log_line.hpp"
 #include "io/input_error.hpp"
 #include "text/describe.hpp"
+#include "text/said.hpp"
 #include "text/text.hpp"
 
 namespace fl {
@@ -33,15 +34,15 @@ void add_row(MeasurementTable& table, std::string_view line, char separator, int
   const std::vector<LogField> fields = split_fields(line, separator);
   if (fields.size() > table.names.size())
     throw InputError(SourceLocation(name, number),
-                     describe("expected at most ", table.names.size(),
-                              " fields as the header names, found ", fields.size()));
+                     said("table-too-many-fields",
+                          {arg("named", table.names.size()), arg("found", fields.size())}));
   for (std::size_t k = 0; k < table.names.size(); ++k) {
     const std::string_view field = k < fields.size() ? fields[k].text : std::string_view();
     const std::optional<double> value = number_of(field, separator, &table.decimal_comma);
     if (!value)
       throw InputError(SourceLocation(name, number, k < fields.size() ? fields[k].column : 0),
-                       "expected a number in the column \"" + table.names[k] + "\", found \"" +
-                           std::string(field) + "\"");
+                       said("table-not-a-number",
+                            {arg("column", table.names[k]), arg("found", std::string(field))}));
     table.columns[k].push_back(*value);
   }
   table.lines.push_back(number);
@@ -72,10 +73,7 @@ MeasurementTable read_measurement_table(std::string_view text, const std::string
     }
     add_row(table, line, separator, number, name);
   }
-  if (table.names.empty())
-    throw InputError(SourceLocation(name, 1),
-                     "expected a header whose first column names a time (\"t\", \"Time (s)\"), "
-                     "found none");
+  if (table.names.empty()) throw InputError(SourceLocation(name, 1), said("table-no-header"));
   return table;
 }
 

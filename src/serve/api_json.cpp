@@ -170,7 +170,7 @@ json said_json(const Said& message) {
     if (const double* number = std::get_if<double>(&a.value))
       one["number"] = *number;
     else if (const std::string* text = std::get_if<std::string>(&a.value))
-      one["text"] = *text;
+      one["text"] = web_spelled(*text);  // a field's name, spelled as the page names it
     else
       one["said"] = said_json(*std::get<std::shared_ptr<const Said>>(a.value));
     args.push_back(std::move(one));
@@ -206,6 +206,20 @@ json problems_json(const std::exception& error) {
   return {{"error", fmt::format("the set-up has {} problem{}", problems.size(),
                                 problems.size() == 1 ? "" : "s")},
           {"problems", problems}};
+}
+
+json file_problem_json(const InputError& error) {
+  const SourceLocation& where = error.where();
+  std::string place = where.file;
+  if (!place.empty() && where.line > 0) {
+    place += ':' + std::to_string(where.line);
+    if (where.column > 0) place += ':' + std::to_string(where.column);
+  }
+  json problem{{"field", "file"},
+               {"value", place.empty() ? json(nullptr) : json(place)},
+               {"message", web_spelled(without_location(error.what()))},
+               {"said", said_or_null(error.said())}};
+  return {{"error", web_spelled(error.what())}, {"problems", json::array({std::move(problem)})}};
 }
 
 json error_json(const std::string& message) {

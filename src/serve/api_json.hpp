@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/paper_table.hpp"
+#include "io/input_error.hpp"
 #include "lab/live/live_run.hpp"
 #include "lab/request/session_request.hpp"
 #include "scene/compiled_rig.hpp"
@@ -45,6 +46,10 @@ nlohmann::json problems_json(const std::exception& error);
 // A 404's body for a run's file it does not have (yet, or at all), saying which it keeps: a run
 // longer than `most_recorded_seconds` keeps neither its steps nor its samples.
 nlohmann::json missing_file_json(const std::string& name, double most_recorded_seconds);
+
+// A 400's body for a file the lab cannot read as asked: the located message as the error, and
+// one problem of the field "file", its place in the file ("log.csv:3:5") as its value.
+nlohmann::json file_problem_json(const InputError& error);
 
 // A 4xx's body for a problem of the API itself (a malformed body, an unknown session).
 nlohmann::json error_json(const std::string& message);

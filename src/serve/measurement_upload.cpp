@@ -103,7 +103,7 @@ UploadAnswer estimate_upload(const MeasurementUpload& upload, const std::string&
       return {400, without_folder(problems_json(e), prefix)};
     } catch (const InputError& e) {
       // The file's own trouble, located in it.
-      return {400, without_folder(error_json(web_spelled(e.what())), prefix)};
+      return {400, without_folder(file_problem_json(e), prefix)};
     } catch (const std::invalid_argument& e) {
       return {400, without_folder(problems_json(e), prefix)};
     } catch (const std::runtime_error& e) {

@@ -222,9 +222,9 @@ export interface Session {
 
 /** One problem of a request the lab refused, by field. */
 export interface Problem {
-  /** the request's key (`scene`, `set`, `name`) */
+  /** the request's key (`scene`, `set`, `name`; `file` for a measurement's file) */
   field: string | null;
-  /** the entry at fault (a `set` entry) */
+  /** the entry at fault (a `set` entry; the place in the file, `log.csv:3:5`) */
   value: string | null;
   /** what was expected, what was found, what to do */
   message: string;

@@ -219,11 +219,12 @@ export async function estimateFile(
     const body = await readJson<{ error?: unknown; problems?: Problem[] }>(response).catch(
       () => null,
     );
-    const first = body?.problems?.[0]?.message;
+    const first = body?.problems?.[0];
     const message = typeof body?.error === "string" ? body.error : "";
     throw new LabError(
-      first ?? (message || t("lab-answered", { status: response.status })),
+      first?.message ?? (message || t("lab-answered", { status: response.status })),
       response.status,
+      first ?? null,
     );
   }
   return readJson<MeasurementEstimate>(response);

@@ -161,7 +161,8 @@ export async function estimateFile(
   const answer = await ask({ op: "estimate", name, bytes, spacing }, [bytes]);
   if (answer.status !== 200) {
     const body = answer.body as { problems?: Problem[] } | null;
-    throw new LabError(body?.problems?.[0]?.message ?? errorOf(answer), answer.status);
+    const first = body?.problems?.[0];
+    throw new LabError(first?.message ?? errorOf(answer), answer.status, first ?? null);
   }
   return answer.body as MeasurementEstimate;
 }

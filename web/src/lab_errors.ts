@@ -35,13 +35,16 @@ export class RateLimitedError extends Error {
   }
 }
 
-/** The lab answered something other than what the API promises. */
+/** The lab refused a request, or answered something other than what the API promises;
+ * `problem` is the lab's own problem where it gave one (a file's, located in it). */
 export class LabError extends Error {
   readonly status: number;
-  constructor(message: string, status: number) {
+  readonly problem: Problem | null;
+  constructor(message: string, status: number, problem: Problem | null = null) {
     super(message);
     this.name = "LabError";
     this.status = status;
+    this.problem = problem;
   }
 }
 

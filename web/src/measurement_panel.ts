@@ -4,6 +4,7 @@
 import { byTestId, setText } from "./dom";
 import { t } from "./i18n";
 import { estimateFile, LabError } from "./lab_client";
+import { appendWords, problemWords } from "./lab_says";
 import type { MeasurementEstimate } from "./lab_types";
 import { trimmed, withError } from "./page_numbers";
 
@@ -80,7 +81,15 @@ export class MeasurementPanel {
       if (asked !== this.asked) return;
       setText(this.period, t("period-none"));
       setText(this.detail, "");
-      setText(this.problem, error instanceof Error ? error.message : String(error));
+      setText(this.problem, "");
+      if (error instanceof LabError && error.problem) {
+        // The lab's own words, in the page's language where its catalogue has them, after the
+        // place in the file ("log.csv:3:5").
+        const place = error.problem.value;
+        appendWords(this.problem, problemWords(error.problem), place ? `${place}: ` : "");
+      } else {
+        setText(this.problem, error instanceof Error ? error.message : String(error));
+      }
     }
   }
 

@@ -231,10 +231,16 @@ function closing(source, open) {
   return source.length;
 }
 
-/** Each said("id", {...}) call's id and the names of its own args (not those of a said inside). */
+/** Each said("id", {...}) call's ids (two for said(c ? "a" : "b", ...)) and the names of its own
+ * args (not those of a said inside). */
 function saidCalls(source) {
   const calls = [];
-  for (const call of source.matchAll(/\bsaid\(\s*"([a-z][a-z0-9-]*)"/g)) {
+  const id = '"([a-z][a-z0-9-]*)"';
+  const callPattern = new RegExp(
+    `\\bsaid\\(\\s*(?:${id}|[^";{}]*?\\?\\s*${id}\\s*:\\s*${id})`,
+    "g",
+  );
+  for (const call of source.matchAll(callPattern)) {
     const names = new Set();
     const end = closing(source, call.index + "said".length);
     const list = source.indexOf("{", call.index);
@@ -251,7 +257,7 @@ function saidCalls(source) {
         }
       }
     }
-    calls.push({ id: call[1], names });
+    calls.push({ ids: [call[1], call[2], call[3]].filter(Boolean), names });
   }
   return calls;
 }
@@ -266,18 +272,19 @@ let saidCount = 0;
 for (const path of await sourcesUnder(join(repository, "src"))) {
   const source = await readFile(path, "utf8");
   const where = path.slice(repository.length + 1);
-  for (const { id, names } of saidCalls(source)) {
-    saidCount += 1;
-    labSaid.add(id);
-    need(id, where);
-    const message = english.get(id);
-    if (!message) continue;
-    if (!sameSet(message.value ?? new Set(), names)) {
-      fail(`${where}: said("${id}") gives ${listed(names)}, en.ftl's ${listed(message.value)}`);
+  for (const { ids, names } of saidCalls(source))
+    for (const id of ids) {
+      saidCount += 1;
+      labSaid.add(id);
+      need(id, where);
+      const message = english.get(id);
+      if (!message) continue;
+      if (!sameSet(message.value ?? new Set(), names)) {
+        fail(`${where}: said("${id}") gives ${listed(names)}, en.ftl's ${listed(message.value)}`);
+      }
+      const pattern = englishBundle.getMessage(id)?.value;
+      if (pattern && !plain(pattern)) fail(`en.ftl: ${id}, which the lab reads, is not plain text`);
     }
-    const pattern = englishBundle.getMessage(id)?.value;
-    if (pattern && !plain(pattern)) fail(`en.ftl: ${id}, which the lab reads, is not plain text`);
-  }
   // The quantities a range bounds and the paper's values, which check-implausible quotes.
   if (where === "src/core/plausible_range.hpp") {
     for (const m of source.matchAll(/"((?:quantity|paper)-[a-z0-9-]+)"/g)) {

@@ -317,6 +317,43 @@ await check("a measurement file chosen on the page gives estimate's period", asy
   await context.close();
 });
 
+await check("on a French page a file the lab cannot read is refused in French", async () => {
+  const { page, context, complaints } = await openPage("/?lang=fr&scene=paper-rig");
+  await page.getByTestId("spacing").filter({ hasText: "89" }).waitFor();
+  const input = page.getByTestId("measurement-file");
+  const problem = page.getByTestId("problem-measurement");
+  // A cell that is no number: the lab's message from the French catalogue, at its place.
+  await input.setInputFiles({
+    name: "cells.csv",
+    mimeType: "text/csv",
+    buffer: Buffer.from("t,x\n0,0.01\n0.1,abc\n"),
+  });
+  await problem.filter({ hasText: "cells.csv" }).waitFor({ timeout: 60000 });
+  const cell = (await problem.textContent()).trim();
+  expect(
+    cell === "cells.csv:3:5: attendu un nombre dans la colonne « x », trouvé « abc »",
+    `the cell's problem: ${cell}`,
+  );
+  // A still plate: no pulse, the lab's numbers in the French sentence.
+  await input.setInputFiles({
+    name: "still.csv",
+    mimeType: "text/csv",
+    buffer: Buffer.from("t_s,adc\n0,500\n0.001,501\n0.002,500\n0.003,499\n"),
+  });
+  await problem.filter({ hasText: "still.csv" }).waitFor({ timeout: 60000 });
+  const still = (await problem.textContent()).trim();
+  expect(
+    still.startsWith("still.csv:2: aucune impulsion dans 4 échantillons sur 0,003 s") &&
+      still.includes("entre 499 et 501 points") &&
+      still.endsWith("l’aimant passe-t-il devant le capteur ?"),
+    `the still plate's problem: ${still}`,
+  );
+  expect((await problem.locator("[lang]").count()) === 0, "a French message marked English");
+  const others = complaints.filter((c) => !c.includes("status of 400"));
+  expect(others.length === 0, `console: ${others.join("\n")}`);
+  await context.close();
+});
+
 await check("a shared server answers only its token's pages and refuses one too many", async () => {
   const shared = await startServer(["--max-sessions", "1", "--token", "s3cret"]);
   try {

@@ -10,6 +10,7 @@
 
 #include "hall_log/log_reading_error.hpp"
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 namespace {
@@ -70,11 +71,15 @@ HallLog read_hall_log_checked(const std::string& path, const HallLogOptions& opt
     if (!working.empty())
       throw InputError(
           e.where(), fmt::format("{}; the log reads {}", e.problem(), fmt::join(working, "; or ")));
+    const std::string words = fmt::format("{}", fmt::join(tried, ", "));
+    if (e.problem_said())
+      throw InputError(e.where(), said(tried.size() == 1 ? "reading-tried-one" : "reading-tried",
+                                       {arg("problem", *e.problem_said()), arg("tried", words)}));
     throw InputError(e.where(),
-                     fmt::format("{}; tried {} on it: {} no period of a rig; is it the rig's Hall "
-                                 "log, captured whole?",
-                                 e.problem(), fmt::join(tried, ", "),
-                                 tried.size() == 1 ? "it gives" : "none gives"));
+                     fmt::format("{}; tried {} on it: {} of a rig; is it the rig's Hall log, "
+                                 "captured whole?",
+                                 e.problem(), words,
+                                 tried.size() == 1 ? "it gives no period" : "none gives a period"));
   }
 }
 

@@ -1,6 +1,7 @@
 #include "lab/logs/log_estimate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
@@ -15,6 +16,7 @@
 #include "io/json_value.hpp"
 #include "lab/logs/estimate_fields.hpp"
 #include "lab/logs/geometry_check.hpp"
+#include "text/said.hpp"
 #include "text/utf8.hpp"
 
 namespace fl {
@@ -25,6 +27,27 @@ int line_at(const HallLog& log, double t) {
   const auto it = std::lower_bound(log.t_s.begin(), log.t_s.end(), t);
   const std::size_t i = it == log.t_s.end() ? log.t_s.size() - 1 : it - log.t_s.begin();
   return log.line[i];
+}
+
+// `x` rounded to `n` decimals, as a message gives it.
+double decimals(double x, int n) {
+  const double scale = std::pow(10.0, n);
+  return std::round(x * scale) / scale;
+}
+
+// `x` (a float of the estimator's) to `n` significant digits, as a double.
+double significant(float x, int n) {
+  return std::stod(fmt::format("{:.{}g}", static_cast<double>(x), n));
+}
+double decimals(float x, int n) {
+  return decimals(static_cast<double>(x), n);
+}
+
+// Refuses the log, saying why: in the catalogues' words, or in English only where a note in
+// English only (a unit's hint, a plot's place) goes with it.
+[[noreturn]] void refuse(const SourceLocation& where, const Said& why, const std::string& note) {
+  if (note.empty()) throw InputError(where, why);
+  throw InputError(where, english(why) + note);
 }
 
 // The keys of one part of the declaration (lab/logs/estimate_fields.hpp).
@@ -146,15 +169,13 @@ std::string time_unit_hint(const HallLog& log, const LogEstimate& est) {
 
 void require_plausible(const HallLog& log, const LogEstimate& est, const std::string& note) {
   const fl_estimator::Stats& s = est.stats;
-  const std::optional<std::string> period =
-      implausible(static_cast<double>(s.period_s), kPeriodRange);
-  const std::optional<std::string> mu_k = implausible(static_cast<double>(s.mu_k), kMuKRange);
-  if (!period && !mu_k) return;
-  throw InputError(
-      SourceLocation{log.path, log.line.front(), 0},
-      fmt::format("T = {:.6g} s and mu_k = {:.6g} are no rig's ({}){}; nothing is "
-                  "computed from them{}",
-                  s.period_s, s.mu_k, period ? *period : *mu_k, time_unit_hint(log, est), note));
+  std::optional<Said> why = implausible_said(static_cast<double>(s.period_s), kPeriodRange);
+  if (!why) why = implausible_said(static_cast<double>(s.mu_k), kMuKRange);
+  if (!why) return;
+  refuse({log.path, log.line.front(), 0},
+         said("estimate-no-rig", {arg("period_s", significant(s.period_s, 6)),
+                                  arg("mu_k", significant(s.mu_k, 6)), arg("why", *why)}),
+         time_unit_hint(log, est) + note);
 }
 
 void require_periods(const HallLog& log, const LogEstimate& est, const std::string& note_given) {
@@ -168,32 +189,25 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
     const int min_amplitude = est.set_up.config().min_amplitude;
     const auto [lo, hi] = std::minmax_element(log.adc.begin(), log.adc.end());
     const int swing = *hi - *lo;
-    std::string why;
-    if (swing < min_amplitude)
-      why = fmt::format(
-          "a swing of {} counts is below the {} counts a pulse needs: does the magnet pass the "
-          "sensor?",
-          swing, min_amplitude);
-    else if (!est.learned)
-      why = fmt::format(
-          "the signal swings {} counts, but the estimator learns the baseline and polarity from "
-          "the first two pulses and did not see two (between pulses the signal must rest at its "
-          "baseline, more than half of the time)",
-          swing);
-    else
-      why =
-          fmt::format("the signal swings {} counts but no pulse rose past the timing level", swing);
-    throw InputError(first, fmt::format("no pulse in {} samples over {:.3f} s (lines {}-{}): the "
-                                        "ADC values stay within {}..{} counts; {}{}",
-                                        log.adc.size(), duration, log.line.front(), log.line.back(),
-                                        *lo, *hi, why, note));
+    const Said why =
+        swing < min_amplitude
+            ? said("estimate-swing-too-small", {arg("swing", swing), arg("needed", min_amplitude)})
+        : !est.learned ? said("estimate-not-learned", {arg("swing", swing)})
+                       : said("estimate-no-timing-level", {arg("swing", swing)});
+    refuse(first,
+           said("estimate-no-pulse",
+                {arg("samples", log.adc.size()), arg("duration_s", decimals(duration, 3)),
+                 arg("first_line", log.line.front()), arg("last_line", log.line.back()),
+                 arg("low", static_cast<int>(*lo)), arg("high", static_cast<int>(*hi)),
+                 arg("why", why)}),
+           note);
   }
   const SourceLocation at_pulse{log.path, line_at(log, est.pulses.front().time), 0};
   if (est.pulses.size() == 1)
-    throw InputError(at_pulse, fmt::format("only one pulse in {:.3f} s of log (at t = {:.4f} s, "
-                                           "after the two the signal was learned from): a period "
-                                           "needs at least two{}",
-                                           duration, est.pulses.front().time, note));
+    refuse(at_pulse,
+           said("estimate-one-pulse", {arg("duration_s", decimals(duration, 3)),
+                                       arg("at_s", decimals(est.pulses.front().time, 4))}),
+           note);
   if (est.periods.empty()) {
     std::string intervals;
     for (std::size_t i = 1; i < est.pulses.size() && i <= 8; ++i)
@@ -201,11 +215,10 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
           fmt::format("{}{:.4f}", i > 1 ? ", " : "", est.pulses[i].time - est.pulses[i - 1].time);
     if (est.pulses.size() > 9) intervals += ", ...";
     if (est.pulses.size() < 5)
-      throw InputError(at_pulse,
-                       fmt::format("only {} pulses (intervals {} s): the estimator needs five in a "
-                                   "row to tell one pulse per period from a pair; record more "
-                                   "periods{}",
-                                   est.pulses.size(), intervals, note));
+      refuse(at_pulse,
+             said("estimate-few-pulses",
+                  {arg("pulses", est.pulses.size()), arg("intervals", intervals)}),
+             note);
     // Do the intervals alternate (the 1st and 3rd of each four both shorter, or both longer,
     // than the 2nd and 4th)? Then the pulses are two per period, too wide a pair to recognise.
     int alternating = 0;
@@ -218,58 +231,49 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                            std::max(iv[1], iv[3]) < std::min(iv[0], iv[2]);
       alternating += ordered ? 1 : 0;
     }
-    const std::string advice =
+    const Said advice =
         2 * alternating > windows
-            ? "they alternate short and long: two pulses per period (the magnet passing the "
-              "sensor and back, a sensor inside the turning point or near the middle of the "
-              "travel), too wide a pair to recognise on its own: give " +
-                  field_ref("geometry", "pair")
-            : "they are irregular (spurious pulses, the plate jumping, a weak or noisy signal): " +
-                  field_ref("plot", "FILE.png") + " shows them";
-    throw InputError(
-        at_pulse,
-        fmt::format("{} pulses, but no two turning points: the intervals between pulses ({} s) fit "
-                    "neither one pulse per period (equal intervals) nor a close pair per period "
-                    "(alternating short and long, the short under 0.6 of the long); {}{}",
-                    est.pulses.size(), intervals, advice, note));
+            ? said("estimate-pulses-alternate", {arg("geometry", field_ref("geometry", "pair"))})
+            : said("estimate-pulses-irregular", {arg("plot", field_ref("plot", "FILE.png"))});
+    refuse(at_pulse,
+           said("estimate-no-turning-points", {arg("pulses", est.pulses.size()),
+                                               arg("intervals", intervals), arg("advice", advice)}),
+           note);
   }
   // Periods that are a rig's oscillation: most of them kept, enough of them, and scattering as a
   // rig's do (docs/estimator.md, "Periods that are no rig's").
-  const std::string counts = fmt::format(
-      "{} pulses gave {} period{}, {} accepted and {} discarded", s.pulses, est.periods.size(),
-      est.periods.size() == 1 ? "" : "s", s.periods_used, s.periods_discarded);
-  const std::string look =
-      field_ref("plot", "FILE.png") + " shows the pulses and why each period was discarded";
+  const Said counts =
+      said(est.periods.size() == 1 ? "estimate-counts-one" : "estimate-counts",
+           {arg("pulses", static_cast<std::size_t>(s.pulses)), arg("periods", est.periods.size()),
+            arg("accepted", static_cast<std::size_t>(s.periods_used)),
+            arg("discarded", static_cast<std::size_t>(s.periods_discarded))});
+  const Said look = said("estimate-look", {arg("plot", field_ref("plot", "FILE.png"))});
+  const double tolerance_percent = 100.0 * static_cast<double>(est.set_up.config().tolerance);
   if (s.periods_discarded > s.periods_used)
-    throw InputError(
+    refuse(
         at_pulse,
-        fmt::format("{}: more discarded than accepted, so the pulses keep no steady period (a "
-                    "rig's estimator discards a period only at a missing, spurious or bent pulse, "
-                    "and accepts one within {:.0f} % of the running median, which intervals at "
-                    "random also fall within now and then); no T is computed{}: is the log "
-                    "the Hall sensor's, of a plate that oscillates? A plate that jumps more often "
-                    "than not needs a steadier rig; {}{}",
-                    counts, 100.0 * static_cast<double>(est.set_up.config().tolerance),
-                    s.periods_used == 0 ? std::string()
-                                        : fmt::format(" from the {} accepted", s.periods_used),
-                    look, note));
+        s.periods_used == 0
+            ? said("estimate-more-discarded-none",
+                   {arg("counts", counts), arg("tolerance_percent", decimals(tolerance_percent, 0)),
+                    arg("look", look)})
+            : said("estimate-more-discarded",
+                   {arg("counts", counts), arg("tolerance_percent", decimals(tolerance_percent, 0)),
+                    arg("accepted", static_cast<std::size_t>(s.periods_used)), arg("look", look)}),
+        note);
   if (s.periods_used < static_cast<std::uint32_t>(kLeastPeriods))
-    throw InputError(at_pulse,
-                     fmt::format("{}: T +- dT needs at least {} accepted periods (the paper "
-                                 "averaged 10 to 100); record a longer log{}",
-                                 counts, kLeastPeriods, note));
+    refuse(at_pulse,
+           said("estimate-too-few-accepted", {arg("counts", counts), arg("least", kLeastPeriods)}),
+           note);
   const double scatter = static_cast<double>(s.period_std_s) / static_cast<double>(s.period_s);
   if (scatter > kMostPeriodScatter)
-    throw InputError(
-        at_pulse,
-        fmt::format(
-            "{}: the accepted periods scatter by dT/T = {:.1f} % (dT = {:.4f} s about T "
-            "= {:.4f} s), beyond the {:.0f} % of any rig (the paper's periods: 0.5 to 8 %): "
-            "periods spread over the whole of the estimator's +-{:.0f} % window are no "
-            "oscillation's; is the log the Hall sensor's? {}{}",
-            counts, 100.0 * scatter, static_cast<double>(s.period_std_s),
-            static_cast<double>(s.period_s), 100.0 * kMostPeriodScatter,
-            100.0 * static_cast<double>(est.set_up.config().tolerance), look, note));
+    refuse(at_pulse,
+           said("estimate-scatter",
+                {arg("counts", counts), arg("scatter_percent", decimals(100.0 * scatter, 1)),
+                 arg("spread_s", decimals(s.period_std_s, 4)),
+                 arg("period_s", decimals(s.period_s, 4)),
+                 arg("most_percent", decimals(100.0 * kMostPeriodScatter, 0)),
+                 arg("tolerance_percent", decimals(tolerance_percent, 0)), arg("look", look)}),
+           note);
 }
 
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {

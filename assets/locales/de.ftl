@@ -207,6 +207,18 @@ number-nothing = eine Zahl erwartet, nichts gefunden
 number-decimal-point = eine Zahl mit Dezimalpunkt erwartet, etwa 89.5, gefunden: „{ $text }“
 number-expected = eine Zahl erwartet, etwa { $example }, gefunden: „{ $text }“
 
+# Die Plattenmaterialien aus Tabelle I des Artikels.
+material-lego = LEGO-Steine
+material-paper = Papier
+material-polished-wood = Poliertes Holz
+material-construction-wood = Bauholz
+material-iron = Eisen
+material-plexiglas = Plexiglas
+material-brass = Messing
+material-cardboard = Pappe
+material-rigid-foam = PU-Hartschaum
+material-flexible-foam = PU-Weichschaum
+
 ## Die Klasse
 
 class-title = Die Klasse

@@ -206,6 +206,18 @@ number-nothing = expected a number, found nothing
 number-decimal-point = expected a number with a decimal point, such as 89.5, found "{ $text }"
 number-expected = expected a number, such as { $example }, found "{ $text }"
 
+# The plate's materials of the paper's Table I (assets/paper/table1.yaml), by key.
+material-lego = LEGO blocks
+material-paper = Paper
+material-polished-wood = Polished wood
+material-construction-wood = Construction wood
+material-iron = Iron
+material-plexiglas = Plexiglas
+material-brass = Brass
+material-cardboard = Cardboard
+material-rigid-foam = Polyurethane rigid foam
+material-flexible-foam = Polyurethane flexible foam
+
 ## The class
 
 class-title = The class

@@ -207,6 +207,18 @@ number-nothing = se esperaba un número y no hay nada
 number-decimal-point = se esperaba un número con punto decimal, como 89.5, y no «{ $text }»
 number-expected = se esperaba un número, como { $example }, y no «{ $text }»
 
+# Los materiales de la placa de la tabla I del artículo.
+material-lego = Bloques de LEGO
+material-paper = Papel
+material-polished-wood = Madera pulida
+material-construction-wood = Madera de construcción
+material-iron = Hierro
+material-plexiglas = Plexiglás
+material-brass = Latón
+material-cardboard = Cartón
+material-rigid-foam = Espuma rígida de poliuretano
+material-flexible-foam = Espuma flexible de poliuretano
+
 ## La clase
 
 class-title = La clase

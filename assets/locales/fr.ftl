@@ -202,6 +202,18 @@ number-nothing = un nombre est attendu, rien n’a été saisi
 number-decimal-point = un nombre avec un point décimal est attendu, par exemple 89.5, et non « { $text } »
 number-expected = un nombre est attendu, par exemple { $example }, et non « { $text } »
 
+# Les matériaux de la plaque du tableau I de l’article.
+material-lego = Blocs LEGO
+material-paper = Papier
+material-polished-wood = Bois poli
+material-construction-wood = Bois de construction
+material-iron = Fer
+material-plexiglas = Plexiglas
+material-brass = Laiton
+material-cardboard = Carton
+material-rigid-foam = Mousse rigide de polyuréthane
+material-flexible-foam = Mousse souple de polyuréthane
+
 ## La classe
 
 class-title = La classe

@@ -8,6 +8,7 @@ import type { Lab, LabState, Rig } from "./lab_types";
 import { fixed, significant, trimmed, withError } from "./page_numbers";
 import { regimeHelp, regimeWords } from "./regime_words";
 import type { Headline } from "./summary";
+import { materialWords } from "./material_words";
 
 export type RunStatus = "connecting" | "paused" | "playing" | "done" | "no session";
 
@@ -52,7 +53,8 @@ export class Readouts {
     setText(this.spacing, t("spacing-value", { spacing: trimmed(rig.spacing * 1000, 1) }));
     const rpm = trimmed(rig.roller_speed_rpm, 0);
     setText(this.speed, t(rig.drive ? "rollers-value-driven" : "rollers-value", { rpm }));
-    const name = lab.materials.find((m) => m.key === rig.plate.material)?.name;
+    const entry = lab.materials.find((m) => m.key === rig.plate.material);
+    const name = entry ? materialWords(entry.key, entry.name) : null;
     setText(this.material, name ? `${name} (${rig.plate.material})` : rig.plate.material);
     const parts = [
       t("theory-thin", { period: fixed(rig.period_thin, 3) }),

@@ -9,6 +9,7 @@ import { fixed, trimmed, withError } from "./page_numbers";
 import type { Lab, LabState, Rig } from "./lab_types";
 import type { LabModel } from "./lab_model";
 import type { Headline } from "./summary";
+import { materialWords } from "./material_words";
 
 const ANNOUNCE_EVERY_MS = 5000;
 /** [m/s] slower than this the plate is said to be at rest */
@@ -120,8 +121,8 @@ export class RigDescription {
   private showSetUp(rig: Rig | null): void {
     if (!rig) return;
     const key = rig.plate.material;
-    const material =
-      this.lab()?.materials.find((m) => m.key === key)?.name ?? rig.paper?.material ?? key;
+    const entry = this.lab()?.materials.find((m) => m.key === key);
+    const material = entry ? materialWords(entry.key, entry.name) : (rig.paper?.material ?? key);
     setText(this.setUp, describeSetUp(rig, material));
     this.forget();
   }

@@ -4,6 +4,7 @@ import { byId } from "./dom";
 import { t } from "./i18n";
 import { pageLocale, readNumber, showNumber } from "./locale_number";
 import type { Lab, Rig } from "./lab_types";
+import { materialWords } from "./material_words";
 
 export interface Setting {
   /** The `--set` keys this control makes (problems naming them are shown beside it). */
@@ -276,7 +277,7 @@ export class MaterialSetting implements Setting {
       for (const kelvin of material.temperatures_k) {
         const option = document.createElement("option");
         option.value = `${material.key}@${kelvin}`;
-        option.textContent = `${material.name}, ${kelvin} K`;
+        option.textContent = `${materialWords(material.key, material.name)}, ${kelvin} K`;
         this.select.append(option);
       }
     }

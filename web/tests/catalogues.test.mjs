@@ -338,6 +338,18 @@ for (const scene of shipped) {
   else need(id, "src/scene_words.ts");
 }
 
+// Words for each material of the paper's Table I, English's the table's own name.
+const table = await readFile(join(repository, "assets/paper/table1.yaml"), "utf8");
+const materials = [...table.matchAll(/^ {2}- key: (\S+)\n {4}name: (.+)$/gm)];
+if (materials.length < 10) fail(`only ${materials.length} materials read from table1.yaml`);
+for (const [, key, name] of materials) {
+  need(`material-${key}`, "src/material_words.ts");
+  const words = englishBundle.getMessage(`material-${key}`)?.value;
+  if (words && englishBundle.formatPattern(words) !== name) {
+    fail(`en.ftl: material-${key} is not Table I's name "${name}"`);
+  }
+}
+
 // Every message is asked for by the page, or is the C++ lab's (its report's).
 for (const id of english.keys()) {
   if (!asked.has(id) && !id.startsWith("report-"))

@@ -81,6 +81,11 @@ await check("a French browser gets the page in French", async () => {
   expect(slider === "Entraxe des rouleaux l, curseur (mm)", `the slider's name: ${slider}`);
   const rpm = await text(page.locator('[data-testid="speed"]'));
   expect(rpm.endsWith(`${NBSP}tr/min (entraînés par le moteur)`), `the rollers' speed: ${rpm}`);
+  // The plate's material by its French name (the paper's rig's: LEGO), in the list and the readout.
+  const chosen = await text(page.locator("#material option:checked"));
+  expect(chosen === "Blocs LEGO, 300 K", `the material chosen: ${chosen}`);
+  const polished = await page.locator('#material option[value="polished-wood@77"]').textContent();
+  expect(polished === "Bois poli, 77 K", `a material offered: ${polished}`);
   const accepts = await text(page.getByTestId("accepts-spacing-mm"));
   expect(accepts === `Ce réglage accepte de 40 à 104${NBSP}mm.`, `the accepted range: ${accepts}`);
   // The switcher offers each language by its own name, this one chosen.

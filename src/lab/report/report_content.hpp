@@ -27,7 +27,8 @@ struct ReportCurve {
 
 // The paper's measurement for the part's material (Table I).
 struct ReportPaperRow {
-  std::string material;  // "LEGO blocks"
+  std::string key;       // "lego": its words are the catalogues' material-KEY
+  std::string material;  // "LEGO blocks", as Table I names it
   double temperature_k = 300;
   double period_s = 0;
   double period_err_s = 0;
@@ -48,6 +49,9 @@ struct SetUpRow {
   std::string id;  // "spacing"
   std::string value;
   bool numeric = true;  // false: a name or a file, shown as it is
+  // The catalogues' message that says the value in the report's language (material-lego); empty
+  // for a value shown as it is.
+  std::string message = {};
 };
 
 struct ReportPart {

@@ -19,6 +19,12 @@ std::string ReportTexts::operator()(const std::string& id,
   return id;
 }
 
+std::string ReportTexts::named(const std::string& id, const std::string& given) const {
+  if (std::optional<std::string> text = language.format(id)) return *text;
+  if (std::optional<std::string> text = english.format(id)) return *text;
+  return given;
+}
+
 std::string ReportTexts::decimal_sign() const {
   const std::string sign = (*this)("report-decimal-sign");
   return sign == "," ? "," : ".";
@@ -119,7 +125,9 @@ std::string set_up_table(const Writer& w, const ReportPart& part) {
   for (const SetUpRow& row : part.set_up)
     out += fmt::format("<tr><th scope=\"row\">{}</th><td>{}</td></tr>\n",
                        html_text(w.t("report-setup-" + row.id)),
-                       html_text(row.numeric ? w.shown(row.value) : row.value));
+                       html_text(row.numeric           ? w.shown(row.value)
+                                 : row.message.empty() ? row.value
+                                                       : w.t.named(row.message, row.value)));
   return out + "</tbody></table>\n";
 }
 
@@ -257,8 +265,8 @@ std::string comparison(const Writer& w, const ReportContent& c) {
                                   [](const ReportPart& p) { return p.paper.has_value(); });
   if (paper != c.parts.end()) {
     const ReportPaperRow& p = *paper->paper;
-    row(w.t("report-paper-row",
-            {{"material", p.material}, {"kelvin", fmt::format("{:.0f}", p.temperature_k)}}),
+    row(w.t("report-paper-row", {{"material", w.t.named("material-" + p.key, p.material)},
+                                 {"kelvin", fmt::format("{:.0f}", p.temperature_k)}}),
         w.both(p.period_s, p.period_err_s, 2), w.both(p.mu_k, p.mu_k_err, 2));
   }
   out += "</tbody></table>\n";

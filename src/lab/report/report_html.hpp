@@ -23,6 +23,8 @@ struct ReportTexts {
   // The message, filled; English's where the language lacks it; the id itself where both do.
   std::string operator()(const std::string& id,
                          const std::map<std::string, std::string>& args = {}) const;
+  // The message without values where a catalogue has it; else `given` (a name as the lab has it).
+  std::string named(const std::string& id, const std::string& given) const;
   // "." or "," (the message report-decimal-sign).
   std::string decimal_sign() const;
 };

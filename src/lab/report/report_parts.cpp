@@ -57,8 +57,8 @@ std::optional<ReportPaperRow> paper_row(const json& summary, const PaperTable& t
                                                     std::fabs(material->room.period.value - period)
                                   ? *material->cold
                                   : material->room;
-  return ReportPaperRow{material->name,       m.temperature, m.period.value,
-                        m.period.uncertainty, m.mu_k.value,  m.mu_k.uncertainty};
+  return ReportPaperRow{material->key,        material->name, m.temperature,     m.period.value,
+                        m.period.uncertainty, m.mu_k.value,   m.mu_k.uncertainty};
 }
 
 }  // namespace
@@ -100,7 +100,8 @@ ReportPart simulation_part(const RunFiles& files, const std::string& source,
   part.set_up.push_back({"spacing", mm(part.spacing_m)});
   if (const ReportNumber w = field(summary, "roller_speed_rad_s"); w.value)
     part.set_up.push_back({"speed", fmt::format("{:.0f} rpm", *w.value * 30.0 / std::numbers::pi)});
-  if (part.paper) part.set_up.push_back({"plate", part.paper->material, false});
+  if (part.paper)
+    part.set_up.push_back({"plate", part.paper->material, false, "material-" + part.paper->key});
   if (part.mu_k_set.value)
     part.set_up.push_back({"mu-k-set", fmt::format("{:g}", *part.mu_k_set.value)});
   if (const ReportNumber h = field(summary, "h_c_m"); h.value)
@@ -178,10 +179,14 @@ ReportPart measurement_part(const HallLog& log, const LogEstimate& estimate,
   part.set_up.push_back({"samples", fmt::format("{}, {:.2f} s, {:.0f} Hz", log.t_s.size(),
                                                 estimate.duration, estimate.sample_rate)});
   if (paper) {
-    part.set_up.push_back({"plate", paper->name, false});
-    part.paper = ReportPaperRow{paper->name,         paper->temperature,
-                                paper->period.value, paper->period.uncertainty,
-                                paper->mu_k.value,   paper->mu_k.uncertainty};
+    part.set_up.push_back({"plate", paper->name, false, "material-" + paper->key});
+    part.paper = ReportPaperRow{paper->key,
+                                paper->name,
+                                paper->temperature,
+                                paper->period.value,
+                                paper->period.uncertainty,
+                                paper->mu_k.value,
+                                paper->mu_k.uncertainty};
   }
   ReportCurve signal{instrument_words(log.instrument) + " (as read)", log.t_s, {}};
   signal.value.assign(log.adc.begin(), log.adc.end());

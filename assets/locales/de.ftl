@@ -492,6 +492,13 @@ estimate-no-rig = T = { $period_s } s und μk = { $mu_k } gehören zu keinem Auf
 table-too-many-fields = erwartet: höchstens { $named } Felder, wie die Kopfzeile sie benennt, gefunden: { $found }
 table-not-a-number = erwartet: eine Zahl in der Spalte „{ $column }“, gefunden: „{ $found }“
 table-no-header = erwartet: eine Kopfzeile, deren erste Spalte eine Zeit benennt („t“, „Time (s)“), keine gefunden
+# Die serielle Schnittstelle des Aufbaus.
+port-not-there = diese serielle Schnittstelle gibt es nicht (ist die Platine eingesteckt? ls /dev/ttyACM* /dev/ttyUSB*)
+port-not-allowed = der Benutzer dieses Rechners darf die serielle Schnittstelle nicht öffnen (trage dich in die Gruppe dialout ein und melde dich neu an)
+port-busy = ein anderes Programm hat die serielle Schnittstelle offen: schließe den seriellen Monitor
+port-failed = { $port } lässt sich nicht öffnen: { $why }
+port-log-full = die Aufzeichnung hat ihre { $megabytes } MB erreicht (etwa { $minutes } Minuten bei den 1 kHz der Firmware): die Schnittstelle ist geschlossen und die Aufzeichnung bleibt erhalten; verbinde dich neu, um eine neue zu beginnen
+port-unplugged = { $port } ist um { $time } verschwunden (Platine ausgesteckt?): die { $lines } empfangenen Zeilen bleiben erhalten, lade sie unten herunter; stecke die Platine ein und verbinde dich neu
 quantity-spacing = den Achsabstand der Rollen l
 quantity-mu-k = μk
 quantity-h-c = die Schwerpunkthöhe h_c

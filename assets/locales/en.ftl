@@ -495,6 +495,13 @@ estimate-no-rig = T = { $period_s } s and mu_k = { $mu_k } are no rig's ({ $why 
 table-too-many-fields = expected at most { $named } fields as the header names, found { $found }
 table-not-a-number = expected a number in the column "{ $column }", found "{ $found }"
 table-no-header = expected a header whose first column names a time ("t", "Time (s)"), found none
+# The rig's serial port (src/hall_log/serial_port.cpp, src/serve/board_feed.cpp).
+port-not-there = no such serial port (is the board plugged in? ls /dev/ttyACM* /dev/ttyUSB*)
+port-not-allowed = this computer's user may not open the serial port (add yourself to the dialout group, then log in again)
+port-busy = another program has the serial port open: close the serial monitor
+port-failed = cannot open { $port }: { $why }
+port-log-full = the log reached its { $megabytes } MB (about { $minutes } minutes at the firmware's 1 kHz): the port is closed and the log kept; connect again to start a new one
+port-unplugged = { $port } went away at { $time } (the board unplugged?): the { $lines } lines received are kept, download them below; plug the board in and connect again
 # The quantities core/plausible_range.hpp bounds, as check-implausible's $what.
 quantity-spacing = the roller spacing l
 quantity-mu-k = mu_k

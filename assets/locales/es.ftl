@@ -502,6 +502,13 @@ estimate-no-rig = T = { $period_s } s y μk = { $mu_k } no son de ningún montaj
 table-too-many-fields = se esperaban como mucho { $named } campos, los que nombra la cabecera, se encontraron { $found }
 table-not-a-number = se esperaba un número en la columna «{ $column }», se encontró «{ $found }»
 table-no-header = se esperaba una cabecera cuya primera columna nombre un tiempo («t», «Time (s)»), no se encontró ninguna
+# El puerto serie del montaje.
+port-not-there = no existe ese puerto serie (¿está conectada la placa? ls /dev/ttyACM* /dev/ttyUSB*)
+port-not-allowed = el usuario de este ordenador no puede abrir el puerto serie (añádete al grupo dialout y vuelve a iniciar sesión)
+port-busy = otro programa tiene abierto el puerto serie: cierra el monitor serie
+port-failed = no se puede abrir { $port }: { $why }
+port-log-full = el registro llegó a sus { $megabytes } MB (unos { $minutes } minutos al 1 kHz del firmware): el puerto se cerró y el registro se guardó; vuelve a conectar para empezar otro
+port-unplugged = { $port } desapareció a las { $time } (¿se desconectó la placa?): las { $lines } líneas recibidas se guardan, descárgalas abajo; conecta la placa y vuelve a conectar
 quantity-spacing = la separación de los rodillos l
 quantity-mu-k = μk
 quantity-h-c = la altura del centro de masas h_c

@@ -489,6 +489,13 @@ estimate-no-rig = T = { $period_s } s et μk = { $mu_k } ne sont ceux d’aucun 
 table-too-many-fields = attendu au plus { $named } champs, comme l’en-tête en nomme, trouvé { $found }
 table-not-a-number = attendu un nombre dans la colonne « { $column } », trouvé « { $found } »
 table-no-header = attendu un en-tête dont la première colonne nomme un temps (« t », « Time (s) »), trouvé aucun
+# Le port série du montage.
+port-not-there = ce port série n’existe pas (la carte est-elle branchée ? ls /dev/ttyACM* /dev/ttyUSB*)
+port-not-allowed = l’utilisateur de cet ordinateur n’a pas le droit d’ouvrir le port série (ajoutez-vous au groupe dialout, puis reconnectez-vous)
+port-busy = un autre programme a ouvert le port série : fermez le moniteur série
+port-failed = impossible d’ouvrir { $port } : { $why }
+port-log-full = l’enregistrement a atteint ses { $megabytes } Mo (environ { $minutes } minutes au 1 kHz du micrologiciel) : le port est fermé et l’enregistrement gardé ; reconnectez-vous pour en commencer un nouveau
+port-unplugged = { $port } a disparu à { $time } (carte débranchée ?) : les { $lines } lignes reçues sont gardées, téléchargez-les ci-dessous ; rebranchez la carte et reconnectez-vous
 quantity-spacing = l’entraxe des rouleaux l
 quantity-mu-k = μk
 quantity-h-c = la hauteur du centre de masse h_c

@@ -13,20 +13,9 @@
 #include <asm/termbits.h>
 
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
-
-namespace {
-
-std::string why_not(int error) {
-  std::string out = std::strerror(error);
-  if (error == ENOENT) out += " (is the board plugged in? ls /dev/ttyACM* /dev/ttyUSB*)";
-  if (error == EACCES) out += " (add yourself to the dialout group, then log in again)";
-  if (error == EBUSY) out += " (another program has it open: close the serial monitor)";
-  return out;
-}
-
-}  // namespace
 
 SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
   const SourceLocation at{path, 0, 0};
@@ -34,7 +23,13 @@ SerialPort::SerialPort(const std::string& path, int baud) : path_(path) {
     throw InputError(SourceLocation::of_field("follow.baud"),
                      "expected a positive baud rate, such as 250000");
   fd_ = ::open(path.c_str(), O_RDONLY | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-  if (fd_ < 0) throw InputError(at, "cannot open the serial port: " + why_not(errno));
+  if (fd_ < 0) {
+    const int error = errno;
+    if (error == ENOENT) throw InputError(at, said("port-not-there"));
+    if (error == EACCES) throw InputError(at, said("port-not-allowed"));
+    if (error == EBUSY) throw InputError(at, said("port-busy"));
+    throw InputError(at, "cannot open the serial port: " + std::string(std::strerror(error)));
+  }
   struct termios2 t {};
   if (::ioctl(fd_, TCGETS2, &t) != 0) {
     const int error = errno;

@@ -234,6 +234,7 @@ json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports,
            {"baud", baud},
            {"state", "closed"},
            {"message", nullptr},
+           {"said", nullptr},
            {"lines", 0},
            {"log_name", nullptr}};
   if (feed) {
@@ -242,6 +243,7 @@ json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports,
     out["baud"] = s.baud;
     out["state"] = s.state;
     out["message"] = s.message ? json(*s.message) : json(nullptr);
+    out["said"] = said_or_null(s.said);
     out["lines"] = s.lines;
     out["log_name"] = s.log_name.empty() ? json(nullptr) : json(s.log_name);
   }

@@ -40,6 +40,10 @@ nlohmann::json frame_json(const LiveFrame& frame, bool playing, double speed);
 nlohmann::json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports,
                              bool may_choose, int baud);
 
+// A message the lab says (text/said.hpp) as the web API's `Said`; null for none.
+nlohmann::json said_json(const Said& message);
+nlohmann::json said_or_null(const std::optional<Said>& message);
+
 // A 400's body: every problem of an InputError (a RequestError's by field), spelled for the page.
 nlohmann::json problems_json(const std::exception& error);
 

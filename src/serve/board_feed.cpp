@@ -35,6 +35,7 @@ BoardFeed::BoardFeed(std::string port, int baud, std::string record_dir, std::si
   } catch (const InputError& e) {
     status_.state = "failed";
     status_.message = std::string(e.what());
+    if (e.said()) status_.said = said("port-failed", {arg("port", port), arg("why", *e.said())});
     return;
   }
   thread_ = std::thread([this] { read_port(); });
@@ -51,6 +52,7 @@ void BoardFeed::close() {
   if (status_.state == "waiting" || status_.state == "receiving") {
     status_.state = "closed";
     status_.message = std::nullopt;
+    status_.said = std::nullopt;
   }
   if (record_) {
     record_->sync();
@@ -87,18 +89,15 @@ bool BoardFeed::feed(std::string_view bytes, bool ended) {
 bool BoardFeed::take(std::string_view bytes, bool ended) {
   if (!lines_in(bytes, ended)) {
     const std::lock_guard lock(mutex_);
-    end("full", fmt::format("the log reached its {} MB (about {} minutes at the firmware's "
-                            "1 kHz): the port is closed and the log kept; connect again to "
-                            "start a new one",
-                            most_log_bytes_ >> 20, most_log_bytes_ / (20 * 1000 * 60)));
+    end("full", said("port-log-full", {arg("megabytes", most_log_bytes_ >> 20),
+                                       arg("minutes", most_log_bytes_ / (20 * 1000 * 60))}));
     return false;
   }
   if (ended) {
     const std::lock_guard lock(mutex_);
-    end("unplugged",
-        fmt::format("{} went away at {} (the board unplugged?): the {} lines received are "
-                    "kept, download them below; plug the board in and connect again",
-                    status_.port, fmt::format("{:%H:%M:%S}", local_now()), status_.lines));
+    end("unplugged", said("port-unplugged", {arg("port", status_.port),
+                                             arg("time", fmt::format("{:%H:%M:%S}", local_now())),
+                                             arg("lines", status_.lines)}));
     return false;
   }
   return true;
@@ -120,6 +119,7 @@ bool BoardFeed::lines_in(std::string_view bytes, bool ended) {
   const LiveCapture::ErrorSink refused = [this](const InputError& e) {
     status_.state = "failed";
     status_.message = std::string(e.what());
+    status_.said = e.said();
   };
   return capture_.add(bytes, ended, keep, {}, refused);
 }
@@ -143,13 +143,15 @@ void BoardFeed::record(std::string_view bytes) {
         "{} in the --record folder: {}; the page's download still has "
         "the log",
         status_.log_name, without_location(e.what()));
+    status_.said = std::nullopt;
   }
 }
 
 // Under the lock.
-void BoardFeed::end(const std::string& state, std::optional<std::string> message) {
+void BoardFeed::end(const std::string& state, const Said& message) {
   status_.state = state;
-  status_.message = std::move(message);
+  status_.message = english(message);
+  status_.said = message;
 }
 
 BoardFeedStatus BoardFeed::status() const {

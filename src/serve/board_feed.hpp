@@ -19,6 +19,7 @@
 #include "hall_log/serial_port.hpp"
 #include "io/appending_file.hpp"
 #include "lab/logs/live_capture.hpp"
+#include "text/said.hpp"
 
 namespace fl::serve {
 
@@ -34,6 +35,7 @@ struct BoardFeedStatus {
   // server's end), "full" (the log reached its size limit).
   std::string state;
   std::optional<std::string> message;  // what happened and what to do; none while all is well
+  std::optional<Said> said;            // the message as the catalogues say it, where they do
   int lines = 0;
   std::string log_name;  // the raw log's name for its download ("" before a line came)
 };
@@ -84,7 +86,7 @@ class BoardFeed {
   // complete lines; all of them when the port `ended`); false when the log is full.
   bool lines_in(std::string_view bytes, bool ended);
   void record(std::string_view bytes);
-  void end(const std::string& state, std::optional<std::string> message);
+  void end(const std::string& state, const Said& message);
 
   mutable std::mutex mutex_;
   BoardFeedStatus status_;

@@ -50,6 +50,7 @@ std::optional<json> BoardWatch::next(const std::shared_ptr<const BoardFeed>& fee
   json out{{"port", status.port},
            {"state", status.state},
            {"message", status.message ? json(*status.message) : json(nullptr)},
+           {"said", said_or_null(status.said)},
            {"lines", status.lines},
            {"run", run_},
            {"hall", std::move(hall)},

@@ -215,7 +215,8 @@ TEST_F(Follow, APortThatIsNotThereOrSilentIsALocatedError) {
       test::run_command(kExe + " estimate --follow /dev/ttyNOSUCH0");
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(
-      missing.err.rfind("/dev/ttyNOSUCH0: error: cannot open the serial port: No such file", 0), 0u)
+      missing.err.rfind("/dev/ttyNOSUCH0: error: no such serial port (is the board plugged in?", 0),
+      0u)
       << missing.err;
   const test::CommandResult file =
       test::run_command(kExe + " estimate --follow " + kSource + "/README.md");

@@ -366,6 +366,8 @@ export interface LiveRig {
   state: BoardPortState;
   /** what happened and what to do; null while all is well */
   message: string | null;
+  /** the message as the catalogues say it; null where they do not */
+  said: Said | null;
   /** the lines received */
   lines: number;
   /** the raw log's download name; null before a line */
@@ -380,6 +382,8 @@ export interface LiveRigEvent {
   state: BoardPortState;
   /** what happened and what to do; null while all is well */
   message: string | null;
+  /** the message as the catalogues say it; null where they do not */
+  said: Said | null;
   /** the lines received */
   lines: number;
   /** the board's restarts: a new value starts the rig's plot and periods again */

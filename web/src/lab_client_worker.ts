@@ -224,6 +224,7 @@ function offered(rig: LiveRig): LiveRig {
     ports: [],
     may_choose: true,
     message: never ? t("serial-missing") : rig.message,
+    said: never ? { id: "serial-missing", args: [] } : rig.said,
   };
 }
 

@@ -8,9 +8,11 @@ import { byId, byTestId, setText } from "./dom";
 import { t } from "./i18n";
 import { fixed, significant, trimmed, withError } from "./page_numbers";
 import { closeRig, getRig, LabError, openRig, RIG_PORTS_LISTED, rigLogHref } from "./lab_client";
+import type { Said } from "./api_types";
 import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { RigPlot } from "./live_rig_plot";
+import { appendWords, labWords } from "./lab_says";
 
 const POLL_MS = 2000;
 
@@ -24,6 +26,8 @@ interface PortStatus {
   port: string | null;
   state: BoardPortState;
   message: string | null;
+  /** the message as the catalogues say it, where they do */
+  said: Said | null;
   lines: number;
 }
 
@@ -97,7 +101,13 @@ export class RigPanel {
     },
   );
   private rig: LiveRig | null = null;
-  private status: PortStatus = { port: null, state: "closed", message: null, lines: 0 };
+  private status: PortStatus = {
+    port: null,
+    state: "closed",
+    message: null,
+    said: null,
+    lines: 0,
+  };
   /** The board's run the plot and periods show; null before a rig event. */
   private run: number | null = null;
   private lastEventAt = -Infinity;
@@ -153,6 +163,7 @@ export class RigPanel {
       port: event.port,
       state: event.state,
       message: event.message,
+      said: event.said,
       lines: event.lines,
     };
     this.plot.push(event.hall, event.periods);
@@ -222,7 +233,13 @@ export class RigPanel {
   private showRig(rig: LiveRig): void {
     this.rig = rig;
     this.showPorts(rig);
-    this.status = { port: rig.port, state: rig.state, message: rig.message, lines: rig.lines };
+    this.status = {
+      port: rig.port,
+      state: rig.state,
+      message: rig.message,
+      said: rig.said,
+      lines: rig.lines,
+    };
     const name = rig.log_name ?? "rig.log";
     this.logLink.download = name;
     setText(this.logLink, t("rig-log-named", { name }));
@@ -248,7 +265,10 @@ export class RigPanel {
 
   private showStatus(): void {
     const status = this.status;
-    setText(this.stateLine, stateWords(status) + (status.message ? `. ${status.message}` : ""));
+    // The port's state in the page's words, then the lab's message in the page's language where
+    // its catalogue has it (marked English where not).
+    setText(this.stateLine, stateWords(status) + (status.message ? "." : ""));
+    if (status.message) appendWords(this.stateLine, labWords(status.said, status.message));
     this.stateLine.dataset["state"] = status.state;
     this.logLink.hidden = status.lines <= 0;
     this.offerLog(status);

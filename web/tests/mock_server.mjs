@@ -62,6 +62,7 @@ class FakeBoard {
     this.port = null;
     this.state = "closed";
     this.message = null;
+    this.said = null;
     this.run = 0;
     this.logName = null;
     this.openedAt = 0;
@@ -71,6 +72,7 @@ class FakeBoard {
     this.port = port;
     this.state = "waiting";
     this.message = null;
+    this.said = null;
     this.run = 0;
     this.logName = null;
     this.openedAt = Date.now();
@@ -81,13 +83,24 @@ class FakeBoard {
     if (this.state !== "waiting" && this.state !== "receiving") return; // as the server does
     this.state = "closed";
     this.message = null;
+    this.said = null;
   }
   unplug() {
     this.advance();
     this.state = "unplugged";
+    // As the lab says it (src/serve/board_feed.cpp): in English, and as the catalogues' message.
+    const time = new Date().toTimeString().slice(0, 8);
     this.message =
-      "the port went away: the board was unplugged or reset its USB; the log so far is kept " +
-      "(download it below); plug it in again and connect";
+      `${this.port} went away at ${time} (the board unplugged?): the ${this.lines} lines ` +
+      "received are kept, download them below; plug the board in and connect again";
+    this.said = {
+      id: "port-unplugged",
+      args: [
+        { name: "port", text: this.port },
+        { name: "time", text: time },
+        { name: "lines", number: this.lines },
+      ],
+    };
   }
   /** Sends the samples due by now (none once the recording's end is reached). */
   advance() {
@@ -136,6 +149,7 @@ class FakeBoard {
       baud: this.port === null ? null : this.board.baud, // the firmware's, as recorded
       state: this.state,
       message: this.message,
+      said: this.said,
       lines: this.lines,
       log_name: this.logName,
     };
@@ -167,6 +181,7 @@ class FakeBoard {
       port: this.port,
       state: this.state,
       message: this.message,
+      said: this.said,
       lines: this.lines,
       run: this.run,
       hall,

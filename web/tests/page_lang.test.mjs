@@ -15,7 +15,7 @@
 import { readdirSync, readFileSync } from "node:fs";
 import { dirname, join, resolve } from "node:path";
 import { fileURLToPath } from "node:url";
-import { startBuiltPage } from "./mock_server.mjs";
+import { FAKE_RIG_PORT, startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
@@ -265,6 +265,28 @@ await check(
     await context.close();
   },
 );
+
+await check("the live rig's port unplugged: the lab's message in French", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  const port = page.getByTestId("rig-port");
+  await port.locator("option", { hasText: FAKE_RIG_PORT }).waitFor({ state: "attached" });
+  await page.getByTestId("rig-connect").click();
+  const state = page.getByTestId("rig-state");
+  await state.filter({ hasText: "réception depuis" }).waitFor();
+  await fetch(`${base}/__mock/rig-unplug`);
+  await state.filter({ hasText: "a disparu" }).waitFor();
+  const said = await text(state);
+  expect(
+    /^débranché.*\. \/dev\/ttyFAKE0 a disparu à \d\d:\d\d:\d\d \(carte débranchée \?\) : les \d+ lignes reçues sont gardées/.test(
+      said,
+    ),
+    `the port's state: ${said}`,
+  );
+  expect((await state.locator('[lang="en"]').count()) === 0, "the message is marked English");
+  expect(complaints.length === 0, `console: ${complaints.join("\n")}`);
+  await context.close();
+});
 
 await check("a French phone: the view, T, μk and the plot in the first screen", async () => {
   const context = await browser.newContext({

@@ -516,7 +516,7 @@ await check(
     await page.getByTestId("rig-connect").click();
     await page.getByTestId("rig-state").filter({ hasText: "receiving from" }).waitFor();
     await fetch(`${base}/__mock/rig-unplug`);
-    await page.getByTestId("rig-state").filter({ hasText: "the log so far is kept" }).waitFor();
+    await page.getByTestId("rig-state").filter({ hasText: "lines received are kept" }).waitFor();
     expect(await logLink.isVisible(), "the log link went with the board");
     expect(await page.getByTestId("rig-close").isDisabled(), "close enabled for a port gone");
     expect(complaints.length === 0, `console: ${complaints.join("\n")}`);

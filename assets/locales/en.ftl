@@ -465,6 +465,45 @@ check-drive-coupling = the drive's coupling (a { $roller_teeth }-tooth roller ge
 check-sensor-in-magnet-path = the sensor lies inside the volume magnet { $magnet } sweeps as the plate moves; raise it above the magnet's top at { $top_mm } mm
 check-magnetometer-in-plate-path = phone { $phone }: the magnetometer at [{ $x_mm }, { $y_mm }, { $z_mm }] mm lies inside the volume the plate sweeps; lay the phone beside the rig (|y| above { $half_width_mm } mm)
 check-magnetometer-in-magnet-path = phone { $phone }: the magnetometer lies inside the volume magnet { $magnet } sweeps as the plate moves; lay the phone beside the rig
+check-not-negative = must be >= 0, found { $value }
+check-not-negative-in = must be >= 0, found { $value } { $unit }
+check-angles-finite = must be finite angles
+check-ramp-time = point { $point }: its time { $time } s must be >= 0 and after the previous point's
+check-ramp-value = point { $point }: its value { $value }{ $unit } must lie from { $least } to { $most }
+check-ramp-times-match = roller 1's points must be at roller 0's times
+check-ramp-with-drive = the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead
+check-two-radii-drive = two radii go with the ideal drive only (the drive's gear train is laid out for one roller size); give one radius or drop the drive
+check-skew = must be between -10 and 10 degrees (axes that far from parallel are no bench's misalignment), found { $degrees } degrees
+check-rolling-resistance = must be >= 0 and below half the roller's radius ({ $half_radius_mm } mm): a pressure centre that far ahead of the top is no roller's, found { $found_mm } mm
+check-runout = must be >= 0 and below half the roller's radius ({ $half_radius_mm } mm), found { $found_mm } mm
+check-warming-room = must be warmer than the rollers' start (friction.temperature, { $start_k } K), found { $room_k } K
+check-speed-1-not-negative = roller 1's speed must be >= 0, found { $speed } rad/s
+check-two-speeds-drive = two speeds [roller 0, roller 1] are the ideal drive's: a drive turns both rollers through its gears at one speed; remove the drive or give one speed
+check-two-speeds-ramp = two speeds go with a constant speed, not with rollers.speed_ramp; give one
+check-payload-on-plate = must lie on the plate, within half its length ({ $half_length_mm } mm) of its middle, found { $x_mm } mm
+check-mu-k-positive = mu_k must be positive, found { $mu_k }
+check-mu-s-at-least-mu-k = the static limit mu_s must be at least mu_k = { $mu_k }, found { $mu_s }
+check-stribeck-v-s = a stribeck law with mu_s > mu_k needs friction.v_s, the speed over which friction falls from mu_s to mu_k (e.g. 10 mm/s)
+check-beta-finite = beta must be finite, found { $beta }
+check-mu-negative = the law's mu(s) goes negative ({ $mu_min } at the run's largest slip speed { $slip_speed } m/s); use a smaller |beta| or a larger mu_k
+check-magnet-size = magnet { $magnet }: diameter, thickness and density must be positive
+check-magnet-remanence = magnet { $magnet }: remanence must be non-zero
+check-magnet-on-plate = magnet { $magnet } at x = { $x_mm } mm does not sit on the plate (half length { $half_length_mm } mm)
+check-axis-non-zero = must be a non-zero vector
+check-adc-bits = must be between 1 and 16, found { $bits }
+check-jitter = must be >= 0 and below a quarter of the sample interval
+check-clock-error = must lie within +-10 % (a resonator is off by 0.5 % at most), found { $error }
+check-sensor-offset = must lie between 0 V and the supply
+check-sensor-above = the sensor must sit above the rollers' tops (z > 0)
+check-phone-rate = phone { $phone }: rate must lie from 1 Hz to 10 kHz (phyphox records at 50 to 500 Hz), found { $rate } Hz
+check-phone-noise = phone { $phone }: noise must be >= 0, found { $noise }
+check-phone-turn = phone { $phone }: turn must be finite
+check-phone-earth-field = phone { $phone }: the Earth's field must be finite and at most 1 mT (it is 25 to 65 uT), found { $field_ut } uT
+check-phone-position = phone { $phone }: position must be finite
+check-phone-mass = phone { $phone }: mass must be positive, found { $mass_kg } kg
+check-phone-size = phone { $phone }: size (width, length, thickness) must be positive
+check-phone-height = phone { $phone }: height must be >= 0, found { $height_mm } mm
+check-phone-on-plate = phone { $phone }: x = { $x_mm } mm puts the phone's centre off the plate (half length { $half_length_mm } mm)
 # A measurement's file the lab cannot read (src/hall_log/, src/lab/logs/). $tried: the reading
 # options tried, as the page names them.
 reading-expected = a header naming the time and ADC columns (for example "t_us,adc", "t_s,adc" or "time,value") or lines of samples

@@ -129,27 +129,24 @@ std::optional<Ramp> duty_ramp(const Scene& scene) {
   return Ramp(scene.drive->motor.duty_ramp);
 }
 
-std::vector<std::pair<std::string, std::string>> FrictionDesc::problems(double largest_slip_speed,
-                                                                        bool speeds_hold) const {
-  std::vector<std::pair<std::string, std::string>> out;
-  const auto need = [&](bool ok, const char* key, std::string message) {
+std::vector<std::pair<std::string, Said>> FrictionDesc::problems(double largest_slip_speed,
+                                                                 bool speeds_hold) const {
+  std::vector<std::pair<std::string, Said>> out;
+  const auto need = [&](bool ok, const char* key, Said message) {
     if (!ok) out.emplace_back(key, std::move(message));
   };
   need(std::isfinite(mu_k) && mu_k > 0.0, "friction.mu_k",
-       describe("mu_k must be positive, found ", mu_k));
+       said("check-mu-k-positive", {arg("mu_k", mu_k)}));
   if (mu_s)
     need(std::isfinite(*mu_s) && *mu_s >= mu_k, "friction.mu_s",
-         describe("the static limit mu_s must be at least mu_k = ", mu_k, ", found ", *mu_s));
+         said("check-mu-s-at-least-mu-k", {arg("mu_k", mu_k), arg("mu_s", *mu_s)}));
   if (law != FrictionLawKind::kStribeck) return out;
-  need(!(mu_s && *mu_s > mu_k) || v_s.has_value(), "friction.mu_s",
-       "a stribeck law with mu_s > mu_k needs friction.v_s, the speed over which friction falls "
-       "from mu_s to mu_k (e.g. 10 mm/s)");
-  need(std::isfinite(beta), "friction.beta", describe("beta must be finite, found ", beta));
+  need(!(mu_s && *mu_s > mu_k) || v_s.has_value(), "friction.mu_s", said("check-stribeck-v-s"));
+  need(std::isfinite(beta), "friction.beta", said("check-beta-finite", {arg("beta", beta)}));
   // mu(s) falls monotonically when beta < 0: its least value is at the largest slip speed.
   const double mu_min = friction_law(*this).kinetic(largest_slip_speed);
   need(!speeds_hold || beta >= 0.0 || mu_min > 0.0, "friction.beta",
-       describe("the law's mu(s) goes negative (", mu_min, " at the run's largest slip speed ",
-                largest_slip_speed, " m/s); use a smaller |beta| or a larger mu_k"));
+       said("check-mu-negative", {arg("mu_min", mu_min), arg("slip_speed", largest_slip_speed)}));
   return out;
 }
 

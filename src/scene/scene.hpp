@@ -18,6 +18,7 @@
 #include "core/regime.hpp"
 #include "core/units.hpp"
 #include "scene/video_yaml.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -199,8 +200,8 @@ struct FrictionDesc {
   // when mu_s > mu_k and a finite beta, and, when the rollers' speeds are known to hold
   // (`speeds_hold`), mu(s) still positive at the run's largest slip speed [m/s]. Each broken rule
   // as the scene key responsible and what is wrong (scene_checks.cpp adds them to the scene's).
-  std::vector<std::pair<std::string, std::string>> problems(double largest_slip_speed,
-                                                            bool speeds_hold) const;
+  std::vector<std::pair<std::string, Said>> problems(double largest_slip_speed,
+                                                     bool speeds_hold) const;
 };
 
 // A 12 V DC motor with a linear torque-speed curve, its voltage set by PWM (the paper's Arduino).

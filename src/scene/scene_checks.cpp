@@ -25,12 +25,7 @@ class Checks {
  public:
   explicit Checks(std::vector<SceneProblem>& problems) : problems_(problems) {}
 
-  // A problem said in English only (a front end shows it as written).
-  void need(bool ok, const char* key, std::string message,
-            std::vector<std::string> involves = {}) const {
-    if (!ok) problems_.push_back({key, std::move(message), std::nullopt, std::move(involves)});
-  }
-  // A problem the catalogues say in each language (text/said.hpp).
+  // A problem, said in the catalogues' words (text/said.hpp).
   void need(bool ok, const char* key, const Said& message,
             std::vector<std::string> involves = {}) const {
     if (!ok) problems_.push_back({key, english(message), message, std::move(involves)});
@@ -60,12 +55,10 @@ class Checks {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const RampPoint& p = points[i];
       need(std::isfinite(p.at) && p.at >= 0.0 && (i == 0 || p.at > points[i - 1].at), key,
-           describe("point ", i, ": its time ", p.at,
-                    " s must be >= 0 and after the previous "
-                    "point's"));
+           said("check-ramp-time", {arg("point", i), arg("time", p.at)}));
       need(std::isfinite(p.value) && p.value >= least && p.value <= most, key,
-           describe("point ", i, ": its value ", p.value, unit, " must lie from ", least, " to ",
-                    most));
+           said("check-ramp-value", {arg("point", i), arg("value", p.value), arg("unit", unit),
+                                     arg("least", least), arg("most", most)}));
     }
   }
   std::size_t count() const { return problems_.size(); }
@@ -125,9 +118,7 @@ void check_roller_shape(const Scene& s, const Checks& c) {
   c.positive(s.rollers.radius, "rollers.radius", "m");
   if (s.rollers.radius_roller_1) {
     c.positive(*s.rollers.radius_roller_1, "rollers.radius", "m");
-    c.need(!s.drive, "rollers.radius",
-           "two radii go with the ideal drive only (the drive's gear train is laid out for one "
-           "roller size); give one radius or drop the drive");
+    c.need(!s.drive, "rollers.radius", said("check-two-radii-drive"));
   }
   c.plausible(s.rollers.spacing, kSpacingRange, "rollers.spacing");
   c.plausible(s.rollers.radius, kRollerRadiusRange, "rollers.radius");
@@ -137,25 +128,22 @@ void check_roller_shape(const Scene& s, const Checks& c) {
   c.plausible(s.friction.mu_k, kMuKRange, "friction.mu_k");
   c.plausible(s.world.gravity, kGravityRange, "world.gravity");
   c.need(std::isfinite(s.rollers.skew) && std::fabs(s.rollers.skew) <= kPi / 18.0, "rollers.skew",
-         describe("must be between -10 and 10 degrees (axes that far from parallel are no "
-                  "bench's misalignment), found ",
-                  s.rollers.skew * 180.0 / kPi, " degrees"));
+         said("check-skew", {arg("degrees", s.rollers.skew * 180.0 / kPi)}));
   // Bounded by the smaller roller where the two differ.
   const double radius_least =
       std::min(s.rollers.radius, s.rollers.radius_roller_1.value_or(s.rollers.radius));
   c.need(std::isfinite(s.rollers.rolling_resistance) && s.rollers.rolling_resistance >= 0.0 &&
              s.rollers.rolling_resistance < 0.5 * radius_least,
          "rollers.rolling_resistance",
-         describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
-                  " mm): a pressure centre that far ahead of the top is no roller's, found ",
-                  s.rollers.rolling_resistance * 1e3, " mm"));
+         said("check-rolling-resistance", {arg("half_radius_mm", 0.5e3 * radius_least),
+                                           arg("found_mm", s.rollers.rolling_resistance * 1e3)}));
   c.need(std::isfinite(s.rollers.runout) && s.rollers.runout >= 0.0 &&
              s.rollers.runout < 0.5 * radius_least,
          "rollers.runout",
-         describe("must be >= 0 and below half the roller's radius (", 0.5e3 * radius_least,
-                  " mm), found ", 1e3 * s.rollers.runout, " mm"));
+         said("check-runout", {arg("half_radius_mm", 0.5e3 * radius_least),
+                               arg("found_mm", 1e3 * s.rollers.runout)}));
   for (const double phase : s.rollers.runout_phase)
-    c.need(std::isfinite(phase), "rollers.runout_phase", "must be finite angles");
+    c.need(std::isfinite(phase), "rollers.runout_phase", said("check-angles-finite"));
   c.positive(s.rollers.length, "rollers.length", "m");
 }
 
@@ -164,11 +152,11 @@ void check_warming(const Scene& s, const Checks& c) {
   if (const std::optional<WarmingDesc>& w = s.friction.warming) {
     c.need(std::isfinite(w->room_temperature) && w->room_temperature > s.friction.temperature,
            "friction.warming.room",
-           describe("must be warmer than the rollers' start (friction.temperature, ",
-                    s.friction.temperature, " K), found ", w->room_temperature, " K"));
+           said("check-warming-room",
+                {arg("start_k", s.friction.temperature), arg("room_k", w->room_temperature)}));
     c.positive(w->time_constant, "friction.warming.time_constant", "s");
     c.need(std::isfinite(w->hold) && w->hold >= 0.0, "friction.warming.hold",
-           describe("must be >= 0, found ", w->hold, " s"));
+           said("check-not-negative-in", {arg("value", w->hold), arg("unit", "s")}));
     if (w->mu_k_room) c.positive(*w->mu_k_room, "friction.warming.mu_k_room");
   }
 }
@@ -179,28 +167,25 @@ bool check_roller_speeds(const Scene& s, const Checks& c) {
          said("check-speed-not-negative", {arg("speed", s.rollers.speed)}));
   if (const std::optional<double>& second = s.rollers.speed_roller_1) {
     c.need(std::isfinite(*second) && *second >= 0.0, "rollers.speed",
-           describe("roller 1's speed must be >= 0, found ", *second, " rad/s"));
+           said("check-speed-1-not-negative", {arg("speed", *second)}));
     if (std::isfinite(*second) && *second > 0.0)
       c.plausible(*second, kRollerSpeedRange, "rollers.speed");
-    c.need(!s.drive, "rollers.speed",
-           "two speeds [roller 0, roller 1] are the ideal drive's: a drive turns both rollers "
-           "through its gears at one speed; remove the drive or give one speed");
-    c.need(s.rollers.speed_ramp.empty(), "rollers.speed",
-           "two speeds go with a constant speed, not with rollers.speed_ramp; give one");
+    c.need(!s.drive, "rollers.speed", said("check-two-speeds-drive"));
+    c.need(s.rollers.speed_ramp.empty(), "rollers.speed", said("check-two-speeds-ramp"));
   }
   const std::size_t before_ramps = c.count();
   c.ramp(s.rollers.speed_ramp, "rollers.speed_ramp", 0.0, std::numeric_limits<double>::max(),
          " rad/s");
   c.ramp(s.rollers.speed_ramp_roller_1, "rollers.speed_ramp", 0.0,
-         std::numeric_limits<double>::max(), " rad/s (roller 1)");
+         std::numeric_limits<double>::max(), " rad/s");
   c.need(s.rollers.speed_ramp_roller_1.empty() ||
              (s.rollers.speed_ramp_roller_1.size() == s.rollers.speed_ramp.size() &&
               std::equal(s.rollers.speed_ramp.begin(), s.rollers.speed_ramp.end(),
                          s.rollers.speed_ramp_roller_1.begin(),
                          [](const RampPoint& a, const RampPoint& b) { return a.at == b.at; })),
-         "rollers.speed_ramp", "roller 1's points must be at roller 0's times");
+         "rollers.speed_ramp", said("check-ramp-times-match"));
   c.need(s.rollers.speed_ramp.empty() || !s.drive, "rollers.speed_ramp",
-         "the drive sets the rollers' speed; ramp drive.motor.duty_ramp instead");
+         said("check-ramp-with-drive"));
   if (s.drive) c.ramp(s.drive->motor.duty_ramp, "drive.motor.duty_ramp", 0.0, 1.0, "");
   // The largest speed a ramp reaches is read (check_friction) only once the ramps hold.
   return c.count() == before_ramps;
@@ -222,15 +207,16 @@ void check_plate(const Scene& s, const Checks& c) {
   else
     c.positive(s.plate.density, "plate.density", "kg/m^3");
   c.need(std::isfinite(s.plate.payload.mass) && s.plate.payload.mass >= 0.0, "plate.payload.mass",
-         "must be >= 0");
+         said("check-not-negative-in", {arg("value", s.plate.payload.mass), arg("unit", "kg")}));
   c.need(std::isfinite(s.plate.payload.height) && s.plate.payload.height >= 0.0,
-         "plate.payload.height", "must be >= 0");
+         "plate.payload.height",
+         said("check-not-negative-in", {arg("value", s.plate.payload.height), arg("unit", "m")}));
   c.need(std::isfinite(s.plate.payload.x) && std::fabs(s.plate.payload.x) <= 0.5 * s.plate.length,
          "plate.payload.x",
-         describe("must lie on the plate, within half its length (", 0.5e3 * s.plate.length,
-                  " mm) of its middle, found ", s.plate.payload.x * 1e3, " mm"));
+         said("check-payload-on-plate", {arg("half_length_mm", 0.5e3 * s.plate.length),
+                                         arg("x_mm", s.plate.payload.x * 1e3)}));
   c.need(std::isfinite(s.plate.offset), "plate.offset", said("check-must-be-finite"));
-  c.need(std::isfinite(s.plate.velocity), "plate.velocity", "must be finite");
+  c.need(std::isfinite(s.plate.velocity), "plate.velocity", said("check-must-be-finite"));
 }
 
 // The friction law: the rules the friction value keeps (FrictionDesc::problems).
@@ -247,12 +233,12 @@ void check_magnets(const Scene& s, const Checks& c) {
     const MagnetDesc& m = s.magnets[i];
     c.need(
         finite_positive(m.diameter) && finite_positive(m.thickness) && finite_positive(m.density),
-        "magnets", describe("magnet ", i, ": diameter, thickness and density must be positive"));
+        "magnets", said("check-magnet-size", {arg("magnet", i)}));
     c.need(std::isfinite(m.remanence) && m.remanence != 0.0, "magnets",
-           describe("magnet ", i, ": remanence must be non-zero"));
+           said("check-magnet-remanence", {arg("magnet", i)}));
     c.need(std::fabs(m.x) + 0.5 * m.diameter <= 0.5 * s.plate.length + 1e-12, "magnets",
-           describe("magnet ", i, " at x = ", m.x * 1e3,
-                    " mm does not sit on the plate (half length ", 0.5e3 * s.plate.length, " mm)"));
+           said("check-magnet-on-plate", {arg("magnet", i), arg("x_mm", m.x * 1e3),
+                                          arg("half_length_mm", 0.5e3 * s.plate.length)}));
   }
 }
 
@@ -297,25 +283,23 @@ void check_sensor(const Scene& s, const Checks& c, double amplitude) {
   if (s.sensor) {
     const SensorDesc& sensor = *s.sensor;
     const double norm = std::hypot(sensor.axis[0], sensor.axis[1], sensor.axis[2]);
-    c.need(std::isfinite(norm) && norm > 0.0, "sensor.axis", "must be a non-zero vector");
+    c.need(std::isfinite(norm) && norm > 0.0, "sensor.axis", said("check-axis-non-zero"));
     c.positive(sensor.sensitivity, "sensor.sensitivity", "V/T");
     c.positive(sensor.supply, "sensor.supply", "V");
     c.positive(sensor.sample_rate, "sensor.sample_rate", "Hz");
     c.need(sensor.adc_bits >= 1 && sensor.adc_bits <= 16, "sensor.adc_bits",
-           describe("must be between 1 and 16, found ", sensor.adc_bits));
-    c.need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise", "must be >= 0");
+           said("check-adc-bits", {arg("bits", sensor.adc_bits)}));
+    c.need(std::isfinite(sensor.noise) && sensor.noise >= 0.0, "sensor.noise",
+           said("check-not-negative", {arg("value", sensor.noise)}));
     c.need(std::isfinite(sensor.jitter) && sensor.jitter >= 0.0 &&
                sensor.jitter < 0.25 / sensor.sample_rate,
-           "sensor.jitter", "must be >= 0 and below a quarter of the sample interval");
+           "sensor.jitter", said("check-jitter"));
     c.need(std::isfinite(sensor.clock_error) && std::fabs(sensor.clock_error) < 0.1,
-           "sensor.clock_error",
-           describe("must lie within +-10 % (a resonator is off by 0.5 % at most), found ",
-                    sensor.clock_error));
+           "sensor.clock_error", said("check-clock-error", {arg("error", sensor.clock_error)}));
     if (sensor.offset)
       c.need(*sensor.offset >= 0.0 && *sensor.offset <= sensor.supply, "sensor.offset",
-             "must lie between 0 V and the supply");
-    c.need(sensor.position[2] > 0.0, "sensor.position",
-           "the sensor must sit above the rollers' tops (z > 0)");
+             said("check-sensor-offset"));
+    c.need(sensor.position[2] > 0.0, "sensor.position", said("check-sensor-above"));
     // The sensor must not be inside the volume any magnet sweeps.
     if (const std::optional<std::size_t> i = magnet_sweeping(s, sensor.position, amplitude)) {
       const MagnetDesc& m = s.magnets[*i];
@@ -333,38 +317,29 @@ void check_sensor(const Scene& s, const Checks& c, double amplitude) {
 void check_phones(const Scene& s, const Checks& c) {
   for (std::size_t i = 0; i < s.phones.size(); ++i) {
     const PhoneDesc& p = s.phones[i];
-    const std::string phone = describe("phone ", i, ": ");
     c.need(std::isfinite(p.rate) && p.rate >= 1.0 && p.rate <= 10000.0, "phones",
-           describe(phone,
-                    "rate must lie from 1 Hz to 10 kHz (phyphox records at 50 to 500 Hz), "
-                    "found ",
-                    p.rate, " Hz"));
+           said("check-phone-rate", {arg("phone", i), arg("rate", p.rate)}));
     c.need(std::isfinite(p.noise) && p.noise >= 0.0, "phones",
-           describe(phone, "noise must be >= 0, found ", p.noise));
-    c.need(std::isfinite(p.turn), "phones", describe(phone, "turn must be finite"));
+           said("check-phone-noise", {arg("phone", i), arg("noise", p.noise)}));
+    c.need(std::isfinite(p.turn), "phones", said("check-phone-turn", {arg("phone", i)}));
     if (p.sensor == PhoneSensor::kMagnetometer) {
       const double earth = std::hypot(p.earth[0], p.earth[1], p.earth[2]);
       c.need(std::isfinite(earth) && earth <= 1e-3, "phones",
-             describe(phone,
-                      "the Earth's field must be finite and at most 1 mT (it is 25 to 65 "
-                      "uT), found ",
-                      earth * 1e6, " uT"));
+             said("check-phone-earth-field", {arg("phone", i), arg("field_ut", earth * 1e6)}));
       c.need(std::isfinite(p.position[0]) && std::isfinite(p.position[1]) &&
                  std::isfinite(p.position[2]),
-             "phones", describe(phone, "position must be finite"));
+             "phones", said("check-phone-position", {arg("phone", i)}));
       continue;
     }
     c.need(finite_positive(p.mass), "phones",
-           describe(phone, "mass must be positive, found ", p.mass, " kg"));
+           said("check-phone-mass", {arg("phone", i), arg("mass_kg", p.mass)}));
     c.need(finite_positive(p.size[0]) && finite_positive(p.size[1]) && finite_positive(p.size[2]),
-           "phones", describe(phone, "size (width, length, thickness) must be positive"));
+           "phones", said("check-phone-size", {arg("phone", i)}));
     c.need(std::isfinite(p.height) && p.height >= 0.0, "phones",
-           describe(phone, "height must be >= 0, found ", p.height * 1e3, " mm"));
+           said("check-phone-height", {arg("phone", i), arg("height_mm", p.height * 1e3)}));
     c.need(std::isfinite(p.x) && std::fabs(p.x) <= 0.5 * s.plate.length, "phones",
-           describe(phone, "x = ", p.x * 1e3,
-                    " mm puts the phone's centre off the plate (half "
-                    "length ",
-                    0.5e3 * s.plate.length, " mm)"));
+           said("check-phone-on-plate", {arg("phone", i), arg("x_mm", p.x * 1e3),
+                                         arg("half_length_mm", 0.5e3 * s.plate.length)}));
   }
 }
 

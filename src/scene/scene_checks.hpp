@@ -1,7 +1,6 @@
 // Physically impossible or meaningless set-ups, found before any world is built.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,8 +12,7 @@ namespace fl {
 struct SceneProblem {
   std::string key;      // the scene key responsible, e.g. "plate.length"
   std::string message;  // what is wrong and what to do, in English
-  // The same as the catalogues say it (text/said.hpp); nullopt for a message in English only.
-  std::optional<Said> said;
+  Said said;            // the same as the catalogues say it (text/said.hpp)
   // The other keys whose values made it ("rollers.spacing", "plate.offset" for a plate too
   // short): where one of them was changed and `key` was not, the change is what to mend.
   std::vector<std::string> involves = {};

@@ -252,11 +252,20 @@ await check(
       `the spacing's problem: ${said}`,
     );
     expect((await problem.locator("[lang]").count()) === 0, "the French message is marked");
-    // A message the catalogues do not hold (the runout's) is shown as the lab wrote it, in a span
-    // marked lang="en".
+    // Every check of a scene is said so: the run-out's too, beside its control.
     await page.goto(`${base}/?scene=minimal&set=rollers.runout%3D-1mm`);
+    const runout = page.getByTestId("problem-runout");
+    await runout.filter({ hasText: "rayon du rouleau" }).waitFor();
+    const refused = await text(runout);
+    expect(
+      refused === "doit être ≥ 0 et inférieur à la moitié du rayon du rouleau (5 mm), trouvé -1 mm",
+      `the run-out's problem: ${refused}`,
+    );
+    // A message the catalogues do not hold (an unknown friction law's) is shown as the lab wrote
+    // it, in a span marked lang="en".
+    await page.goto(`${base}/?scene=minimal&set=friction.law%3Dwobbly`);
     const english = page.locator('.problem span[lang="en"]');
-    await english.filter({ hasText: "must be >= 0" }).waitFor();
+    await english.filter({ hasText: "expected coulomb or stribeck" }).waitFor();
     expect((await language(page)) === "fr", "the page is not French");
     await expectNoViolations(page, "with the lab's problems shown on the French page");
     // The browser says each refusal (400) on the console; nothing else may be said.

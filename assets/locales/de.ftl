@@ -538,6 +538,11 @@ port-busy = ein anderes Programm hat die serielle Schnittstelle offen: schließe
 port-failed = { $port } lässt sich nicht öffnen: { $why }
 port-log-full = die Aufzeichnung hat ihre { $megabytes } MB erreicht (etwa { $minutes } Minuten bei den 1 kHz der Firmware): die Schnittstelle ist geschlossen und die Aufzeichnung bleibt erhalten; verbinde dich neu, um eine neue zu beginnen
 port-unplugged = { $port } ist um { $time } verschwunden (Platine ausgesteckt?): die { $lines } empfangenen Zeilen bleiben erhalten, lade sie unten herunter; stecke die Platine ein und verbinde dich neu
+# Die Ablehnungen des Klassenservers.
+server-no-session = diese Sitzung gibt es nicht (sie ist beendet oder hat nie begonnen)
+server-full = das Labor ist voll: es führt { $sessions } Sitzungen gleichzeitig aus, seine Grenze; versuche es wieder, wenn eine endet
+server-reading-files = das Labor liest gerade die Dateien anderer Schüler: schicke deine in ein paar Sekunden noch einmal
+server-too-many = zu viele Anfragen von { $address }: höchstens { $per_second } pro Sekunde; warte { $wait_s } s
 quantity-spacing = den Achsabstand der Rollen l
 quantity-mu-k = μk
 quantity-h-c = die Schwerpunkthöhe h_c

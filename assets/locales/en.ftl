@@ -541,6 +541,11 @@ port-busy = another program has the serial port open: close the serial monitor
 port-failed = cannot open { $port }: { $why }
 port-log-full = the log reached its { $megabytes } MB (about { $minutes } minutes at the firmware's 1 kHz): the port is closed and the log kept; connect again to start a new one
 port-unplugged = { $port } went away at { $time } (the board unplugged?): the { $lines } lines received are kept, download them below; plug the board in and connect again
+# The classroom server's own refusals (src/serve/lab_server.cpp).
+server-no-session = no such session (it ended or never began)
+server-full = the lab is full: it runs { $sessions } sessions at once, its limit; try again when one ends
+server-reading-files = the lab is reading other students' files: send yours again in a few seconds
+server-too-many = too many requests from { $address }: at most { $per_second } a second; wait { $wait_s } s
 # The quantities core/plausible_range.hpp bounds, as check-implausible's $what.
 quantity-spacing = the roller spacing l
 quantity-mu-k = mu_k

@@ -548,6 +548,11 @@ port-busy = otro programa tiene abierto el puerto serie: cierra el monitor serie
 port-failed = no se puede abrir { $port }: { $why }
 port-log-full = el registro llegó a sus { $megabytes } MB (unos { $minutes } minutos al 1 kHz del firmware): el puerto se cerró y el registro se guardó; vuelve a conectar para empezar otro
 port-unplugged = { $port } desapareció a las { $time } (¿se desconectó la placa?): las { $lines } líneas recibidas se guardan, descárgalas abajo; conecta la placa y vuelve a conectar
+# Los rechazos del servidor de la clase.
+server-no-session = no existe esa sesión (terminó o nunca empezó)
+server-full = el laboratorio está lleno: ejecuta { $sessions } sesiones a la vez, su límite; vuelve a intentarlo cuando termine una
+server-reading-files = el laboratorio está leyendo los archivos de otros estudiantes: vuelve a enviar el tuyo en unos segundos
+server-too-many = demasiadas peticiones desde { $address }: como mucho { $per_second } por segundo; espera { $wait_s } s
 quantity-spacing = la separación de los rodillos l
 quantity-mu-k = μk
 quantity-h-c = la altura del centro de masas h_c

@@ -535,6 +535,11 @@ port-busy = un autre programme a ouvert le port série : fermez le moniteur sér
 port-failed = impossible d’ouvrir { $port } : { $why }
 port-log-full = l’enregistrement a atteint ses { $megabytes } Mo (environ { $minutes } minutes au 1 kHz du micrologiciel) : le port est fermé et l’enregistrement gardé ; reconnectez-vous pour en commencer un nouveau
 port-unplugged = { $port } a disparu à { $time } (carte débranchée ?) : les { $lines } lignes reçues sont gardées, téléchargez-les ci-dessous ; rebranchez la carte et reconnectez-vous
+# Les refus du serveur de la classe.
+server-no-session = cette session n’existe pas (elle est finie ou n’a jamais commencé)
+server-full = le labo est plein : il fait tourner { $sessions } sessions à la fois, sa limite ; réessayez quand l’une d’elles finit
+server-reading-files = le labo lit les fichiers d’autres élèves : renvoyez le vôtre dans quelques secondes
+server-too-many = trop de requêtes de { $address } : au plus { $per_second } par seconde ; attendez { $wait_s } s
 quantity-spacing = l’entraxe des rouleaux l
 quantity-mu-k = μk
 quantity-h-c = la hauteur du centre de masse h_c

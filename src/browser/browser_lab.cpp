@@ -13,12 +13,13 @@
 #include "serve/session_events.hpp"
 #include "serve/session_opening.hpp"
 #include "serve/session_report.hpp"
+#include "text/said.hpp"
 
 namespace fl::browser {
 namespace {
 
 Answer no_such_session() {
-  return {404, serve::error_json("no such session (it ended or never began)")};
+  return {404, serve::error_json(said("server-no-session"))};
 }
 
 }  // namespace

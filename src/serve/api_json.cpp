@@ -226,6 +226,10 @@ json error_json(const std::string& message) {
   return {{"error", message}, {"problems", json::array()}};
 }
 
+json error_json(const Said& message) {
+  return {{"error", english(message)}, {"problems", json::array()}, {"said", said_json(message)}};
+}
+
 json live_rig_json(const BoardFeed* feed, const std::vector<std::string>& ports, bool may_choose,
                    int baud) {
   json out{{"ports", may_choose ? json(ports) : json::array()},

@@ -57,5 +57,7 @@ nlohmann::json file_problem_json(const InputError& error);
 
 // A 4xx's body for a problem of the API itself (a malformed body, an unknown session).
 nlohmann::json error_json(const std::string& message);
+// The same, said in the catalogues' words (its `said`), for a page to say in its language.
+nlohmann::json error_json(const Said& message);
 
 }  // namespace fl::serve

@@ -37,6 +37,7 @@
 #include "serve/session_key.hpp"
 #include "serve/session_opening.hpp"
 #include "serve/session_report.hpp"
+#include "text/said.hpp"
 
 namespace fl::serve {
 namespace {
@@ -189,7 +190,7 @@ struct LabServer::Impl {
       if (it != sessions.end()) found = it->second;
     }
     if (!found.session) {
-      send_json(res, 404, error_json("no such session (it ended or never began)"));
+      send_json(res, 404, error_json(said("server-no-session")));
       return nullptr;
     }
     const std::string given = session_key_of(req);
@@ -232,10 +233,7 @@ struct LabServer::Impl {
   }
   // 503: a page beyond the limit is told so plainly, never left hanging.
   void refuse_full(httplib::Response& res) const {
-    json body = error_json(
-        fmt::format("the lab is full: it runs {} sessions at once, its limit; try again when one "
-                    "ends",
-                    options.max_sessions));
+    json body = error_json(said("server-full", {arg("sessions", options.max_sessions)}));
     body["refused"] = true;
     send_json(res, 503, body);
   }
@@ -434,9 +432,7 @@ bool LabServer::Impl::take_upload_place(const httplib::Request& req, httplib::Re
   }
   uploads.fetch_sub(1);
   say_connection_ends(req);
-  send_json(res, 503,
-            error_json("the lab is reading other students' files: send yours again in a few "
-                       "seconds"));
+  send_json(res, 503, error_json(said("server-reading-files")));
   return false;
 }
 
@@ -581,10 +577,11 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
     if (req.path.starts_with("/api/") &&
         !impl_->rate.allow(req.remote_addr, Clock::now(), &wait_s)) {
       res.set_header("Retry-After", std::to_string(static_cast<int>(std::ceil(wait_s))));
-      send_json(res, 429,
-                error_json(fmt::format("too many requests from {}: at most {:g} a second; "
-                                       "wait {:.1f} s",
-                                       req.remote_addr, impl_->rate.per_second(), wait_s)));
+      send_json(
+          res, 429,
+          error_json(said("server-too-many", {arg("address", req.remote_addr),
+                                              arg("per_second", impl_->rate.per_second()),
+                                              arg("wait_s", std::round(wait_s * 10.0) / 10.0)})));
       return httplib::Server::HandlerResponse::Handled;
     }
     auto& headers = const_cast<httplib::Request&>(req).headers;

@@ -258,6 +258,8 @@ export interface ErrorBody {
   error: string;
   /** each problem by field (none for the API's own) */
   problems: Problem[];
+  /** the error as the catalogues say it, where they do; absent otherwise */
+  said?: Said;
   /** true when the lab is full (503); absent otherwise */
   refused?: boolean;
 }

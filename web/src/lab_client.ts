@@ -11,6 +11,7 @@ import {
   type StreamHandle,
   type StreamHandlers,
 } from "./lab_errors";
+import { errorWords } from "./lab_says";
 import type {
   ClassTable,
   Closed,
@@ -76,8 +77,7 @@ async function readJson<T>(response: Response): Promise<T> {
 /** The lab's message in a refusal's body ({"error": "..."}), else `fallback`. */
 async function refusalMessage(response: Response, fallback: string): Promise<string> {
   try {
-    const body = await readJson<{ error?: unknown }>(response);
-    if (typeof body.error === "string" && body.error) return body.error;
+    return errorWords(await readJson<unknown>(response), fallback);
   } catch {
     // keep the fallback
   }
@@ -118,8 +118,7 @@ export async function createSession(scene: string, set: string[], name?: string)
     throw new SetupError(body.error ?? t("lab-setup-problems"), body.problems ?? []);
   }
   if (response.status === 503) {
-    const body = await readJson<{ error?: string }>(response);
-    throw new LabFullError(body.error ?? t("lab-full"));
+    throw new LabFullError(errorWords(await readJson<unknown>(response), t("lab-full")));
   }
   return expectOk<Session>(response);
 }
@@ -220,9 +219,8 @@ export async function estimateFile(
       () => null,
     );
     const first = body?.problems?.[0];
-    const message = typeof body?.error === "string" ? body.error : "";
     throw new LabError(
-      first?.message ?? (message || t("lab-answered", { status: response.status })),
+      first?.message ?? errorWords(body, t("lab-answered", { status: response.status })),
       response.status,
       first ?? null,
     );

@@ -4,6 +4,7 @@
 // does: the same bodies, refusals and stream events, with no request leaving the browser. The
 // lab's own messages go on as it wrote them; the page's words where it wrote none.
 import { t } from "./i18n";
+import { errorWords } from "./lab_says";
 import {
   LabError,
   LabFullError,
@@ -87,10 +88,7 @@ function ask(request: Ask, transfer: Transferable[] = []): Promise<WorkerAnswer>
 }
 
 function errorOf(answer: WorkerAnswer): string {
-  const body = answer.body as { error?: unknown } | null;
-  return typeof body?.error === "string" && body.error
-    ? body.error
-    : t("lab-answered", { status: answer.status });
+  return errorWords(answer.body, t("lab-answered", { status: answer.status }));
 }
 
 function expectOk<T>(answer: WorkerAnswer): T {

@@ -41,6 +41,14 @@ export function labWords(said: Said | null | undefined, message: string): LabWor
   return { text: message, lang: pageLanguage() === "en" ? null : "en" };
 }
 
+/** A refusal's body (docs/web-api.md's ErrorBody) in the page's words: its `said` in the page's
+ * language where a catalogue has it, else its English `error`, else `fallback` (the page's own). */
+export function errorWords(body: unknown, fallback: string): string {
+  const { error, said } = (body ?? {}) as { error?: unknown; said?: Said | null };
+  if (typeof error !== "string" || !error) return fallback;
+  return labWords(said, error).text;
+}
+
 /** A problem the lab found, in the page's words. */
 export function problemWords(problem: Problem): LabWords {
   return labWords(problem.said, problem.message);

@@ -385,11 +385,17 @@ export async function startMockServer({
       if (refused > 0) {
         refusals.set(refusing, refused - 1);
         res.writeHead(429, { "Content-Type": "application/json", "Retry-After": "1" });
-        res.end(
-          JSON.stringify(
-            errorBody("too many requests from 127.0.0.1 (at most 20 a second): try again in 1 s"),
-          ),
-        );
+        // As the lab says it (src/serve/lab_server.cpp): in English, and as the catalogues' message.
+        const said = {
+          id: "server-too-many",
+          args: [
+            { name: "address", text: "127.0.0.1" },
+            { name: "per_second", number: 20 },
+            { name: "wait_s", number: 1 },
+          ],
+        };
+        const error = "too many requests from 127.0.0.1: at most 20 a second; wait 1 s";
+        res.end(JSON.stringify({ ...errorBody(error), said }));
         return;
       }
       if (path === "/api/rig" && req.method === "GET") return json(res, 200, rig.status());

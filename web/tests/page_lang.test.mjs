@@ -297,6 +297,24 @@ await check("the live rig's port unplugged: the lab's message in French", async 
   await context.close();
 });
 
+await check("the lab asking the page to slow down, in French", async () => {
+  const { page, context, complaints } = await openPage("/?scene=minimal");
+  await page.getByTestId("status").filter({ hasText: "en cours" }).waitFor();
+  await fetch(`${base}/__mock/refuse?path=/api/sessions&count=1`);
+  await page.fill("#spacing-mm", "75");
+  await page.press("#spacing-mm", "Enter");
+  const problem = page.locator("#page-problem");
+  await problem.filter({ hasText: "trop de requêtes" }).waitFor();
+  const said = await text(problem);
+  expect(
+    said === "trop de requêtes de 127.0.0.1 : au plus 20 par seconde ; attendez 1 s",
+    `the page's problem: ${said}`,
+  );
+  const keeps = complaints.filter((c) => !c.includes("429 (Too Many Requests)"));
+  expect(keeps.length === 0, `console: ${keeps.join("\n")}`);
+  await context.close();
+});
+
 await check("a French phone: the view, T, μk and the plot in the first screen", async () => {
   const context = await browser.newContext({
     viewport: { width: 390, height: 844 },

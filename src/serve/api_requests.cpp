@@ -1,4 +1,5 @@
 #include "serve/api_requests.hpp"
+#include "text/base64.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -33,6 +34,28 @@ std::variant<json, BodyRefusal> object_of(std::string_view body) {
 std::string name_expected() {
   return "expected a name of up to " + std::to_string(kMostNameCharacters) +
          " letters, digits, spaces and . - _ ' , ( ), beginning with a letter or digit";
+}
+
+std::variant<SentFile, BodyRefusal> read_sent_file(const json& value, const std::string& field) {
+  const auto text = [&value](const char* key) -> const std::string* {
+    const auto it = value.is_object() ? value.find(key) : value.end();
+    return it != value.end() && it->is_string() ? it->get_ptr<const std::string*>() : nullptr;
+  };
+  const std::string* name = text("name");
+  const std::string* base64 = text("base64");
+  if (!name || !base64 || value.size() != 2 || name->empty() || name->size() > 255)
+    return BodyRefusal{"expected \"" + field +
+                           "\" as {\"name\": the file's name, \"base64\": its bytes in base64}, "
+                           "found " +
+                           quoted(value),
+                       field};
+  std::optional<std::string> bytes = decode_base64(*base64);
+  if (!bytes)
+    return BodyRefusal{"expected \"" + field +
+                           ".base64\" as the file's bytes in base64 (as btoa writes them), found "
+                           "characters that are not",
+                       field};
+  return SentFile{*name, std::move(*bytes)};
 }
 
 }  // namespace
@@ -187,15 +210,26 @@ std::variant<ReportBody, BodyRefusal> read_report_body(std::string_view text) {
   const json& body = std::get<json>(parsed);
   ReportBody report;
   for (const auto& [key, value] : body.items())
-    if (key != "student" && key != "stopwatch" && key != "language" && key != "measurement")
+    if (key != "student" && key != "stopwatch" && key != "language" && key != "measurement" &&
+        key != "measurement_file")
       return BodyRefusal{
-          "expected the keys \"student\", \"stopwatch\", \"language\" and "
-          "\"measurement\", found \"" +
+          "expected the keys \"student\", \"stopwatch\", \"language\", \"measurement\" and "
+          "\"measurement_file\", found \"" +
           key + "\""};
   if (const auto measured = body.find("measurement"); measured != body.end()) {
     auto read = read_measured(*measured);
     if (auto* refusal = std::get_if<BodyRefusal>(&read)) return *refusal;
     report.measured = std::get<MeasuredSummary>(read);
+  }
+  if (const auto file = body.find("measurement_file"); file != body.end()) {
+    auto read = read_sent_file(*file, "measurement_file");
+    if (auto* refusal = std::get_if<BodyRefusal>(&read)) return *refusal;
+    if (!report.measured)
+      return BodyRefusal{
+          "expected \"measurement\" beside \"measurement_file\": its spacing "
+          "reads the file as POST /api/estimate read it",
+          "measurement_file"};
+    report.measurement_file = std::get<SentFile>(read);
   }
   if (const auto language = body.find("language"); language != body.end()) {
     const std::string code = language->is_string() ? language->get<std::string>() : "";

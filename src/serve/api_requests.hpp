@@ -79,10 +79,18 @@ inline constexpr std::size_t kMostStopwatchTimings = 100;
 // POST /api/sessions/ID/report: {"student": WHO, "stopwatch": [{"periods": N, "wall_s": S,
 // "simulated_s": S or null}, ...], "language": "fr", "measurement": {MeasurementEstimate}}, each
 // optional (the session's name; no timing; English; no measurement).
+// A file a page sends inside a JSON body: {"name": "log.csv", "base64": "..."}.
+struct SentFile {
+  std::string name;   // as on the student's machine
+  std::string bytes;  // decoded
+};
+
 struct ReportBody {
   std::optional<std::string> student;
   // "measurement": the page's "Your measurement", as POST /api/estimate answered it.
   std::optional<MeasuredSummary> measured;
+  // "measurement_file": its file, read again for the report's signal and periods.
+  std::optional<SentFile> measurement_file;
   std::string language = "en";  // checked against the lab's catalogues by the report's request
   std::vector<StopwatchTiming> stopwatch;
 };

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace fl::serve {
 namespace {
@@ -198,9 +199,27 @@ void BoundedServer::allow_larger_body(std::string path, std::size_t most_bytes) 
   set_payload_max_length(most);
 }
 
+namespace {
+
+// Whether `path` is `pattern`, where a `*` in the pattern stands for one segment (no '/').
+bool path_matches(std::string_view pattern, std::string_view path) {
+  const std::size_t star = pattern.find('*');
+  if (star == std::string_view::npos) return pattern == path;
+  const std::string_view before = pattern.substr(0, star);
+  const std::string_view after = pattern.substr(star + 1);
+  if (path.size() < before.size() + after.size() + 1 || !path.starts_with(before) ||
+      !path.ends_with(after))
+    return false;
+  const std::string_view segment =
+      path.substr(before.size(), path.size() - before.size() - after.size());
+  return segment.find('/') == std::string_view::npos;
+}
+
+}  // namespace
+
 std::size_t BoundedServer::most_body_bytes(const std::string& path) const {
   for (const auto& [p, bytes] : larger_bodies_)
-    if (p == path) return bytes;
+    if (path_matches(p, path)) return bytes;
   return most_body_bytes_;
 }
 

@@ -24,8 +24,8 @@ class BoundedServer : public httplib::Server {
  public:
   BoundedServer(std::size_t most_head_bytes, std::size_t most_body_bytes);
 
-  // Lets a request to `path` (exactly: a file a page sends) carry a body of `most_bytes`
-  // instead; call before listening.
+  // Lets a request to `path` (exactly: a file a page sends; a `*` in it stands for one segment,
+  // "/api/sessions/*/report") carry a body of `most_bytes` instead; call before listening.
   void allow_larger_body(std::string path, std::size_t most_bytes);
   // The most bytes a request to `path` may carry in its body.
   std::size_t most_body_bytes(const std::string& path) const;

@@ -51,6 +51,8 @@ constexpr std::size_t kMostBody = 64 * 1024;  // bytes of a request's body
 // Bytes of a measurement file a page sends: a phone's CSVs of minutes at 500 Hz, a phyphox zip, a
 // short phone video (a longer one is for frictionlab estimate on the student's machine).
 constexpr std::size_t kMostUpload = 32 * 1024 * 1024;
+// A report's body: the largest upload in base64, and the rest of the request.
+constexpr std::size_t kMostReportBody = kMostUpload / 3 * 4 + 4 + kMostBody;
 // Measurement files taken at once, from their first byte to the answer: each holds up to
 // kMostUpload of memory while it comes, and a video's tracking takes a core for seconds.
 constexpr int kMostUploadsAtOnce = 2;
@@ -299,8 +301,10 @@ void LabServer::Impl::routes() {
     if (!s) return;
     control(*s, req, res);
   });
+  // A report may carry the student's measurement file, in base64.
+  server.allow_larger_body("/api/sessions/*/report", kMostReportBody);
   server.Post(session + "/report", [this](const httplib::Request& req, httplib::Response& res) {
-    if (refuse_large_body(req, res)) return;
+    if (req.body.size() > kMostReportBody) return send_body_too_large(res, kMostReportBody);
     const auto s = find(req, res);
     if (!s) return;
     const ReportAnswer answer = session_report(*s, req.body, options.asset_dir, options.version);

@@ -13,48 +13,10 @@
 #include "io/input_error.hpp"
 #include "lab/request/estimate_request.hpp"
 #include "serve/api_json.hpp"
+#include "serve/temporary_folder.hpp"
 #include "serve/web_spelling.hpp"
 
 namespace fl::serve {
-namespace {
-
-namespace fs = std::filesystem;
-
-// A private folder (mode 0700) that goes with this object.
-class TemporaryFolder {
- public:
-  TemporaryFolder() {
-    std::string pattern = (fs::temp_directory_path() / "frictionlab-upload-XXXXXX").string();
-    if (::mkdtemp(pattern.data()) == nullptr)
-      throw std::runtime_error("the server could not make a temporary folder for the file");
-    path_ = pattern;
-  }
-  ~TemporaryFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TemporaryFolder(const TemporaryFolder&) = delete;
-  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-// Every mention of `folder/` in the body's texts taken out: the file reads as its own name.
-nlohmann::json without_folder(nlohmann::json body, const std::string& folder) {
-  if (body.is_string()) {
-    std::string text = body.get<std::string>();
-    for (std::size_t at; (at = text.find(folder)) != std::string::npos;)
-      text.erase(at, folder.size());
-    return text;
-  }
-  if (body.is_object() || body.is_array())
-    for (auto& value : body) value = without_folder(std::move(value), folder);
-  return body;
-}
-
-}  // namespace
 
 std::string upload_name(const std::string& given) {
   std::string name = given.substr(
@@ -74,7 +36,7 @@ UploadAnswer estimate_upload(const MeasurementUpload& upload, const std::string&
   const std::string name = upload_name(upload.name);
   try {
     const TemporaryFolder folder;
-    const fs::path file = folder.path() / name;
+    const std::filesystem::path file = folder.path() / name;
     {
       std::ofstream out(file, std::ios::binary);
       out.write(upload.bytes.data(), static_cast<std::streamsize>(upload.bytes.size()));
@@ -82,7 +44,7 @@ UploadAnswer estimate_upload(const MeasurementUpload& upload, const std::string&
         return {500, error_json("the server could not keep the file to read it (its disk may "
                                 "be full); try again, or estimate it with frictionlab estimate")};
     }
-    const std::string prefix = folder.path().string() + "/";
+    const std::string prefix = folder.prefix();
     try {
       EstimateRequest request;
       request.assets = asset_dir;

@@ -1,11 +1,16 @@
 #include "serve/session_report.hpp"
 
+#include <filesystem>
+#include <fstream>
+#include <optional>
 #include <stdexcept>
 
 #include "io/input_error.hpp"
 #include "lab/request/report_request.hpp"
 #include "serve/api_json.hpp"
 #include "serve/api_requests.hpp"
+#include "serve/measurement_upload.hpp"
+#include "serve/temporary_folder.hpp"
 
 namespace fl::serve {
 
@@ -24,17 +29,42 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   request.student = asked.student.value_or(session.name());
   request.stopwatch = asked.stopwatch;
   request.language = asked.language;
-  if (asked.measured) request.measured.push_back(*asked.measured);
   request.lab_version = version;
+  // The measurement's file, read again as POST /api/estimate read it (at its spacing), gives the
+  // report its signal and periods; without it, its numbers as the page was answered.
+  std::optional<TemporaryFolder> folder;
+  if (asked.measurement_file) {
+    folder.emplace();
+    const std::filesystem::path file = folder->path() / upload_name(asked.measurement_file->name);
+    std::ofstream out(file, std::ios::binary);
+    out.write(asked.measurement_file->bytes.data(),
+              static_cast<std::streamsize>(asked.measurement_file->bytes.size()));
+    if (!out.flush())
+      return {500, "",
+              error_json("the server could not keep the measurement's file to read it (its disk "
+                         "may be full); try again")};
+    request.inputs = {file.string()};
+    request.measurement.spacing = asked.measured->spacing_m;
+  } else if (asked.measured) {
+    request.measured.push_back(*asked.measured);
+  }
+  const std::string prefix = folder ? folder->prefix() : std::string();
+  const auto scrubbed = [&prefix](nlohmann::json answer) {
+    return prefix.empty() ? answer : without_folder(std::move(answer), prefix);
+  };
   const RunFiles files = [&session](const std::string& name) { return session.file(name); };
   try {
-    return {200, report_of_runs({{session.scene(), files}}, request).html, nullptr};
+    std::string html = report_of_runs({{session.scene(), files}}, request).html;
+    if (!prefix.empty())
+      for (std::size_t at; (at = html.find(prefix)) != std::string::npos;)
+        html.erase(at, prefix.size());
+    return {200, std::move(html), nullptr};
   } catch (const RequestError& e) {
-    return {400, "", problems_json(e)};
+    return {400, "", scrubbed(problems_json(e))};
   } catch (const InputError& e) {
-    return {400, "", problems_json(e)};
+    return {400, "", scrubbed(folder ? file_problem_json(e) : problems_json(e))};
   } catch (const std::invalid_argument& e) {
-    return {400, "", error_json(e.what())};
+    return {400, "", scrubbed(error_json(e.what()))};
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "hall_log/hall_log.hpp"
 #include "lab/logs/log_estimate.hpp"
 #include "lab/request/estimate_request.hpp"
+#include "lab/request/report_request.hpp"
 #include "lab/run/run_outputs.hpp"
 #include "lab/run/summary_fields.hpp"
 #include "support/run_command.hpp"
@@ -145,6 +147,72 @@ TEST(BrowserLab, ASessionsReportHoldsItsSummaryInTheLanguageAsked) {
   EXPECT_EQ(klingon.status, 400);
   EXPECT_EQ(klingon.body["problems"][0]["field"], "language") << klingon.body.dump();
   EXPECT_EQ(lab.report("nope", "").status, 404);
+}
+
+// Bytes in base64, written here as RFC 4648 says, independently of the lab's decoder.
+std::string base64_of(const std::string& bytes) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t at = 0; at < bytes.size(); at += 3) {
+    const std::size_t n = std::min<std::size_t>(3, bytes.size() - at);
+    unsigned int group = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      group = (group << 8) | (k < n ? static_cast<unsigned char>(bytes[at + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k)
+      out += k <= n ? kAlphabet[(group >> (18 - 6 * k)) & 0x3F] : '=';
+  }
+  return out;
+}
+
+// The number of `needle`s in `text`.
+std::size_t count_of(const std::string& text, const std::string& needle) {
+  std::size_t count = 0;
+  for (std::size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+    ++count;
+  return count;
+}
+
+// With its file, the student's measurement is in the report as `frictionlab report FILE` puts
+// it: its signal and every period the estimator judged, its file named as the student named it.
+TEST(BrowserLab, AReportWithTheMeasurementsFileHoldsItsSignalAndPeriods) {
+  BrowserLab lab = test_lab();
+  const std::string id =
+      lab.create_session(R"({"scene": "minimal", "set": ["world.duration=2s"]})").body["id"];
+  step_to_done(lab, id);
+  const std::string phone = std::string(FRICTIONLAB_TEST_SOURCE_DIR) +
+                            "/assets/examples/instruments/phone-magnetometer.csv";
+  const std::string bytes = test::read_text(phone);
+  const Answer measured = lab.estimate("phone-magnetometer.csv", bytes, "0.089", std::nullopt);
+  ASSERT_EQ(measured.status, 200) << measured.body.dump();
+  const json file{{"name", "phone-magnetometer.csv"}, {"base64", base64_of(bytes)}};
+  const Answer answer =
+      lab.report(id, json{{"measurement", measured.body}, {"measurement_file", file}}.dump());
+  ASSERT_EQ(answer.status, 200) << answer.body.dump();
+  const std::string html = answer.body["html"];
+  const std::string part = html.substr(html.find("Measurement: phone-magnetometer.csv"));
+  // The file read by the command line's report, at the same spacing: its periods, one row each.
+  ReportRequest cli;
+  cli.inputs = {phone};
+  cli.measurement.spacing = 0.089;
+  const ReportResult alone = make_report(cli);
+  ASSERT_EQ(alone.content.parts.size(), 1u);
+  const std::size_t periods = alone.content.parts[0].periods.size();
+  ASSERT_GE(periods, 5u);
+  const std::string table = part.substr(part.find("<table class=\"periods-table\">"));
+  EXPECT_EQ(count_of(table.substr(0, table.find("</table>")), "<tr"), periods + 1);  // + header
+  EXPECT_GE(count_of(part, "<svg"), 2u);  // the signal as read, and the periods
+  EXPECT_NE(
+      part.find("data-field=\"period_s\" data-value=\"" + measured.body["period_s"].dump() + "\""),
+      std::string::npos);
+  EXPECT_EQ(html.find("frictionlab-upload-"), std::string::npos);  // no server folder in it
+  // A file that is not base64, or without the measurement it was estimated as: refused.
+  const json broken{{"name", "x.csv"}, {"base64", "not base64!"}};
+  EXPECT_EQ(
+      lab.report(id, json{{"measurement", measured.body}, {"measurement_file", broken}}.dump())
+          .status,
+      400);
+  EXPECT_EQ(lab.report(id, json{{"measurement_file", file}}.dump()).status, 400);
 }
 
 TEST(BrowserLab, AnUnchangedStateIsNotSentAgain) {

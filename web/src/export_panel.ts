@@ -40,7 +40,7 @@ export class ExportPanel {
   private finished: SessionHandle | null = null;
 
   /** `reportAsk`: who hands the report in and what the stopwatch timed, when it is asked. */
-  constructor(viewPng: () => string, reportAsk: () => ReportAsk) {
+  constructor(viewPng: () => string, reportAsk: () => Promise<ReportAsk>) {
     byId("png").addEventListener("click", () => download(viewPng(), "frictionlab-view.png"));
     byId("copy-link").addEventListener("click", () => void this.copyLink());
     this.reportButton.addEventListener("click", () => void this.report(reportAsk()));
@@ -57,11 +57,11 @@ export class ExportPanel {
   }
 
   /** The lab report of the finished run, downloaded as report.html. */
-  private async report(ask: ReportAsk): Promise<void> {
+  private async report(asking: Promise<ReportAsk>): Promise<void> {
     if (!this.finished) return;
     this.reportHint.textContent = t("export-report-writing");
     try {
-      const html = await reportHtml(this.finished, ask);
+      const html = await reportHtml(this.finished, await asking);
       download(URL.createObjectURL(new Blob([html], { type: "text/html" })), "report.html");
       this.reportHint.textContent = t("export-report-done");
     } catch (error) {

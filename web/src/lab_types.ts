@@ -21,4 +21,6 @@ export interface ReportAsk {
   language?: string;
   /** The student's measurement, as `POST /api/estimate` answered it: a part of the report. */
   measurement?: MeasurementEstimate;
+  /** Its file, read again for the report's signal and periods (beside `measurement`). */
+  measurement_file?: { name: string; base64: string };
 }

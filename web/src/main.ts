@@ -1,5 +1,6 @@
 // The page's controller: the lab's session and the user's commands write the model (lab_model.ts);
 // the 3D view, the plots, the readouts, the stopwatch and the playback buttons follow it.
+import { base64Of } from "./base64";
 import { SetupControls } from "./controls";
 import { byId, setText } from "./dom";
 import { ExportPanel } from "./export_panel";
@@ -66,12 +67,19 @@ const stopwatch = new Stopwatch(model);
 const studentName = new StudentName((name) => void nameStudent(name));
 const exportPanel = new ExportPanel(
   () => view.toPng(),
-  () => ({
-    student: studentName.name ?? "",
-    stopwatch: stopwatch.timings(),
-    language: document.documentElement.lang || "en",
-    ...(measurement.measured ? { measurement: measurement.measured } : {}),
-  }),
+  async () => {
+    const measured = measurement.measured;
+    const file = measurement.measuredFile;
+    return {
+      student: studentName.name ?? "",
+      stopwatch: stopwatch.timings(),
+      language: document.documentElement.lang || "en",
+      ...(measured ? { measurement: measured } : {}),
+      ...(measured && file
+        ? { measurement_file: { name: file.name, base64: await base64Of(file) } }
+        : {}),
+    };
+  },
 );
 
 /** The class's table shows the name typed, on the session that runs now. */

@@ -98,6 +98,11 @@ export class MeasurementPanel {
     return this.shown;
   }
 
+  /** The file of the measurement on screen; null while there is none. */
+  get measuredFile(): File | null {
+    return this.shown ? this.file : null;
+  }
+
   private show(e: MeasurementEstimate): void {
     this.shown = e;
     this.period.dataset.value = String(e.period_s);

@@ -230,6 +230,31 @@ await check("the lab report's numbers are summary.json's; its print preview", as
     reported && Number(reported[1]) === Number(measuredPeriod),
     `the measurement's T: report ${reported?.[1]}, page ${measuredPeriod}`,
   );
+  // The measurement read again from its file: its signal and every period, as the command
+  // line's report of the same file at the same spacing lists them.
+  const part = html.slice(html.indexOf("<h2>Measurement: phone-magnetometer.csv"));
+  const table = part.slice(part.indexOf('<table class="periods-table">'));
+  const rows = table.slice(0, table.indexOf("</table>")).split("<tr").length - 2; // - header
+  const cli = JSON.parse(
+    execFileSync(
+      options.exe,
+      [
+        "report",
+        `${repository}/assets/examples/instruments/phone-magnetometer.csv`,
+        "--spacing",
+        "89mm",
+        "--out",
+        join(mkdtempSync(join(tmpdir(), "fl-report-")), "report.html"),
+        "--json",
+      ],
+      { encoding: "utf8" },
+    ),
+  );
+  expect(
+    rows === cli.parts[0].periods,
+    `the measurement's periods: ${rows}, report's ${cli.parts[0].periods}`,
+  );
+  expect(part.split("<svg").length - 1 >= 2, "the measurement's signal and periods are not drawn");
   // Its print preview, on A4: looked at by whoever changes the report (options.report).
   const preview = await context.newPage();
   await preview.setContent(html);

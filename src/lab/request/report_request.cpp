@@ -85,6 +85,15 @@ ReportContent content_of(const ReportRequest& r) {
   return c;
 }
 
+// A measurement file's part: read and estimated as `frictionlab estimate` reads it.
+ReportPart file_part(const std::string& input, const ReportRequest& r) {
+  EstimateRequest one = r.measurement;
+  one.assets = r.assets;
+  one.logs = {input};
+  const OneLogEstimate estimate = estimate_one_log(prepare_estimate(one));
+  return measurement_part(estimate.log, estimate.estimate, estimate.paper);
+}
+
 }  // namespace
 
 ReportTexts report_texts(const std::string& assets, const std::string& language) {
@@ -139,11 +148,7 @@ ReportResult make_report(const ReportRequest& r) {
       }
       continue;
     }
-    EstimateRequest one = r.measurement;
-    one.assets = r.assets;
-    one.logs = {input};
-    const OneLogEstimate estimate = estimate_one_log(prepare_estimate(one));
-    content.parts.push_back(measurement_part(estimate.log, estimate.estimate, estimate.paper));
+    content.parts.push_back(file_part(input, r));
   }
   return finish(std::move(content), r);
 }
@@ -157,6 +162,7 @@ ReportResult report_of_runs(const std::vector<std::pair<std::string, RunFiles>>&
   ReportContent content = content_of(r);
   for (const auto& [source, files] : runs)
     content.parts.push_back(simulation_part(files, source, table));
+  for (const std::string& input : r.inputs) content.parts.push_back(file_part(input, r));
   for (const MeasuredSummary& m : r.measured) content.parts.push_back(measurement_part(m));
   return finish(std::move(content), r);
 }

@@ -47,7 +47,8 @@ ReportTexts report_texts(const std::string& assets, const std::string& language)
 // Throws RequestError (every problem by field) or InputError located in the file at fault.
 ReportResult make_report(const ReportRequest& request);
 
-// A report of runs already in hand (a session's), by their files.
+// A report of runs already in hand (a session's), by their files, then of the request's measurement
+// files (its inputs, read at its measurement's spacing) and measured summaries.
 ReportResult report_of_runs(const std::vector<std::pair<std::string, RunFiles>>& runs,
                             const ReportRequest& request);
 

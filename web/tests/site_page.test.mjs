@@ -93,6 +93,13 @@ await check("the lab report, made in this browser: its numbers are summary.json'
     `/?scene=minimal&set=${encodeURIComponent("world.duration=6s")}`,
   );
   await page.getByTestId("status").filter({ hasText: "done" }).waitFor({ timeout: 60000 });
+  // The student's measurement, read in this browser: in the report with its periods.
+  await page
+    .getByTestId("measurement-file")
+    .setInputFiles(`${repository}/assets/examples/instruments/phone-magnetometer.csv`);
+  await page.waitForFunction(() =>
+    document.querySelector('[data-testid="measured-period"]').getAttribute("data-value"),
+  );
   await page.waitForFunction(
     () => !document.querySelector('[data-testid="export-report"]').disabled,
   );
@@ -100,7 +107,14 @@ await check("the lab report, made in this browser: its numbers are summary.json'
     page.waitForEvent("download"),
     page.getByTestId("export-report").click(),
   ]);
-  const html = readFileSync(await download.path(), "utf8");
+  const whole = readFileSync(await download.path(), "utf8");
+  const at = whole.indexOf("<h2>Measurement: phone-magnetometer.csv");
+  expect(at > 0, "the measurement is not in the report");
+  const part = whole.slice(at);
+  const table = part.slice(part.indexOf('<table class="periods-table">'));
+  const rows = table.slice(0, table.indexOf("</table>")).split("<tr").length - 2; // - header
+  expect(rows >= 5, `the measurement's periods: ${rows} rows`);
+  const html = whole.slice(0, at);
   // summary.json as the page offers it (a Blob's address), read in the page.
   const summary = JSON.parse(
     await page.evaluate(async () => {
@@ -110,8 +124,9 @@ await check("the lab report, made in this browser: its numbers are summary.json'
   );
   const marked = reportAgainstSummary(html, summary);
   expect(marked.problems.length === 0, marked.problems.join("; "));
-  expect(marked.count >= 10, `only ${marked.count} numbers marked`);
-  expect(html.includes("American Journal of Physics"), "the paper is not cited");
+  // The simulation's part (the measurement's numbers are its estimate's).
+  expect(marked.count >= 7, `only ${marked.count} numbers marked (T, dT, N, σ, μk, dμk, worst)`);
+  expect(whole.includes("American Journal of Physics"), "the paper is not cited");
   const api = asked.filter((url) => new URL(url).pathname.includes("/api/"));
   expect(api.length === 0, `requests for an API: ${api.join(", ")}`);
   expect(complaints.length === 0, `console: ${complaints.join("\n")}`);

@@ -1,5 +1,6 @@
-# frictionlab's words in English: the browser page's (web/) and the lab report's (the report-*
-# messages, which the lab itself reads), one message an id, in Mozilla's
+# frictionlab's words in English: the browser page's (web/), the lab report's (the report-*
+# messages) and the lab's own (check-*, reading-*, estimate-*, ...: the lab says them, in English
+# from this file compiled in), one message an id, in Mozilla's
 # Fluent (https://projectfluent.org/fluent/guide/). A language is one such file, TAG.ftl beside
 # this one (fr.ftl: French), with every message of this one; the page offers each file it finds
 # here. English is every message's fallback. A number in { $name } comes written already, in the

@@ -531,6 +531,24 @@ estimate-no-rig = T = { $period_s } s und μk = { $mu_k } gehören zu keinem Auf
 table-too-many-fields = erwartet: höchstens { $named } Felder, wie die Kopfzeile sie benennt, gefunden: { $found }
 table-not-a-number = erwartet: eine Zahl in der Spalte „{ $column }“, gefunden: „{ $found }“
 table-no-header = erwartet: eine Kopfzeile, deren erste Spalte eine Zeit benennt („t“, „Time (s)“), keine gefunden
+reading-not-periodic = erwartet: eine periodische Bewegung, keine gefunden in { $column } der Aufzeichnung ({ $instrument }): ihre stärkste Frequenz, { $frequency_hz } Hz (eine Periode von { $period_s } s), liegt { $ratio }-mal über dem Median ihres Spektrums, wo die einer schwingenden Platte { $least_ratio }-mal oder mehr darüber liegt; ihr Rauschen beträgt { $noise } und sie schwankt um { $swing } (in der Einheit dieser Spalte). Ist es eine Aufzeichnung des schwingenden Aufbaus, nicht eines ruhig liegenden Handys oder eines anderen Versuchs?
+column-named = „{ $name }“
+column-field-magnitude = |B|
+column-plate-position = die Position der Platte ({ $unit })
+# Was die Datei einer Messung erzeugt hat.
+instrument-hall-sensor = Hall-Sensor
+instrument-phyphox-magnetometer = phyphox-Magnetometer
+instrument-phyphox-accelerometer = phyphox-Beschleunigungssensor
+instrument-phyphox-linear-accelerometer = phyphox-Beschleunigungssensor (ohne g)
+instrument-tracker = Tracker
+instrument-position-table = Weg-Zeit-Tabelle
+instrument-phyphox-location = phyphox-Standort (GPS)
+instrument-phyphox-audio = phyphox-Audio
+instrument-phyphox-other = phyphox-Sensor einer anderen Art
+instrument-phyphox-export = phyphox-Export (zip)
+instrument-excel = Excel-Arbeitsmappe (.xlsx)
+instrument-zip = Zip-Archiv
+instrument-video = Video
 # Die serielle Schnittstelle des Aufbaus.
 port-not-there = diese serielle Schnittstelle gibt es nicht (ist die Platine eingesteckt? ls /dev/ttyACM* /dev/ttyUSB*)
 port-not-allowed = der Benutzer dieses Rechners darf die serielle Schnittstelle nicht öffnen (trage dich in die Gruppe dialout ein und melde dich neu an)

@@ -535,6 +535,24 @@ estimate-no-rig = T = { $period_s } s and mu_k = { $mu_k } are no rig's ({ $why 
 table-too-many-fields = expected at most { $named } fields as the header names, found { $found }
 table-not-a-number = expected a number in the column "{ $column }", found "{ $found }"
 table-no-header = expected a header whose first column names a time ("t", "Time (s)"), found none
+reading-not-periodic = expected a periodic motion, found none in the { $instrument }'s { $column }: its strongest frequency, { $frequency_hz } Hz (a period of { $period_s } s), stands { $ratio } times above its spectrum's median, where a swinging plate's stands { $least_ratio } times or more; its noise is { $noise } and it swings by { $swing } (in that column's unit). Is it a recording of the rig oscillating, not of a phone lying still or of another experiment?
+column-named = "{ $name }"
+column-field-magnitude = |B|
+column-plate-position = plate's position ({ $unit })
+# What made a measurement's file.
+instrument-hall-sensor = Hall sensor
+instrument-phyphox-magnetometer = phyphox magnetometer
+instrument-phyphox-accelerometer = phyphox accelerometer
+instrument-phyphox-linear-accelerometer = phyphox accelerometer (without g)
+instrument-tracker = Tracker
+instrument-position-table = position-time table
+instrument-phyphox-location = phyphox location (GPS)
+instrument-phyphox-audio = phyphox audio
+instrument-phyphox-other = phyphox sensor of another kind
+instrument-phyphox-export = phyphox export (zip)
+instrument-excel = Excel workbook (.xlsx)
+instrument-zip = zip archive
+instrument-video = video
 # The rig's serial port (src/hall_log/serial_port.cpp, src/serve/board_feed.cpp).
 port-not-there = no such serial port (is the board plugged in? ls /dev/ttyACM* /dev/ttyUSB*)
 port-not-allowed = this computer's user may not open the serial port (add yourself to the dialout group, then log in again)

@@ -541,6 +541,24 @@ estimate-no-rig = T = { $period_s } s y μk = { $mu_k } no son de ningún montaj
 table-too-many-fields = se esperaban como mucho { $named } campos, los que nombra la cabecera, se encontraron { $found }
 table-not-a-number = se esperaba un número en la columna «{ $column }», se encontró «{ $found }»
 table-no-header = se esperaba una cabecera cuya primera columna nombre un tiempo («t», «Time (s)»), no se encontró ninguna
+reading-not-periodic = se esperaba un movimiento periódico, no se encontró ninguno en { $column } del registro ({ $instrument }): su frecuencia más fuerte, { $frequency_hz } Hz (un periodo de { $period_s } s), está { $ratio } veces por encima de la mediana de su espectro, donde la de una placa que oscila está { $least_ratio } veces o más; su ruido es { $noise } y varía { $swing } (en la unidad de esa columna). ¿Es un registro del montaje oscilando, y no de un móvil quieto o de otro experimento?
+column-named = «{ $name }»
+column-field-magnitude = |B|
+column-plate-position = la posición de la placa ({ $unit })
+# Lo que produjo el archivo de una medida.
+instrument-hall-sensor = sensor Hall
+instrument-phyphox-magnetometer = magnetómetro de phyphox
+instrument-phyphox-accelerometer = acelerómetro de phyphox
+instrument-phyphox-linear-accelerometer = acelerómetro de phyphox (sin g)
+instrument-tracker = Tracker
+instrument-position-table = tabla posición-tiempo
+instrument-phyphox-location = ubicación de phyphox (GPS)
+instrument-phyphox-audio = audio de phyphox
+instrument-phyphox-other = sensor de phyphox de otro tipo
+instrument-phyphox-export = exportación de phyphox (zip)
+instrument-excel = libro de Excel (.xlsx)
+instrument-zip = archivo zip
+instrument-video = vídeo
 # El puerto serie del montaje.
 port-not-there = no existe ese puerto serie (¿está conectada la placa? ls /dev/ttyACM* /dev/ttyUSB*)
 port-not-allowed = el usuario de este ordenador no puede abrir el puerto serie (añádete al grupo dialout y vuelve a iniciar sesión)

@@ -528,6 +528,24 @@ estimate-no-rig = T = { $period_s } s et μk = { $mu_k } ne sont ceux d’aucun 
 table-too-many-fields = attendu au plus { $named } champs, comme l’en-tête en nomme, trouvé { $found }
 table-not-a-number = attendu un nombre dans la colonne « { $column } », trouvé « { $found } »
 table-no-header = attendu un en-tête dont la première colonne nomme un temps (« t », « Time (s) »), trouvé aucun
+reading-not-periodic = attendu un mouvement périodique, trouvé aucun dans { $column } de l’enregistrement ({ $instrument }) : sa fréquence la plus forte, { $frequency_hz } Hz (une période de { $period_s } s), se tient { $ratio } fois au-dessus de la médiane de son spectre, quand celle d’une plaque qui oscille s’y tient { $least_ratio } fois ou plus ; son bruit vaut { $noise } et il varie de { $swing } (dans l’unité de cette colonne). Est-ce un enregistrement du montage qui oscille, et non d’un téléphone posé immobile ou d’une autre expérience ?
+column-named = « { $name } »
+column-field-magnitude = |B|
+column-plate-position = la position de la plaque ({ $unit })
+# Ce qui a produit le fichier d’une mesure.
+instrument-hall-sensor = capteur à effet Hall
+instrument-phyphox-magnetometer = magnétomètre phyphox
+instrument-phyphox-accelerometer = accéléromètre phyphox
+instrument-phyphox-linear-accelerometer = accéléromètre phyphox (sans g)
+instrument-tracker = Tracker
+instrument-position-table = tableau position-temps
+instrument-phyphox-location = localisation phyphox (GPS)
+instrument-phyphox-audio = audio phyphox
+instrument-phyphox-other = capteur phyphox d’un autre type
+instrument-phyphox-export = export phyphox (zip)
+instrument-excel = classeur Excel (.xlsx)
+instrument-zip = archive zip
+instrument-video = vidéo
 # Le port série du montage.
 port-not-there = ce port série n’existe pas (la carte est-elle branchée ? ls /dev/ttyACM* /dev/ttyUSB*)
 port-not-allowed = l’utilisateur de cet ordinateur n’a pas le droit d’ouvrir le port série (ajoutez-vous au groupe dialout, puis reconnectez-vous)

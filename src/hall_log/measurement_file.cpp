@@ -134,36 +134,40 @@ RecognisedFile recognise_measurement_file(std::string_view bytes) {
   return {};
 }
 
-std::string instrument_words(MeasurementFile kind) {
+Said instrument_said(MeasurementFile kind) {
   switch (kind) {
     case MeasurementFile::kRigLog:
-      return "Hall sensor";
+      return said("instrument-hall-sensor");
     case MeasurementFile::kPhyphoxMagnetometer:
-      return "phyphox magnetometer";
+      return said("instrument-phyphox-magnetometer");
     case MeasurementFile::kPhyphoxAccelerometer:
-      return "phyphox accelerometer";
+      return said("instrument-phyphox-accelerometer");
     case MeasurementFile::kPhyphoxLinearAccelerometer:
-      return "phyphox accelerometer (without g)";
+      return said("instrument-phyphox-linear-accelerometer");
     case MeasurementFile::kTracker:
-      return "Tracker";
+      return said("instrument-tracker");
     case MeasurementFile::kPositionTable:
-      return "position-time table";
+      return said("instrument-position-table");
     case MeasurementFile::kPhyphoxLocation:
-      return "phyphox location (GPS)";
+      return said("instrument-phyphox-location");
     case MeasurementFile::kPhyphoxAudio:
-      return "phyphox audio";
+      return said("instrument-phyphox-audio");
     case MeasurementFile::kPhyphoxOtherSensor:
-      return "phyphox sensor of another kind";
+      return said("instrument-phyphox-other");
     case MeasurementFile::kPhyphoxExport:
-      return "phyphox export (zip)";
+      return said("instrument-phyphox-export");
     case MeasurementFile::kExcel:
-      return "Excel workbook (.xlsx)";
+      return said("instrument-excel");
     case MeasurementFile::kZip:
-      return "zip archive";
+      return said("instrument-zip");
     case MeasurementFile::kVideo:
       break;
   }
-  return "video";
+  return said("instrument-video");
+}
+
+std::string instrument_words(MeasurementFile kind) {
+  return english(instrument_said(kind));
 }
 
 bool is_accelerometer(MeasurementFile kind) {

@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "text/said.hpp"
+
 namespace fl {
 
 enum class MeasurementFile {
@@ -30,6 +32,8 @@ enum class MeasurementFile {
 // What measured, in words a student knows: "Hall sensor" (the rig's), "phyphox magnetometer",
 // "Tracker", "video"; the key `instrument` of an estimate.
 std::string instrument_words(MeasurementFile kind);
+// The same, as the catalogues say it (instrument-*).
+Said instrument_said(MeasurementFile kind);
 
 // A phone's accelerometer, with or without g.
 bool is_accelerometer(MeasurementFile kind);

@@ -235,7 +235,7 @@ HallLog read_oscillation_log(std::string_view text, const std::string& name, Mea
                                   : along(table, chosen.time, columns, w);
   const Periodicity periodicity =
       require_periodic_motion(series, SourceLocation(name, table.header_line),
-                              instrument_words(kind), "\"" + column + "\"");
+                              instrument_said(kind), said("column-named", {arg("name", column)}));
   HallLog log =
       log_of_oscillation(series, name, column_unit(table.names[chosen.column]), periodicity);
   say_what_was_read(log, table, chosen.time, kind, channel, format_of(kind), column);

@@ -116,19 +116,19 @@ Oscillation strongest_oscillation(const Series& channel, const Periodicity& p) {
 }
 
 Periodicity require_periodic_motion(const Series& channel, const SourceLocation& where,
-                                    const std::string& instrument, const std::string& column) {
+                                    const Said& instrument, const Said& column) {
   const Periodicity p = periodicity_of(channel);
   if (p.periodic()) return p;
-  throw InputError(
-      where,
-      fmt::format("expected a periodic motion, found none in the {}'s {}: its strongest "
-                  "frequency, {:.3g} Hz (a period of {:.3g} s), stands {:.1f} times above its "
-                  "spectrum's median, where a swinging plate's stands {:.0f} times or more; its "
-                  "noise is {:.3g} and it swings by {:.3g} (in that column's unit). Is it a "
-                  "recording of the rig oscillating, not of a phone lying still or of another "
-                  "experiment?",
-                  instrument, column, p.strongest_hz, 1.0 / p.strongest_hz, p.peak_over_median,
-                  kLeastPeakOverMedian, p.noise, p.swing));
+  // Numbers to three significant digits (the peak's ratio to one decimal), as measured.
+  const auto digits = [](double x, int n) { return std::stod(fmt::format("{:.{}g}", x, n)); };
+  throw InputError(where,
+                   said("reading-not-periodic",
+                        {arg("instrument", instrument), arg("column", column),
+                         arg("frequency_hz", digits(p.strongest_hz, 3)),
+                         arg("period_s", digits(1.0 / p.strongest_hz, 3)),
+                         arg("ratio", std::round(p.peak_over_median * 10.0) / 10.0),
+                         arg("least_ratio", kLeastPeakOverMedian), arg("noise", digits(p.noise, 3)),
+                         arg("swing", digits(p.swing, 3))}));
 }
 
 }  // namespace fl

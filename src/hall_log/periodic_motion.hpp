@@ -11,6 +11,7 @@
 
 #include "hall_log/measurement_table.hpp"
 #include "io/input_error.hpp"
+#include "text/said.hpp"
 
 namespace fl {
 
@@ -43,6 +44,6 @@ Oscillation strongest_oscillation(const Series& channel, const Periodicity& peri
 // the strongest frequency and how far it stands above the rest, the noise and the swing (in the
 // channel's unit, which `column` names), and what to check. Returns the channel's periodicity.
 Periodicity require_periodic_motion(const Series& channel, const SourceLocation& where,
-                                    const std::string& instrument, const std::string& column);
+                                    const Said& instrument, const Said& column);
 
 }  // namespace fl

@@ -62,8 +62,10 @@ HallLog read_phyphox_magnetometer(std::string_view text, const std::string& name
   const Channel& channel = channels[clearest(values)];
   const Series series = series_of(table, 0, channel.values);
   require_periodic_motion(series, SourceLocation(name, table.header_line),
-                          instrument_words(MeasurementFile::kPhyphoxMagnetometer),
-                          channel.column.empty() ? "|B|" : "\"" + channel.column + "\"");
+                          instrument_said(MeasurementFile::kPhyphoxMagnetometer),
+                          channel.column.empty()
+                              ? said("column-field-magnitude")
+                              : said("column-named", {arg("name", channel.column)}));
   HallLog log = log_of_signal(series, name);
   say_what_was_read(log, table, 0, MeasurementFile::kPhyphoxMagnetometer, channel.name, "phyphox",
                     channel.column.empty() ? "|B| of the three components" : channel.column);

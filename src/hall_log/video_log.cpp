@@ -17,8 +17,9 @@ VideoLog read_video_log(const std::string& file, const TrackOptions& options) {
   out.tracked = track_plate_in_video(file, options);
   const PlateTrack& track = out.tracked.track;
   const Series positions = positions_of(track);
-  const Periodicity periodicity = require_periodic_motion(positions, SourceLocation(file), "video",
-                                                          "plate's position (" + track.unit + ")");
+  const Periodicity periodicity = require_periodic_motion(
+      positions, SourceLocation(file), instrument_said(MeasurementFile::kVideo),
+      said("column-plate-position", {arg("unit", track.unit)}));
   out.log = log_of_oscillation(positions, file, track.unit, periodicity);
   out.log.instrument = MeasurementFile::kVideo;
   out.log.channel = "x (" + track.unit + ")";

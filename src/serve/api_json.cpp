@@ -1,5 +1,7 @@
 #include "serve/api_json.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "core/units.hpp"
@@ -7,6 +9,7 @@
 #include "io/json_value.hpp"
 #include "lab/request/field_checks.hpp"
 #include "serve/web_spelling.hpp"
+#include "text/describe.hpp"
 
 namespace fl::serve {
 namespace {
@@ -168,7 +171,9 @@ json said_json(const Said& message) {
   for (const SaidArg& a : message.args) {
     json one{{"name", a.name}};
     if (const double* number = std::get_if<double>(&a.value))
-      one["number"] = *number;
+      // JSON has no infinity: a number that is not finite goes as English writes it ("inf").
+      one[std::isfinite(*number) ? "number" : "text"] =
+          std::isfinite(*number) ? json(*number) : json(describe(*number));
     else if (const std::string* text = std::get_if<std::string>(&a.value))
       one["text"] = web_spelled(*text);  // a field's name, spelled as the page names it
     else

@@ -374,6 +374,21 @@ await check("on a French page a file the lab cannot read is refused in French", 
     `the still plate's problem: ${still}`,
   );
   expect((await problem.locator("[lang]").count()) === 0, "a French message marked English");
+  // A position-time table of a plate that does not move: the instrument named in French too.
+  await input.setInputFiles({
+    name: "table.csv",
+    mimeType: "text/csv",
+    buffer: Buffer.from("t,x\n0,0.01\n0.1,0.02\n0.2,0.01\n"),
+  });
+  await problem.filter({ hasText: "table.csv" }).waitFor({ timeout: 60000 });
+  const table = (await problem.textContent()).trim();
+  expect(
+    table.startsWith(
+      "table.csv:1: attendu un mouvement périodique, trouvé aucun dans « x » de l’enregistrement " +
+        "(tableau position-temps)",
+    ),
+    `the table's problem: ${table}`,
+  );
   const others = complaints.filter((c) => !c.includes("status of 400"));
   expect(others.length === 0, `console: ${others.join("\n")}`);
   await context.close();

@@ -119,16 +119,14 @@ Periodicity require_periodic_motion(const Series& channel, const SourceLocation&
                                     const Said& instrument, const Said& column) {
   const Periodicity p = periodicity_of(channel);
   if (p.periodic()) return p;
-  // Numbers to three significant digits (the peak's ratio to one decimal), as measured.
-  const auto digits = [](double x, int n) { return std::stod(fmt::format("{:.{}g}", x, n)); };
-  throw InputError(where,
-                   said("reading-not-periodic",
-                        {arg("instrument", instrument), arg("column", column),
-                         arg("frequency_hz", digits(p.strongest_hz, 3)),
-                         arg("period_s", digits(1.0 / p.strongest_hz, 3)),
-                         arg("ratio", std::round(p.peak_over_median * 10.0) / 10.0),
-                         arg("least_ratio", kLeastPeakOverMedian), arg("noise", digits(p.noise, 3)),
-                         arg("swing", digits(p.swing, 3))}));
+  throw InputError(where, said("reading-not-periodic",
+                               {arg("instrument", instrument), arg("column", column),
+                                arg("frequency_hz", to_significant_digits(p.strongest_hz, 3)),
+                                arg("period_s", to_significant_digits(1.0 / p.strongest_hz, 3)),
+                                arg("ratio", to_decimal_places(p.peak_over_median, 1)),
+                                arg("least_ratio", kLeastPeakOverMedian),
+                                arg("noise", to_significant_digits(p.noise, 3)),
+                                arg("swing", to_significant_digits(p.swing, 3))}));
 }
 
 }  // namespace fl

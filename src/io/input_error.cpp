@@ -7,15 +7,19 @@
 
 namespace fl {
 
+std::string place_in_file(const SourceLocation& where) {
+  std::string out = where.file;
+  if (!out.empty() && where.line > 0) {
+    out += ':' + std::to_string(where.line);
+    if (where.column > 0) out += ':' + std::to_string(where.column);
+  }
+  return out;
+}
+
 std::string format_diagnostic(const SourceLocation& where, std::string_view what) {
   std::string out;
   if (!where.file.empty()) {
-    out += where.file;
-    if (where.line > 0) {
-      out += ':' + std::to_string(where.line);
-      if (where.column > 0) out += ':' + std::to_string(where.column);
-    }
-    out += ": ";
+    out += place_in_file(where) + ": ";
   } else if (!where.field.empty()) {
     out += where.field_value ? field_ref(where.field, *where.field_value) : field_ref(where.field);
     out += ": ";

@@ -48,6 +48,9 @@ class InputError : public std::runtime_error {
   std::optional<Said> said_;
 };
 
+// "file:line:column" (the parts that are known; "" for a request's field).
+std::string place_in_file(const SourceLocation& where);
+
 // "file:line:column: error: what" (parts that are unknown are left out); for a field,
 // "⟦field⟧: error: what".
 std::string format_diagnostic(const SourceLocation& where, std::string_view what);

@@ -51,14 +51,13 @@ SourceLocation YamlNode::location() const {
 }
 
 void YamlNode::fail(std::string_view what) const {
-  std::string message = path_.empty() ? std::string() : path_ + ": ";
-  message += what;
-  throw InputError(location(), message);
+  throw InputError(location(),
+                   path_.empty() ? std::string(what) : path_ + ": " + std::string(what));
 }
 
 void YamlNode::fail(const Said& what) const {
-  const std::string message = path_.empty() ? english(what) : path_ + ": " + english(what);
-  throw InputError(location(), message, what);
+  const std::string text = english(what);
+  throw InputError(location(), path_.empty() ? text : path_ + ": " + text, what);
 }
 
 void YamlNode::expect_map() const {

@@ -170,10 +170,11 @@ json said_json(const Said& message) {
   json args = json::array();
   for (const SaidArg& a : message.args) {
     json one{{"name", a.name}};
-    if (const double* number = std::get_if<double>(&a.value))
-      // JSON has no infinity: a number that is not finite goes as English writes it ("inf").
-      one[std::isfinite(*number) ? "number" : "text"] =
-          std::isfinite(*number) ? json(*number) : json(describe(*number));
+    const double* number = std::get_if<double>(&a.value);
+    if (number && std::isfinite(*number))
+      one["number"] = *number;
+    else if (number)  // JSON has no infinity: it goes as English writes it ("inf")
+      one["text"] = describe(*number);
     else if (const std::string* text = std::get_if<std::string>(&a.value))
       one["text"] = web_spelled(*text);  // a field's name, spelled as the page names it
     else
@@ -214,12 +215,7 @@ json problems_json(const std::exception& error) {
 }
 
 json file_problem_json(const InputError& error) {
-  const SourceLocation& where = error.where();
-  std::string place = where.file;
-  if (!place.empty() && where.line > 0) {
-    place += ':' + std::to_string(where.line);
-    if (where.column > 0) place += ':' + std::to_string(where.column);
-  }
+  const std::string place = place_in_file(error.where());
   json problem{{"field", "file"},
                {"value", place.empty() ? json(nullptr) : json(place)},
                {"message", web_spelled(without_location(error.what()))},

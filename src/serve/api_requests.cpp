@@ -1,5 +1,4 @@
 #include "serve/api_requests.hpp"
-#include "text/base64.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,6 +7,8 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+
+#include "text/base64.hpp"
 
 namespace fl::serve {
 namespace {

@@ -581,11 +581,10 @@ LabServer::LabServer(ServeOptions options) : impl_(std::make_unique<Impl>(std::m
     if (req.path.starts_with("/api/") &&
         !impl_->rate.allow(req.remote_addr, Clock::now(), &wait_s)) {
       res.set_header("Retry-After", std::to_string(static_cast<int>(std::ceil(wait_s))));
-      send_json(
-          res, 429,
-          error_json(said("server-too-many", {arg("address", req.remote_addr),
-                                              arg("per_second", impl_->rate.per_second()),
-                                              arg("wait_s", std::round(wait_s * 10.0) / 10.0)})));
+      send_json(res, 429,
+                error_json(said("server-too-many", {arg("address", req.remote_addr),
+                                                    arg("per_second", impl_->rate.per_second()),
+                                                    arg("wait_s", to_decimal_places(wait_s, 1))})));
       return httplib::Server::HandlerResponse::Handled;
     }
     auto& headers = const_cast<httplib::Request&>(req).headers;

@@ -1,13 +1,10 @@
 #include "serve/measurement_upload.hpp"
 
-#include <stdlib.h>
-
 #include <cctype>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
-#include <system_error>
 
 #include "api/api_fields.hpp"
 #include "io/input_error.hpp"
@@ -36,19 +33,15 @@ UploadAnswer estimate_upload(const MeasurementUpload& upload, const std::string&
   const std::string name = upload_name(upload.name);
   try {
     const TemporaryFolder folder;
-    const std::filesystem::path file = folder.path() / name;
-    {
-      std::ofstream out(file, std::ios::binary);
-      out.write(upload.bytes.data(), static_cast<std::streamsize>(upload.bytes.size()));
-      if (!out.flush())
-        return {500, error_json("the server could not keep the file to read it (its disk may "
-                                "be full); try again, or estimate it with frictionlab estimate")};
-    }
+    const std::optional<std::filesystem::path> file = folder.keep(name, upload.bytes);
+    if (!file)
+      return {500, error_json("the server could not keep the file to read it (its disk may "
+                              "be full); try again, or estimate it with frictionlab estimate")};
     const std::string prefix = folder.prefix();
     try {
       EstimateRequest request;
       request.assets = asset_dir;
-      request.logs = {file.string()};
+      request.logs = {file->string()};
       if (upload.spacing) request.spacing = *upload.spacing;
       if (upload.h_c) request.h_c = *upload.h_c;
       const OneLogEstimate result = estimate_one_log(prepare_estimate(request));

@@ -1,7 +1,6 @@
 #include "serve/session_report.hpp"
 
 #include <filesystem>
-#include <fstream>
 #include <optional>
 #include <stdexcept>
 
@@ -35,15 +34,13 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   std::optional<TemporaryFolder> folder;
   if (asked.measurement_file) {
     folder.emplace();
-    const std::filesystem::path file = folder->path() / upload_name(asked.measurement_file->name);
-    std::ofstream out(file, std::ios::binary);
-    out.write(asked.measurement_file->bytes.data(),
-              static_cast<std::streamsize>(asked.measurement_file->bytes.size()));
-    if (!out.flush())
+    const std::optional<std::filesystem::path> file =
+        folder->keep(upload_name(asked.measurement_file->name), asked.measurement_file->bytes);
+    if (!file)
       return {500, "",
               error_json("the server could not keep the measurement's file to read it (its disk "
                          "may be full); try again")};
-    request.inputs = {file.string()};
+    request.inputs = {file->string()};
     request.measurement.spacing = asked.measured->spacing_m;
   } else if (asked.measured) {
     request.measured.push_back(*asked.measured);
@@ -55,10 +52,8 @@ ReportAnswer session_report(LabSession& session, std::string_view body,
   const RunFiles files = [&session](const std::string& name) { return session.file(name); };
   try {
     std::string html = report_of_runs({{session.scene(), files}}, request).html;
-    if (!prefix.empty())
-      for (std::size_t at; (at = html.find(prefix)) != std::string::npos;)
-        html.erase(at, prefix.size());
-    return {200, std::move(html), nullptr};
+    return {200, prefix.empty() ? std::move(html) : without_folder(std::move(html), prefix),
+            nullptr};
   } catch (const RequestError& e) {
     return {400, "", scrubbed(problems_json(e))};
   } catch (const InputError& e) {

@@ -4,7 +4,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -19,12 +21,17 @@ class TemporaryFolder {
   const std::filesystem::path& path() const { return path_; }
   // "/tmp/frictionlab-upload-XXXXXX/": what without_folder takes out.
   std::string prefix() const { return path_.string() + "/"; }
+  // Writes `bytes` as the file `name` in the folder: its path, or nullopt where it could not be
+  // kept (a disk full).
+  std::optional<std::filesystem::path> keep(const std::string& name, std::string_view bytes) const;
 
  private:
   std::filesystem::path path_;
 };
 
-// Every mention of `folder` (a TemporaryFolder's prefix) in the body's texts taken out.
+// Every mention of `folder` (a TemporaryFolder's prefix) in the text, or in the body's texts,
+// taken out.
+std::string without_folder(std::string text, const std::string& folder);
 nlohmann::json without_folder(nlohmann::json body, const std::string& folder);
 
 }  // namespace fl::serve

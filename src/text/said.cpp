@@ -1,5 +1,8 @@
 #include "text/said.hpp"
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <utility>
 
@@ -30,6 +33,18 @@ SaidArg arg(std::string name, Said message) {
 
 Said said(std::string id, std::vector<SaidArg> args) {
   return {std::move(id), std::move(args)};
+}
+
+double to_significant_digits(double x, int digits) {
+  if (!std::isfinite(x)) return x;
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, x);
+  return std::strtod(text, nullptr);
+}
+
+double to_decimal_places(double x, int places) {
+  const double scale = std::pow(10.0, places);
+  return std::round(x * scale) / scale;
 }
 
 std::string english(const Said& message) {

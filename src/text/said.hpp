@@ -35,6 +35,11 @@ SaidArg arg(std::string name, Said message);
 
 Said said(std::string id, std::vector<SaidArg> args = {});
 
+// A measured value as a message shows it, rounded before it is said so that every language shows
+// the same digits: to `digits` significant digits, or to `places` decimal places.
+double to_significant_digits(double x, int digits);
+double to_decimal_places(double x, int places);
+
 // The message in English, its numbers written as describe() writes them (six significant
 // digits). A message en.ftl lacks says so in its text (the catalogues' test keeps every id the
 // lab says in en.ftl).

@@ -3,6 +3,8 @@
 // them, a message quoted inside another, and a message the catalogue lacks saying so.
 #include "text/said.hpp"
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -26,6 +28,15 @@ TEST(Said, WritesNumbersWithSixSignificantDigits) {
       "needs 2.5e+09 steps, more than 1e9; use a larger world.time_step or a shorter duration");
   EXPECT_EQ(english(said("check-solver-iterations", {arg("iterations", 0)})),
             "must be between 1 and 10000, found 0");
+}
+
+TEST(Said, RoundsAMeasuredValueAsEveryLanguageShowsIt) {
+  EXPECT_EQ(to_significant_digits(0.0123456, 3), 0.0123);
+  EXPECT_EQ(to_significant_digits(98765.4, 3), 98800.0);
+  EXPECT_EQ(to_significant_digits(-2.71828, 2), -2.7);
+  EXPECT_TRUE(std::isinf(to_significant_digits(std::numeric_limits<double>::infinity(), 3)));
+  EXPECT_EQ(to_decimal_places(0.77639, 4), 0.7764);
+  EXPECT_EQ(to_decimal_places(12.5, 0), 13.0);  // half away from zero
 }
 
 TEST(Said, QuotesAMessageInsideAnother) {

@@ -8,8 +8,7 @@ import { byId, byTestId, setText } from "./dom";
 import { t } from "./i18n";
 import { fixed, significant, trimmed, withError } from "./page_numbers";
 import { closeRig, getRig, LabError, openRig, RIG_PORTS_LISTED, rigLogHref } from "./lab_client";
-import type { Said } from "./api_types";
-import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent, BoardPortState } from "./lab_types";
+import type { Estimate, LiveRig, PulseGeometry, LiveRigEvent } from "./lab_types";
 import { PeriodsTable } from "./periods_table";
 import { RigPlot } from "./live_rig_plot";
 import { appendWords, labWords } from "./lab_says";
@@ -22,13 +21,11 @@ export interface RigPanelActions {
 }
 
 /** The port's state, from GET /api/rig or a rig event, whichever came last. */
-interface PortStatus {
-  port: string | null;
-  state: BoardPortState;
-  message: string | null;
-  /** the message as the catalogues say it, where they do */
-  said: Said | null;
-  lines: number;
+type PortStatus = Pick<LiveRigEvent, "port" | "state" | "message" | "said" | "lines">;
+
+/** The keys of PortStatus taken from a status or an event. */
+function portStatusOf({ port, state, message, said, lines }: PortStatus): PortStatus {
+  return { port, state, message, said, lines };
 }
 
 function linesOf(count: number): string {
@@ -159,13 +156,7 @@ export class RigPanel {
     this.lastEventAt = performance.now();
     if (this.run !== null && event.run !== this.run) this.clearRun();
     this.run = event.run;
-    this.status = {
-      port: event.port,
-      state: event.state,
-      message: event.message,
-      said: event.said,
-      lines: event.lines,
-    };
+    this.status = portStatusOf(event);
     this.plot.push(event.hall, event.periods);
     this.periods.add(event.periods);
     this.showEstimate(event.estimate, event.spacing, event.geometry);
@@ -233,13 +224,7 @@ export class RigPanel {
   private showRig(rig: LiveRig): void {
     this.rig = rig;
     this.showPorts(rig);
-    this.status = {
-      port: rig.port,
-      state: rig.state,
-      message: rig.message,
-      said: rig.said,
-      lines: rig.lines,
-    };
+    this.status = portStatusOf(rig);
     const name = rig.log_name ?? "rig.log";
     this.logLink.download = name;
     setText(this.logLink, t("rig-log-named", { name }));

@@ -3,7 +3,9 @@
 // the test's summary and exit status (0 all passed, 1 a check failed, 77 no chromium: skipped).
 import { spawn } from "node:child_process";
 import { existsSync } from "node:fs";
+import { dirname, join } from "node:path";
 import { createInterface } from "node:readline";
+import { fileURLToPath } from "node:url";
 import { chromium } from "playwright-core";
 
 export const executablePath = process.env.CHROMIUM ?? "/usr/bin/chromium";
@@ -99,6 +101,26 @@ export function expect(condition, message) {
 }
 
 /** Prints how many checks passed and failed, and ends the test with its status. */
+const axeScript = join(
+  dirname(fileURLToPath(import.meta.url)),
+  "../node_modules/axe-core/axe.min.js",
+);
+
+/** Checks axe-core's WCAG 2.1 A and AA rules on the page: each violation fails the check,
+ * listed as "id at target: summary" with `when` it was seen. */
+export async function expectNoViolations(page, when) {
+  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: axeScript });
+  const violations = await page.evaluate(async () => {
+    const result = await window.axe.run(document, {
+      runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"] },
+    });
+    return result.violations.flatMap((v) =>
+      v.nodes.map((n) => `${v.id} at ${n.target.join(" ")}: ${n.failureSummary}`),
+    );
+  });
+  expect(violations.length === 0, `axe ${when}:\n  ${violations.join("\n  ")}`);
+}
+
 export function finish() {
   console.log(`${tally.passed} passed, ${tally.failed} failed`);
   process.exit(tally.failed === 0 ? 0 : 1);

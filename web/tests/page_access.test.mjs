@@ -23,6 +23,7 @@ import { startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
+  expectNoViolations,
   finish,
   launchChromium,
   openWatchedPage,
@@ -33,7 +34,6 @@ import { importTs } from "./import_ts.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 const shots = process.env.SHOTS ?? "/tmp/shots";
-const axeScript = join(web, "node_modules/axe-core/axe.min.js");
 skipWithoutChromium();
 mkdirSync(shots, { recursive: true });
 
@@ -115,25 +115,6 @@ async function runPast(page, t) {
       after,
     t,
   );
-}
-
-/** axe-core's WCAG 2.1 A and AA rules on the page: each violation as "id at target: summary". */
-async function axeViolations(page) {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: axeScript });
-  const violations = await page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"] },
-    });
-    return result.violations.flatMap((v) =>
-      v.nodes.map((n) => `${v.id} at ${n.target.join(" ")}: ${n.failureSummary}`),
-    );
-  });
-  return violations;
-}
-
-async function expectNoViolations(page, when) {
-  const violations = await axeViolations(page);
-  expect(violations.length === 0, `axe ${when}:\n  ${violations.join("\n  ")}`);
 }
 
 /** The first screen at scroll 0: the boxes of the 3D view, the period and μk, the position plot. */

@@ -19,6 +19,7 @@ import { FAKE_RIG_PORT, startBuiltPage } from "./mock_server.mjs";
 import {
   check,
   expect,
+  expectNoViolations,
   finish,
   launchChromium,
   openWatchedPage,
@@ -27,7 +28,6 @@ import {
 } from "./browser_checks.mjs";
 
 const web = resolve(dirname(fileURLToPath(import.meta.url)), "..");
-const axeScript = join(web, "node_modules/axe-core/axe.min.js");
 skipWithoutChromium();
 
 const { base, stop } = await startBuiltPage();
@@ -51,19 +51,6 @@ const spacingLabel = (page) => text(page.locator('label[for="spacing-mm"]'));
 async function creates() {
   const log = await (await fetch(`${base}/__mock/log`)).json();
   return log.filter((entry) => entry.create).map((entry) => entry.create);
-}
-
-async function expectNoViolations(page, when) {
-  if (!(await page.evaluate(() => "axe" in window))) await page.addScriptTag({ path: axeScript });
-  const violations = await page.evaluate(async () => {
-    const result = await window.axe.run(document, {
-      runOnly: { type: "tag", values: ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"] },
-    });
-    return result.violations.flatMap((v) =>
-      v.nodes.map((n) => `${v.id} at ${n.target.join(" ")}: ${n.failureSummary}`),
-    );
-  });
-  expect(violations.length === 0, `axe ${when}:\n  ${violations.join("\n  ")}`);
 }
 
 await check("a French browser gets the page in French", async () => {

@@ -29,20 +29,6 @@ int line_at(const HallLog& log, double t) {
   return log.line[i];
 }
 
-// `x` rounded to `n` decimals, as a message gives it.
-double decimals(double x, int n) {
-  const double scale = std::pow(10.0, n);
-  return std::round(x * scale) / scale;
-}
-
-// `x` (a float of the estimator's) to `n` significant digits, as a double.
-double significant(float x, int n) {
-  return std::stod(fmt::format("{:.{}g}", static_cast<double>(x), n));
-}
-double decimals(float x, int n) {
-  return decimals(static_cast<double>(x), n);
-}
-
 // Refuses the log, saying why: in the catalogues' words, or in English only where a note in
 // English only (a unit's hint, a plot's place) goes with it.
 [[noreturn]] void refuse(const SourceLocation& where, const Said& why, const std::string& note) {
@@ -173,8 +159,8 @@ void require_plausible(const HallLog& log, const LogEstimate& est, const std::st
   if (!why) why = implausible_said(static_cast<double>(s.mu_k), kMuKRange);
   if (!why) return;
   refuse({log.path, log.line.front(), 0},
-         said("estimate-no-rig", {arg("period_s", significant(s.period_s, 6)),
-                                  arg("mu_k", significant(s.mu_k, 6)), arg("why", *why)}),
+         said("estimate-no-rig", {arg("period_s", static_cast<double>(s.period_s)),
+                                  arg("mu_k", static_cast<double>(s.mu_k)), arg("why", *why)}),
          time_unit_hint(log, est) + note);
 }
 
@@ -196,7 +182,7 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
                        : said("estimate-no-timing-level", {arg("swing", swing)});
     refuse(first,
            said("estimate-no-pulse",
-                {arg("samples", log.adc.size()), arg("duration_s", decimals(duration, 3)),
+                {arg("samples", log.adc.size()), arg("duration_s", to_decimal_places(duration, 3)),
                  arg("first_line", log.line.front()), arg("last_line", log.line.back()),
                  arg("low", static_cast<int>(*lo)), arg("high", static_cast<int>(*hi)),
                  arg("why", why)}),
@@ -205,8 +191,8 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
   const SourceLocation at_pulse{log.path, line_at(log, est.pulses.front().time), 0};
   if (est.pulses.size() == 1)
     refuse(at_pulse,
-           said("estimate-one-pulse", {arg("duration_s", decimals(duration, 3)),
-                                       arg("at_s", decimals(est.pulses.front().time, 4))}),
+           said("estimate-one-pulse", {arg("duration_s", to_decimal_places(duration, 3)),
+                                       arg("at_s", to_decimal_places(est.pulses.front().time, 4))}),
            note);
   if (est.periods.empty()) {
     std::string intervals;
@@ -254,10 +240,12 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
         at_pulse,
         s.periods_used == 0
             ? said("estimate-more-discarded-none",
-                   {arg("counts", counts), arg("tolerance_percent", decimals(tolerance_percent, 0)),
+                   {arg("counts", counts),
+                    arg("tolerance_percent", to_decimal_places(tolerance_percent, 0)),
                     arg("look", look)})
             : said("estimate-more-discarded",
-                   {arg("counts", counts), arg("tolerance_percent", decimals(tolerance_percent, 0)),
+                   {arg("counts", counts),
+                    arg("tolerance_percent", to_decimal_places(tolerance_percent, 0)),
                     arg("accepted", static_cast<std::size_t>(s.periods_used)), arg("look", look)}),
         note);
   if (s.periods_used < static_cast<std::uint32_t>(kLeastPeriods))
@@ -266,14 +254,16 @@ void require_periods(const HallLog& log, const LogEstimate& est, const std::stri
            note);
   const double scatter = static_cast<double>(s.period_std_s) / static_cast<double>(s.period_s);
   if (scatter > kMostPeriodScatter)
-    refuse(at_pulse,
-           said("estimate-scatter",
-                {arg("counts", counts), arg("scatter_percent", decimals(100.0 * scatter, 1)),
-                 arg("spread_s", decimals(s.period_std_s, 4)),
-                 arg("period_s", decimals(s.period_s, 4)),
-                 arg("most_percent", decimals(100.0 * kMostPeriodScatter, 0)),
-                 arg("tolerance_percent", decimals(tolerance_percent, 0)), arg("look", look)}),
-           note);
+    refuse(
+        at_pulse,
+        said(
+            "estimate-scatter",
+            {arg("counts", counts), arg("scatter_percent", to_decimal_places(100.0 * scatter, 1)),
+             arg("spread_s", to_decimal_places(static_cast<double>(s.period_std_s), 4)),
+             arg("period_s", to_decimal_places(static_cast<double>(s.period_s), 4)),
+             arg("most_percent", to_decimal_places(100.0 * kMostPeriodScatter, 0)),
+             arg("tolerance_percent", to_decimal_places(tolerance_percent, 0)), arg("look", look)}),
+        note);
 }
 
 nlohmann::json log_estimate_json(const HallLog& log, const LogEstimate& est) {
